@@ -1,0 +1,227 @@
+/* garotor/mv.c: the full multivector of G(4,1), computed blade by blade.
+ *
+ * A basis blade is a set of basis vectors, held as a bit mask (bit k-1 for
+ * e_k). The product of two blades A and B is +-(A xor B): the sign is the
+ * parity of the transpositions that sort the concatenated vectors, times
+ * e_k e_k = +1 for k <= 4 and -1 for k = 5 for every vector they share.
+ * Everything below is that rule, applied to all 32 x 32 pairs.
+ */
+#include "mv.h"
+
+#include <math.h>
+
+/* The canonical order of CONTRACT.md, as bit masks (grade first, then lexicographic). */
+static const unsigned char blade_mask[32] = {
+    0x00,
+    0x01, 0x02, 0x04, 0x08, 0x10,
+    0x03, 0x05, 0x09, 0x11, 0x06, 0x0a, 0x12, 0x0c, 0x14, 0x18,
+    0x07, 0x0b, 0x13, 0x0d, 0x15, 0x19, 0x0e, 0x16, 0x1a, 0x1c,
+    0x0f, 0x17, 0x1b, 0x1d, 0x1e,
+    0x1f};
+
+static const char *const blade_names[32] = {
+    "1",
+    "e1", "e2", "e3", "e4", "e5",
+    "e12", "e13", "e14", "e15", "e23", "e24", "e25", "e34", "e35", "e45",
+    "e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345",
+    "e1234", "e1235", "e1245", "e1345", "e2345",
+    "e12345"};
+
+/* Inverse of blade_mask: canonical index of each mask. */
+static const signed char mask_index[32] = {
+    GA_S, GA_E1, GA_E2, GA_E12, GA_E3, GA_E13, GA_E23, GA_E123,
+    GA_E4, GA_E14, GA_E24, GA_E124, GA_E34, GA_E134, GA_E234, GA_E1234,
+    GA_E5, GA_E15, GA_E25, GA_E125, GA_E35, GA_E135, GA_E235, GA_E1235,
+    GA_E45, GA_E145, GA_E245, GA_E1245, GA_E345, GA_E1345, GA_E2345, GA_E12345};
+
+static int popcount5(unsigned m)
+{
+    int k = 0;
+    for (; m; m &= m - 1)
+        k++;
+    return k;
+}
+
+/* Sign of the product of blades a and b (as masks): reordering, then metric. */
+static double blade_sign(unsigned a, unsigned b)
+{
+    int swaps = 0;
+    /* each vector of a must move past every vector of b with a lower index */
+    for (unsigned x = a >> 1; x; x >>= 1)
+        swaps += popcount5(x & b);
+    if ((a & b) & 0x10) /* e5 e5 = -1 */
+        swaps++;
+    return (swaps & 1) ? -1.0 : 1.0;
+}
+
+int ga_blade_grade(int i) { return (i >= 0 && i < 32) ? popcount5(blade_mask[i]) : -1; }
+const char *ga_blade_name(int i) { return (i >= 0 && i < 32) ? blade_names[i] : "?"; }
+unsigned ga_blade_mask(int i) { return (i >= 0 && i < 32) ? blade_mask[i] : 0u; }
+
+ga_mv ga_mv_zero(void)
+{
+    ga_mv r = {{0}};
+    return r;
+}
+
+ga_mv ga_mv_scalar(double s)
+{
+    ga_mv r = {{0}};
+    r.c[GA_S] = s;
+    return r;
+}
+
+ga_mv ga_mv_blade(int i)
+{
+    ga_mv r = {{0}};
+    if (i >= 0 && i < 32)
+        r.c[i] = 1.0;
+    return r;
+}
+
+ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5)
+{
+    ga_mv r = {{0}};
+    r.c[GA_E1] = x1;
+    r.c[GA_E2] = x2;
+    r.c[GA_E3] = x3;
+    r.c[GA_E4] = x4;
+    r.c[GA_E5] = x5;
+    return r;
+}
+
+ga_mv ga_add(ga_mv a, ga_mv b)
+{
+    for (int i = 0; i < 32; i++)
+        a.c[i] += b.c[i];
+    return a;
+}
+
+ga_mv ga_sub(ga_mv a, ga_mv b)
+{
+    for (int i = 0; i < 32; i++)
+        a.c[i] -= b.c[i];
+    return a;
+}
+
+ga_mv ga_scale(ga_mv a, double s)
+{
+    for (int i = 0; i < 32; i++)
+        a.c[i] *= s;
+    return a;
+}
+
+int ga_mv_isfinite(ga_mv a)
+{
+    for (int i = 0; i < 32; i++)
+        if (!isfinite(a.c[i]))
+            return 0;
+    return 1;
+}
+
+double ga_mv_maxabs(ga_mv a)
+{
+    double m = 0.0;
+    for (int i = 0; i < 32; i++)
+        m = fmax(m, fabs(a.c[i]));
+    return m;
+}
+
+/* Which blade pairs of the geometric product a product keeps. */
+enum product_kind { GEOMETRIC, OUTER, LEFT_CONTRACTION };
+
+static ga_mv product(ga_mv a, ga_mv b, enum product_kind kind)
+{
+    ga_mv r = {{0}};
+    for (int i = 0; i < 32; i++) {
+        if (a.c[i] == 0.0)
+            continue;
+        unsigned ma = blade_mask[i];
+        for (int j = 0; j < 32; j++) {
+            unsigned mb = blade_mask[j];
+            if (kind == OUTER && (ma & mb))
+                continue; /* a ^ b keeps only disjoint blades */
+            if (kind == LEFT_CONTRACTION && (ma & mb) != ma)
+                continue; /* a _| b keeps a subset of b: grade(b) - grade(a) */
+            r.c[mask_index[ma ^ mb]] += blade_sign(ma, mb) * a.c[i] * b.c[j];
+        }
+    }
+    return r;
+}
+
+ga_mv ga_gp(ga_mv a, ga_mv b) { return product(a, b, GEOMETRIC); }
+ga_mv ga_op(ga_mv a, ga_mv b) { return product(a, b, OUTER); }
+ga_mv ga_lc(ga_mv a, ga_mv b) { return product(a, b, LEFT_CONTRACTION); }
+
+double ga_sp(ga_mv a, ga_mv b)
+{
+    /* <ab>_0 pairs each blade with itself */
+    double s = 0.0;
+    for (int i = 0; i < 32; i++)
+        s += blade_sign(blade_mask[i], blade_mask[i]) * a.c[i] * b.c[i];
+    return s;
+}
+
+/* Multiply the grade-k part by sign[k]. */
+static ga_mv grade_signs(ga_mv a, const double sign[6])
+{
+    for (int i = 0; i < 32; i++)
+        a.c[i] *= sign[popcount5(blade_mask[i])];
+    return a;
+}
+
+ga_mv ga_reverse(ga_mv a)
+{
+    static const double s[6] = {1, 1, -1, -1, 1, 1}; /* (-1)^(k(k-1)/2) */
+    return grade_signs(a, s);
+}
+
+ga_mv ga_involute(ga_mv a)
+{
+    static const double s[6] = {1, -1, 1, -1, 1, -1}; /* (-1)^k */
+    return grade_signs(a, s);
+}
+
+ga_mv ga_conjugate(ga_mv a)
+{
+    static const double s[6] = {1, -1, -1, 1, 1, -1}; /* product of the two */
+    return grade_signs(a, s);
+}
+
+ga_mv ga_grade(ga_mv a, int k)
+{
+    for (int i = 0; i < 32; i++)
+        if (popcount5(blade_mask[i]) != k)
+            a.c[i] = 0.0;
+    return a;
+}
+
+ga_mv ga_dual(ga_mv a)
+{
+    /* I^-1 = -I, since I^2 = -1 in G(4,1) */
+    return ga_scale(ga_gp(a, ga_mv_blade(GA_E12345)), -1.0);
+}
+
+ga_mv ga_undual(ga_mv a) { return ga_gp(a, ga_mv_blade(GA_E12345)); }
+
+double ga_norm2(ga_mv a) { return ga_sp(a, ga_reverse(a)); }
+
+double ga_norm(ga_mv a) { return sqrt(fabs(ga_norm2(a))); }
+
+int ga_mv_inverse(ga_mv a, ga_mv *out)
+{
+    if (!ga_mv_isfinite(a))
+        return GA_ENOTFINITE;
+    ga_mv rev = ga_reverse(a);
+    ga_mv aa = ga_gp(a, rev);
+    double s = aa.c[GA_S];
+    /* a ~a must be a nonzero scalar: every other coefficient negligible against
+       the size of the product of the sizes (rounding of 32 terms of a*~a). */
+    double scale = ga_mv_maxabs(a);
+    double tol = 64.0 * 2.220446049250313e-16 * scale * scale;
+    aa.c[GA_S] = 0.0;
+    if (!(fabs(s) > tol) || ga_mv_maxabs(aa) > tol + 1e-12 * fabs(s))
+        return GA_ESINGULAR;
+    *out = ga_scale(rev, 1.0 / s);
+    return GA_OK;
+}

@@ -1,0 +1,46 @@
+/* garotor/types.h: the small value types and status codes every module shares.
+ *
+ * Conventions (see docs/conventions.md and CONTRACT.md):
+ *   - a 4x4 matrix is homogeneous, row-major, acting on column vectors (x,y,z,1);
+ *   - a twist xi = (w, v) = (wx, wy, wz, vx, vy, vz) names the motion expm(xi^),
+ *     xi^ = [[w]x, v; 0, 0];
+ *   - a function that can fail returns an int status (GA_OK or a negative
+ *     GA_E* code) and writes its result through its last pointer argument;
+ *     on failure that result is left untouched.
+ */
+#ifndef GAROTOR_TYPES_H
+#define GAROTOR_TYPES_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A point or direction of Euclidean 3-space. */
+typedef struct { double x, y, z; } ga_vec3;
+
+/** A 4x4 matrix, row-major: m[4*row + col]. */
+typedef struct { double m[16]; } ga_mat4;
+
+/** A twist: angular part w, linear part v (the motion is expm of [[w]x, v; 0, 0]). */
+typedef struct { ga_vec3 w, v; } ga_twist;
+
+/** Status codes. GA_OK is 0; every error is negative. */
+enum {
+    GA_OK = 0,
+    GA_ENOTFINITE = -1, /**< an input holds NaN or an infinity */
+    GA_ESINGULAR = -2,  /**< no inverse: a zero or non-invertible input */
+    GA_ENOTPOINT = -3,  /**< not a finite conformal point (X.n = 0 or X not null) */
+    GA_ENOTRIGID = -4,  /**< not a rigid motion (rotor or matrix) within tolerance */
+    GA_EDOMAIN = -5,    /**< outside the function's domain (e.g. log of a matrix
+                             with an eigenvalue on the closed negative real axis) */
+    GA_EARG = -6,       /**< an invalid argument (bad count, times not increasing, ...) */
+    GA_ENOTBLADE = -7   /**< not an object of the expected kind (sphere, plane, line...) */
+};
+
+/** A short English description of a status code ("ok", "not a rigid motion", ...). */
+const char *ga_strerror(int status);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

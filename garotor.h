@@ -1,0 +1,18 @@
+/* garotor.h: the whole public interface of garotor, one include.
+ *
+ *   #include <garotor.h>      (compile with $(pkg-config --cflags --libs garotor))
+ *
+ * Modules, from the bottom up:
+ *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
+ *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
+ *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
+ */
+#ifndef GAROTOR_H
+#define GAROTOR_H
+
+#include "types.h"
+#include "mv.h"
+#include "conformal.h"
+#include "group.h"
+
+#endif

@@ -1,0 +1,85 @@
+/* garotor/group.h: the small Lie-group interface the interpolation schemes are
+ * written against, and its three implementations.
+ *
+ * A scheme (path.h) never looks inside a group element: it composes, inverts,
+ * takes exp and log, and applies the adjoint action. Writing each scheme once
+ * against this interface and running it on CGA rotors and on 4x4 matrices is
+ * what makes the cross-check between the two representations mean something.
+ *
+ * Group elements are opaque blocks of `elem_size` bytes (a ga_rotor or a
+ * ga_mat4). Algebra elements are arrays of `dim` doubles:
+ *   - ga_group_cga and ga_group_se3: dim 6, a twist (wx, wy, wz, vx, vy, vz);
+ *     the rotor side maps it to the generator B(xi) = -1/2 (w I3 + v n)
+ *     (CONTRACT.md), the matrix side to xi^ = [[w]x, v; 0, 0];
+ *   - ga_group_affine: dim 12, the top three rows of a 4x4 matrix whose last
+ *     row is zero (row-major), i.e. any real 3x4 [A | b].
+ * Vector-space operations on algebra elements (sums, scaling) are plain
+ * arithmetic on those doubles.
+ */
+#ifndef GAROTOR_GROUP_H
+#define GAROTOR_GROUP_H
+
+#include <stddef.h>
+
+#include "types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The largest algebra dimension of any group here (affine: 12). */
+#define GA_GROUP_MAX_DIM 12
+/** The largest element size of any group here, in doubles (a 4x4 matrix). */
+#define GA_GROUP_MAX_ELEM 16
+
+typedef struct ga_group ga_group;
+
+/** A Lie group as the schemes see it. Every function is pure (no state). */
+struct ga_group {
+    const char *name;   /**< "cga", "matrix" (SE(3)) or "affine" */
+    size_t elem_size;   /**< bytes of one group element */
+    int dim;            /**< doubles in one algebra element */
+    /** out = identity */
+    void (*identity)(void *out);
+    /** out = a b (b first, then a, as matrices act on column vectors) */
+    void (*compose)(const void *a, const void *b, void *out);
+    /** out = a^-1 (for affine: GA_ESINGULAR if not invertible) */
+    int (*inverse)(const void *a, void *out);
+    /** out = exp(x) */
+    int (*exp)(const double *x, void *out);
+    /** x = the principal log of g: rotation angle in [0, pi] for cga/se3;
+     *  GA_EDOMAIN where the group element has no principal log (affine) */
+    int (*log)(const void *g, double *x);
+    /** out = Ad_g x = log-free conjugation g x g^-1, in algebra coordinates */
+    void (*adjoint)(const void *g, const double *x, double *out);
+    /** Read a 4x4 homogeneous matrix into a group element, checking it
+     *  (GA_ENOTRIGID for cga/se3 if not a rigid motion to 1e-9; for affine
+     *  the last row must be 0 0 0 1 and the determinant positive). */
+    int (*from_mat4)(ga_mat4 m, void *out);
+    /** The 4x4 homogeneous matrix of a group element. */
+    ga_mat4 (*to_mat4)(const void *g);
+    /** out = J_r(x) y, the right Jacobian (dexp) of exp at x applied to y:
+     *  the body velocity g^-1 dg/ds of g(s) = exp(x + s y) at s = 0, i.e.
+     *  sum_k (-ad_x)^k y / (k+1)!. The generator-space schemes of path.h need
+     *  it for the velocity of exp(X(t)): g^-1 g' = J_r(X) X'. cga and se3:
+     *  the closed form of the SE(3) right Jacobian; affine: the series by
+     *  scaling and doubling. (Added by the interpolation module.) */
+    void (*dexp)(const double *x, const double *y, double *out);
+};
+
+/** CGA rotors (ga_rotor, rotor.h): the closed forms of Wareham-Lasenby. */
+extern const ga_group ga_group_cga;
+/** SE(3) as 4x4 matrices (ga_mat4, mat4.h): Eberly's closed forms. */
+extern const ga_group ga_group_se3;
+/** Invertible homogeneous 4x4 matrices with positive determinant (ga_mat4):
+ *  the general matrix exp and log (Higham's scaling and squaring, inverse
+ *  scaling and squaring). */
+extern const ga_group ga_group_affine;
+
+/** The group called `name` ("cga", "matrix", "affine"), or NULL. */
+const ga_group *ga_group_by_name(const char *name);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

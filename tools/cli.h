@@ -1,0 +1,41 @@
+/* tools/cli.h: the options of the garotor tool and the commands that use them. */
+#ifndef GAROTOR_TOOLS_CLI_H
+#define GAROTOR_TOOLS_CLI_H
+
+/** Every option any command takes; each command says which it accepts. */
+enum {
+    OPT_IN = 1 << 0, OPT_OUT = 1 << 1, OPT_HEADER = 1 << 2, OPT_GROUP = 1 << 3,
+    OPT_SCHEME = 1 << 4, OPT_SAMPLES = 1 << 5, OPT_AT = 1 << 6, OPT_FORMAT = 1 << 7,
+    OPT_EVAL = 1 << 8, OPT_STEP = 1 << 9, OPT_V0 = 1 << 10, OPT_VELOCITIES = 1 << 11,
+    OPT_SVG = 1 << 12, OPT_VIEW = 1 << 13
+};
+
+typedef struct {
+    unsigned given;                    /* OPT_* bits of the options on the command line */
+    const char *in, *out, *svg, *velocities, *at, *view;
+    const char *group, *scheme, *format, *eval;
+    int header;
+    long samples;
+    double step;
+    double v0[6];
+} cli_opts;
+
+#include <stddef.h>
+
+#include "garotor.h"
+#include "textio.h"
+
+/** The group named by --group (default cga), or NULL after a message. */
+const ga_group *cli_group(const char *cmd, const cli_opts *o);
+/** Check that a matrix read from item i is an element of g (rigid to 1e-9 for
+ *  cga and matrix, homogeneous with positive determinant for affine); prints
+ *  the reason naming the line and returns -1 if not, 0 if it is. */
+int cli_check_motion(const ga_group *g, ga_mat4 m, const tio_items *in, size_t i);
+
+/** Commands: each returns the process exit status (0 ok, 2 bad input or usage). */
+int cmd_demo(const cli_opts *o);
+int cmd_exp(const cli_opts *o);
+int cmd_log(const cli_opts *o);
+int cmd_interp(const cli_opts *o);
+
+#endif
