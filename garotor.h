@@ -6,6 +6,11 @@
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
  *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
+ *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
+ *                matrices, quaternions and dual quaternions
+ *   mat4.h       4x4 matrices: SE(3) exp and log (Eberly), general expm and logm
+ *   group.h      the Lie-group interface the schemes are written against
+ *   path.h       interpolation schemes through key poses, and their evaluators
  */
 #ifndef GAROTOR_H
 #define GAROTOR_H
@@ -13,6 +18,9 @@
 #include "types.h"
 #include "mv.h"
 #include "conformal.h"
+#include "rotor.h"
+#include "mat4.h"
 #include "group.h"
+#include "path.h"
 
 #endif

@@ -16,10 +16,57 @@ typedef struct {
 } command;
 
 static const command commands[] = {
-    {"demo", cmd_demo, OPT_SVG,
-     "usage: garotor [demo] [--svg FILE]\n"
-     "Run the built-in demonstration and print a short report.\n"
-     "  --svg FILE   also draw it as an SVG picture\n"},
+    {"demo", cmd_demo, OPT_SVG | OPT_VIEW,
+     "usage: garotor [demo] [--svg FILE [--view iso|xy|xz|yz]]\n"
+     "Run the built-in demonstration and print a short report: three key poses,\n"
+     "the screw between consecutive keys, samples of the screw and quadratic\n"
+     "paths through them, and how far rotors and 4x4 matrices disagree.\n"
+     "  --svg FILE       also draw the two paths as an SVG picture\n"
+     "  --view V         the picture's view: iso (default), xy, xz or yz\n"},
+    {"exp", cmd_exp, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP,
+     "usage: garotor exp [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
+     "Read one twist a line (wx wy wz vx vy vz) and write its motion, the 4x4\n"
+     "matrix expm([[w]x, v; 0, 0]) (16 numbers, row-major).\n"
+     "  --group cga      through the rotor exp(B(xi)) (Wareham-Lasenby Thm 3; default)\n"
+     "  --group matrix   through Eberly's SE(3) closed form\n"
+     "  --group affine   items are 4x4 matrices with last row zero, general matrix exp\n"
+     "  --in FILE, --out FILE   input and output (default standard input and output)\n"
+     "  --header         skip the first line of the input (a CSV header)\n"},
+    {"log", cmd_log, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP,
+     "usage: garotor log [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
+     "Read one rigid motion a line (a 4x4 matrix, 16 numbers, row-major) and write\n"
+     "its principal twist (6 numbers; rotation angle in [0, pi]).\n"
+     "  --group cga      through the rotor logarithm l(R) (Wareham-Lasenby Thm 9; default)\n"
+     "  --group matrix   through Eberly's SE(3) closed form\n"
+     "  --group affine   any 4x4 with last row 0 0 0 1 and det > 0; writes the\n"
+     "                   principal matrix log as a 4x4 with last row zero\n"
+     "  --in FILE, --out FILE, --header   as for exp\n"},
+    {"interp", cmd_interp,
+     OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT |
+         OPT_EVAL | OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW,
+     "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,...) [OPTIONS]\n"
+     "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
+     "write samples of the path through them in the same format.\n"
+     "  --scheme screw      piecewise screw-linear (default)\n"
+     "  --scheme bivector   piecewise-linear in the generators l(R_i)\n"
+     "  --scheme quadratic  exactly 3 keys: quadratic in the generators\n"
+     "  --scheme smooth     n >= 3 keys: C1 piecewise-quadratic in the generators\n"
+     "  --scheme lihao2     Li-Hao C1 quadratic form; --v0 W1 W2 W3 V1 V2 V3 gives\n"
+     "                      the body velocity at the first key\n"
+     "  --scheme lihao3     Li-Hao cubic form; --velocities FILE gives one body\n"
+     "                      velocity (6 numbers, per unit t) per key\n"
+     "  --samples N         N >= 2 samples from the first key's t to the last's\n"
+     "  --at T1,T2,...      samples at these times instead\n"
+     "  --format mat|pose   a pose is 16 numbers (4x4, default) or x y z qx qy qz qw\n"
+     "  --group cga|matrix|affine   rotors (default), SE(3) matrices, or general\n"
+     "                      homogeneous matrices (keys in --format mat)\n"
+     "  --eval direct|exact|euler   closed form (default), exact incremental\n"
+     "                      stepping, or Li-Hao's generalized Euler (needs --step H)\n"
+     "  --step H            the Euler step, in units of u (segment fraction)\n"
+     "  --svg FILE          also draw the path: the trajectory of the origin, frames\n"
+     "                      at the keys and along it, the screw axis if it is one\n"
+     "  --view V            the picture's view: iso (default), xy, xz or yz\n"
+     "  --in FILE, --out FILE, --header   as for exp\n"},
 };
 
 static const char usage[] =
@@ -28,6 +75,9 @@ static const char usage[] =
     "\n"
     "commands:\n"
     "  demo     (the default) the built-in demonstration\n"
+    "  exp      twists to rigid motions (4x4 matrices)\n"
+    "  log      rigid motions to their principal twists\n"
+    "  interp   sample a path through key poses\n"
     "\n"
     "garotor COMMAND --help shows a command's options.\n";
 

@@ -1,0 +1,435 @@
+/* garotor/rotor.c: the compact rigid-motion rotor R = q + P n (see rotor.h).
+ *
+ * Inside, q = s + I b and P = p + I p4 with I = e123 (central in G(3), I^2 = -1)
+ * and b, p vectors: e12 = I e3, e13 = -I e2, e23 = I e1, so
+ *     b = (e23, -e13, e12),  p = (e1n, e2n, e3n),  p4 = e123n.
+ * With u v = u.v + I u x v for vectors, the G(3) products used below are
+ *     q1 q2 = (s1 s2 - b1.b2) + I (s1 b2 + s2 b1 - b1 x b2),
+ *     q P   = (s p - p4 b - b x p) + I (s p4 + b.p),
+ *     P q   = (s p - p4 b - p x b) + I (s p4 + p.b),
+ *     P ~q  = (s p + p4 b + p x b) + I (s p4 - p.b).
+ */
+#include "rotor.h"
+
+#include <math.h>
+#include <stddef.h>
+
+#define GA_PI 3.14159265358979323846
+
+typedef struct { double x, y, z; } vec;
+
+static vec v_make(double x, double y, double z) { vec r = {x, y, z}; return r; }
+static vec v_add(vec a, vec b) { return v_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+static vec v_sub(vec a, vec b) { return v_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+static vec v_scale(vec a, double k) { return v_make(k * a.x, k * a.y, k * a.z); }
+static double v_dot(vec a, vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static vec v_cross(vec a, vec b)
+{
+    return v_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+/* |a| without underflow or overflow: scale by the largest component first. */
+static double v_norm(vec a)
+{
+    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (m == 0.0 || !isfinite(m))
+        return m;
+    a = v_scale(a, 1.0 / m);
+    return m * sqrt(v_dot(a, a));
+}
+static vec v_of(ga_vec3 a) { return v_make(a.x, a.y, a.z); }
+static ga_vec3 v_out(vec a) { ga_vec3 r = {a.x, a.y, a.z}; return r; }
+
+static vec rotor_b(ga_rotor r) { return v_make(r.e23, -r.e13, r.e12); }
+static vec rotor_p(ga_rotor r) { return v_make(r.e1n, r.e2n, r.e3n); }
+
+static ga_rotor rotor_make(double s, vec b, vec p, double p4)
+{
+    ga_rotor r = {s, b.z, -b.y, b.x, p.x, p.y, p.z, p4};
+    return r;
+}
+
+static int rotor_isfinite(ga_rotor r)
+{
+    return isfinite(r.s) && isfinite(r.e12) && isfinite(r.e13) && isfinite(r.e23) &&
+           isfinite(r.e1n) && isfinite(r.e2n) && isfinite(r.e3n) && isfinite(r.e123n);
+}
+
+ga_rotor ga_rotor_identity(void)
+{
+    ga_rotor r = {1, 0, 0, 0, 0, 0, 0, 0};
+    return r;
+}
+
+ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b)
+{
+    ga_rotor r;
+    /* q = qa qb */
+    r.s = a.s * b.s - a.e12 * b.e12 - a.e13 * b.e13 - a.e23 * b.e23;
+    r.e12 = a.s * b.e12 + a.e12 * b.s + a.e23 * b.e13 - a.e13 * b.e23;
+    r.e13 = a.s * b.e13 + a.e13 * b.s + a.e12 * b.e23 - a.e23 * b.e12;
+    r.e23 = a.s * b.e23 + a.e23 * b.s + a.e13 * b.e12 - a.e12 * b.e13;
+    /* P = qa Pb + Pa qb */
+    r.e1n = a.s * b.e1n + a.e1n * b.s - a.e23 * b.e123n - a.e123n * b.e23
+          + a.e12 * b.e2n + a.e13 * b.e3n - a.e2n * b.e12 - a.e3n * b.e13;
+    r.e2n = a.s * b.e2n + a.e2n * b.s + a.e13 * b.e123n + a.e123n * b.e13
+          - a.e12 * b.e1n + a.e23 * b.e3n + a.e1n * b.e12 - a.e3n * b.e23;
+    r.e3n = a.s * b.e3n + a.e3n * b.s - a.e12 * b.e123n - a.e123n * b.e12
+          - a.e13 * b.e1n - a.e23 * b.e2n + a.e1n * b.e13 + a.e2n * b.e23;
+    r.e123n = a.s * b.e123n + a.e123n * b.s + a.e23 * b.e1n - a.e13 * b.e2n + a.e12 * b.e3n
+            + a.e1n * b.e23 - a.e2n * b.e13 + a.e3n * b.e12;
+    return r;
+}
+
+ga_rotor ga_rotor_reverse(ga_rotor r)
+{
+    ga_rotor o = {r.s, -r.e12, -r.e13, -r.e23, -r.e1n, -r.e2n, -r.e3n, r.e123n};
+    return o;
+}
+
+ga_mv ga_rotor_to_mv(ga_rotor r)
+{
+    ga_mv m = ga_mv_zero();
+    m.c[GA_S] = r.s;
+    m.c[GA_E12] = r.e12;
+    m.c[GA_E13] = r.e13;
+    m.c[GA_E23] = r.e23;
+    m.c[GA_E14] = m.c[GA_E15] = r.e1n;
+    m.c[GA_E24] = m.c[GA_E25] = r.e2n;
+    m.c[GA_E34] = m.c[GA_E35] = r.e3n;
+    m.c[GA_E1234] = m.c[GA_E1235] = r.e123n;
+    return m;
+}
+
+/* The e123 part of P ~q: zero on the group. */
+static double rotor_pq3(ga_rotor r) { return r.s * r.e123n - v_dot(rotor_p(r), rotor_b(r)); }
+
+/* Distance from the group (rotor.h, ga_rotor_check); NaN for non-finite input. */
+static double rotor_drift(ga_rotor r)
+{
+    double q2 = r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23;
+    double psize = sqrt(r.e1n * r.e1n + r.e2n * r.e2n + r.e3n * r.e3n + r.e123n * r.e123n);
+    return fmax(fabs(q2 - 1.0), 2.0 * fabs(rotor_pq3(r)) / fmax(1.0, psize));
+}
+
+int ga_rotor_check(ga_rotor r, double tol)
+{
+    if (!rotor_isfinite(r))
+        return GA_ENOTFINITE;
+    double d = rotor_drift(r);
+    return (d <= tol && isfinite(d)) ? GA_OK : GA_ENOTRIGID;
+}
+
+/* R (R ~R)^(-1/2) for a finite r with q != 0 (not overflowing). */
+static ga_rotor rotor_project(ga_rotor r)
+{
+    double k = 1.0 / sqrt(r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23);
+    double s = k * r.s, p4 = k * r.e123n;
+    vec b = v_scale(rotor_b(r), k), p = v_scale(rotor_p(r), k);
+    /* X = <P ~q>_1 (its e123 part dropped), then P = X q */
+    vec x = v_add(v_add(v_scale(p, s), v_scale(b, p4)), v_cross(p, b));
+    return rotor_make(s, b, v_sub(v_scale(x, s), v_cross(x, b)), v_dot(x, b));
+}
+
+int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
+{
+    if (!rotor_isfinite(r))
+        return GA_ENOTFINITE;
+    double m = fmax(fmax(fabs(r.s), fabs(r.e12)), fmax(fabs(r.e13), fabs(r.e23)));
+    if (m == 0.0)
+        return GA_ENOTRIGID;
+    /* scale to |q| ~ 1 first, so that neither |q|^2 nor P / |q| can overflow */
+    ga_rotor t = {r.s / m, r.e12 / m, r.e13 / m, r.e23 / m,
+                  r.e1n / m, r.e2n / m, r.e3n / m, r.e123n / m};
+    if (!rotor_isfinite(t))
+        return GA_ENOTRIGID;
+    ga_rotor o = rotor_project(t);
+    if (!rotor_isfinite(o))
+        return GA_ENOTRIGID;
+    *out = o;
+    return GA_OK;
+}
+
+int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
+{
+    static const int inside[12] = {GA_S, GA_E12, GA_E13, GA_E23, GA_E14, GA_E15, GA_E24,
+                                   GA_E25, GA_E34, GA_E35, GA_E1234, GA_E1235};
+    if (!ga_mv_isfinite(m))
+        return GA_ENOTFINITE;
+    double lim = tol * fmax(1.0, ga_mv_maxabs(m));
+    ga_mv rest = m;
+    for (int i = 0; i < 12; i++)
+        rest.c[inside[i]] = 0.0;
+    if (!(ga_mv_maxabs(rest) <= lim) || !(fabs(m.c[GA_E14] - m.c[GA_E15]) <= lim) ||
+        !(fabs(m.c[GA_E24] - m.c[GA_E25]) <= lim) || !(fabs(m.c[GA_E34] - m.c[GA_E35]) <= lim) ||
+        !(fabs(m.c[GA_E1234] - m.c[GA_E1235]) <= lim))
+        return GA_ENOTRIGID;
+    ga_rotor r = {m.c[GA_S], m.c[GA_E12], m.c[GA_E13], m.c[GA_E23],
+                  0.5 * (m.c[GA_E14] + m.c[GA_E15]), 0.5 * (m.c[GA_E24] + m.c[GA_E25]),
+                  0.5 * (m.c[GA_E34] + m.c[GA_E35]), 0.5 * (m.c[GA_E1234] + m.c[GA_E1235])};
+    int st = ga_rotor_check(r, tol);
+    if (st != GA_OK)
+        return st;
+    return ga_rotor_normalize(r, out);
+}
+
+/* ---- action ---------------------------------------------------------------- */
+
+/* t = -2 <P ~q>_1 = -2 (s p + p4 b + p x b). */
+static vec rotor_translation(ga_rotor r)
+{
+    vec b = rotor_b(r), p = rotor_p(r);
+    return v_scale(v_add(v_add(v_scale(p, r.s), v_scale(b, r.e123n)), v_cross(p, b)), -2.0);
+}
+
+ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x)
+{
+    /* q x ~q by the quaternion (s, v), v = -b: x + s u + v x u with u = 2 v x x */
+    vec v = v_make(-r.e23, r.e13, -r.e12), xv = v_of(x);
+    vec u = v_scale(v_cross(v, xv), 2.0);
+    vec y = v_add(v_add(xv, v_scale(u, r.s)), v_cross(v, u));
+    return v_out(v_add(y, rotor_translation(r)));
+}
+
+ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
+{
+    ga_mv R = ga_rotor_to_mv(r);
+    return ga_gp(ga_gp(R, X), ga_reverse(R));
+}
+
+/* ---- constructors ------------------------------------------------------- */
+
+ga_rotor ga_rotor_rotation(ga_vec3 axis, double angle)
+{
+    vec u = v_of(axis);
+    double len = v_norm(u);
+    if (!(len > 0.0))
+        return ga_rotor_identity();
+    double h = 0.5 * angle, sh = sin(h) / len;
+    /* cos(h) - sin(h) u I3: b = -sin(h) u */
+    return rotor_make(cos(h), v_scale(u, -sh), v_make(0, 0, 0), 0.0);
+}
+
+ga_rotor ga_rotor_translation(ga_vec3 a)
+{
+    /* 1 + n a/2 = 1 - (a/2) n */
+    return rotor_make(1.0, v_make(0, 0, 0), v_scale(v_of(a), -0.5), 0.0);
+}
+
+ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a)
+{
+    vec b = v_make(plane.e23, -plane.e13, plane.e12);
+    double len = v_norm(b);
+    ga_rotor rot = ga_rotor_identity();
+    if (len > 0.0)
+        rot = rotor_make(cos(0.5 * psi), v_scale(b, sin(0.5 * psi) / len), v_make(0, 0, 0), 0.0);
+    return ga_rotor_mul(rot, ga_rotor_translation(a));
+}
+
+ga_generator ga_generator_from_twist(ga_twist xi)
+{
+    /* beta = -w/2, c = -v/2; (e12, e13, e23) = (beta_z, -beta_y, beta_x) */
+    ga_generator g = {-0.5 * xi.w.z, 0.5 * xi.w.y, -0.5 * xi.w.x,
+                      -0.5 * xi.v.x, -0.5 * xi.v.y, -0.5 * xi.v.z};
+    return g;
+}
+
+ga_twist ga_twist_from_generator(ga_generator b)
+{
+    ga_twist xi = {{-2.0 * b.e23, 2.0 * b.e13, -2.0 * b.e12},
+                   {-2.0 * b.e1n, -2.0 * b.e2n, -2.0 * b.e3n}};
+    return xi;
+}
+
+/* ---- exp and log ------------------------------------------------------- */
+
+ga_rotor ga_rotor_exp(ga_generator g)
+{
+    vec beta = v_make(g.e23, -g.e13, g.e12), c = v_make(g.e1n, g.e2n, g.e3n);
+    double phi2 = v_dot(beta, beta), phi = sqrt(phi2);
+    double cs = cos(phi), sn = sin(phi);
+    double sinc = phi > 0.0 ? sn / phi : 1.0;
+    /* k = (cos phi - sinc phi) / phi^2 = sum_{j>=1} (-1)^j 2j phi^(2j-2) / (2j+1)!;
+       the series' next term is below 2e-19 for phi < 0.1 */
+    double k = phi2 < 1e-2
+        ? -1.0 / 3 + phi2 * (1.0 / 30 - phi2 * (1.0 / 840 - phi2 * (1.0 / 45360 - phi2 / 3991680)))
+        : (cs - sinc) / phi2;
+    double bc = v_dot(beta, c);
+    /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
+    vec p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
+    return rotor_make(cs, v_scale(beta, sinc), p, sinc * bc);
+}
+
+static int rotor_log(ga_rotor r, int principal, ga_generator *out)
+{
+    if (!rotor_isfinite(r))
+        return GA_ENOTFINITE;
+    if (!(rotor_drift(r) <= GA_ROTOR_DRIFT_MAX))
+        return GA_ENOTRIGID;
+    r = rotor_project(r);
+    if (principal && r.s < 0.0)
+        r = rotor_make(-r.s, v_scale(rotor_b(r), -1.0), v_scale(rotor_p(r), -1.0), -r.e123n);
+    vec b = rotor_b(r), p = rotor_p(r), beta, c;
+    double nb = v_norm(b); /* sin(phi), b = sin(phi) u */
+    if (nb == 0.0) {
+        if (r.s > 0.0) { /* q = 1: a pure translation, P = c */
+            beta = v_make(0, 0, 0);
+            c = p;
+        } else { /* q = -1: a turn of 2 pi; P = cos(pi) c_par, so the axis is along p */
+            double np = v_norm(p);
+            vec u = np > 0.0 ? v_scale(p, 1.0 / np) : v_make(0, 0, 1);
+            beta = v_scale(u, GA_PI);
+            c = v_scale(p, -1.0);
+        }
+    } else {
+        double phi = atan2(nb, r.s);
+        vec u = v_scale(b, 1.0 / nb);
+        double pu = v_dot(p, u);
+        /* P = cos c_par + sinc c_perp + I sin (c.u): c.u = cos (p.u) + sin p4 */
+        double cpar = r.s * pu + nb * r.e123n;
+        vec pperp = v_sub(p, v_scale(u, pu));
+        beta = v_scale(u, phi);
+        c = v_add(v_scale(pperp, phi / nb), v_scale(u, cpar));
+    }
+    ga_generator g = {beta.z, -beta.y, beta.x, c.x, c.y, c.z};
+    *out = g;
+    return GA_OK;
+}
+
+int ga_rotor_log(ga_rotor r, ga_generator *out) { return rotor_log(r, 1, out); }
+int ga_rotor_log_literal(ga_rotor r, ga_generator *out) { return rotor_log(r, 0, out); }
+
+/* ---- screws ---------------------------------------------------------------- */
+
+int ga_screw_from_rotor(ga_rotor r, ga_screw *out)
+{
+    ga_generator g;
+    int st = ga_rotor_log(r, &g);
+    if (st != GA_OK)
+        return st;
+    ga_twist xi = ga_twist_from_generator(g);
+    vec w = v_of(xi.w), v = v_of(xi.v);
+    double th = v_norm(w), nv = v_norm(v);
+    ga_screw s = {0, {0, 0, 1}, {0, 0, 0}, 0, 0};
+    if (th == 0.0) {
+        if (nv > 0.0) {
+            s.axis = v_out(v_scale(v, 1.0 / nv));
+            s.shift = nv;
+            s.pitch = INFINITY;
+        }
+    } else {
+        vec u = v_scale(w, 1.0 / th);
+        s.angle = th;
+        s.axis = v_out(u);
+        s.shift = v_dot(u, v);
+        s.point = v_out(v_scale(v_cross(u, v), 1.0 / th));
+        s.pitch = s.shift / th;
+        if (!isfinite(s.point.x) || !isfinite(s.point.y) || !isfinite(s.point.z) ||
+            !isfinite(s.pitch))
+            return GA_EDOMAIN;
+    }
+    *out = s;
+    return GA_OK;
+}
+
+ga_rotor ga_rotor_from_screw(ga_screw s)
+{
+    vec u = v_of(s.axis);
+    double len = v_norm(u);
+    if (!(len > 0.0))
+        return ga_rotor_identity();
+    u = v_scale(u, 1.0 / len);
+    if (s.angle == 0.0)
+        return ga_rotor_translation(v_out(v_scale(u, s.shift)));
+    /* w = angle u, v = -w x point + shift u */
+    vec w = v_scale(u, s.angle);
+    ga_twist xi = {v_out(w), v_out(v_add(v_cross(v_of(s.point), w), v_scale(u, s.shift)))};
+    return ga_rotor_exp(ga_generator_from_twist(xi));
+}
+
+/* ---- the bridge ----------------------------------------------------------- */
+
+ga_quat ga_rotor_quat(ga_rotor r, ga_vec3 *translation)
+{
+    ga_quat q = {r.s, -r.e23, r.e13, -r.e12};
+    if (translation)
+        *translation = v_out(rotor_translation(r));
+    return q;
+}
+
+ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t)
+{
+    /* T_t q: P = -t q / 2 = ((t x b - s t) - I (t.b)) / 2, b = -(x, y, z) */
+    vec b = v_make(-q.x, -q.y, -q.z), tv = v_of(t);
+    vec p = v_scale(v_sub(v_cross(tv, b), v_scale(tv, q.w)), 0.5);
+    return rotor_make(q.w, b, p, -0.5 * v_dot(tv, b));
+}
+
+ga_mat4 ga_rotor_to_mat4(ga_rotor r)
+{
+    double w = r.s, x = -r.e23, y = r.e13, z = -r.e12;
+    vec t = rotor_translation(r);
+    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x,
+                  2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y,
+                  2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), t.z,
+                  0, 0, 0, 1}};
+    return m;
+}
+
+int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
+{
+    const double *m = mm.m;
+    const double tol = 1e-9;
+    for (int i = 0; i < 16; i++)
+        if (!isfinite(m[i]))
+            return GA_ENOTFINITE;
+    if (!(fabs(m[12]) <= tol && fabs(m[13]) <= tol && fabs(m[14]) <= tol &&
+          fabs(m[15] - 1.0) <= tol))
+        return GA_ENOTRIGID;
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) {
+            double d = m[i] * m[j] + m[4 + i] * m[4 + j] + m[8 + i] * m[8 + j];
+            if (!(fabs(d - (i == j)) <= tol))
+                return GA_ENOTRIGID;
+        }
+    double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                 m[2] * (m[4] * m[9] - m[5] * m[8]);
+    if (!(det > 0.0))
+        return GA_ENOTRIGID;
+    /* Shepperd: divide by the largest of 4w^2, 4x^2, 4y^2, 4z^2 */
+    double tr = m[0] + m[5] + m[10], w, x, y, z, h;
+    if (tr >= m[0] && tr >= m[5] && tr >= m[10]) {
+        h = sqrt(1.0 + tr);
+        w = 0.5 * h, h = 0.5 / h;
+        x = (m[9] - m[6]) * h, y = (m[2] - m[8]) * h, z = (m[4] - m[1]) * h;
+    } else if (m[0] >= m[5] && m[0] >= m[10]) {
+        h = sqrt(1.0 + m[0] - m[5] - m[10]);
+        x = 0.5 * h, h = 0.5 / h;
+        w = (m[9] - m[6]) * h, y = (m[1] + m[4]) * h, z = (m[2] + m[8]) * h;
+    } else if (m[5] >= m[10]) {
+        h = sqrt(1.0 - m[0] + m[5] - m[10]);
+        y = 0.5 * h, h = 0.5 / h;
+        w = (m[2] - m[8]) * h, x = (m[1] + m[4]) * h, z = (m[6] + m[9]) * h;
+    } else {
+        h = sqrt(1.0 - m[0] - m[5] + m[10]);
+        z = 0.5 * h, h = 0.5 / h;
+        w = (m[4] - m[1]) * h, x = (m[2] + m[8]) * h, y = (m[6] + m[9]) * h;
+    }
+    double k = (w < 0.0 ? -1.0 : 1.0) / sqrt(w * w + x * x + y * y + z * z);
+    ga_quat q = {k * w, k * x, k * y, k * z};
+    ga_vec3 t = {m[3], m[7], m[11]};
+    *out = ga_rotor_from_quat(q, t);
+    return GA_OK;
+}
+
+ga_dualquat ga_rotor_to_dualquat(ga_rotor r)
+{
+    ga_dualquat d = {{r.s, -r.e23, r.e13, -r.e12}, {-r.e123n, -r.e1n, -r.e2n, -r.e3n}};
+    return d;
+}
+
+ga_rotor ga_rotor_from_dualquat(ga_dualquat d)
+{
+    ga_rotor r = {d.real.w, -d.real.z, d.real.y, -d.real.x,
+                  -d.dual.x, -d.dual.y, -d.dual.z, -d.dual.w};
+    return r;
+}

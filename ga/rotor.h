@@ -1,0 +1,205 @@
+/* garotor/rotor.h: the compact rigid-motion rotor, its exp and log, screws,
+ * and the bridge to matrices, twists, quaternions and dual quaternions.
+ *
+ * A rigid-motion rotor of G(4,1) (Wareham-Lasenby §2.2-2.5) has the form
+ *
+ *     R = q + P n,    n = e4 + e5,
+ *
+ * with q in the even subalgebra of G(3) (1, e12, e13, e23) and P odd in G(3)
+ * (e1, e2, e3, e123). Since n commutes with even elements of G(3),
+ * anticommutes with odd ones and n^2 = 0,
+ *
+ *     (q1 + P1 n)(q2 + P2 n) = q1 q2 + (q1 P2 + P1 q2) n,
+ *
+ * so the 8 coefficients of 1, e12, e13, e23, e1n, e2n, e3n, e123n are closed
+ * under the product (e_i n = e_i4 + e_i5 and e123n = e1234 + e1235 in the full
+ * multivector). q is the rotation; the translation is t = -2 <P ~q>_1, and
+ * R = T_t q with T_a = 1 + n a/2 (W-L §2.2). R ~R = q ~q + (P ~q - q ~P) n, so
+ * R is on the group iff |q| = 1 and <P ~q>_3 = 0; then R n ~R = n (Thm 8).
+ *
+ * Generators: B = beta I3 + c n with beta, c vectors of G(3) (I3 = e123), i.e.
+ * the bivector span{e_ij, e_i n}. A twist xi = (w, v) has the generator
+ * B(xi) = -(w I3 + v n)/2 (CONTRACT.md), so beta = -w/2, c = -v/2, and
+ * exp(B(xi)) moves points as expm(xi^) does. With phi = |beta| (half the
+ * rotation angle) and sinc(x) = sin(x)/x,
+ *
+ *     exp(B) = cos(phi) + sinc(phi) beta I3
+ *            + [ cos(phi) c_par + sinc(phi) c_perp + sinc(phi) (beta.c) I3 ] n,
+ *
+ * (c_par, c_perp: the parts of c along and across beta), the closed form of
+ * W-L Thm 3 (there written [cos + sin P][1 + t_perp n] + sinc t_par n, with
+ * phi P = beta I3, t = 2c).
+ *
+ * Conventions: a rotor acts by X -> R X ~R; R2 R1 is R1 first. The quaternion
+ * (w, x, y, z) of q = s + a12 e12 + a13 e13 + a23 e23 is (s, -a23, a13, -a12)
+ * (a right-handed rotation by theta about u is (cos theta/2, sin theta/2 u)).
+ */
+#ifndef GAROTOR_ROTOR_H
+#define GAROTOR_ROTOR_H
+
+#include "types.h"
+#include "mv.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A rigid-motion rotor R = q + P n: q = s + e12 + e13 + e23 terms, P n = e1n..e123n terms. */
+typedef struct { double s, e12, e13, e23, e1n, e2n, e3n, e123n; } ga_rotor;
+
+/** A generator: a bivector B in span{e_ij, e_i n} (W-L §2.3: B = ab + c n). */
+typedef struct { double e12, e13, e23, e1n, e2n, e3n; } ga_generator;
+
+/** Screw parameters of a rigid motion (Chasles; W-L §4.1, the helix).
+ *  angle in [0, pi]; axis a unit vector; point the point of the axis closest to
+ *  the origin; shift the translation along the axis; pitch = shift / angle.
+ *  Pure translation: angle 0, axis its unit direction, point 0, shift its
+ *  length, pitch INFINITY. Identity: everything 0, axis (0, 0, 1), pitch 0. */
+typedef struct { double angle; ga_vec3 axis; ga_vec3 point; double shift; double pitch; } ga_screw;
+
+/** A quaternion w + x i + y j + z k (Hamilton's convention). */
+typedef struct { double w, x, y, z; } ga_quat;
+
+/** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
+ *  by t", real = r and dual = t r / 2, with t the pure quaternion (0, t). */
+typedef struct { ga_quat real, dual; } ga_dualquat;
+
+/** Largest distance from the group, max(| |q|^2 - 1 |, 2 |<P ~q>_3| / max(1, |P|)),
+ *  that ga_rotor_log, ga_rotor_log_literal and ga_screw_from_rotor accept (and
+ *  project away, as R (R ~R)^(-1/2)); farther is GA_ENOTRIGID. */
+#define GA_ROTOR_DRIFT_MAX 1e-6
+
+/* ---- the group ---------------------------------------------------------- */
+
+/** The identity rotor 1. */
+ga_rotor ga_rotor_identity(void);
+
+/** The product a b (b first, then a): (qa + Pa n)(qb + Pb n) = qa qb + (qa Pb + Pa qb) n,
+ *  48 multiplications, written out term by term. */
+ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b);
+
+/** The reverse ~r = ~q - ~P n (the inverse of a unit rotor). */
+ga_rotor ga_rotor_reverse(ga_rotor r);
+
+/** The full 32-component multivector of r (e_i n = e_i4 + e_i5, e123 n = e1234 + e1235). */
+ga_mv ga_rotor_to_mv(ga_rotor r);
+
+/** The compact rotor of a multivector m. GA_ENOTFINITE on NaN/Inf; GA_ENOTRIGID if a
+ *  coefficient outside the 8-component form exceeds tol * max(1, max|m|), if
+ *  e_i4 and e_i5 (or e1234 and e1235) differ by more than that, or if the
+ *  rotor is farther than tol from the group (see ga_rotor_check). On success
+ *  *out is projected onto the group (ga_rotor_normalize). */
+int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out);
+
+/** r's distance from the group: max(| |q|^2 - 1 |, 2 |<P ~q>_3| / max(1, |P|)), i.e.
+ *  the largest coefficient of R ~R - 1 (Thm 7), the second one relative to the
+ *  size of the translation; R n ~R = n then follows (Thm 8). GA_OK if it is <= tol,
+ *  GA_ENOTRIGID if not, GA_ENOTFINITE on NaN/Inf. */
+int ga_rotor_check(ga_rotor r, double tol);
+
+/** The rotor R (R ~R)^(-1/2) on the group: q /= |q|, P /= |q|, then the e123 part of
+ *  P ~q is dropped (P = <P ~q>_1 q). GA_ENOTFINITE on NaN/Inf, GA_ENOTRIGID if
+ *  q = 0 (no rotor is near). Works for any distance from the group. */
+int ga_rotor_normalize(ga_rotor r, ga_rotor *out);
+
+/* ---- action ---------------------------------------------------------------- */
+
+/** The point x moved by r, as down(R F(x) ~R), computed as q x ~q + t: a quaternion
+ *  rotation and the translation t = -2 <P ~q>_1 (R = T_t q). r must be on the group. */
+ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
+
+/** R X ~R for any conformal object X, through the full geometric product. */
+ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X);
+
+/* ---- constructors ------------------------------------------------------- */
+
+/** The rotation by angle (radians) right-handed about axis (normalised here; a zero
+ *  axis gives the identity): R = exp(-angle/2 u I3) = cos(angle/2) - sin(angle/2) u I3
+ *  (W-L §2.1; u I3 = ux e23 - uy e13 + uz e12). */
+ga_rotor ga_rotor_rotation(ga_vec3 axis, double angle);
+
+/** The translation by a: T_a = 1 + n a / 2 (W-L §2.2). */
+ga_rotor ga_rotor_translation(ga_vec3 a);
+
+/** The twist of W-L Definition 4, tau(psi, P, a) = [cos(psi/2) + sin(psi/2) P][1 + n a/2]:
+ *  translate by a, then rotate by exp(psi P / 2). P is the e_ij part of plane,
+ *  normalised here to P^2 = -1 (a zero plane gives T_a); the n part of plane
+ *  is ignored. exp(psi P/2) is the right-handed rotation by psi about u = P I3
+ *  (so P = e12 turns e2 towards e1). The paper asks for a . P = 0 (a along the
+ *  axis); any a is accepted and the formula applied as written. */
+ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a);
+
+/** The generator B(xi) = -(w I3 + v n)/2 of a twist (CONTRACT.md). */
+ga_generator ga_generator_from_twist(ga_twist xi);
+
+/** The twist of a generator: the inverse of ga_generator_from_twist. */
+ga_twist ga_twist_from_generator(ga_generator b);
+
+/* ---- exp and log ------------------------------------------------------- */
+
+/** exp(B), closed form (W-L Thm 3 / eq. 2), one sin/cos pair, exact for every B
+ *  (pure translations and small angles included; a series for the coefficient
+ *  (cos phi - sinc phi)/phi^2 when phi = |beta| < 0.1). Any angle is accepted
+ *  (no reduction is needed). NaN in, NaN out. */
+ga_rotor ga_rotor_exp(ga_generator b);
+
+/** The principal logarithm l(R) (W-L Thm 9, made robust): the generator of the
+ *  shortest motion, rotation angle in [0, pi] (R is replaced by -R when its
+ *  scalar part is negative; at exactly pi either axis sign is returned). The
+ *  half angle is atan2(|<q>_2|, <q>_0), the parallel translation
+ *  c.u = cos(phi)(p.u) + sin(phi) p123 and the perpendicular one
+ *  p_perp / sinc(phi), so no branch or series is needed: exact at 0, near and
+ *  at pi, and for pure translations. A rotor that has drifted from the group
+ *  by at most GA_ROTOR_DRIFT_MAX is projected first; farther is GA_ENOTRIGID;
+ *  NaN/Inf is GA_ENOTFINITE. exp(l(R)) = +-R. */
+int ga_rotor_log(ga_rotor r, ga_generator *out);
+
+/** The literal logarithm: exp(l(R)) = R exactly, no sign flip, rotation angle in
+ *  [0, 2 pi]. At exactly q = -1 (a turn of 2 pi) the axis is taken along the
+ *  translation (or e3 if there is none); near 2 pi the perpendicular
+ *  translation is ill-conditioned (divided by sinc(phi) -> 0). Statuses as ga_rotor_log. */
+int ga_rotor_log_literal(ga_rotor r, ga_generator *out);
+
+/* ---- screws (Chasles; W-L §4.1) ------------------------------------------- */
+
+/** The screw of r (through its principal log; see ga_screw). GA_ENOTFINITE,
+ *  GA_ENOTRIGID as ga_rotor_log; GA_EDOMAIN if the axis point overflows (a
+ *  rotation of ~1e-300 rad under a finite translation). */
+int ga_screw_from_rotor(ga_rotor r, ga_screw *out);
+
+/** The rotor of a screw: rotate by angle about the axis through point, translating
+ *  by shift along it (pitch is not used; shift is). The axis is normalised; for
+ *  angle 0 it is the translation by shift * axis. */
+ga_rotor ga_rotor_from_screw(ga_screw s);
+
+/* ---- the bridge ----------------------------------------------------------- */
+
+/** The 4x4 homogeneous matrix of r (row-major, column vectors): [Rot(q), t; 0 0 0 1]. */
+ga_mat4 ga_rotor_to_mat4(ga_rotor r);
+
+/** The rotor of a rigid-motion matrix (Shepperd's method: the quaternion from the
+ *  largest of trace, m00, m11, m22, robust at half turns), with the sign chosen
+ *  so that the scalar part is >= 0. GA_ENOTFINITE on NaN/Inf; GA_ENOTRIGID if the
+ *  3x3 block is not orthonormal to 1e-9 (max |M^T M - 1|), has det <= 0, or the
+ *  last row is not 0 0 0 1 to 1e-9. */
+int ga_rotor_from_mat4(ga_mat4 m, ga_rotor *out);
+
+/** The rotation quaternion of r; the translation t = -2 <P ~q>_1 is written to
+ *  *translation unless it is NULL. */
+ga_quat ga_rotor_quat(ga_rotor r, ga_vec3 *translation);
+
+/** The rotor "rotate by the unit quaternion q, then translate by t": T_t q.
+ *  q is used as given (normalise it first if it may not be unit). */
+ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t);
+
+/** The unit dual quaternion of r (real = r, dual = t r / 2). The map is an algebra
+ *  isomorphism: real <-> q, dual <-> P with P = -(dual.x, dual.y, dual.z) - dual.w e123. */
+ga_dualquat ga_rotor_to_dualquat(ga_rotor r);
+
+/** The rotor of a unit dual quaternion (the inverse of ga_rotor_to_dualquat). */
+ga_rotor ga_rotor_from_dualquat(ga_dualquat d);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,312 @@
+/* garotor/group.c: the three implementations of the group interface (group.h).
+ *
+ *   ga_group_cga     ga_rotor, Wareham-Lasenby's closed forms (rotor.h); the
+ *                    algebra element is a twist, carried to the generator
+ *                    B(xi) = -(w I3 + v n)/2 and back (CONTRACT.md).
+ *   ga_group_se3     ga_mat4 rigid motions, Eberly's closed forms (mat4.h).
+ *   ga_group_affine  ga_mat4 homogeneous matrices with det > 0, the general
+ *                    expm/logm (mat4.h); algebra = top three rows of a 4x4
+ *                    whose last row is zero.
+ *
+ * cga and se3 share the twist coordinates, so they share dexp (the closed-form
+ * right Jacobian of SE(3)); affine computes dexp by its series.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "group.h"
+#include "mat4.h"
+#include "rotor.h"
+
+/* ---- twist helpers ------------------------------------------------------ */
+
+static ga_twist twist_of(const double *x)
+{
+    ga_twist t = { { x[0], x[1], x[2] }, { x[3], x[4], x[5] } };
+    return t;
+}
+
+static void twist_put(ga_twist t, double *x)
+{
+    x[0] = t.w.x; x[1] = t.w.y; x[2] = t.w.z;
+    x[3] = t.v.x; x[4] = t.v.y; x[5] = t.v.z;
+}
+
+static ga_vec3 v3(double x, double y, double z) { ga_vec3 r = { x, y, z }; return r; }
+static ga_vec3 cross(ga_vec3 a, ga_vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static ga_vec3 axpy(double s, ga_vec3 a, ga_vec3 b) /* s a + b */
+{
+    return v3(s * a.x + b.x, s * a.y + b.y, s * a.z + b.z);
+}
+
+/* sum_{k=0}^{11} (-1)^k m_k th^2k/(2k+d)!, m_k = k+1 if weighted else 1: the
+ * Taylor series of the Jacobian coefficients below, used for th < 1 where the
+ * closed forms cancel (the next term is below 1e-23 there). */
+static double jac_series(double t2, int d, int weighted)
+{
+    double term = 1.0, s = 0.0;
+    for (int j = 2; j <= d; ++j) term /= j;
+    for (int k = 0; k < 12; ++k) {
+        s += (weighted ? k + 1 : 1) * term;
+        term *= -t2 / ((2.0 * k + d + 1) * (2.0 * k + d + 2));
+    }
+    return s;
+}
+
+/* The right Jacobian of SE(3) in twist coordinates (w, v): J_r(xi) = J_l(-xi),
+ * with J_l of Barfoot & Furgale (2014, eqs. 100-102), here in (w, v) order:
+ *   J_r(xi) (w', v') = ( Jr(w) w',  Q w' + Jr(w) v' ),
+ *   Jr(w) = I - ((1 - cos th)/th^2) W + ((th - sin th)/th^3) W^2,
+ *   Q = -V/2 + a (WV + VW - WVW) - b (WWV + VWW - 3 WVW) + c (WVWW + WWVW),
+ * W = [w]x, V = [v]x, th = |w|, a = (th - sin th)/th^3,
+ * b = (th^2 + 2 cos th - 2)/(2 th^4), c = (2 th - 3 sin th + th cos th)/(2 th^5).
+ * Every matrix is applied as a chain of cross products. Tested against finite
+ * differences of exp and against the affine series (tests/test_interp.c). */
+static void se3_dexp(const double *x, const double *y, double *out)
+{
+    ga_vec3 w = v3(x[0], x[1], x[2]), v = v3(x[3], x[4], x[5]);
+    ga_vec3 dw = v3(y[0], y[1], y[2]), dv = v3(y[3], y[4], y[5]);
+    double t2 = w.x * w.x + w.y * w.y + w.z * w.z, th = sqrt(t2);
+    double h = 0.5 * th, sh = h > 0 ? sin(h) / h : 1.0; /* sinc(th/2) */
+    double a1 = 0.5 * sh * sh;                          /* (1 - cos th)/th^2 */
+    double a, b, c;
+    if (th < 1.0) {
+        a = jac_series(t2, 3, 0); b = jac_series(t2, 4, 0); c = jac_series(t2, 5, 1);
+    } else {
+        double s = sin(th), co = cos(th);
+        a = (th - s) / (t2 * th);
+        b = (t2 + 2.0 * co - 2.0) / (2.0 * t2 * t2);
+        c = (2.0 * th - 3.0 * s + th * co) / (2.0 * t2 * t2 * th);
+    }
+    /* Jr(w) u = u - a1 w x u + a w x (w x u) */
+    ga_vec3 wdw = cross(w, dw), wwdw = cross(w, wdw);
+    ga_vec3 jw = axpy(a, wwdw, axpy(-a1, wdw, dw));
+    ga_vec3 wdv = cross(w, dv), wwdv = cross(w, wdv);
+    ga_vec3 jv = axpy(a, wwdv, axpy(-a1, wdv, dv));
+    /* Q dw */
+    ga_vec3 Vu = cross(v, dw);                  /* V u */
+    ga_vec3 WVu = cross(w, Vu);                 /* W V u */
+    ga_vec3 VWu = cross(v, wdw);                /* V W u */
+    ga_vec3 WVWu = cross(w, VWu);               /* W V W u */
+    ga_vec3 WWVu = cross(w, WVu);               /* W W V u */
+    ga_vec3 VWWu = cross(v, wwdw);              /* V W W u */
+    ga_vec3 WVWWu = cross(w, cross(v, wwdw));   /* W V W W u */
+    ga_vec3 WWVWu = cross(w, WVWu);             /* W W V W u */
+    ga_vec3 q = axpy(-0.5, Vu, v3(0, 0, 0));
+    q = axpy(a, WVu, q); q = axpy(a, VWu, q); q = axpy(-a, WVWu, q);
+    q = axpy(-b, WWVu, q); q = axpy(-b, VWWu, q); q = axpy(3.0 * b, WVWu, q);
+    q = axpy(c, WVWWu, q); q = axpy(c, WWVWu, q);
+    out[0] = jw.x; out[1] = jw.y; out[2] = jw.z;
+    out[3] = q.x + jv.x; out[4] = q.y + jv.y; out[5] = q.z + jv.z;
+}
+
+/* ---- cga: rotors ---------------------------------------------------------- */
+
+static void cga_identity(void *out) { *(ga_rotor *)out = ga_rotor_identity(); }
+static void cga_compose(const void *a, const void *b, void *out)
+{
+    *(ga_rotor *)out = ga_rotor_mul(*(const ga_rotor *)a, *(const ga_rotor *)b);
+}
+static int cga_inverse(const void *a, void *out)
+{
+    *(ga_rotor *)out = ga_rotor_reverse(*(const ga_rotor *)a);
+    return GA_OK;
+}
+static int cga_exp(const double *x, void *out)
+{
+    *(ga_rotor *)out = ga_rotor_exp(ga_generator_from_twist(twist_of(x)));
+    return GA_OK;
+}
+static int cga_log(const void *g, double *x)
+{
+    ga_generator b;
+    int st = ga_rotor_log(*(const ga_rotor *)g, &b);
+    if (st == GA_OK) twist_put(ga_twist_from_generator(b), x);
+    return st;
+}
+/* Ad_R B = R B ~R, computed in the compact 8-component form, which is closed
+ * under the product for any q, P (rotor.h); B sits in its bivector slots. */
+static void cga_adjoint(const void *g, const double *x, double *out)
+{
+    ga_rotor r = *(const ga_rotor *)g;
+    ga_generator b = ga_generator_from_twist(twist_of(x));
+    ga_rotor bb = { 0.0, b.e12, b.e13, b.e23, b.e1n, b.e2n, b.e3n, 0.0 };
+    ga_rotor s = ga_rotor_mul(ga_rotor_mul(r, bb), ga_rotor_reverse(r));
+    ga_generator o = { s.e12, s.e13, s.e23, s.e1n, s.e2n, s.e3n };
+    twist_put(ga_twist_from_generator(o), out);
+}
+static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (ga_rotor *)out); }
+static ga_mat4 cga_to_mat4(const void *g) { return ga_rotor_to_mat4(*(const ga_rotor *)g); }
+
+const ga_group ga_group_cga = {
+    "cga", sizeof(ga_rotor), 6,
+    cga_identity, cga_compose, cga_inverse, cga_exp, cga_log, cga_adjoint,
+    cga_from_mat4, cga_to_mat4, se3_dexp
+};
+
+/* ---- se3: rigid-motion matrices ----------------------------------------- */
+
+static void m4_identity(void *out) { *(ga_mat4 *)out = ga_mat4_identity(); }
+static void m4_compose(const void *a, const void *b, void *out)
+{
+    *(ga_mat4 *)out = ga_mat4_mul(*(const ga_mat4 *)a, *(const ga_mat4 *)b);
+}
+static int se3_inverse(const void *a, void *out)
+{
+    *(ga_mat4 *)out = ga_se3_inverse(*(const ga_mat4 *)a);
+    return GA_OK;
+}
+static int se3_exp(const double *x, void *out)
+{
+    *(ga_mat4 *)out = ga_se3_exp(twist_of(x));
+    return GA_OK;
+}
+static int se3_log(const void *g, double *x)
+{
+    ga_twist t;
+    int st = ga_se3_log(*(const ga_mat4 *)g, &t);
+    if (st == GA_OK) twist_put(t, x);
+    return st;
+}
+static void se3_adjoint(const void *g, const double *x, double *out)
+{
+    twist_put(ga_se3_adjoint(*(const ga_mat4 *)g, twist_of(x)), out);
+}
+static int se3_from_mat4(ga_mat4 m, void *out)
+{
+    int st = ga_se3_check(m, GA_SE3_TOL);
+    if (st == GA_OK) *(ga_mat4 *)out = m;
+    return st;
+}
+static ga_mat4 m4_to_mat4(const void *g) { return *(const ga_mat4 *)g; }
+
+const ga_group ga_group_se3 = {
+    "matrix", sizeof(ga_mat4), 6,
+    m4_identity, m4_compose, se3_inverse, se3_exp, se3_log, se3_adjoint,
+    se3_from_mat4, m4_to_mat4, se3_dexp
+};
+
+/* ---- affine: homogeneous matrices, general expm/logm ------------------------ */
+
+/* Algebra element (12 doubles, rows 0..2) <-> 4x4 with a zero last row. */
+static ga_mat4 aff_hat(const double *x)
+{
+    ga_mat4 a;
+    memcpy(a.m, x, 12 * sizeof(double));
+    a.m[12] = a.m[13] = a.m[14] = a.m[15] = 0.0;
+    return a;
+}
+static void aff_vee(ga_mat4 a, double *x) { memcpy(x, a.m, 12 * sizeof(double)); }
+
+static int aff_inverse(const void *a, void *out)
+{
+    ga_mat4 r;
+    int st = ga_mat4_inverse(*(const ga_mat4 *)a, &r);
+    if (st != GA_OK) return st;
+    r.m[12] = r.m[13] = r.m[14] = 0.0; r.m[15] = 1.0; /* exactly homogeneous */
+    *(ga_mat4 *)out = r;
+    return GA_OK;
+}
+static int aff_exp(const double *x, void *out)
+{
+    ga_mat4 r;
+    int st = ga_mat4_expm(aff_hat(x), &r);
+    if (st != GA_OK) return st;
+    r.m[12] = r.m[13] = r.m[14] = 0.0; r.m[15] = 1.0; /* exp of a zero last row */
+    *(ga_mat4 *)out = r;
+    return GA_OK;
+}
+static int aff_log(const void *g, double *x)
+{
+    ga_mat4 l;
+    int st = ga_mat4_logm(*(const ga_mat4 *)g, &l);
+    if (st == GA_OK) aff_vee(l, x);
+    return st;
+}
+static void aff_adjoint(const void *g, const double *x, double *out)
+{
+    ga_mat4 gi, m = *(const ga_mat4 *)g;
+    if (aff_inverse(&m, &gi) != GA_OK) {
+        for (int i = 0; i < 12; ++i) out[i] = NAN;
+        return;
+    }
+    aff_vee(ga_mat4_mul(ga_mat4_mul(m, aff_hat(x)), gi), out);
+}
+static int aff_from_mat4(ga_mat4 m, void *out)
+{
+    for (int i = 0; i < 16; ++i)
+        if (!isfinite(m.m[i])) return GA_ENOTFINITE;
+    if (fabs(m.m[12]) > 1e-12 || fabs(m.m[13]) > 1e-12 || fabs(m.m[14]) > 1e-12
+        || fabs(m.m[15] - 1.0) > 1e-12)
+        return GA_EDOMAIN;
+    double det = m.m[0] * (m.m[5] * m.m[10] - m.m[6] * m.m[9])
+               - m.m[1] * (m.m[4] * m.m[10] - m.m[6] * m.m[8])
+               + m.m[2] * (m.m[4] * m.m[9] - m.m[5] * m.m[8]);
+    if (!(det > 0.0)) return det == 0.0 ? GA_ESINGULAR : GA_EDOMAIN;
+    m.m[12] = m.m[13] = m.m[14] = 0.0; m.m[15] = 1.0;
+    *(ga_mat4 *)out = m;
+    return GA_OK;
+}
+
+static ga_mat4 m4_lin(double s, ga_mat4 a, double t, ga_mat4 b) /* s a + t b */
+{
+    for (int i = 0; i < 16; ++i) a.m[i] = s * a.m[i] + t * b.m[i];
+    return a;
+}
+
+/* J_r(X) Y = sum_k (-ad_X)^k Y/(k+1)! for any 4x4 X: the series at X/2^s
+ * (||X/2^s||_1 <= 1/2, 20 terms, truncation below 1e-20), then s doublings by
+ *   J_r(2X)(2Y) = Ad_{exp(-X)} J_r(X) Y + J_r(X) Y,
+ * which is the body velocity of exp(X)exp(X) (product rule). exp(+-X/2^s) are
+ * summed from their Taylor series (18 terms) and squared along. */
+static void aff_dexp(const double *x, const double *y, double *out)
+{
+    ga_mat4 X = aff_hat(x), Y = aff_hat(y);
+    double nx = ga_mat4_norm1(X);
+    int s = 0;
+    while (nx > 0.5 && s < 1100) { nx *= 0.5; ++s; }
+    double sc = ldexp(1.0, -s);
+    X = m4_lin(sc, X, 0.0, X);
+    Y = m4_lin(sc, Y, 0.0, Y);
+    /* b = sum (-1)^k ad^k Y/(k+1)!, term_k = ad^k Y */
+    ga_mat4 term = Y, b = Y;
+    double f = 1.0;
+    for (int k = 1; k <= 20; ++k) {
+        term = m4_lin(1.0, ga_mat4_mul(X, term), -1.0, ga_mat4_mul(term, X));
+        f *= (double)(k + 1);
+        b = m4_lin(1.0, b, (k % 2 ? -1.0 : 1.0) / f, term);
+    }
+    ga_mat4 E = ga_mat4_identity(), F = E, pe = E, pf = E;
+    double g = 1.0;
+    for (int k = 1; k <= 18; ++k) {
+        g *= (double)k;
+        pe = ga_mat4_mul(pe, X);
+        pf = ga_mat4_mul(pf, m4_lin(-1.0, X, 0.0, X));
+        E = m4_lin(1.0, E, 1.0 / g, pe);
+        F = m4_lin(1.0, F, 1.0 / g, pf);
+    }
+    for (int i = 0; i < s; ++i) {
+        b = m4_lin(1.0, ga_mat4_mul(ga_mat4_mul(F, b), E), 1.0, b);
+        E = ga_mat4_mul(E, E);
+        F = ga_mat4_mul(F, F);
+    }
+    aff_vee(b, out);
+}
+
+const ga_group ga_group_affine = {
+    "affine", sizeof(ga_mat4), 12,
+    m4_identity, m4_compose, aff_inverse, aff_exp, aff_log, aff_adjoint,
+    aff_from_mat4, m4_to_mat4, aff_dexp
+};
+
+const ga_group *ga_group_by_name(const char *name)
+{
+    if (!name) return NULL;
+    if (strcmp(name, "cga") == 0) return &ga_group_cga;
+    if (strcmp(name, "matrix") == 0) return &ga_group_se3;
+    if (strcmp(name, "affine") == 0) return &ga_group_affine;
+    return NULL;
+}

@@ -1,0 +1,698 @@
+/* garotor/path.c: the schemes and evaluators of path.h, written once against
+ * the group interface (group.h). See path.h for the mathematics and the
+ * paper equations; each function below cites the ones it implements.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "path.h"
+
+#define PI 3.14159265358979323846
+#define MAXD GA_GROUP_MAX_DIM
+#define MAXE GA_GROUP_MAX_ELEM
+
+/* ---- names ---------------------------------------------------------------- */
+
+static const char *const scheme_names[] = {
+    "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3"
+};
+static const char *const eval_names[] = { "direct", "euler", "exact" };
+
+const char *ga_scheme_name(ga_scheme s)
+{
+    return (unsigned)s < 6 ? scheme_names[s] : "?";
+}
+
+int ga_scheme_by_name(const char *name, ga_scheme *out)
+{
+    for (int i = 0; name && i < 6; ++i)
+        if (strcmp(name, scheme_names[i]) == 0) { *out = (ga_scheme)i; return GA_OK; }
+    return GA_EARG;
+}
+
+const char *ga_eval_name(ga_eval e)
+{
+    return (unsigned)e < 3 ? eval_names[e] : "?";
+}
+
+int ga_eval_by_name(const char *name, ga_eval *out)
+{
+    for (int i = 0; name && i < 3; ++i)
+        if (strcmp(name, eval_names[i]) == 0) { *out = (ga_eval)i; return GA_OK; }
+    return GA_EARG;
+}
+
+int ga_scheme_min_keys(ga_scheme s)
+{
+    return (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2;
+}
+
+/* ---- small helpers ---------------------------------------------------------- */
+
+/* The exponent polynomials p_j(u) = a u + b u^2 + c u^3 of the Li-Hao factors
+ * exp(p_j(u) X_j): u (eq. 9), u^2 (eq. 14), u^3 - u^2 (eq. 21). Factor j has
+ * degree j + 1. */
+static const double fac_poly[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 1 } };
+
+static int nfac(ga_scheme s)
+{
+    return s == GA_SCHEME_SCREW ? 1 : s == GA_SCHEME_LIHAO2 ? 2 : s == GA_SCHEME_LIHAO3 ? 3 : 0;
+}
+
+/* The order-m forward difference of p with step d at u (m = 0: p(u) itself),
+ * expanded so that no difference of nearby values is formed. */
+static double poly_diff(const double *c, int m, double u, double d)
+{
+    switch (m) {
+    case 0: return u * (c[0] + u * (c[1] + u * c[2]));
+    case 1: return c[0] * d + c[1] * d * (2 * u + d) + c[2] * d * (3 * u * u + 3 * u * d + d * d);
+    case 2: return c[1] * 2 * d * d + c[2] * 6 * d * d * (u + d);
+    default: return c[2] * 6 * d * d * d;
+    }
+}
+
+static double poly_deriv(const double *c, double u)
+{
+    return c[0] + u * (2 * c[1] + 3 * u * c[2]);
+}
+
+static double *key_of(const ga_path *p, int i) { return p->key + (size_t)i * p->key_stride; }
+static double seg_len(const ga_path *p, int i) { return p->t[i + 1] - p->t[i]; }
+
+static void copy_elem(const ga_group *g, void *dst, const void *src)
+{
+    memcpy(dst, src, g->elem_size);
+}
+
+static void lin(int d, double *out, double s, const double *a, double r, const double *b)
+{
+    for (int k = 0; k < d; ++k) out[k] = s * a[k] + r * b[k];
+}
+
+static int allfinite(const double *x, size_t n)
+{
+    for (size_t i = 0; i < n; ++i)
+        if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+/* ---- twist branches (cga and se3: dim 6) ------------------------------------ */
+
+static double twist_angle(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+
+/* The other branch of a twist of angle th > 0: angle th - 2 pi about the same
+ * axis, w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th. Same motion:
+ * Eberly's V of eq. 20 acts as 1 along w and as i(1 - e^{i th})/th across it,
+ * so V(w')^-1 V(w) = k across, 1 along. */
+static void twist_other_branch(double *x)
+{
+    double th = twist_angle(x);
+    if (th == 0.0) return;
+    double k = (th - 2.0 * PI) / th;
+    double vp = (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th);
+    for (int i = 0; i < 3; ++i) {
+        double par = vp * x[i];
+        x[3 + i] = k * (x[3 + i] - par) + par;
+        x[i] *= k;
+    }
+}
+
+/* The rotation quaternion (cos(th/2), sin(th/2) w/th) of a twist. */
+static void twist_quat(const double *x, double q[4])
+{
+    double th = twist_angle(x), h = 0.5 * th;
+    double f = h > 0 ? 0.5 * sin(h) / h : 0.5; /* sin(th/2)/th */
+    q[0] = cos(h);
+    q[1] = f * x[0]; q[2] = f * x[1]; q[3] = f * x[2];
+}
+
+/* Deterministic axis at a half turn (path.h): within GA_PATH_HALF_TURN_BAND of
+ * pi, the first axis component larger than 0.3 in magnitude is made positive. */
+static void twist_canon_half_turn(double *x)
+{
+    double th = twist_angle(x);
+    if (!(th >= PI - GA_PATH_HALF_TURN_BAND)) return;
+    for (int i = 0; i < 3; ++i)
+        if (fabs(x[i]) > 0.3 * th) {
+            if (x[i] < 0) twist_other_branch(x);
+            return;
+        }
+}
+
+/* The principal log, made deterministic at half turns on cga/se3. */
+static int plog(const ga_group *g, const void *a, double *x)
+{
+    int st = g->log(a, x);
+    if (st == GA_OK && g->dim == 6) twist_canon_half_turn(x);
+    return st;
+}
+
+/* x = plog(a^-1 b) */
+static int rel_log(const ga_group *g, const void *a, const void *b, double *x, double *rel)
+{
+    double ai[MAXE];
+    int st = g->inverse(a, ai);
+    if (st != GA_OK) return st;
+    g->compose(ai, b, rel);
+    return plog(g, rel, x);
+}
+
+/* ---- workspace ---------------------------------------------------------------- */
+
+static size_t scheme_doubles(ga_scheme s, int n, int d)
+{
+    size_t N = (size_t)n, D = (size_t)d, S = N - 1;
+    switch (s) {
+    case GA_SCHEME_SCREW: return S * D;
+    case GA_SCHEME_LIHAO2: return 2 * S * D + N * D;
+    case GA_SCHEME_LIHAO3: return 3 * S * D + N * D;
+    case GA_SCHEME_BIVECTOR: return N * D;
+    case GA_SCHEME_QUADRATIC:
+    case GA_SCHEME_SMOOTH: return N * D + S * D + S;
+    }
+    return 0;
+}
+
+size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, int n)
+{
+    if (!g || n < 1 || (unsigned)s > GA_SCHEME_LIHAO3) return 0;
+    size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
+    return sizeof(double) * ((size_t)n + (size_t)n * stride + scheme_doubles(s, n, g->dim));
+}
+
+/* Check the arguments and lay the arrays out in the workspace. */
+static int layout(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
+                  const void *keys, void *work, size_t bytes)
+{
+    if (!p || !g || !times || !keys || !work || (unsigned)s > GA_SCHEME_LIHAO3)
+        return GA_EARG;
+    if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)) return GA_EARG;
+    if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
+        return GA_EARG;
+    if (!allfinite(times, (size_t)n)) return GA_ENOTFINITE;
+    for (int i = 0; i + 1 < n; ++i)
+        if (!(times[i] < times[i + 1])) return GA_EARG;
+    int d = g->dim;
+    double *w = work;
+    memset(p, 0, sizeof *p);
+    p->group = g; p->scheme = s; p->n = n;
+    p->key_stride = (int)((g->elem_size + sizeof(double) - 1) / sizeof(double));
+    p->t = w; w += n;
+    p->key = w; w += (size_t)n * p->key_stride;
+    memcpy(p->t, times, (size_t)n * sizeof(double));
+    switch (s) {
+    case GA_SCHEME_SCREW: p->coef = w; break;
+    case GA_SCHEME_LIHAO2: p->coef = w; p->vel = w + 2 * (size_t)(n - 1) * d; break;
+    case GA_SCHEME_LIHAO3: p->coef = w; p->vel = w + 3 * (size_t)(n - 1) * d; break;
+    case GA_SCHEME_BIVECTOR: p->gen = w; break;
+    case GA_SCHEME_QUADRATIC:
+    case GA_SCHEME_SMOOTH: p->gen = w; p->slope = w + (size_t)n * d; break;
+    }
+    return GA_OK;
+}
+
+/* ---- building the schemes ------------------------------------------------------ */
+
+/* SCREW (Li-Hao eq. 10), LIHAO2 (eqs. 14-17), LIHAO3 (eqs. 21-28), all in u
+ * units on each segment: B_i = h_i V_i where V_i is a velocity per unit t. */
+static int build_lihao(ga_path *p, const double *vel)
+{
+    const ga_group *g = p->group;
+    int n = p->n, d = g->dim, nf = nfac(p->scheme);
+    double rel[MAXE], reli[MAXE], e[MAXE], m[MAXE], x[MAXD], ad[MAXD];
+    int st;
+    if (p->scheme == GA_SCHEME_SCREW) {
+        for (int i = 0; i + 1 < n; ++i)
+            if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + (size_t)i * d, rel)))
+                return st;
+        return GA_OK;
+    }
+    if (p->scheme == GA_SCHEME_LIHAO3) {
+        if (vel) {
+            if (!allfinite(vel, (size_t)n * d)) return GA_ENOTFINITE;
+            memcpy(p->vel, vel, (size_t)n * d * sizeof(double));
+        } else {
+            /* default rule (path.h): s_i = plog(A_i^-1 A_{i+1})/h_i, parked in D_i */
+            for (int i = 0; i + 1 < n; ++i) {
+                double *s = p->coef + ((size_t)i * 3 + 2) * d;
+                if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), s, rel))) return st;
+                lin(d, s, 1.0 / seg_len(p, i), s, 0.0, s);
+            }
+            for (int i = 0; i < n; ++i) {
+                double *v = p->vel + (size_t)i * d;
+                const double *sl = i > 0 ? p->coef + ((size_t)(i - 1) * 3 + 2) * d : NULL;
+                const double *sr = i + 1 < n ? p->coef + ((size_t)i * 3 + 2) * d : NULL;
+                if (!sl) memcpy(v, sr, d * sizeof(double));
+                else if (!sr) memcpy(v, sl, d * sizeof(double));
+                else {
+                    double hl = seg_len(p, i - 1), hr = seg_len(p, i);
+                    lin(d, v, hr / (hl + hr), sl, hl / (hl + hr), sr);
+                }
+            }
+        }
+    } else { /* LIHAO2: the first key's velocity */
+        if (vel) {
+            if (!allfinite(vel, (size_t)d)) return GA_ENOTFINITE;
+            memcpy(p->vel, vel, d * sizeof(double));
+        } else {
+            if ((st = rel_log(g, key_of(p, 0), key_of(p, 1), p->vel, rel))) return st;
+            lin(d, p->vel, 1.0 / seg_len(p, 0), p->vel, 0.0, p->vel);
+        }
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        double h = seg_len(p, i);
+        double *B = p->coef + (size_t)i * nf * d, *C = B + d, *D = C + d;
+        const double *vi = p->vel + (size_t)i * d;
+        /* eq. 26: B_i = velocity at the key, per unit u */
+        lin(d, B, h, vi, 0.0, vi);
+        /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
+        double ai[MAXE];
+        if ((st = g->inverse(key_of(p, i), ai))) return st;
+        g->compose(ai, key_of(p, i + 1), rel);
+        lin(d, x, -1.0, B, 0.0, B);
+        if ((st = g->exp(x, e))) return st;
+        g->compose(e, rel, m);
+        if ((st = plog(g, m, C))) return st;
+        /* body velocity of exp(uB)exp(u^2 C) at u = 1: Ad_{rel^-1} B + 2 C (eqs. 15, 17) */
+        if ((st = g->inverse(rel, reli))) return st;
+        g->adjoint(reli, B, ad);
+        if (p->scheme == GA_SCHEME_LIHAO2) {
+            /* eq. 17, per unit t: the next key's velocity */
+            double *vn = p->vel + (size_t)(i + 1) * d;
+            lin(d, vn, 1.0 / h, ad, 2.0 / h, C);
+        } else {
+            /* eq. 28: D_i = h V_{i+1} - Ad_{rel^-1} B_i - 2 C_i */
+            const double *vn = p->vel + (size_t)(i + 1) * d;
+            for (int k = 0; k < d; ++k) D[k] = h * vn[k] - ad[k] - 2.0 * C[k];
+        }
+    }
+    return GA_OK;
+}
+
+/* Key generators with the branch rule of path.h (W-L §3; the rotor rule
+ * <R_i ~R_{i-1}>_0 >= 0 in twist coordinates). */
+static int build_generators(ga_path *p)
+{
+    const ga_group *g = p->group;
+    int d = g->dim, st;
+    for (int i = 0; i < p->n; ++i) {
+        double *x = p->gen + (size_t)i * d;
+        if ((st = plog(g, key_of(p, i), x))) return st;
+        if (d == 6 && i > 0) {
+            double q0[4], q1[4];
+            twist_quat(x - d, q0);
+            twist_quat(x, q1);
+            /* a relative half turn (dot = cos(relative angle/2) ~ 0) is a tie
+             * that rounding would break at random: inside the half-turn band
+             * the principal twist is kept */
+            if (q0[0] * q1[0] + q0[1] * q1[1] + q0[2] * q1[2] + q0[3] * q1[3]
+                < -0.5 * GA_PATH_HALF_TURN_BAND)
+                twist_other_branch(x);
+        }
+    }
+    return GA_OK;
+}
+
+/* Breakpoints of the SMOOTH spline: xi_0 = t_0, xi_k = (t_k + t_{k+1})/2 for
+ * 1 <= k <= n-3, xi_{n-2} = t_{n-1}. */
+static double brk(const ga_path *p, int k)
+{
+    if (k == 0) return p->t[0];
+    if (k == p->n - 2) return p->t[p->n - 1];
+    return 0.5 * (p->t[k] + p->t[k + 1]);
+}
+
+/* The slopes d_k = X'(xi_k) of the SMOOTH spline (path.h). X' is linear on
+ * each piece [xi_k, xi_{k+1}], and for each segment j the integral of X' over
+ * [t_j, t_{j+1}] (trapezoids on the at most two pieces it meets) must equal
+ * X_{j+1} - X_j. Row j, divided by h_j/2 (alpha, beta, gamma, delta: where
+ * t_j, t_{j+1} fall in their pieces, each in (0, 1)):
+ *   j = 0:        (2 - g) d_0 + g d_1                         = 2 dX_0/h_0
+ *   0 < j < n-2:  (1-a)/2 d_{j-1} + (3+a-b)/2 d_j + b/2 d_{j+1} = 2 dX_j/h_j
+ *   j = n-2:      (1 - e) d_{n-3} + (1 + e) d_{n-2}           = 2 dX_j/h_j
+ * Each row is strictly diagonally dominant, so the Thomas algorithm is stable. */
+static void build_smooth(ga_path *p)
+{
+    int n = p->n, d = p->group->dim, m = n - 1;
+    double *cp = p->slope + (size_t)m * d; /* scratch: the modified upper diagonal */
+    for (int j = 0; j < m; ++j) {
+        double h = seg_len(p, j), lo, di, up;
+        if (j == 0) {
+            double gam = h / (brk(p, 1) - brk(p, 0));
+            lo = 0.0; di = 2.0 - gam; up = gam;
+        } else if (j == n - 2) {
+            double del = (p->t[n - 2] - brk(p, n - 3)) / (brk(p, n - 2) - brk(p, n - 3));
+            lo = 1.0 - del; di = 1.0 + del; up = 0.0;
+        } else {
+            double al = (p->t[j] - brk(p, j - 1)) / (brk(p, j) - brk(p, j - 1));
+            double be = (p->t[j + 1] - brk(p, j)) / (brk(p, j + 1) - brk(p, j));
+            lo = 0.5 * (1.0 - al); di = 0.5 * (3.0 + al - be); up = 0.5 * be;
+        }
+        double *r = p->slope + (size_t)j * d;
+        const double *x0 = p->gen + (size_t)j * d, *x1 = x0 + d;
+        for (int k = 0; k < d; ++k) r[k] = 2.0 * (x1[k] - x0[k]) / h;
+        if (j > 0) {
+            di -= lo * cp[j - 1];
+            for (int k = 0; k < d; ++k) r[k] -= lo * r[k - d];
+        }
+        cp[j] = up / di;
+        for (int k = 0; k < d; ++k) r[k] /= di;
+    }
+    for (int j = m - 2; j >= 0; --j) {
+        double *r = p->slope + (size_t)j * d;
+        for (int k = 0; k < d; ++k) r[k] -= cp[j] * r[k + d];
+    }
+}
+
+static int build(ga_path *p, const double *vel)
+{
+    switch (p->scheme) {
+    case GA_SCHEME_SCREW:
+    case GA_SCHEME_LIHAO2:
+    case GA_SCHEME_LIHAO3: return build_lihao(p, vel);
+    case GA_SCHEME_BIVECTOR: return build_generators(p);
+    case GA_SCHEME_QUADRATIC:
+    case GA_SCHEME_SMOOTH: {
+        int st = build_generators(p);
+        if (st == GA_OK) build_smooth(p);
+        return st;
+    }
+    }
+    return GA_EARG;
+}
+
+int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
+                 const void *keys, const double *velocities, void *work, size_t work_bytes)
+{
+    int st = layout(p, g, s, n, times, keys, work, work_bytes);
+    if (st != GA_OK) return st;
+    for (int i = 0; i < n; ++i)
+        copy_elem(g, key_of(p, i), (const unsigned char *)keys + (size_t)i * g->elem_size);
+    return build(p, velocities);
+}
+
+int ga_path_init_mat4(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
+                      const ga_mat4 *keys, const double *velocities, void *work, size_t work_bytes)
+{
+    int st = layout(p, g, s, n, times, keys, work, work_bytes);
+    if (st != GA_OK) return st;
+    for (int i = 0; i < n; ++i)
+        if ((st = g->from_mat4(keys[i], key_of(p, i)))) return st;
+    return build(p, velocities);
+}
+
+/* ---- evaluation ---------------------------------------------------------------- */
+
+int ga_path_locate(const ga_path *p, double t, int *seg, double *u)
+{
+    int n = p->n;
+    if (!(t >= p->t[0] && t <= p->t[n - 1])) return GA_EARG; /* also NaN */
+    int lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (p->t[mid] <= t) lo = mid; else hi = mid - 1;
+    }
+    *seg = lo;
+    *u = (t - p->t[lo]) / seg_len(p, lo);
+    return GA_OK;
+}
+
+/* X(t) and X'(t) (per unit t) of the generator-space schemes on segment j. */
+static void gen_curve(const ga_path *p, int j, double u, double *x, double *xd)
+{
+    int d = p->group->dim, n = p->n;
+    double h = seg_len(p, j);
+    const double *x0 = p->gen + (size_t)j * d, *x1 = x0 + d;
+    if (p->scheme == GA_SCHEME_BIVECTOR) { /* W-L §3: linear in the generators */
+        lin(d, x, 1.0 - u, x0, u, x1);
+        lin(d, xd, 1.0 / h, x1, -1.0 / h, x0);
+        return;
+    }
+    /* SMOOTH / QUADRATIC: from the nearer key a of the segment, inside one
+     * piece k where X' is linear: X(t) = X_a + (t - t_a)(X'(t_a) + X'(t))/2. */
+    int left = u <= 0.5;
+    int k = j == 0 ? 0 : j == n - 2 ? n - 3 : left ? j - 1 : j;
+    int a = left ? j : j + 1;
+    double tau = left ? u * h : (u - 1.0) * h;
+    double xk = brk(p, k), L = brk(p, k + 1) - xk;
+    double fa = (p->t[a] - xk) / L, ft = (p->t[a] + tau - xk) / L;
+    const double *dk = p->slope + (size_t)k * d, *dk1 = dk + d, *xa = p->gen + (size_t)a * d;
+    for (int i = 0; i < d; ++i) {
+        double sa = dk[i] + (dk1[i] - dk[i]) * fa, st = dk[i] + (dk1[i] - dk[i]) * ft;
+        x[i] = xa[i] + tau * 0.5 * (sa + st);
+        xd[i] = st;
+    }
+}
+
+int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
+{
+    if (!p || !out || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_EARG;
+    const ga_group *g = p->group;
+    int d = g->dim, nf = nfac(p->scheme), st;
+    double x[MAXD], xd[MAXD];
+    if (nf == 0) { /* exp(X(t)) */
+        gen_curve(p, seg, u, x, xd);
+        return g->exp(x, out);
+    }
+    /* A_i exp(p_1(u) B) exp(p_2(u) C) exp(p_3(u) D) (Li-Hao eqs. 8, 14, 21) */
+    double acc[MAXE], e[MAXE], tmp[MAXE];
+    copy_elem(g, acc, key_of(p, seg));
+    const double *X = p->coef + (size_t)seg * nf * d;
+    for (int j = 0; j < nf; ++j, X += d) {
+        lin(d, x, poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
+        if ((st = g->exp(x, e))) return st;
+        g->compose(acc, e, tmp);
+        copy_elem(g, acc, tmp);
+    }
+    copy_elem(g, out, acc);
+    return GA_OK;
+}
+
+/* DIRECT at (seg, u): at a key time the key itself, not its rounding. */
+static int eval_direct(const ga_path *p, int seg, double u, void *out)
+{
+    if (u == 0.0 || u == 1.0) {
+        copy_elem(p->group, out, key_of(p, seg + (u == 1.0)));
+        return GA_OK;
+    }
+    return ga_path_eval_segment(p, seg, u, out);
+}
+
+int ga_path_eval(const ga_path *p, double t, void *out)
+{
+    int seg;
+    double u;
+    if (!p || !out) return GA_EARG;
+    int st = ga_path_locate(p, t, &seg, &u);
+    return st ? st : eval_direct(p, seg, u, out);
+}
+
+/* Body velocity per unit u on segment seg. */
+static int velocity_u(const ga_path *p, int seg, double u, double *v)
+{
+    const ga_group *g = p->group;
+    int d = g->dim, nf = nfac(p->scheme), st;
+    double x[MAXD], xd[MAXD], w[MAXD];
+    if (nf == 0) { /* J_r(X) X' (group.h dexp), X' per unit t, times h */
+        gen_curve(p, seg, u, x, xd);
+        g->dexp(x, xd, w);
+        lin(d, v, seg_len(p, seg), w, 0.0, w);
+        return GA_OK;
+    }
+    /* M = F_1 F_2 F_3, F_j = exp(p_j X_j): M^-1 M' = Ad_{F_3^-1}(Ad_{F_2^-1}(p_1' X_1)
+     * + p_2' X_2) + p_3' X_3 (product rule; Li-Hao eqs. 15, 25, 34) */
+    const double *X = p->coef + (size_t)seg * nf * d;
+    for (int j = 0; j < nf; ++j, X += d) {
+        if (j > 0) {
+            double fi[MAXE];
+            lin(d, x, -poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
+            if ((st = g->exp(x, fi))) return st;
+            g->adjoint(fi, v, w);
+        } else {
+            for (int k = 0; k < d; ++k) w[k] = 0.0;
+        }
+        lin(d, v, 1.0, w, poly_deriv(fac_poly[j], u), X);
+    }
+    return GA_OK;
+}
+
+int ga_path_velocity_segment(const ga_path *p, int seg, double u, double *v)
+{
+    if (!p || !v || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_EARG;
+    int st = velocity_u(p, seg, u, v);
+    if (st == GA_OK) lin(p->group->dim, v, 1.0 / seg_len(p, seg), v, 0.0, v);
+    return st;
+}
+
+int ga_path_velocity(const ga_path *p, double t, double *v)
+{
+    int seg;
+    double u;
+    if (!p || !v) return GA_EARG;
+    int st = ga_path_locate(p, t, &seg, &u);
+    return st ? st : ga_path_velocity_segment(p, seg, u, v);
+}
+
+/* ---- Euler (Li-Hao §5, group form) ---------------------------------------------- */
+
+/* Smallest Euler step accepted: at most 1e9 steps per segment. */
+#define EULER_MIN_STEP 1e-9
+
+/* One Euler sample at (seg, u): continue the running state (*cur, *grid, A)
+ * when it is on this segment at or below u, else restart at the key. */
+static int euler_sample(const ga_path *p, double h, int *cur, long *grid, double *A,
+                        int seg, double u, void *out)
+{
+    const ga_group *g = p->group;
+    int d = g->dim, st;
+    double v[MAXD], e[MAXE], tmp[MAXE];
+    if (*cur != seg || (double)*grid * h > u) {
+        copy_elem(g, A, key_of(p, seg));
+        *grid = 0;
+        *cur = seg;
+    }
+    /* eq. 32 in group form: A(u + h) = A(u) exp(h V(u)) */
+    while ((double)(*grid + 1) * h <= u) {
+        if ((st = velocity_u(p, seg, (double)*grid * h, v))) return st;
+        lin(d, v, h, v, 0.0, v);
+        if ((st = g->exp(v, e))) return st;
+        g->compose(A, e, tmp);
+        copy_elem(g, A, tmp);
+        ++*grid;
+    }
+    double r = u - (double)*grid * h;
+    if (r > 0.0) {
+        if ((st = velocity_u(p, seg, (double)*grid * h, v))) return st;
+        lin(d, v, r, v, 0.0, v);
+        if ((st = g->exp(v, e))) return st;
+        g->compose(A, e, out);
+    } else {
+        copy_elem(g, out, A);
+    }
+    return GA_OK;
+}
+
+/* ---- exact incremental stepping --------------------------------------------------- */
+
+/* Slots of factor j: j(j+3)/2 .. : G_0 = exp(p(u) X), G_m = exp(D^m p(u) X) for
+ * m < deg, then E = exp(D^deg p X) (constant). Degrees 1, 2, 3 use 2, 3, 4 slots. */
+static int slot_base(int j) { return j * (j + 3) / 2; }
+
+static int exact_anchor(ga_path_stepper *s, int seg, double u)
+{
+    const ga_path *p = s->path;
+    const ga_group *g = p->group;
+    int d = g->dim, nf = nfac(p->scheme), st;
+    double delta = s->dt / seg_len(p, seg), x[MAXD];
+    const double *X = p->coef + (size_t)seg * nf * d;
+    for (int j = 0; j < nf; ++j, X += d)
+        for (int m = 0; m <= j + 1; ++m) {
+            lin(d, x, poly_diff(fac_poly[j], m, u, delta), X, 0.0, X);
+            if ((st = g->exp(x, s->slot[slot_base(j) + m]))) return st;
+        }
+    return GA_OK;
+}
+
+/* G_m <- G_m G_{m+1}, m = 0 .. deg-1, in that order (each uses the old G_{m+1}):
+ * exp(D^m p(u+d) X) = exp(D^m p(u) X) exp(D^{m+1} p(u) X). */
+static void exact_advance(ga_path_stepper *s)
+{
+    const ga_group *g = s->path->group;
+    int nf = nfac(s->path->scheme);
+    double tmp[MAXE];
+    for (int j = 0; j < nf; ++j)
+        for (int m = 0; m <= j; ++m) {
+            double *a = s->slot[slot_base(j) + m];
+            g->compose(a, s->slot[slot_base(j) + m + 1], tmp);
+            copy_elem(g, a, tmp);
+        }
+}
+
+static void exact_output(const ga_path_stepper *s, int seg, void *out)
+{
+    const ga_group *g = s->path->group;
+    int nf = nfac(s->path->scheme);
+    double acc[MAXE], tmp[MAXE];
+    copy_elem(g, acc, key_of(s->path, seg));
+    for (int j = 0; j < nf; ++j) {
+        g->compose(acc, s->slot[slot_base(j)], tmp);
+        copy_elem(g, acc, tmp);
+    }
+    copy_elem(g, out, acc);
+}
+
+/* ---- samplers --------------------------------------------------------------------- */
+
+int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev, double step,
+                         size_t n, double t0, double t1)
+{
+    if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT) return GA_EARG;
+    if (!isfinite(t0) || !isfinite(t1)) return GA_ENOTFINITE;
+    if (!(t0 >= p->t[0] && t1 <= p->t[p->n - 1] && t0 <= t1)) return GA_EARG;
+    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_EARG;
+    s->path = p; s->eval = ev; s->step = step;
+    s->n = n; s->k = 0;
+    s->t0 = t0; s->t1 = t1;
+    s->dt = n > 1 ? (t1 - t0) / (double)(n - 1) : 0.0;
+    s->seg = -1; s->since = 0; s->grid = 0;
+    return GA_OK;
+}
+
+int ga_path_stepper_next(ga_path_stepper *s, void *out)
+{
+    if (!s || !out || s->k >= s->n) return GA_EARG;
+    const ga_path *p = s->path;
+    double t = s->k + 1 == s->n ? s->t1 : s->t0 + (double)s->k * s->dt, u;
+    int seg, st = ga_path_locate(p, t, &seg, &u);
+    if (st) return st;
+    if (s->eval == GA_EVAL_EULER) {
+        st = euler_sample(p, s->step, &s->seg, &s->grid, s->slot[0], seg, u, out);
+    } else if (s->eval == GA_EVAL_DIRECT || nfac(p->scheme) == 0) {
+        st = eval_direct(p, seg, u, out);
+    } else {
+        if (seg != s->seg || s->since >= GA_PATH_EXACT_REANCHOR) {
+            st = exact_anchor(s, seg, u);
+            s->seg = seg;
+            s->since = 0;
+        } else {
+            exact_advance(s);
+        }
+        ++s->since;
+        if (st == GA_OK) exact_output(s, seg, out);
+    }
+    if (st == GA_OK) ++s->k;
+    return st;
+}
+
+int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
+                           double t0, double t1, void *out)
+{
+    ga_path_stepper s;
+    int st = ga_path_stepper_init(&s, p, ev, step, n, t0, t1);
+    if (!out && st == GA_OK) st = GA_EARG;
+    for (size_t k = 0; st == GA_OK && k < n; ++k)
+        st = ga_path_stepper_next(&s, (unsigned char *)out + k * p->group->elem_size);
+    return st;
+}
+
+int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times,
+                   void *out)
+{
+    if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT) return GA_EARG;
+    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_EARG;
+    int cur = -1;
+    long grid = 0;
+    double A[MAXE];
+    for (size_t k = 0; k < n; ++k) {
+        void *o = (unsigned char *)out + k * p->group->elem_size;
+        int seg;
+        double u;
+        int st = ga_path_locate(p, times[k], &seg, &u);
+        if (st == GA_OK)
+            st = ev == GA_EVAL_EULER ? euler_sample(p, step, &cur, &grid, A, seg, u, o)
+                                     : eval_direct(p, seg, u, o);
+        if (st) return st;
+    }
+    return GA_OK;
+}

@@ -1,0 +1,242 @@
+/* garotor/path.h: smooth paths through key poses, every scheme written once
+ * against the group interface (group.h), and three ways to evaluate them.
+ *
+ * Keys A_0 .. A_{n-1} at strictly increasing times t_0 < ... < t_{n-1}.
+ * Segment i is [t_i, t_{i+1}], h_i = t_{i+1} - t_i, u = (t - t_i)/h_i in [0, 1].
+ * A velocity is a body velocity A(t)^-1 dA/dt (an algebra element: a twist
+ * for cga/se3), per unit of t; on segment i the velocity per unit of u is
+ * h_i times it. "plog" below is the group's principal log.
+ *
+ * Schemes (CONTRACT.md, `garotor interp --scheme`):
+ *   SCREW      A(t) = A_i exp(u B_i), B_i = plog(A_i^-1 A_{i+1})  (Li-Hao eqs.
+ *              8-10). By Ad-invariance, A exp(u log(A^-1 B)) A^-1 =
+ *              exp(u Ad_A log(A^-1 B)) = exp(u log(B A^-1)), this is W-L §3.1's
+ *              exp(u l(R_{i+1} ~R_i)) R_i and Eberly's geodesic (eq. 21).
+ *   BIVECTOR   A(t) = exp(X(t)), X piecewise linear through the key
+ *              generators X_i (W-L §3, §3.3, direct form).
+ *   QUADRATIC  exactly 3 keys: A(t) = exp(X(t)), X the quadratic through
+ *              (t_i, X_i) (W-L §3.2, whose lambda = -1, 0, 1 is the case of
+ *              uniform times).
+ *   SMOOTH     n >= 3 keys: A(t) = exp(X(t)), X a C1 quadratic spline through
+ *              (t_i, X_i): one quadratic piece per key, the breakpoints at the
+ *              midpoints (t_i + t_{i+1})/2 of the interior segments i = 1..n-3,
+ *              none inside the first and last segments ("not-a-knot"). That
+ *              gives n - 2 pieces and exactly n free coefficients per
+ *              component, fixed by the n keys: no end condition to choose, and
+ *              for n = 3 it is QUADRATIC. The slopes d_k = X'(xi_k) at the
+ *              breakpoints xi_0 = t_0, xi_1..xi_{n-3}, xi_{n-2} = t_{n-1} solve
+ *              a tridiagonal system (one row per segment: the integral of the
+ *              piecewise-linear X' over the segment equals X_{i+1} - X_i),
+ *              which is strictly diagonally dominant for any increasing times,
+ *              so it is solved without pivoting. The spline is a Cendes-Wong
+ *              style smoothed quadratic: C1 everywhere, local to a few keys in
+ *              practice (the inverse of a diagonally dominant band matrix
+ *              decays geometrically), exact for quadratic X.
+ *   LIHAO2     A(t) = A_i exp(u B_i) exp(u^2 C_i)  (Li-Hao eqs. 14-17):
+ *              B_0 = h_0 V_0 from the given first-key velocity V_0 (default:
+ *              V_0 = plog(A_0^-1 A_1)/h_0, Li-Hao Fig. 3c, i.e. the first
+ *              segment is the screw); C_i = plog(exp(-B_i) A_i^-1 A_{i+1})
+ *              (eq. 16); B_{i+1} = (h_{i+1}/h_i)(Ad_{(A_i^-1 A_{i+1})^-1} B_i
+ *              + 2 C_i) (eq. 17 with time scaling): C1, velocity only at the
+ *              first key is free.
+ *   LIHAO3     A(t) = A_i exp(u B_i) exp(u^2 C_i) exp((u^3 - u^2) D_i)
+ *              (Li-Hao eqs. 21-28) with a velocity V_i at every key:
+ *              B_i = h_i V_i (eq. 26), C_i = plog(exp(-B_i) A_i^-1 A_{i+1})
+ *              (eq. 27 corrected: the paper prints exp(+B_i), which contradicts
+ *              eqs. 16 and 23; tests/test_interp.c shows the key is then missed),
+ *              D_i = h_i V_{i+1} - Ad_{(A_i^-1 A_{i+1})^-1} B_i - 2 C_i (eq. 28).
+ *              Default velocities (velocities == NULL): with the segment screw
+ *              velocities s_i = plog(A_i^-1 A_{i+1})/h_i, each already a body
+ *              velocity at both its ends (exp(uB) commutes with B),
+ *                V_i = (h_i s_{i-1} + h_{i-1} s_i)/(h_{i-1} + h_i)  (interior),
+ *                V_0 = s_0,  V_{n-1} = s_{n-2}  (one-sided at the ends):
+ *              the derivative of the parabola through three samples (Bessel;
+ *              Catmull-Rom's central difference for uniform times, second-order
+ *              for any spacing), a blend of Li-Hao Fig. 3d's neighbouring
+ *              relative logs. A path whose keys lie on one screw motion is
+ *              then reproduced exactly (every s_i equal, so C_i = D_i = 0).
+ *
+ * Branch rule (BIVECTOR, QUADRATIC, SMOOTH on cga and se3): X_0 is the principal
+ * twist of A_0; for i >= 1, X_i is either the principal twist (w, v) of A_i,
+ * angle th = |w| in [0, pi], or the other branch with angle th - 2 pi about the
+ * same axis, w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th (v_par the
+ * part of v along w; exp(w', v') = exp(w, v) because V(w')^-1 V(w) = k on the
+ * plane across w and 1 along it, Eberly eq. 20), whichever makes the rotation
+ * quaternions q(X) = (cos(|w|/2), sin(|w|/2) w/|w|) of X_{i-1} and X_i have a
+ * nonnegative dot product. That is W-L's rotor rule <R_i ~R_{i-1}>_0 >= 0
+ * (consecutive keys take the shortest motion), computed in twist coordinates
+ * so that cga and se3 choose alike. A dot product within
+ * GA_PATH_HALF_TURN_BAND/2 of 0 (consecutive keys a half turn apart, where
+ * both motions are equally short and rounding would decide) keeps the
+ * principal twist. A pure translation (th = 0) has no other
+ * branch and keeps its principal twist. Near th = 0 the other branch is
+ * ill-conditioned (|k| ~ 2 pi/th): generators approach the full turn, an
+ * inherent limit of generator-space interpolation. On affine: principal logm.
+ *
+ * Half turns. At a relative rotation of exactly pi the principal log's axis
+ * sign is arbitrary (CONTRACT.md), so two representations may pick opposite
+ * screws. Every log this module takes on cga/se3 is made deterministic: when
+ * th >= pi - GA_PATH_HALF_TURN_BAND, the twist is replaced by its other branch
+ * if the first component of w/th (x, y, z order) larger than 0.3 in magnitude
+ * is negative (one always is, as 3 * 0.3^2 < 1). Inside the band the motion
+ * may thus go the long way round by at most 2 * GA_PATH_HALF_TURN_BAND rad.
+ *
+ * Evaluators:
+ *   DIRECT  each sample in closed form.
+ *   EULER   Li-Hao §5 (eqs. 32-42) in group form: from the segment start,
+ *           A(u + h) = A(u) exp(h V_u(u)), V_u the analytic body velocity per
+ *           unit u, step h in u units on the grid u = 0, h, 2h, ... of each
+ *           segment; a sample between grid points takes one partial step from
+ *           the grid point below it. Error O(h) (Li-Hao Prop. 1 / eq. 51).
+ *   EXACT   exact incremental stepping of uniformly spaced samples: each
+ *           factor exp(p(u) X) (p = u, u^2 or u^3 - u^2) is advanced by
+ *           exp(p(u+d) X) = exp(p(u) X) exp(Dp(u) X), the finite difference
+ *           Dp itself advanced by products with exp(D^2 p X), and so on down
+ *           to the constant exp(D^deg p X): deg products per factor and sample,
+ *           no exp, no truncation error, only rounding. Every
+ *           GA_PATH_EXACT_REANCHOR samples (and at each new segment) the
+ *           factors are re-anchored by a direct evaluation, so rounding cannot
+ *           build up (the cubic factor's rounding grows like the cube of the
+ *           samples since the anchor). The generator-space schemes are not
+ *           products of fixed-X factors: for them EXACT is DIRECT. So is EXACT
+ *           for samples at arbitrary times (ga_path_sample).
+ *
+ * Body velocity (ga_path_velocity): Li-Hao forms, for M = F_1 F_2 F_3 with
+ * F_j = exp(p_j(u) X_j): M^-1 M' = Ad_{F_3^-1}(Ad_{F_2^-1}(p_1' X_1) + p_2' X_2)
+ * + p_3' X_3 (the product rule behind Li-Hao eqs. 15, 25, 34); generator
+ * schemes: exp(X(t))^-1 d/dt exp(X(t)) = J_r(X) X', the right Jacobian
+ * (group.h dexp: the closed form of SE(3) on cga/se3, a series on affine).
+ *
+ * Memory: nothing is allocated. ga_path_init copies the times and keys into a
+ * caller's workspace of ga_path_workspace_size() bytes (aligned for double),
+ * which must outlive the path. Functions returning int give GA_OK or a GA_E*
+ * code (types.h): GA_EARG for too few keys, times not strictly increasing, a
+ * bad count, a t outside [t_0, t_{n-1}], a small or misaligned workspace;
+ * GA_ENOTFINITE for NaN/Inf input; a failing log (GA_EDOMAIN for an affine key
+ * with no real principal log) is passed on.
+ */
+#ifndef GAROTOR_PATH_H
+#define GAROTOR_PATH_H
+
+#include <stddef.h>
+
+#include "group.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    GA_SCHEME_SCREW, GA_SCHEME_BIVECTOR, GA_SCHEME_QUADRATIC,
+    GA_SCHEME_SMOOTH, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3
+} ga_scheme;
+
+typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
+
+/** Samples between fresh direct evaluations in exact stepping. The cubic
+ *  factor's rounding grows like K^3 eps in the worst case (a random walk in
+ *  practice); K = 32 keeps it near 1e-13 relative (tests/test_interp.c). */
+#ifndef GA_PATH_EXACT_REANCHOR
+#define GA_PATH_EXACT_REANCHOR 32
+#endif
+/** Half-turn band (rad) of the deterministic axis rule (see above). */
+#define GA_PATH_HALF_TURN_BAND 1e-9
+
+/** A path. Its fields are read-only after ga_path_init; the arrays live in the
+ *  caller's workspace. */
+typedef struct {
+    const ga_group *group;
+    ga_scheme scheme;
+    int n;            /**< number of keys */
+    double *t;        /**< the n key times */
+    double *key;      /**< the n keys, each group->elem_size bytes, padded to doubles */
+    int key_stride;   /**< doubles from one key to the next */
+    double *coef;     /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units) */
+    double *gen;      /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
+    double *slope;    /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
+    double *vel;      /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
+} ga_path;
+
+/** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3". */
+const char *ga_scheme_name(ga_scheme s);
+/** The scheme called name; GA_EARG if there is none. */
+int ga_scheme_by_name(const char *name, ga_scheme *out);
+/** "direct", "euler", "exact". */
+const char *ga_eval_name(ga_eval e);
+/** The evaluator called name; GA_EARG if there is none. */
+int ga_eval_by_name(const char *name, ga_eval *out);
+/** Fewest keys the scheme takes (2, or 3 for QUADRATIC and SMOOTH). QUADRATIC
+ *  takes exactly 3. */
+int ga_scheme_min_keys(ga_scheme s);
+
+/** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1). */
+size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, int n);
+
+/** Build a path through n keys (n group elements, each g->elem_size bytes, in
+ *  a contiguous array) at the given times. velocities: LIHAO2: NULL or the
+ *  first key's velocity (g->dim doubles); LIHAO3: NULL or one velocity per
+ *  key (n * g->dim doubles); other schemes ignore it. */
+int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n,
+                 const double *times, const void *keys, const double *velocities,
+                 void *work, size_t work_bytes);
+
+/** The same from 4x4 matrices, each read by g->from_mat4 (its status is
+ *  returned: GA_ENOTRIGID for a non-rigid matrix on cga/se3, ...). */
+int ga_path_init_mat4(ga_path *p, const ga_group *g, ga_scheme s, int n,
+                      const double *times, const ga_mat4 *keys,
+                      const double *velocities, void *work, size_t work_bytes);
+
+/** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
+ *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_EARG outside. */
+int ga_path_locate(const ga_path *p, double t, int *seg, double *u);
+
+/** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
+ *  (the formulas give it up to rounding, which ga_path_eval_segment shows and
+ *  the tests measure); so are the DIRECT samples of the batch calls. */
+int ga_path_eval(const ga_path *p, double t, void *out);
+/** The formula of segment seg (0..n-2) at any finite u (outside [0, 1] it
+ *  extrapolates); no special case at the keys. */
+int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out);
+
+/** The body velocity A(t)^-1 dA/dt at t (g->dim doubles, per unit t); at a key
+ *  time the velocity of the segment starting there (the last key: ending). */
+int ga_path_velocity(const ga_path *p, double t, double *v);
+/** The body velocity per unit t on segment seg at u. */
+int ga_path_velocity_segment(const ga_path *p, int seg, double u, double *v);
+
+/** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
+#define GA_PATH_STEP_SLOTS 9
+typedef struct {
+    const ga_path *path;
+    ga_eval eval;
+    double step;         /**< Euler step in u units */
+    size_t n, k;         /**< samples in all, index of the next one */
+    double t0, t1, dt;
+    int seg;             /**< segment of the running state, -1 for none */
+    int since;           /**< EXACT: samples since the last anchor */
+    long grid;           /**< EULER: grid index of the running state */
+    double slot[GA_PATH_STEP_SLOTS][GA_GROUP_MAX_ELEM];
+} ga_path_stepper;
+
+/** Prepare n >= 1 samples at t_k = t0 + k (t1 - t0)/(n - 1), the last exactly
+ *  t1, t_0 <= t0 <= t1 <= t_{n-1} (n = 1: t0 alone). step: the Euler step in u
+ *  units (> 0), ignored by the other evaluators. */
+int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev,
+                         double step, size_t n, double t0, double t1);
+/** Write the next sample to out. GA_EARG after the last. */
+int ga_path_stepper_next(ga_path_stepper *s, void *out);
+
+/** n evenly spaced samples t0..t1 (both included) into out (n elements of
+ *  g->elem_size bytes, contiguous). */
+int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
+                           double t0, double t1, void *out);
+/** Samples at n given times (any order; EULER is fastest with increasing
+ *  times, as it continues from the previous sample within a segment). EXACT
+ *  needs even spacing, so here it is DIRECT. */
+int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n,
+                   const double *times, void *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

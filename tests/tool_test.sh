@@ -1,0 +1,147 @@
+#!/bin/sh
+# The garotor tool from outside: round trips through files, and every error
+# case of docs/tool.md: exit status 2, a message naming the file and line,
+# and no output file left behind.
+set -u
+G=$1
+d=$(mktemp -d)
+trap 'rm -rf "$d"' EXIT
+fails=0
+pass() { :; }
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+# expect_error NAME PATTERN CMD...: exit 2, stderr matches PATTERN, no $d/out*
+expect_error() {
+    name=$1 pattern=$2
+    shift 2
+    rm -f "$d"/out*
+    "$@" >"$d/stdout" 2>"$d/stderr"
+    rc=$?
+    [ "$rc" -eq 2 ] || fail "$name: exit status $rc, want 2"
+    grep -q -- "$pattern" "$d/stderr" || fail "$name: message '$(cat "$d/stderr")' lacks '$pattern'"
+    [ -s "$d/stdout" ] && fail "$name: wrote to standard output"
+    ls "$d"/out* >/dev/null 2>&1 && fail "$name: left an output file: $(ls "$d"/out*)"
+}
+
+# ---- round trips through files: twists -> exp -> log -> the same twists ----
+cat >"$d/twists" <<'T'
+# wx wy wz vx vy vz
+0 0 0 0 0 0
+0 0 0 1e-12 0 0
+0 0 0 1e6 -2e6 3
+0.3 -0.2 0.9 1 2 3
+1e-9 0 0 1000 0 0
+0 0 3.141592653589793 0 0 1
+1.2,0.4,-0.7,0.5,-3,2
+T
+for group in cga matrix; do
+    "$G" exp --group "$group" --in "$d/twists" --out "$d/m.$group" || fail "exp --group $group"
+    "$G" log --group "$group" --in "$d/m.$group" --out "$d/t.$group" || fail "log --group $group"
+    # compare with the input: |difference| <= 1e-13 * max(1, |v|)
+    grep -v '^#' "$d/twists" | tr ',' ' ' | paste -d ' ' - "$d/t.$group" | awk -v g="$group" '
+        { s = 1; for (i = 4; i <= 6; i++) if ($i > s || -$i > s) s = ($i > 0 ? $i : -$i)
+          for (i = 1; i <= 6; i++) { e = $i - $(i + 6); if (e < 0) e = -e
+            if (e > 1e-13 * s) { printf "round trip %s line %d: %g\n", g, NR, e; bad = 1 } } }
+        END { exit bad }' || fail "exp/log round trip, group $group"
+done
+cmp -s "$d/m.cga" "$d/m.matrix" || awk '
+    NR == FNR { for (i = 1; i <= 16; i++) a[FNR, i] = $i; next }
+    { for (i = 1; i <= 16; i++) { e = a[FNR, i] - $i; if (e < 0) e = -e
+        if (e > 1e-9) { print "cga and matrix exp differ, line " FNR; bad = 1 } } }
+    END { exit bad }' "$d/m.cga" "$d/m.matrix" || fail "cga and matrix exp agree"
+[ "$(wc -l <"$d/m.cga")" -eq 7 ] || fail "exp writes one line per twist"
+
+# affine: exp of a general generator, log back
+printf '0.1 0.2 0 1\n0 -0.3 0.1 2\n0.05 0 0.2 3\n0 0 0 0\n' | tr '\n' ' ' >"$d/affine"
+echo >>"$d/affine"
+"$G" exp --group affine --in "$d/affine" --out "$d/am" || fail "exp --group affine"
+"$G" log --group affine --in "$d/am" --out "$d/al" || fail "log --group affine"
+paste -d ' ' "$d/affine" "$d/al" | awk '{ for (i = 1; i <= 16; i++) { e = $i - $(i + 16)
+    if (e < 0) e = -e; if (e > 1e-13) bad = 1 } } END { exit bad }' || fail "affine round trip"
+
+# CSV with a header, as a spreadsheet exports it
+printf 'wx,wy,wz,vx,vy,vz\n0,0,1.5,1,0,0\n' >"$d/csv"
+"$G" exp --header --in "$d/csv" >/dev/null || fail "exp --header reads CSV"
+
+# ---- interp: keys in both formats -----------------------------------------
+cat >"$d/keys" <<'K'
+0  0 0 0  0 0 0 1
+1  1 0 0  0 0 0.7071067811865476 0.7071067811865476
+3  2 1 0  0 0 1 0
+K
+for s in screw bivector quadratic smooth lihao2 lihao3; do
+    for group in cga matrix; do
+        "$G" interp --scheme "$s" --group "$group" --format pose --samples 7 --in "$d/keys" \
+            --out "$d/s.$s.$group" || fail "interp $s $group"
+    done
+    [ "$(wc -l <"$d/s.$s.cga")" -eq 7 ] || fail "interp $s writes 7 samples"
+done
+
+# ---- the error table ------------------------------------------------------
+printf '0 0 0 0 0\n' >"$d/short"
+expect_error "exp: wrong count" "short:1: expected 6 numbers" "$G" exp --in "$d/short" --out "$d/out"
+printf '0 0 0 0 0 0\n0 0 x 0 0 0\n' >"$d/word"
+expect_error "exp: not a number" "word:2: 'x' is not a number" "$G" exp --in "$d/word" --out "$d/out"
+printf '0 0 0 0 0 0\n\n# c\n0 0 nan 0 0 0\n' >"$d/nan"
+expect_error "exp: NaN" "nan:4: number 3 is not finite" "$G" exp --in "$d/nan" --out "$d/out"
+printf '0 0 0 inf 0 0\n' >"$d/inf"
+expect_error "exp: Inf" "inf:1: number 4 is not finite" "$G" exp --in "$d/inf" --out "$d/out"
+printf '1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n1 0 0 0 0 1 0 0 0 0 2 0 0 0 0 1\n' >"$d/scaled"
+expect_error "log: not orthonormal" "scaled:2: not a rigid motion" "$G" log --in "$d/scaled" --out "$d/out"
+expect_error "log matrix: not orthonormal" "scaled:2: not a rigid motion" "$G" log --group matrix --in "$d/scaled" --out "$d/out"
+printf '1 0 0 0 0 1 0 0 0 0 1 0 0 0 1 1\n' >"$d/lastrow"
+expect_error "log: last row" "lastrow:1: .*last row" "$G" log --in "$d/lastrow" --out "$d/out"
+printf -- '-1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n' >"$d/reflect"
+expect_error "log: reflection" "reflect:1: .*reflection" "$G" log --in "$d/reflect" --out "$d/out"
+expect_error "log affine: det < 0" "reflect:1: .*determinant" "$G" log --group affine --in "$d/reflect" --out "$d/out"
+printf -- '-1 0 0 0 0 -2 0 0 0 0 1 0 0 0 0 1\n' >"$d/negeig"
+expect_error "log affine: no real log" "negeig:1:" "$G" log --group affine --in "$d/negeig" --out "$d/out"
+printf '0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 1\n' >"$d/agen"
+expect_error "exp affine: last row" "agen:1: .*last row" "$G" exp --group affine --in "$d/agen" --out "$d/out"
+expect_error "exp: missing file" "nofile: cannot open" "$G" exp --in "$d/nofile" --out "$d/out"
+expect_error "unknown group" "--group must be" "$G" exp --group quat --in "$d/twists" --out "$d/out"
+expect_error "unknown option" "unknown option" "$G" exp --frobnicate
+expect_error "unknown command" "unknown command" "$G" frobnicate
+
+printf '0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n' >"$d/same_t"
+expect_error "interp: times not increasing" "same_t:3: key times must increase" \
+    "$G" interp --format pose --samples 3 --in "$d/same_t" --out "$d/out"
+printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n' >"$d/two"
+expect_error "interp: too few keys (smooth)" "two: --scheme smooth needs at least 3 keys" \
+    "$G" interp --scheme smooth --format pose --samples 3 --in "$d/two" --out "$d/out"
+expect_error "interp: quadratic needs 3" "two: --scheme quadratic needs exactly 3 keys" \
+    "$G" interp --scheme quadratic --format pose --samples 3 --in "$d/two" --out "$d/out"
+printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0.6 0.6\n' >"$d/badq"
+expect_error "interp: quaternion not unit" "badq:2: not a rigid motion: the quaternion" \
+    "$G" interp --format pose --samples 3 --in "$d/badq" --out "$d/out"
+printf '0  1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n1  1 0 0 0 0 1 0 0 0 0 3 0 0 0 0 1\n' >"$d/badm"
+expect_error "interp: matrix not rigid" "badm:2: not a rigid motion" \
+    "$G" interp --samples 3 --in "$d/badm" --out "$d/out"
+expect_error "interp: 8 numbers without --format pose" "two:1: expected 17 numbers" \
+    "$G" interp --samples 3 --in "$d/two" --out "$d/out"
+printf '0 0 0 0 0 0\n0 0 0 0 0 0\n' >"$d/vel2"
+expect_error "interp: velocity count" "vel2: one velocity per key" \
+    "$G" interp --scheme lihao3 --format pose --samples 3 --in "$d/keys" --velocities "$d/vel2" --out "$d/out"
+printf '0 0 0 0 0 0\n0 0 0 0 0\n0 0 0 0 0 0\n' >"$d/vel5"
+expect_error "interp: velocity with 5 numbers" "vel5:2: expected 6 numbers" \
+    "$G" interp --scheme lihao3 --format pose --samples 3 --in "$d/keys" --velocities "$d/vel5" --out "$d/out"
+expect_error "interp: --at outside" "outside the keys' range" \
+    "$G" interp --format pose --at 0.5,4 --in "$d/keys" --out "$d/out"
+expect_error "interp: --samples 1" "--samples needs" \
+    "$G" interp --format pose --samples 1 --in "$d/keys" --out "$d/out"
+expect_error "interp: euler without step" "needs --step" \
+    "$G" interp --format pose --samples 3 --eval euler --in "$d/keys" --out "$d/out"
+expect_error "interp: unknown scheme" "--scheme must be" \
+    "$G" interp --scheme spline --format pose --samples 3 --in "$d/keys" --out "$d/out"
+expect_error "interp: affine with poses" "affine takes keys as matrices" \
+    "$G" interp --group affine --format pose --samples 3 --in "$d/keys" --out "$d/out"
+expect_error "interp: neither --samples nor --at" "either --samples" \
+    "$G" interp --format pose --in "$d/keys" --out "$d/out"
+
+# --help of every command exits 0 and names it
+for c in demo exp log interp; do
+    "$G" "$c" --help | grep -q "usage: garotor" || fail "$c --help"
+done
+
+[ "$fails" -eq 0 ] && echo "tool_test: all passed"
+exit $((fails > 0))

@@ -1,0 +1,322 @@
+/* tools/cmd_interp.c: `garotor interp`, samples of a path through key poses.
+ *
+ * Reads keyframes (t, then a pose: 16 numbers with --format mat, 7 with
+ * --format pose), builds the path of --scheme on --group (path.h), and writes
+ * t and the pose of each sample in the same format. Everything is read and
+ * checked before anything is written. With --svg FILE it also draws the path
+ * (svg.h); a failure then leaves neither the samples' file nor the picture. */
+#include "cli.h"
+#include "svg.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A unit quaternion (ROS order qx qy qz qw) and a position to a 4x4 matrix;
+ * -1 after a message when q is not unit to 1e-9. */
+static int pose_to_mat4(const tio_items *in, size_t i, const double *v, ga_mat4 *out)
+{
+    ga_quat q = {v[6], v[3], v[4], v[5]};
+    double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    if (fabs(norm - 1.0) > 1e-9)
+        return tio_error(in, i, "not a rigid motion: the quaternion has norm %.17g, not 1 "
+                                "(to 1e-9)", norm);
+    *out = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[0], v[1], v[2]}));
+    return 0;
+}
+
+/* The pose (x y z qx qy qz qw) of a rigid 4x4 matrix; the quaternion's sign
+ * follows *prev (the previous sample's) so that the output is continuous. */
+static void mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
+{
+    ga_rotor r;
+    ga_vec3 t = {m.m[3], m.m[7], m.m[11]};
+    ga_quat q = {1, 0, 0, 0};
+    if (ga_rotor_from_mat4(m, &r) == GA_OK)
+        q = ga_rotor_quat(r, NULL);
+    if (q.w * prev->w + q.x * prev->x + q.y * prev->y + q.z * prev->z < 0.0)
+        q = (ga_quat){-q.w, -q.x, -q.y, -q.z};
+    *prev = q;
+    double pose[7] = {t.x, t.y, t.z, q.x, q.y, q.z, q.w};
+    memcpy(v, pose, sizeof pose);
+}
+
+/* --at t1,t2,...: parse into a new array; -1 after a message. */
+static int parse_times(const char *s, double **out, size_t *n)
+{
+    size_t cap = 1;
+    for (const char *c = s; *c; c++)
+        cap += *c == ',';
+    double *t = malloc(cap * sizeof *t);
+    if (!t)
+        return -1;
+    size_t k = 0;
+    const char *c = s;
+    for (;;) {
+        char *end;
+        double x = strtod(c, &end);
+        if (end == c || !isfinite(x) || (*end != ',' && *end != '\0')) {
+            fprintf(stderr, "garotor interp: --at needs finite times separated by commas: '%s'\n", s);
+            free(t);
+            return -1;
+        }
+        t[k++] = x;
+        if (*end == '\0')
+            break;
+        c = end + 1;
+    }
+    *out = t;
+    *n = k;
+    return 0;
+}
+
+/* A velocity as the tool reads it: 6 numbers (a twist; on affine, its hat) or,
+ * on affine, 16 (a 4x4 with last row zero). Writes g->dim doubles. */
+static int read_velocity(const ga_group *g, const double *v, int count, double *x)
+{
+    if (count == 6) {
+        if (g->dim == 6) {
+            memcpy(x, v, 6 * sizeof *x);
+        } else {
+            ga_mat4 h = ga_twist_hat((ga_twist){{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+            memcpy(x, h.m, 12 * sizeof *x);
+        }
+        return 0;
+    }
+    if (count == 16 && g->dim == 12 && v[12] == 0 && v[13] == 0 && v[14] == 0 && v[15] == 0) {
+        memcpy(x, v, 12 * sizeof *x);
+        return 0;
+    }
+    return -1;
+}
+
+/* The picture of the path: the keys, the samples (in the order sampled) and,
+ * for the screw scheme on keys that follow one screw motion, its axis.
+ * 0, or -1 after a message. */
+static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval ev,
+                svg_view view, const ga_mat4 *keys, const double *times, size_t n,
+                const void *samples, size_t ns)
+{
+    ga_mat4 *m = malloc(ns * sizeof *m);
+    if (!m) {
+        fprintf(stderr, "garotor interp: out of memory\n");
+        return -1;
+    }
+    for (size_t k = 0; k < ns; k++)
+        m[k] = g->to_mat4((const char *)samples + k * g->elem_size);
+    char title[256], step[64] = "";
+    if (ev == GA_EVAL_EULER)
+        snprintf(step, sizeof step, ", step %g", o->step);
+    snprintf(title, sizeof title, "%s: %zu keys, %zu samples (group %s, eval %s%s)",
+             ga_scheme_name(scheme), n, ns, g->name, ga_eval_name(ev), step);
+    int frames = 4 * (int)(n - 1) < 12 ? 12 : 4 * (int)(n - 1) > 48 ? 48 : 4 * (int)(n - 1);
+    svg_path path = {ga_scheme_name(scheme), "#333333", m, ns, frames};
+    svg_picture pic = {title, view, keys, times, n, &path, 1, 0, {0, 0, 0}, {0, 0, 0}};
+    pic.has_axis = scheme == GA_SCHEME_SCREW && g->dim == 6 &&
+                   svg_screw_axis(keys, n, &pic.axis_point, &pic.axis_dir);
+    int st = svg_write(o->svg, &pic);
+    free(m);
+    return st;
+}
+
+int cmd_interp(const cli_opts *o)
+{
+    const char *cmd = "interp";
+    const ga_group *g = cli_group(cmd, o);
+    if (!g)
+        return 2;
+    ga_scheme scheme = GA_SCHEME_SCREW;
+    if (o->scheme && ga_scheme_by_name(o->scheme, &scheme) != GA_OK) {
+        fprintf(stderr, "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
+                        "lihao2 or lihao3, not '%s'\n", o->scheme);
+        return 2;
+    }
+    ga_eval ev = GA_EVAL_DIRECT;
+    if (o->eval && ga_eval_by_name(o->eval, &ev) != GA_OK) {
+        fprintf(stderr, "garotor interp: --eval must be direct, euler or exact, not '%s'\n", o->eval);
+        return 2;
+    }
+    if (ev == GA_EVAL_EULER && !(o->given & OPT_STEP)) {
+        fprintf(stderr, "garotor interp: --eval euler needs --step H (in u units, 0 < H <= 1)\n");
+        return 2;
+    }
+    if ((o->given & OPT_STEP) && ev != GA_EVAL_EULER) {
+        fprintf(stderr, "garotor interp: --step applies only to --eval euler\n");
+        return 2;
+    }
+    int pose = 0;
+    if (o->format && strcmp(o->format, "pose") == 0)
+        pose = 1;
+    else if (o->format && strcmp(o->format, "mat") != 0) {
+        fprintf(stderr, "garotor interp: --format must be mat or pose, not '%s'\n", o->format);
+        return 2;
+    }
+    if (pose && g->dim != 6) {
+        fprintf(stderr, "garotor interp: --group affine takes keys as matrices (--format mat)\n");
+        return 2;
+    }
+    if (!!(o->given & OPT_SAMPLES) == !!(o->given & OPT_AT)) {
+        fprintf(stderr, "garotor interp: give either --samples N or --at t1,t2,...\n");
+        return 2;
+    }
+    if ((o->given & OPT_V0) && scheme != GA_SCHEME_LIHAO2) {
+        fprintf(stderr, "garotor interp: --v0 applies only to --scheme lihao2\n");
+        return 2;
+    }
+    if ((o->given & OPT_VELOCITIES) && scheme != GA_SCHEME_LIHAO3) {
+        fprintf(stderr, "garotor interp: --velocities applies only to --scheme lihao3\n");
+        return 2;
+    }
+    svg_view view;
+    if (svg_options(cmd, o->svg, o->view, &view))
+        return 2;
+
+    tio_items in = {0}, vin = {0};
+    double *times = NULL, *at = NULL, *vel = NULL, *samples = NULL, *res = NULL;
+    ga_mat4 *keys = NULL;
+    void *work = NULL;
+    int rc = 2;
+    size_t nat = 0;
+    if (o->at && parse_times(o->at, &at, &nat))
+        goto done;
+    if (tio_read(o->in, o->header, &in))
+        goto done;
+    int want = pose ? 8 : 17;
+    size_t n = in.n;
+    times = malloc((n ? n : 1) * sizeof *times);
+    keys = malloc((n ? n : 1) * sizeof *keys);
+    if (!times || !keys)
+        goto oom;
+    for (size_t i = 0; i < n; i++) {
+        const double *v = in.value + in.item[i].first;
+        if (in.item[i].count != want) {
+            tio_error(&in, i, "expected %d numbers (t, then %s), found %d", want,
+                      pose ? "x y z qx qy qz qw" : "a 4x4 matrix", in.item[i].count);
+            goto done;
+        }
+        times[i] = v[0];
+        if (i > 0 && !(times[i] > times[i - 1])) {
+            tio_error(&in, i, "key times must increase strictly: %.17g after %.17g", times[i],
+                      times[i - 1]);
+            goto done;
+        }
+        if (pose ? pose_to_mat4(&in, i, v + 1, &keys[i]) : 0)
+            goto done;
+        if (!pose) {
+            memcpy(keys[i].m, v + 1, sizeof keys[i].m);
+            if (cli_check_motion(g, keys[i], &in, i))
+                goto done;
+        }
+    }
+    int min = ga_scheme_min_keys(scheme);
+    if ((long)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
+        fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %d keys, found %zu\n", in.name,
+                ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least",
+                min, n);
+        goto done;
+    }
+    for (size_t k = 0; k < nat; k++)
+        if (!(at[k] >= times[0] && at[k] <= times[n - 1])) {
+            fprintf(stderr, "garotor interp: --at time %.17g is outside the keys' range [%.17g, %.17g]\n",
+                    at[k], times[0], times[n - 1]);
+            goto done;
+        }
+
+    /* velocities: --v0 for lihao2, --velocities FILE (one a key) for lihao3 */
+    if (o->given & OPT_V0) {
+        vel = malloc(GA_GROUP_MAX_DIM * sizeof *vel);
+        if (!vel)
+            goto oom;
+        read_velocity(g, o->v0, 6, vel);
+    }
+    if (o->velocities) {
+        if (tio_read(o->velocities, 0, &vin))
+            goto done;
+        if (vin.n != n) {
+            if (vin.n > n)
+                tio_error(&vin, n, "one velocity per key: %zu keys, but %zu velocities", n, vin.n);
+            else
+                fprintf(stderr, "garotor interp: %s: one velocity per key: %zu keys, but %zu "
+                                "velocities\n", vin.name, n, vin.n);
+            goto done;
+        }
+        vel = malloc(n * (size_t)g->dim * sizeof *vel);
+        if (!vel)
+            goto oom;
+        for (size_t i = 0; i < n; i++)
+            if (read_velocity(g, vin.value + vin.item[i].first, vin.item[i].count,
+                              vel + i * (size_t)g->dim)) {
+                tio_error(&vin, i, "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
+                                   "found %d", g->dim == 12 ? " or 16 (a 4x4, last row zero)" : "",
+                          vin.item[i].count);
+                goto done;
+            }
+    }
+
+    ga_path path;
+    size_t wbytes = ga_path_workspace_size(g, scheme, (int)n);
+    work = malloc(wbytes);
+    if (!work)
+        goto oom;
+    int st = ga_path_init_mat4(&path, g, scheme, (int)n, times, keys, vel, work, wbytes);
+    if (st != GA_OK) {
+        fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name,
+                ga_scheme_name(scheme), ga_strerror(st));
+        goto done;
+    }
+
+    size_t ns = nat ? nat : (size_t)o->samples;
+    double step = ev == GA_EVAL_EULER ? o->step : 1.0;
+    samples = malloc(ns * g->elem_size);
+    int width = pose ? 8 : 17;
+    res = malloc(ns * (size_t)width * sizeof *res);
+    if (!samples || !res)
+        goto oom;
+    st = nat ? ga_path_sample(&path, ev, step, ns, at, samples)
+             : ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples);
+    if (st != GA_OK) {
+        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", in.name, ga_strerror(st));
+        goto done;
+    }
+    ga_quat prev = {1, 0, 0, 0};
+    for (size_t k = 0; k < ns; k++) {
+        double *row = res + k * (size_t)width;
+        row[0] = nat ? at[k] : (k + 1 == ns ? times[n - 1]
+                                            : times[0] + (double)k * (times[n - 1] - times[0]) / (double)(ns - 1));
+        ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
+        if (pose)
+            mat4_to_pose(m, &prev, row + 1);
+        else
+            memcpy(row + 1, m.m, sizeof m.m);
+    }
+    /* open the samples' output, draw the picture, then write the samples:
+     * if they cannot be written, the picture is removed again */
+    tio_out out;
+    if (tio_out_open(&out, o->out) == 0) {
+        if (o->svg && draw(o, g, scheme, ev, view, keys, times, n, samples, ns)) {
+            tio_out_close(&out, 0);
+            goto done;
+        }
+        for (size_t k = 0; k < ns; k++)
+            tio_out_line(&out, res + k * (size_t)width, width);
+        if (tio_out_close(&out, 1) == 0)
+            rc = 0;
+        else if (o->svg)
+            remove(o->svg);
+    }
+    goto done;
+oom:
+    fprintf(stderr, "garotor interp: out of memory\n");
+done:
+    free(times);
+    free(keys);
+    free(at);
+    free(vel);
+    free(samples);
+    free(res);
+    free(work);
+    tio_free(&in);
+    tio_free(&vin);
+    return rc;
+}
