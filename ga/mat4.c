@@ -609,6 +609,18 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
     }
     for (int i = 0; i < 16; i++) l.m[i] = ldexp(l.m[i], k);
     if (!mat4_isfinite(&l)) return GA_EDOMAIN;
+    /* A posteriori check. Within rounding of the negative real axis (a
+     * rounded half turn has eigenvalues -1 +- 1e-16 i) a square root can
+     * settle on a non-principal branch, and the backward error of the whole
+     * computation grows fast once the eigenvalues come closer to the axis
+     * than ~1e-8 (tests/test_cross.c). Rather than return a confident wrong
+     * answer, accept L only if exp(L) reproduces A to GA_LOGM_BACKWARD_TOL. */
+    ga_mat4 back;
+    if (ga_mat4_expm(l, &back) != GA_OK) return GA_EDOMAIN;
+    double err = 0.0;
+    for (int i = 0; i < 16; i++) back.m[i] -= a.m[i];
+    err = ga_mat4_norm1(back);
+    if (!(err <= GA_LOGM_BACKWARD_TOL * ga_mat4_norm1(a))) return GA_EDOMAIN;
     *out = l;
     return GA_OK;
 }

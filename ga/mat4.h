@@ -119,6 +119,10 @@ ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi);
  *  is not representable in double). */
 int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
 
+/** The largest relative backward error ||expm(L) - a||_1 / ||a||_1 that
+ *  ga_mat4_logm accepts for its result L. */
+#define GA_LOGM_BACKWARD_TOL 1e-10
+
 /** The principal log of a real 4x4 (the log whose eigenvalues have imaginary
  *  parts in (-pi, pi)), by inverse scaling and squaring (Higham, Functions of
  *  Matrices, 2008, ch. 11): square roots A_k = A^(1/2^k) by the scaled
@@ -135,7 +139,12 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
  *  singular matrix or does not converge. An exact half turn (eigenvalue -1)
  *  is therefore GA_EDOMAIN here, while ga_se3_log handles it; near a half
  *  turn by th the error grows like eps th / sin th, the conditioning of the
- *  log of a general matrix there. */
+ *  log of a general matrix there. Every result is verified: unless
+ *  ||expm(L) - a||_1 <= GA_LOGM_BACKWARD_TOL ||a||_1 the answer is
+ *  GA_EDOMAIN, never a wrong log. In practice (tests/test_cross.c,
+ *  tests/test_mat4.c) a rotation part within about 1e-11 rad of a half turn
+ *  may be GA_EDOMAIN here, and never one farther than 1e-10 rad; use
+ *  ga_se3_log for rigid motions, which has no such limit. */
 int ga_mat4_logm(ga_mat4 a, ga_mat4 *out);
 
 #ifdef __cplusplus

@@ -27,19 +27,22 @@ static int pose_to_mat4(const tio_items *in, size_t i, const double *v, ga_mat4 
 }
 
 /* The pose (x y z qx qy qz qw) of a rigid 4x4 matrix; the quaternion's sign
- * follows *prev (the previous sample's) so that the output is continuous. */
-static void mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
+ * follows *prev (the previous sample's) so that the output is continuous.
+ * Returns the status of reading m as a rigid motion. */
+static int mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
 {
     ga_rotor r;
     ga_vec3 t = {m.m[3], m.m[7], m.m[11]};
-    ga_quat q = {1, 0, 0, 0};
-    if (ga_rotor_from_mat4(m, &r) == GA_OK)
-        q = ga_rotor_quat(r, NULL);
+    int st = ga_rotor_from_mat4(m, &r);
+    if (st != GA_OK)
+        return st;
+    ga_quat q = ga_rotor_quat(r, NULL);
     if (q.w * prev->w + q.x * prev->x + q.y * prev->y + q.z * prev->z < 0.0)
         q = (ga_quat){-q.w, -q.x, -q.y, -q.z};
     *prev = q;
     double pose[7] = {t.x, t.y, t.z, q.x, q.y, q.z, q.w};
     memcpy(v, pose, sizeof pose);
+    return GA_OK;
 }
 
 /* --at t1,t2,...: parse into a new array; -1 after a message. */
@@ -285,9 +288,12 @@ int cmd_interp(const cli_opts *o)
         row[0] = nat ? at[k] : (k + 1 == ns ? times[n - 1]
                                             : times[0] + (double)k * (times[n - 1] - times[0]) / (double)(ns - 1));
         ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
-        if (pose)
-            mat4_to_pose(m, &prev, row + 1);
-        else
+        if (pose && (st = mat4_to_pose(m, &prev, row + 1)) != GA_OK) {
+            fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name,
+                    k + 1, ga_strerror(st));
+            goto done;
+        }
+        if (!pose)
             memcpy(row + 1, m.m, sizeof m.m);
     }
     /* open the samples' output, draw the picture, then write the samples:
