@@ -235,6 +235,8 @@ static void aff_adjoint(const void *g, const double *x, double *out)
     }
     aff_vee(ga_mat4_mul(ga_mat4_mul(m, aff_hat(x)), gi), out);
 }
+/* GA_ENOTFINITE for NaN/Inf; GA_EDOMAIN if the last row is not 0 0 0 1 to
+ * 1e-12 or det < 0 (a reflection: no real log); GA_ESINGULAR if det = 0. */
 static int aff_from_mat4(ga_mat4 m, void *out)
 {
     for (int i = 0; i < 16; ++i)

@@ -575,21 +575,25 @@ static int euler_sample(const ga_path *p, double h, int *cur, long *grid, double
 
 /* ---- exact incremental stepping --------------------------------------------------- */
 
-/* Slots of factor j: j(j+3)/2 .. : G_0 = exp(p(u) X), G_m = exp(D^m p(u) X) for
- * m < deg, then E = exp(D^deg p X) (constant). Degrees 1, 2, 3 use 2, 3, 4 slots. */
+/* Slots of factor j start at j(j+3)/2: G_0 = exp(p(u) X), G_m = exp(D^m p(u) X)
+ * for 0 < m < deg, then E = exp(D^deg p X), constant on a segment. Degrees 1,
+ * 2, 3 use 2, 3, 4 slots. The key is folded into the first factor's G_0
+ * (A_i exp(u B)), so SCREW costs one product per sample. */
 static int slot_base(int j) { return j * (j + 3) / 2; }
 
 static int exact_anchor(ga_path_stepper *s, int seg, double u)
 {
     const ga_path *p = s->path;
     const ga_group *g = p->group;
-    int d = g->dim, nf = nfac(p->scheme), st;
-    double delta = s->dt / seg_len(p, seg), x[MAXD];
+    int d = g->dim, nf = nfac(p->scheme), st, newseg = seg != s->seg;
+    double delta = s->dt / seg_len(p, seg), x[MAXD], e[MAXE];
     const double *X = p->coef + (size_t)seg * nf * d;
     for (int j = 0; j < nf; ++j, X += d)
         for (int m = 0; m <= j + 1; ++m) {
+            if (m == j + 1 && !newseg) break; /* E is kept for the segment */
             lin(d, x, poly_diff(fac_poly[j], m, u, delta), X, 0.0, X);
-            if ((st = g->exp(x, s->slot[slot_base(j) + m]))) return st;
+            if ((st = g->exp(x, m == 0 && j == 0 ? e : s->slot[slot_base(j) + m]))) return st;
+            if (m == 0 && j == 0) g->compose(key_of(p, seg), e, s->slot[0]);
         }
     return GA_OK;
 }
@@ -609,14 +613,16 @@ static void exact_advance(ga_path_stepper *s)
         }
 }
 
-static void exact_output(const ga_path_stepper *s, int seg, void *out)
+/* A_i F_1 F_2 F_3 with A_i F_1 in slot 0. */
+static void exact_output(const ga_path_stepper *s, void *out)
 {
     const ga_group *g = s->path->group;
     int nf = nfac(s->path->scheme);
     double acc[MAXE], tmp[MAXE];
-    copy_elem(g, acc, key_of(s->path, seg));
-    for (int j = 0; j < nf; ++j) {
-        g->compose(acc, s->slot[slot_base(j)], tmp);
+    if (nf == 1) { copy_elem(g, out, s->slot[0]); return; }
+    g->compose(s->slot[0], s->slot[slot_base(1)], acc);
+    if (nf == 3) {
+        g->compose(acc, s->slot[slot_base(2)], tmp);
         copy_elem(g, acc, tmp);
     }
     copy_elem(g, out, acc);
@@ -659,7 +665,7 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
             exact_advance(s);
         }
         ++s->since;
-        if (st == GA_OK) exact_output(s, seg, out);
+        if (st == GA_OK) exact_output(s, out);
     }
     if (st == GA_OK) ++s->k;
     return st;

@@ -1,0 +1,1088 @@
+/* tests/test_interp.c: the interpolation schemes of interp/path.h on the three
+ * groups of interp/group.h (issue 5). Standalone: main returns nonzero on any
+ * failure and prints each measured figure. Seeded PRNG (splitmix64), so every
+ * run is the same; a few seconds.
+ *
+ * Tolerances: a pose error is max |a_ij - b_ij| over the 4x4 matrices divided
+ * by the key set's scale max(1, largest key translation) (rotation entries are
+ * O(1), translation entries O(scale)); where a path's formulas are measured
+ * (not its keys) the scale also covers the algebra elements it exponentiates
+ * (key generators or B_i, C_i, D_i), whose size the computation carries; on
+ * affine keys, whose exp can amplify rounding by ||e^X|| ||e^-X||, tolerances
+ * are multiplied by that condition number.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "mat4.h"
+#include "rotor.h"
+#include "group.h"
+#include "path.h"
+
+#define PI 3.14159265358979323846
+#define MAXK 8
+#define WORK 2048
+
+static int fails;
+
+static void check(int ok, const char *what, double figure, double tol)
+{
+    if (!ok) {
+        ++fails;
+        printf("FAIL  %-58s %.3g (tol %.3g)\n", what, figure, tol);
+    }
+}
+
+/* ---- PRNG: splitmix64 ------------------------------------------------------ */
+
+typedef struct { uint64_t s; } rng;
+static uint64_t next64(rng *r)
+{
+    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+static double unif(rng *r, double a, double b)
+{
+    return a + (b - a) * (double)(next64(r) >> 11) * 0x1.0p-53;
+}
+/* (Each draw is its own statement: the order of evaluation of arguments and
+ * initializers is unspecified in C, and the sequence must not depend on the
+ * compiler.) */
+static ga_vec3 rvec(rng *r, double s)
+{
+    ga_vec3 v;
+    v.x = unif(r, -s, s);
+    v.y = unif(r, -s, s);
+    v.z = unif(r, -s, s);
+    return v;
+}
+static ga_vec3 runit(rng *r)
+{
+    for (;;) {
+        ga_vec3 v = rvec(r, 1.0);
+        double n = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        if (n > 0.1 && n <= 1.0) { v.x /= n; v.y /= n; v.z /= n; return v; }
+    }
+}
+
+/* ---- matrices built independently of the library ------------------------- */
+
+/* Rodrigues: R = I + sin th K + (1 - cos th) K^2, then translation. */
+static ga_mat4 rigid(ga_vec3 u, double th, ga_vec3 t)
+{
+    double s = sin(th), c = 1.0 - cos(th);
+    double K[9] = { 0, -u.z, u.y, u.z, 0, -u.x, -u.y, u.x, 0 };
+    ga_mat4 m;
+    memset(&m, 0, sizeof m);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double k2 = 0;
+            for (int l = 0; l < 3; ++l) k2 += K[3 * i + l] * K[3 * l + j];
+            m.m[4 * i + j] = (i == j) + s * K[3 * i + j] + c * k2;
+        }
+    m.m[3] = t.x; m.m[7] = t.y; m.m[11] = t.z; m.m[15] = 1.0;
+    return m;
+}
+
+/* An exact half turn: R = 2 u u^T - I. */
+static ga_mat4 half_turn(ga_vec3 u, ga_vec3 t)
+{
+    double a[3] = { u.x, u.y, u.z };
+    ga_mat4 m;
+    memset(&m, 0, sizeof m);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m.m[4 * i + j] = 2 * a[i] * a[j] - (i == j);
+    m.m[3] = t.x; m.m[7] = t.y; m.m[11] = t.z; m.m[15] = 1.0;
+    return m;
+}
+
+static ga_mat4 mmul(ga_mat4 a, ga_mat4 b) { return ga_mat4_mul(a, b); }
+
+/* A random rigid motion: angle in [a0, a1] about a random axis, translation
+ * in [-ts, ts]^3. */
+static ga_mat4 rand_rigid(rng *r, double a0, double a1, double ts)
+{
+    ga_vec3 u = runit(r);
+    double th = unif(r, a0, a1);
+    ga_vec3 t = rvec(r, ts);
+    return rigid(u, th, t);
+}
+static ga_twist rand_twist(rng *r, double sw, double sv)
+{
+    ga_twist x;
+    x.w = rvec(r, sw);
+    x.v = rvec(r, sv);
+    return x;
+}
+
+static double tnorm(ga_mat4 m) { return sqrt(m.m[3] * m.m[3] + m.m[7] * m.m[7] + m.m[11] * m.m[11]); }
+
+/* Largest entry difference; NaN (a failed evaluation) counts as infinite. */
+static double mdiff(ga_mat4 a, ga_mat4 b)
+{
+    double e = 0;
+    for (int i = 0; i < 16; ++i) {
+        double d = fabs(a.m[i] - b.m[i]);
+        e = d > e || d != d ? (d != d ? INFINITY : d) : e;
+    }
+    return e;
+}
+
+static double vdiff(const double *a, const double *b, int d)
+{
+    double e = 0;
+    for (int i = 0; i < d; ++i) {
+        double x = fabs(a[i] - b[i]);
+        e = x > e || x != x ? (x != x ? INFINITY : x) : e;
+    }
+    return e;
+}
+static double vnorm(const double *a, int d)
+{
+    double e = 0;
+    for (int i = 0; i < d; ++i) e = fmax(e, fabs(a[i]));
+    return e;
+}
+
+/* ---- key sets ---------------------------------------------------------------- */
+
+typedef struct { int n; double t[MAXK]; ga_mat4 m[MAXK]; double scale; } keyset;
+
+static void random_times(rng *r, keyset *k)
+{
+    k->t[0] = unif(r, -2, 2);
+    for (int i = 1; i < k->n; ++i) k->t[i] = k->t[i - 1] + unif(r, 0.2, 3.0);
+}
+
+/* The j-th of N + 1 evenly spaced times over the keys, the last exactly t_{n-1}. */
+static double tgrid(const keyset *k, int j, int N)
+{
+    return j == N ? k->t[k->n - 1] : k->t[0] + (k->t[k->n - 1] - k->t[0]) * j / N;
+}
+
+static void set_scale(keyset *k)
+{
+    k->scale = 1.0;
+    for (int i = 0; i < k->n; ++i) k->scale = fmax(k->scale, tnorm(k->m[i]));
+}
+
+/* kind 0: generic; 1: some exact half turns (absolute); 2: tiny rotations under
+ * large translations; 3: relative half turns between neighbours; 4: a mixture. */
+static void random_keys(rng *r, keyset *k, int n, int kind)
+{
+    k->n = n;
+    random_times(r, k);
+    for (int i = 0; i < n; ++i) {
+        int kd = kind == 4 ? (int)(next64(r) % 4) : kind;
+        ga_vec3 u = runit(r);
+        if (kd == 1 && next64(r) % 2) {
+            if (next64(r) % 3 == 0) { u.x = 0; u.y = 0; u.z = 1; } /* coordinate axis */
+            k->m[i] = half_turn(u, rvec(r, 5));
+        } else if (kd == 2) {
+            double th = pow(10.0, unif(r, -9, -5));
+            k->m[i] = rigid(u, th, rvec(r, 1e4));
+        } else if (kd == 3 && i > 0 && next64(r) % 2) {
+            ga_vec3 a = runit(r);
+            k->m[i] = mmul(k->m[i - 1], half_turn(a, rvec(r, 2)));
+        } else {
+            double th = unif(r, 0, PI);
+            k->m[i] = rigid(u, th, rvec(r, 5));
+        }
+    }
+    set_scale(k);
+}
+
+/* affine keys: exp of a random 3x4 (scalings, shears), det > 0 */
+static void affine_keys(rng *r, keyset *k, int n)
+{
+    k->n = n;
+    random_times(r, k);
+    for (int i = 0; i < n; ++i) {
+        double x[12];
+        for (int j = 0; j < 12; ++j) x[j] = unif(r, -0.4, 0.4) * (j % 4 == 3 ? 5 : 1);
+        ga_group_affine.exp(x, &k->m[i]);
+    }
+    set_scale(k);
+}
+
+/* ---- paths ---------------------------------------------------------------------- */
+
+typedef struct { ga_path p; double work[WORK]; } pathbuf;
+
+static int mkpath(pathbuf *b, const ga_group *g, ga_scheme s, const keyset *k, const double *vel)
+{
+    return ga_path_init_mat4(&b->p, g, s, k->n, k->t, k->m, vel, b->work, sizeof b->work);
+}
+
+static ga_mat4 at(const ga_path *p, double t)
+{
+    double e[16];
+    int st = ga_path_eval(p, t, e);
+    if (st) { ga_mat4 z; for (int i = 0; i < 16; ++i) z.m[i] = NAN; return z; }
+    return p->group->to_mat4(e);
+}
+static ga_mat4 at_seg(const ga_path *p, int seg, double u)
+{
+    double e[16];
+    int st = ga_path_eval_segment(p, seg, u, e);
+    if (st) { ga_mat4 z; for (int i = 0; i < 16; ++i) z.m[i] = NAN; return z; }
+    return p->group->to_mat4(e);
+}
+
+/* The velocity at t; NaN if the call fails (so that a check sees it). */
+static void vel_at(const ga_path *p, double t, double *v)
+{
+    if (ga_path_velocity(p, t, v) != GA_OK)
+        for (int i = 0; i < p->group->dim; ++i) v[i] = NAN;
+}
+
+/* y = log(a^-1 b) through the group (the body displacement from a to b). */
+static void body_log(const ga_group *g, const void *a, const void *b, double *y)
+{
+    double ai[16], r[16];
+    g->inverse(a, ai);
+    g->compose(ai, b, r);
+    if (g->log(r, y) != GA_OK)
+        for (int i = 0; i < g->dim; ++i) y[i] = NAN;
+}
+
+/* One-sided body velocity at (seg, u) from side sgn (+1 right, -1 left), by the
+ * second-order formula y'(0) ~ (4 y(e) - y(2e))/(2e), y(s) = log(A^-1 A(t + s)). */
+static void fd_velocity(const ga_path *p, int seg, double u, int sgn, double eps, double *v)
+{
+    const ga_group *g = p->group;
+    double a[16], b1[16], b2[16], y1[12], y2[12];
+    double h = p->t[seg + 1] - p->t[seg];
+    ga_path_eval_segment(p, seg, u, a);
+    ga_path_eval_segment(p, seg, u + sgn * eps / h, b1);
+    ga_path_eval_segment(p, seg, u + sgn * 2 * eps / h, b2);
+    body_log(g, a, b1, y1);
+    body_log(g, a, b2, y2);
+    for (int i = 0; i < g->dim; ++i) v[i] = sgn * (4 * y1[i] - y2[i]) / (2 * eps);
+}
+
+/* Central difference body velocity at (seg, u). */
+static void fd_central(const ga_path *p, int seg, double u, double eps, double *v)
+{
+    const ga_group *g = p->group;
+    double a[16], b1[16], b2[16], y1[12], y2[12];
+    double h = p->t[seg + 1] - p->t[seg];
+    ga_path_eval_segment(p, seg, u, a);
+    ga_path_eval_segment(p, seg, u + eps / h, b1);
+    ga_path_eval_segment(p, seg, u - eps / h, b2);
+    body_log(g, a, b1, y1);
+    body_log(g, a, b2, y2);
+    for (int i = 0; i < g->dim; ++i) v[i] = (y1[i] - y2[i]) / (2 * eps);
+}
+
+static const ga_scheme all_schemes[6] = {
+    GA_SCHEME_SCREW, GA_SCHEME_BIVECTOR, GA_SCHEME_QUADRATIC,
+    GA_SCHEME_SMOOTH, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3
+};
+static int is_c1(ga_scheme s)
+{
+    return s == GA_SCHEME_SMOOTH || s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_LIHAO2
+        || s == GA_SCHEME_LIHAO3;
+}
+
+/* The scale a path's computation carries: keys' translations and the algebra
+ * elements it exponentiates (key generators, or B_i, C_i, D_i). */
+static double path_scale(const ga_path *p, const keyset *k)
+{
+    double s = k->scale;
+    int m = p->gen ? p->n : (p->n - 1) * (p->scheme == GA_SCHEME_SCREW ? 1 : p->scheme == GA_SCHEME_LIHAO2 ? 2 : 3);
+    const double *x = p->gen ? p->gen : p->coef;
+    for (int i = 0; i < m * p->group->dim; ++i) s = fmax(s, fabs(x[i]));
+    return s;
+}
+
+/* ---- 1. through the keys, continuity ------------------------------------------------ */
+
+/* The conditioning of a path's formulas: the largest ||E||_1 ||E^-1||_1 over the
+ * factors E = exp(X) it multiplies (B_i, C_i, D_i or the key generators). The
+ * rounding of a product grows with it, so affine tolerances scale with it. */
+static double path_cond(const ga_path *p)
+{
+    const ga_group *g = p->group;
+    int d = g->dim, m = p->coef ? (p->n - 1) * (p->scheme == GA_SCHEME_SCREW ? 1 : p->scheme == GA_SCHEME_LIHAO2 ? 2 : 3)
+                                : p->n;
+    const double *x = p->coef ? p->coef : p->gen;
+    double c = 1.0;
+    for (int i = 0; i < m; ++i) {
+        double e[16], ei[16], nx[12];
+        for (int k = 0; k < d; ++k) nx[k] = -x[i * d + k];
+        g->exp(x + i * d, e);
+        g->exp(nx, ei);
+        c = fmax(c, ga_mat4_norm1(g->to_mat4(e)) * ga_mat4_norm1(g->to_mat4(ei)));
+    }
+    return c;
+}
+
+static void test_keys(rng *r)
+{
+    const ga_group *gs[3] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
+    double worst_at = 0, worst_lim = 0, worst_mid = 0, worst_aff[6] = { 0 }, worst_cond = 0, worst_midv = 0;
+    int skipped = 0;
+    for (int trial = 0; trial < 90; ++trial) {
+        keyset k;
+        int gi = trial % 3;
+        if (gi == 2) affine_keys(r, &k, 3 + trial % 5);
+        else random_keys(r, &k, 3 + trial % 5, trial % 5 == 1 ? 1 : trial % 5 == 2 ? 2 : 0);
+        for (int si = 0; si < 6; ++si) {
+            ga_scheme s = all_schemes[si];
+            keyset kk = k;
+            if (s == GA_SCHEME_QUADRATIC) kk.n = 3;
+            set_scale(&kk);
+            pathbuf b;
+            int st = mkpath(&b, gs[gi], s, &kk, NULL);
+            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_EDOMAIN || st == GA_ESINGULAR)) {
+                ++skipped; /* Li-Hao's chained quadratic: velocities grow along the keys */
+                continue;
+            }
+            check(st == GA_OK, "path init (keys test)", st, 0);
+            if (st) continue;
+            /* rigid keys: 1e-14 relative; affine: times the conditioning */
+            double cond = gi == 2 ? path_cond(&b.p) : 1.0, tol = gi == 2 ? 1e-13 * cond : 1e-14;
+            double sc = gi == 2 ? kk.scale : path_scale(&b.p, &kk);
+            for (int i = 0; i < kk.n; ++i) {
+                double e = mdiff(at(&b.p, kk.t[i]), kk.m[i]) / kk.scale;
+                worst_at = fmax(worst_at, e);
+                check(e <= 1e-15, "A(t_i) returns A_i (its representation's rounding)", e, 1e-15);
+                /* the formulas' own limits at the key: u -> 1 on the segment
+                 * before, u -> 0 on the one after */
+                double l = 0;
+                if (i > 0) l = mdiff(at_seg(&b.p, i - 1, 1.0), kk.m[i]) / sc;
+                if (i + 1 < kk.n) l = fmax(l, mdiff(at_seg(&b.p, i, 0.0), kk.m[i]) / sc);
+                if (gi == 2) { worst_aff[si] = fmax(worst_aff[si], l); worst_cond = fmax(worst_cond, l / cond); }
+                else worst_lim = fmax(worst_lim, l);
+                check(l <= tol, "formula -> A_i at the key (1e-14 relative)", l, tol);
+            }
+            /* continuity inside: the smooth spline's two formulas meet at u = 1/2 */
+            for (int i = 0; i + 1 < kk.n; ++i) {
+                double e = mdiff(at_seg(&b.p, i, 0.5), at_seg(&b.p, i, nextafter(0.5, 1.0))) / sc;
+                worst_mid = fmax(worst_mid, e / cond);
+                check(e <= tol, "continuity at segment midpoints", e, tol);
+                if (s == GA_SCHEME_SMOOTH) { /* and C1 there: X' is continuous */
+                    int d = gs[gi]->dim;
+                    double va[12], vb[12];
+                    ga_path_velocity_segment(&b.p, i, 0.5, va);
+                    ga_path_velocity_segment(&b.p, i, nextafter(0.5, 1.0), vb);
+                    double ev = vdiff(va, vb, d) / fmax(sc, vnorm(va, d));
+                    worst_midv = fmax(worst_midv, ev / cond);
+                    check(ev <= 10 * tol, "smooth: C1 at the spline's breakpoints", ev, 10 * tol);
+                }
+            }
+        }
+    }
+    printf("keys: A(t_i) returned vs A_i                          %.3g\n", worst_at);
+    printf("keys: formula at u = 1 / u = 0 vs A_i, rigid keys  %.3g / scale (tol 1e-14)\n", worst_lim);
+    printf("keys: same on affine keys (scaling, shear), / scale:");
+    for (int si = 0; si < 6; ++si) printf(" %s %.2g", ga_scheme_name(all_schemes[si]), worst_aff[si]);
+    printf("\n      largest / (scale * cond) %.3g (tol 1e-13; cond = max ||e^X|| ||e^-X||, large for lihao2)\n",
+           worst_cond);
+    printf("continuity at u = 1/2 (smooth's two pieces)          %.3g / (scale*cond); velocity %.3g\n",
+           worst_mid, worst_midv);
+    if (skipped) printf("      (%d affine lihao2 sets skipped: velocities grew along the keys until logm failed)\n", skipped);
+}
+
+/* ---- 2. C1 at keys; analytic velocity vs finite differences ---------------------- */
+
+static void test_c1(rng *r)
+{
+    const ga_group *gs[3] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
+    double worst_an = 0, worst_fd[2] = { 0, 0 }, worst_afd = 0, worst_int = 0, kink = 1e300;
+    double worst_req = 0, ratio = 1e300;
+    int skipped = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+        int gi = trial % 3;
+        keyset k;
+        if (gi == 2) affine_keys(r, &k, 4 + trial % 3);
+        else random_keys(r, &k, 4 + trial % 3, 0);
+        int d = gs[gi]->dim;
+        double vel[MAXK * 12];
+        for (int i = 0; i < k.n * d; ++i) /* affine: mild scaling rates, any translation */
+            vel[i] = d == 12 && i % 4 != 3 ? unif(r, -0.3, 0.3) : unif(r, -1.5, 1.5);
+        for (int si = 0; si < 6; ++si) {
+            ga_scheme s = all_schemes[si];
+            keyset kk = k;
+            if (s == GA_SCHEME_QUADRATIC) kk.n = 3;
+            pathbuf b;
+            const double *vv = s == GA_SCHEME_LIHAO3 && trial % 2 ? vel
+                             : s == GA_SCHEME_LIHAO2 && trial % 2 ? vel : NULL;
+            int st = mkpath(&b, gs[gi], s, &kk, vv);
+            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_EDOMAIN || st == GA_ESINGULAR)) { ++skipped; continue; }
+            if (st) { check(0, "path init (C1 test)", st, 0); printf("  (%s on %s)\n", ga_scheme_name(s), gs[gi]->name); continue; }
+            /* equalities of velocities hold to rounding amplified by Ad of the
+             * factors: on affine keys, by their condition number */
+            double vtol = 1e-12 * (gi == 2 ? path_cond(&b.p) : 1.0);
+            double sc = path_scale(&b.p, &kk);
+            /* analytic velocity vs central differences inside segments */
+            for (int i = 0; i + 1 < kk.n; ++i)
+                for (int q = 1; q <= 3; ++q) {
+                    double u = 0.25 * q + 0.01, va[12], vf[12];
+                    ga_path_velocity_segment(&b.p, i, u, va);
+                    fd_central(&b.p, i, u, 1e-5, vf);
+                    double e = vdiff(va, vf, d) / fmax(sc, vnorm(va, d));
+                    worst_int = fmax(worst_int, e);
+                    check(e <= 1e-7, "analytic velocity = central FD (inside)", e, 1e-7);
+                }
+            if (!is_c1(s)) {
+                /* screw and bivector: show that the test does see a kink */
+                for (int i = 1; i + 1 < kk.n; ++i) {
+                    double vl[12], vr[12];
+                    ga_path_velocity_segment(&b.p, i - 1, 1.0, vl);
+                    ga_path_velocity_segment(&b.p, i, 0.0, vr);
+                    kink = fmin(kink, vdiff(vl, vr, d) / fmax(1, vnorm(vr, d)));
+                }
+                continue;
+            }
+            for (int i = 1; i + 1 < kk.n; ++i) {
+                double vl[12], vr[12];
+                ga_path_velocity_segment(&b.p, i - 1, 1.0, vl);
+                ga_path_velocity_segment(&b.p, i, 0.0, vr);
+                double vs = fmax(1.0, vnorm(vr, d));
+                double e = vdiff(vl, vr, d) / vs;
+                worst_an = fmax(worst_an, e);
+                check(e <= 10 * vtol, "C1: analytic velocity equal from both sides", e, 10 * vtol);
+                /* one-sided second-order FD at two steps: the left-right gap must
+                 * fall like eps^2 (a kink would stay), and each side must match
+                 * the analytic value */
+                double eps[2] = { 1e-3, 1e-4 }, gap[2], ea[2];
+                for (int q = 0; q < 2; ++q) {
+                    double fl[12], fr[12];
+                    fd_velocity(&b.p, i - 1, 1.0, -1, eps[q], fl);
+                    fd_velocity(&b.p, i, 0.0, +1, eps[q], fr);
+                    gap[q] = vdiff(fl, fr, d) / vs;
+                    ea[q] = fmax(vdiff(fl, vl, d), vdiff(fr, vr, d)) / vs;
+                    worst_fd[q] = fmax(worst_fd[q], gap[q]);
+                }
+                worst_afd = fmax(worst_afd, ea[1]);
+                /* second-order FD: both figures must fall ~100x for a 10x smaller
+                 * step (a velocity jump would stay), down to the rounding floor */
+                check(gap[1] <= 1e-4 && (gap[1] <= 1e-9 || gap[0] >= 50 * gap[1]),
+                      "C1: one-sided FD velocities agree, gap ~ eps^2", gap[1], 1e-4);
+                check(ea[1] <= 1e-4 && (ea[1] <= 1e-9 || ea[0] >= 50 * ea[1]),
+                      "C1: analytic velocity = one-sided FD, error ~ eps^2", ea[1], 1e-4);
+                ratio = fmin(ratio, gap[1] > 1e-9 ? gap[0] / gap[1] : 100);
+            }
+            if (s == GA_SCHEME_LIHAO3 && vv) { /* the requested velocity at every key */
+                for (int i = 0; i < kk.n; ++i) {
+                    double v[12];
+                    ga_path_velocity_segment(&b.p, i < kk.n - 1 ? i : i - 1, i < kk.n - 1 ? 0.0 : 1.0, v);
+                    double e = vdiff(v, vel + i * d, d) / fmax(1, vnorm(vel + i * d, d));
+                    worst_req = fmax(worst_req, e);
+                    check(e <= vtol, "lihao3: velocity at key = requested", e, vtol);
+                    if (i > 0) {
+                        ga_path_velocity_segment(&b.p, i - 1, 1.0, v);
+                        e = vdiff(v, vel + i * d, d) / fmax(1, vnorm(vel + i * d, d));
+                        worst_req = fmax(worst_req, e);
+                        check(e <= vtol, "lihao3: arriving velocity = requested", e, vtol);
+                    }
+                }
+            }
+            if (s == GA_SCHEME_LIHAO2 && vv) {
+                double v[12];
+                ga_path_velocity_segment(&b.p, 0, 0.0, v);
+                double e = vdiff(v, vel, d) / fmax(1, vnorm(vel, d));
+                worst_req = fmax(worst_req, e);
+                check(e <= vtol, "lihao2: first-key velocity = requested", e, vtol);
+            }
+        }
+    }
+    printf("C1: analytic velocity jump at keys (smooth, quadratic, lihao2/3)  %.3g\n", worst_an);
+    printf("C1: one-sided FD gap, step 1e-3: %.3g   step 1e-4: %.3g  (smallest fall %.1fx, ~eps^2)\n",
+           worst_fd[0], worst_fd[1], ratio);
+    if (skipped) printf("      (%d affine lihao2 sets skipped: velocities grew until logm failed)\n", skipped);
+    printf("C1: analytic vs one-sided FD (step 1e-4)          %.3g\n", worst_afd);
+    printf("velocity: analytic vs central FD inside segments  %.3g\n", worst_int);
+    printf("requested velocities (lihao3 every key, lihao2 first key)  %.3g\n", worst_req);
+    printf("screw/bivector smallest kink seen at a key          %.3g (not C1, as expected)\n", kink);
+    check(kink > 1e-3, "screw/bivector kink visible", kink, 1e-3);
+}
+
+/* ---- 3. cga == se3 on random key sets ----------------------------------------------- */
+
+static void test_cga_se3(rng *r)
+{
+    double worst[6] = { 0 }, worst_v = 0;
+    int sets = 0;
+    for (int trial = 0; trial < 250; ++trial, ++sets) {
+        keyset k;
+        random_keys(r, &k, 3 + trial % 5, trial % 5);
+        double vel[MAXK * 6];
+        for (int i = 0; i < k.n * 6; ++i) vel[i] = unif(r, -1, 1);
+        for (int si = 0; si < 6; ++si) {
+            ga_scheme s = all_schemes[si];
+            keyset kk = k;
+            if (s == GA_SCHEME_QUADRATIC) kk.n = 3;
+            set_scale(&kk);
+            const double *vv = (s == GA_SCHEME_LIHAO2 || s == GA_SCHEME_LIHAO3) && trial % 2 ? vel : NULL;
+            pathbuf a, b;
+            int s1 = mkpath(&a, &ga_group_cga, s, &kk, vv), s2 = mkpath(&b, &ga_group_se3, s, &kk, vv);
+            check(s1 == GA_OK && s2 == GA_OK, "cga/se3 path init", s1 ? s1 : s2, 0);
+            if (s1 || s2) continue;
+            double sc = fmax(path_scale(&a.p, &kk), path_scale(&b.p, &kk));
+            for (int q = 0; q <= 40; ++q) {
+                double t = tgrid(&kk, q, 40);
+                double e = mdiff(at(&a.p, t), at(&b.p, t)) / sc;
+                worst[si] = fmax(worst[si], e);
+                check(e <= 1e-12, "cga == se3 samples (1e-12)", e, 1e-12);
+                if (q % 8 == 3) {
+                    double va[6], vb[6];
+                    vel_at(&a.p, t, va);
+                    vel_at(&b.p, t, vb);
+                    double ev = vdiff(va, vb, 6) / fmax(sc, vnorm(vb, 6));
+                    worst_v = fmax(worst_v, ev);
+                    check(ev <= 1e-11, "cga == se3 velocities", ev, 1e-11);
+                }
+            }
+        }
+    }
+    printf("cga vs se3 over %d key sets (half turns, relative half turns, 1e-9..1e-5 rad under 1e4):\n", sets);
+    for (int si = 0; si < 6; ++si)
+        printf("    %-9s max diff / scale %.3g\n", ga_scheme_name(all_schemes[si]), worst[si]);
+    printf("    velocities max diff / scale %.3g\n", worst_v);
+}
+
+/* ---- 4. screw = Eberly geodesic = W-L rotor form = dual-quaternion ScLERP; SLERP ---- */
+
+typedef struct { double w, x, y, z; } quat;
+static quat qmul(quat a, quat b)
+{
+    quat r = { a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
+               a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+               a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+               a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w };
+    return r;
+}
+static quat qconj(quat a) { quat r = { a.w, -a.x, -a.y, -a.z }; return r; }
+static quat qadd(quat a, quat b) { quat r = { a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z }; return r; }
+static quat qscale(quat a, double s) { quat r = { s * a.w, s * a.x, s * a.y, s * a.z }; return r; }
+
+/* Shepperd's method, written here independently of rotor.c. */
+static quat quat_of(ga_mat4 m)
+{
+    double r00 = m.m[0], r11 = m.m[5], r22 = m.m[10], tr = r00 + r11 + r22;
+    quat q;
+    if (tr >= r00 && tr >= r11 && tr >= r22) {
+        double s = 2 * sqrt(1 + tr);
+        q.w = s / 4; q.x = (m.m[9] - m.m[6]) / s; q.y = (m.m[2] - m.m[8]) / s; q.z = (m.m[4] - m.m[1]) / s;
+    } else if (r00 >= r11 && r00 >= r22) {
+        double s = 2 * sqrt(1 + r00 - r11 - r22);
+        q.w = (m.m[9] - m.m[6]) / s; q.x = s / 4; q.y = (m.m[1] + m.m[4]) / s; q.z = (m.m[2] + m.m[8]) / s;
+    } else if (r11 >= r22) {
+        double s = 2 * sqrt(1 + r11 - r00 - r22);
+        q.w = (m.m[2] - m.m[8]) / s; q.x = (m.m[1] + m.m[4]) / s; q.y = s / 4; q.z = (m.m[6] + m.m[9]) / s;
+    } else {
+        double s = 2 * sqrt(1 + r22 - r00 - r11);
+        q.w = (m.m[4] - m.m[1]) / s; q.x = (m.m[2] + m.m[8]) / s; q.y = (m.m[6] + m.m[9]) / s; q.z = s / 4;
+    }
+    return q;
+}
+static ga_mat4 mat_of(quat q, ga_vec3 t)
+{
+    double w = q.w, x = q.x, y = q.y, z = q.z;
+    ga_mat4 m = { { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x,
+                    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y,
+                    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), t.z,
+                    0, 0, 0, 1 } };
+    return m;
+}
+
+typedef struct { quat r, d; } dquat;
+static dquat dq_of(ga_mat4 m)
+{
+    dquat a;
+    a.r = quat_of(m);
+    quat t = { 0, m.m[3], m.m[7], m.m[11] };
+    a.d = qscale(qmul(t, a.r), 0.5);
+    return a;
+}
+static dquat dq_mul(dquat a, dquat b)
+{
+    dquat c = { qmul(a.r, b.r), qadd(qmul(a.r, b.d), qmul(a.d, b.r)) };
+    return c;
+}
+static dquat dq_conj(dquat a) { dquat c = { qconj(a.r), qconj(a.d) }; return c; }
+static ga_mat4 dq_mat(dquat a)
+{
+    quat t = qscale(qmul(a.d, qconj(a.r)), 2.0);
+    ga_vec3 tv = { t.x, t.y, t.z };
+    return mat_of(a.r, tv);
+}
+/* a^u through the screw parameters: a = cos(th^/2) + sin(th^/2) l^, th^ = th + e d,
+ * l^ = l + e m, m = (t x l + (t - d l) cot(th/2))/2 (Kavan et al. 2008). */
+static dquat dq_pow(dquat a, double u)
+{
+    double sv = sqrt(a.r.x * a.r.x + a.r.y * a.r.y + a.r.z * a.r.z);
+    double th = 2 * atan2(sv, a.r.w);
+    ga_vec3 l = { a.r.x / sv, a.r.y / sv, a.r.z / sv };
+    quat tq = qscale(qmul(a.d, qconj(a.r)), 2.0);
+    ga_vec3 t = { tq.x, tq.y, tq.z };
+    double dd = t.x * l.x + t.y * l.y + t.z * l.z, ct = cos(th / 2) / sin(th / 2);
+    ga_vec3 m = { 0.5 * ((t.y * l.z - t.z * l.y) + (t.x - dd * l.x) * ct),
+                  0.5 * ((t.z * l.x - t.x * l.z) + (t.y - dd * l.y) * ct),
+                  0.5 * ((t.x * l.y - t.y * l.x) + (t.z - dd * l.z) * ct) };
+    double c = cos(u * th / 2), s = sin(u * th / 2), hd = u * dd / 2;
+    dquat r;
+    r.r.w = c; r.r.x = s * l.x; r.r.y = s * l.y; r.r.z = s * l.z;
+    r.d.w = -hd * s;
+    r.d.x = hd * c * l.x + s * m.x; r.d.y = hd * c * l.y + s * m.y; r.d.z = hd * c * l.z + s * m.z;
+    return r;
+}
+static ga_mat4 sclerp(ga_mat4 a, ga_mat4 b, double u)
+{
+    dquat da = dq_of(a), rel = dq_mul(dq_conj(da), dq_of(b));
+    if (rel.r.w < 0) { rel.r = qscale(rel.r, -1); rel.d = qscale(rel.d, -1); }
+    return dq_mat(dq_mul(da, dq_pow(rel, u)));
+}
+
+static void test_screw(rng *r)
+{
+    double e_geo = 0, e_wl = 0, e_dq = 0, e_slerp = 0;
+    for (int trial = 0; trial < 100; ++trial) {
+        keyset k;
+        random_keys(r, &k, 2 + trial % 5, 0);
+        pathbuf a, b;
+        if (mkpath(&a, &ga_group_se3, GA_SCHEME_SCREW, &k, NULL)
+            || mkpath(&b, &ga_group_cga, GA_SCHEME_SCREW, &k, NULL)) {
+            check(0, "screw path init", 0, 0);
+            continue;
+        }
+        for (int i = 0; i + 1 < k.n; ++i) {
+            /* W-L §3.1 with rotors: R(u) = exp(u l(R_{i+1} ~R_i)) R_i */
+            const ga_group *g = &ga_group_cga;
+            double ri[8], ri1[8], rinv[8], rel[8], x[6];
+            g->from_mat4(k.m[i], ri);
+            g->from_mat4(k.m[i + 1], ri1);
+            g->inverse(ri, rinv);
+            g->compose(ri1, rinv, rel);
+            g->log(rel, x);
+            for (int q = 0; q <= 10; ++q) {
+                double u = q / 10.0;
+                ga_mat4 geo;
+                ga_se3_geodesic(k.m[i], k.m[i + 1], u, &geo);
+                ga_mat4 ps = at_seg(&a.p, i, u), pc = at_seg(&b.p, i, u);
+                e_geo = fmax(e_geo, mdiff(ps, geo) / k.scale);
+                double xu[6], e[8], wl[8];
+                for (int j = 0; j < 6; ++j) xu[j] = u * x[j];
+                g->exp(xu, e);
+                g->compose(e, ri, wl);
+                e_wl = fmax(e_wl, mdiff(pc, g->to_mat4(wl)) / k.scale);
+                e_dq = fmax(e_dq, mdiff(ps, sclerp(k.m[i], k.m[i + 1], u)) / k.scale);
+            }
+        }
+        /* pure rotations: quaternion SLERP */
+        keyset rk = k;
+        for (int i = 0; i < rk.n; ++i) rk.m[i].m[3] = rk.m[i].m[7] = rk.m[i].m[11] = 0;
+        pathbuf c;
+        if (mkpath(&c, &ga_group_cga, GA_SCHEME_SCREW, &rk, NULL)) continue;
+        for (int i = 0; i + 1 < rk.n; ++i) {
+            quat q0 = quat_of(rk.m[i]), q1 = quat_of(rk.m[i + 1]);
+            double dot = q0.w * q1.w + q0.x * q1.x + q0.y * q1.y + q0.z * q1.z;
+            if (dot < 0) { q1 = qscale(q1, -1); dot = -dot; }
+            double phi = acos(fmin(1.0, dot));
+            for (int q = 0; q <= 10; ++q) {
+                double u = q / 10.0;
+                quat s = phi < 1e-8 ? q0
+                       : qadd(qscale(q0, sin((1 - u) * phi) / sin(phi)), qscale(q1, sin(u * phi) / sin(phi)));
+                ga_vec3 z = { 0, 0, 0 };
+                e_slerp = fmax(e_slerp, mdiff(at_seg(&c.p, i, u), mat_of(s, z)));
+            }
+        }
+    }
+    printf("screw vs ga_se3_geodesic (Eberly eq. 21)            %.3g\n", e_geo);
+    printf("screw (A exp(u log(A^-1 B))) vs W-L exp(u l(R1 ~R0)) R0 on rotors  %.3g\n", e_wl);
+    printf("screw vs dual-quaternion ScLERP                     %.3g\n", e_dq);
+    printf("screw on pure rotations vs quaternion SLERP         %.3g\n", e_slerp);
+    check(e_geo <= 1e-13, "screw == ga_se3_geodesic", e_geo, 1e-13);
+    check(e_wl <= 1e-13, "screw == W-L rotor form (Ad-invariance)", e_wl, 1e-13);
+    check(e_dq <= 1e-12, "screw == dual-quaternion ScLERP", e_dq, 1e-12);
+    check(e_slerp <= 1e-13, "screw on rotations == SLERP", e_slerp, 1e-13);
+}
+
+/* ---- 5. scheme identities: W-L quadratic, smooth exactness, lihao3 screw, eq. 27 ---- */
+
+static void test_identities(rng *r)
+{
+    /* W-L §3.2 at times -1, 0, 1: B'_l = ((B3 + B1)/2 - B2) l^2 + (B3 - B1)/2 l + B2 */
+    double e_wl = 0, e_sq = 0, e_exact = 0, e_l3 = 0, e_l3v = 0, e27 = 0, e16 = 0, e25 = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        keyset k;
+        random_keys(r, &k, 3, 0);
+        k.t[0] = -1; k.t[1] = 0; k.t[2] = 1;
+        const ga_group *g = trial % 2 ? &ga_group_cga : &ga_group_se3;
+        pathbuf q, sm;
+        if (mkpath(&q, g, GA_SCHEME_QUADRATIC, &k, NULL) || mkpath(&sm, g, GA_SCHEME_SMOOTH, &k, NULL)) {
+            check(0, "quadratic init", 0, 0);
+            continue;
+        }
+        const double *B1 = q.p.gen, *B2 = B1 + 6, *B3 = B2 + 6;
+        for (int j = 0; j <= 20; ++j) {
+            double l = -1 + j / 10.0, x[6], e[16];
+            for (int c = 0; c < 6; ++c)
+                x[c] = ((B3[c] + B1[c]) / 2 - B2[c]) * l * l + (B3[c] - B1[c]) / 2 * l + B2[c];
+            g->exp(x, e);
+            e_wl = fmax(e_wl, mdiff(at(&q.p, l), g->to_mat4(e)) / path_scale(&q.p, &k));
+            e_sq = fmax(e_sq, mdiff(at(&q.p, l), at(&sm.p, l)) / path_scale(&q.p, &k));
+        }
+    }
+    /* smooth reproduces exp(Q(t)) for a quadratic Q in twist space (small angles,
+     * so the principal logs are the Q(t_i) themselves) at any times */
+    for (int trial = 0; trial < 40; ++trial) {
+        double c0[6], c1[6], c2[6];
+        for (int j = 0; j < 6; ++j) {
+            c0[j] = unif(r, -0.5, 0.5);
+            c1[j] = unif(r, -0.3, 0.3);
+            c2[j] = unif(r, -0.05, 0.05);
+        }
+        keyset k;
+        k.n = 4 + trial % 4;
+        random_times(r, &k);
+        double mid = 0.5 * (k.t[0] + k.t[k.n - 1]);
+        for (int i = 0; i < k.n; ++i) {
+            double s = (k.t[i] - mid) / (k.t[k.n - 1] - k.t[0]) * 2, x[6];
+            for (int j = 0; j < 6; ++j) x[j] = c0[j] + c1[j] * s + c2[j] * s * s;
+            k.m[i] = ga_se3_exp((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
+        }
+        set_scale(&k);
+        pathbuf sm;
+        if (mkpath(&sm, &ga_group_se3, GA_SCHEME_SMOOTH, &k, NULL)) { check(0, "smooth init", 0, 0); continue; }
+        for (int j = 0; j <= 50; ++j) {
+            double t = tgrid(&k, j, 50);
+            double s = (t - mid) / (k.t[k.n - 1] - k.t[0]) * 2, x[6];
+            for (int c = 0; c < 6; ++c) x[c] = c0[c] + c1[c] * s + c2[c] * s * s;
+            ga_mat4 ref = ga_se3_exp((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
+            e_exact = fmax(e_exact, mdiff(at(&sm.p, t), ref) / k.scale);
+        }
+    }
+    /* lihao3 with the default velocities reproduces a screw motion A0 exp(t V) */
+    for (int trial = 0; trial < 40; ++trial) {
+        ga_twist V;
+        V.w = runit(r);
+        V.v = rvec(r, 1);
+        ga_mat4 A0 = rand_rigid(r, 0, 3, 3);
+        keyset k;
+        k.n = 3 + trial % 5;
+        random_times(r, &k);
+        for (int i = 0; i < k.n; ++i) {
+            double s = 0.4 * (k.t[i] - k.t[0]);
+            ga_twist x = { { s * V.w.x, s * V.w.y, s * V.w.z }, { s * V.v.x, s * V.v.y, s * V.v.z } };
+            k.m[i] = mmul(A0, ga_se3_exp(x));
+        }
+        set_scale(&k);
+        const ga_group *g = trial % 2 ? &ga_group_cga : &ga_group_se3;
+        pathbuf b;
+        if (mkpath(&b, g, GA_SCHEME_LIHAO3, &k, NULL)) { check(0, "lihao3 init", 0, 0); continue; }
+        for (int j = 0; j <= 30; ++j) {
+            double t = tgrid(&k, j, 30), s = 0.4 * (t - k.t[0]);
+            ga_twist x = { { s * V.w.x, s * V.w.y, s * V.w.z }, { s * V.v.x, s * V.v.y, s * V.v.z } };
+            e_l3 = fmax(e_l3, mdiff(at(&b.p, t), mmul(A0, ga_se3_exp(x))) / k.scale);
+            double v[6], vr[6] = { 0.4 * V.w.x, 0.4 * V.w.y, 0.4 * V.w.z, 0.4 * V.v.x, 0.4 * V.v.y, 0.4 * V.v.z };
+            vel_at(&b.p, t, v);
+            e_l3v = fmax(e_l3v, vdiff(v, vr, 6));
+        }
+    }
+    /* Li-Hao eq. 27 as printed, C = log(e^{+B} A_i^-1 A_{i+1}), misses the next
+     * key; eq. 16's e^{-B} hits it. Eq. 25 (dM/du at u = 1) against FD. */
+    for (int trial = 0; trial < 20; ++trial) {
+        ga_mat4 A = rand_rigid(r, 0, 2, 2), Bm = rand_rigid(r, 0, 2, 2);
+        ga_mat4 rel = mmul(ga_se3_inverse(A), Bm);
+        ga_twist B = rand_twist(r, 0.5, 0.5), mB = { { -B.w.x, -B.w.y, -B.w.z }, { -B.v.x, -B.v.y, -B.v.z } };
+        ga_twist C16, C27, D = rand_twist(r, 0.5, 0.5);
+        ga_se3_log(mmul(ga_se3_exp(mB), rel), &C16);
+        ga_se3_log(mmul(ga_se3_exp(B), rel), &C27);
+        e16 = fmax(e16, mdiff(mmul(ga_se3_exp(B), ga_se3_exp(C16)), rel));
+        e27 = fmax(e27, mdiff(mmul(ga_se3_exp(B), ga_se3_exp(C27)), rel));
+        /* eq. 25: M'(1) = B^ rel + 2 rel C^ + rel D^ for M = e^{uB} e^{u^2 C} e^{(u^3-u^2) D} */
+        ga_mat4 lhs = mmul(ga_twist_hat(B), rel), r2 = mmul(rel, ga_twist_hat(C16)), r3 = mmul(rel, ga_twist_hat(D));
+        for (int i = 0; i < 16; ++i) lhs.m[i] += 2 * r2.m[i] + r3.m[i];
+        double hs = 1e-5;
+        ga_mat4 Mp, Mm;
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double u = 1 + sgn * hs, pb = u, pc = u * u, pd = u * u * u - u * u;
+            ga_twist xb = { { pb * B.w.x, pb * B.w.y, pb * B.w.z }, { pb * B.v.x, pb * B.v.y, pb * B.v.z } };
+            ga_twist xc = { { pc * C16.w.x, pc * C16.w.y, pc * C16.w.z }, { pc * C16.v.x, pc * C16.v.y, pc * C16.v.z } };
+            ga_twist xd = { { pd * D.w.x, pd * D.w.y, pd * D.w.z }, { pd * D.v.x, pd * D.v.y, pd * D.v.z } };
+            ga_mat4 M = mmul(mmul(ga_se3_exp(xb), ga_se3_exp(xc)), ga_se3_exp(xd));
+            if (sgn < 0) Mm = M; else Mp = M;
+        }
+        for (int i = 0; i < 16; ++i) e25 = fmax(e25, fabs((Mp.m[i] - Mm.m[i]) / (2 * hs) - lhs.m[i]));
+    }
+    printf("quadratic vs W-L §3.2 formula at times -1, 0, 1      %.3g\n", e_wl);
+    printf("smooth with 3 keys == quadratic                      %.3g\n", e_sq);
+    printf("smooth reproduces exp(quadratic twist) at any times  %.3g\n", e_exact);
+    printf("lihao3 (default velocities) reproduces a screw motion %.3g (velocity %.3g)\n", e_l3, e_l3v);
+    printf("Li-Hao eq. 16: |e^B e^C - A_i^-1 A_i+1| = %.3g;  eq. 27 as printed (e^{+B}): %.3g  (eq. 27 wrong)\n",
+           e16, e27);
+    printf("Li-Hao eq. 25 (dM/du at u=1) vs central FD           %.3g\n", e25);
+    check(e_wl <= 1e-13, "quadratic == W-L §3.2", e_wl, 1e-13);
+    check(e_sq <= 1e-13, "smooth(3 keys) == quadratic", e_sq, 1e-13);
+    check(e_exact <= 1e-13, "smooth exact for quadratic generators", e_exact, 1e-13);
+    check(e_l3 <= 1e-13, "lihao3 default reproduces screw", e_l3, 1e-13);
+    check(e_l3v <= 1e-12, "lihao3 default screw velocity", e_l3v, 1e-12);
+    check(e16 <= 1e-13 && e27 > 1e-2, "eq. 16 hits the key, eq. 27 as printed does not", e27, 1e-2);
+    check(e25 <= 1e-8, "Li-Hao eq. 25 derivative", e25, 1e-8);
+}
+
+/* ---- 6. dexp: closed form vs the affine series vs finite differences -------------- */
+
+static void test_dexp(rng *r)
+{
+    double e_aff = 0, e_fd = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        double x[6], y[6], j1[6], j2[12], xa[12], ya[12];
+        ga_vec3 u = runit(r);
+        double th = trial % 5 == 0 ? pow(10.0, unif(r, -12, -1)) : trial % 5 == 1 ? PI - pow(10.0, unif(r, -12, -1))
+                  : trial % 5 == 2 ? unif(r, 0.9, 1.1) : unif(r, 0, 8);
+        x[0] = th * u.x; x[1] = th * u.y; x[2] = th * u.z;
+        for (int i = 3; i < 6; ++i) x[i] = unif(r, -3, 3);
+        for (int i = 0; i < 6; ++i) y[i] = unif(r, -1, 1);
+        ga_group_se3.dexp(x, y, j1);
+        /* the same twists as affine algebra elements (top rows of the hat) */
+        ga_mat4 hx = ga_twist_hat((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
+        ga_mat4 hy = ga_twist_hat((ga_twist){ { y[0], y[1], y[2] }, { y[3], y[4], y[5] } });
+        memcpy(xa, hx.m, sizeof xa);
+        memcpy(ya, hy.m, sizeof ya);
+        ga_group_affine.dexp(xa, ya, j2);
+        ga_mat4 hj = ga_twist_hat((ga_twist){ { j1[0], j1[1], j1[2] }, { j1[3], j1[4], j1[5] } });
+        double e = 0;
+        for (int i = 0; i < 12; ++i) e = fmax(e, fabs(hj.m[i] - j2[i]));
+        e_aff = fmax(e_aff, e / fmax(1, vnorm(x, 6)));
+        /* FD: log(exp(x)^-1 exp(x + s y))/s, central */
+        double hs = 1e-6, xp[6], xm[6], ex[16], ep[16], em[16], yp[6], ym[6];
+        for (int i = 0; i < 6; ++i) { xp[i] = x[i] + hs * y[i]; xm[i] = x[i] - hs * y[i]; }
+        ga_group_se3.exp(x, ex); ga_group_se3.exp(xp, ep); ga_group_se3.exp(xm, em);
+        body_log(&ga_group_se3, ex, ep, yp);
+        body_log(&ga_group_se3, ex, em, ym);
+        double fd[6];
+        for (int i = 0; i < 6; ++i) fd[i] = (yp[i] - ym[i]) / (2 * hs);
+        e_fd = fmax(e_fd, vdiff(fd, j1, 6) / fmax(1, vnorm(x, 6)));
+    }
+    printf("dexp: SE(3) closed form vs affine series            %.3g\n", e_aff);
+    printf("dexp: SE(3) closed form vs central FD               %.3g\n", e_fd);
+    check(e_aff <= 1e-12, "dexp closed form == series", e_aff, 1e-12);
+    check(e_fd <= 1e-7, "dexp == FD", e_fd, 1e-7);
+}
+
+/* ---- 7. affine vs se3 on rigid keys; affine paths through scaled/sheared keys ---- */
+
+static void test_affine(rng *r)
+{
+    double e = 0;
+    for (int trial = 0; trial < 30; ++trial) {
+        keyset k;
+        k.n = 3 + trial % 4;
+        random_times(r, &k);
+        for (int i = 0; i < k.n; ++i) k.m[i] = rand_rigid(r, 0, 2.5, 4);
+        set_scale(&k);
+        ga_scheme ss[3] = { GA_SCHEME_SCREW, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3 };
+        for (int si = 0; si < 3; ++si) {
+            pathbuf a, b;
+            int s1 = mkpath(&a, &ga_group_affine, ss[si], &k, NULL), s2 = mkpath(&b, &ga_group_se3, ss[si], &k, NULL);
+            if (s1 == GA_EDOMAIN) continue; /* a relative motion near a half turn: no real logm */
+            check(s1 == GA_OK && s2 == GA_OK, "affine/se3 init", s1 ? s1 : s2, 0);
+            if (s1 || s2) continue;
+            for (int j = 0; j <= 20; ++j) {
+                double t = tgrid(&k, j, 20);
+                e = fmax(e, mdiff(at(&a.p, t), at(&b.p, t)) / k.scale);
+            }
+        }
+    }
+    printf("affine == se3 on rigid keys (screw, lihao2, lihao3)  %.3g\n", e);
+    check(e <= 1e-11, "affine == se3 on rigid keys", e, 1e-11);
+    /* det and last-row checks */
+    ga_mat4 bad = ga_mat4_identity(), m;
+    bad.m[0] = -1;
+    check(ga_group_affine.from_mat4(bad, &m) != GA_OK, "affine rejects det < 0", 0, 0);
+    bad = ga_mat4_identity();
+    bad.m[12] = 1e-6;
+    check(ga_group_affine.from_mat4(bad, &m) != GA_OK, "affine rejects last row", 0, 0);
+}
+
+/* ---- 8. Euler: error proportional to the step -------------------------------------- */
+
+static double euler_error(const ga_path *p, double h, int nsamp)
+{
+    ga_path_stepper se, sd;
+    double a[16], b[16], e = 0;
+    ga_path_stepper_init(&se, p, GA_EVAL_EULER, h, nsamp, p->t[0], p->t[p->n - 1]);
+    ga_path_stepper_init(&sd, p, GA_EVAL_DIRECT, 0, nsamp, p->t[0], p->t[p->n - 1]);
+    for (int k = 0; k < nsamp; ++k) {
+        if (ga_path_stepper_next(&se, a) || ga_path_stepper_next(&sd, b)) return NAN;
+        e = fmax(e, mdiff(p->group->to_mat4(a), p->group->to_mat4(b)));
+    }
+    return e;
+}
+
+static void test_euler(rng *r)
+{
+    keyset k;
+    k.n = 4;
+    for (int i = 0; i < 4; ++i) { k.t[i] = i; k.m[i] = rand_rigid(r, 0.5, 2.5, 3); }
+    set_scale(&k);
+    ga_scheme ss[2] = { GA_SCHEME_LIHAO3, GA_SCHEME_SMOOTH };
+    const ga_group *gs[2] = { &ga_group_se3, &ga_group_cga };
+    for (int si = 0; si < 2; ++si) {
+        pathbuf b;
+        mkpath(&b, gs[si], ss[si], &k, NULL);
+        double lx[7], ly[7], sx = 0, sy = 0, sxx = 0, sxy = 0;
+        printf("Euler (%s on %s): step -> max error:", ga_scheme_name(ss[si]), gs[si]->name);
+        for (int j = 0; j < 7; ++j) {
+            double h = pow(10.0, -1.0 - 0.5 * j);
+            double e = euler_error(&b.p, h, 13);
+            lx[j] = log10(h); ly[j] = log10(e);
+            printf(" %.0e:%.2e", h, e);
+            sx += lx[j]; sy += ly[j]; sxx += lx[j] * lx[j]; sxy += lx[j] * ly[j];
+        }
+        double slope = (7 * sxy - sx * sy) / (7 * sxx - sx * sx);
+        printf("\n    log-log slope over 3 decades (1e-1 .. 1e-4): %.3f  (want 1 +- 0.1)\n", slope);
+        check(fabs(slope - 1.0) <= 0.1, "Euler error slope 1 +- 0.1", slope, 0.1);
+    }
+    /* Euler on the screw is exact (constant body velocity): only rounding */
+    pathbuf b;
+    mkpath(&b, &ga_group_se3, GA_SCHEME_SCREW, &k, NULL);
+    double e = euler_error(&b.p, 1e-3, 13);
+    printf("Euler on screw (constant body velocity), step 1e-3: %.3g (exact up to rounding)\n", e);
+    check(e <= 1e-12 * k.scale, "Euler exact on screw", e, 1e-12);
+}
+
+/* ---- 9. exact stepping vs direct over 10^6 steps ----------------------------------- */
+
+static void test_exact(rng *r)
+{
+    keyset k;
+    k.n = 4;
+    k.t[0] = 0;
+    for (int i = 1; i < 4; ++i) k.t[i] = k.t[i - 1] + unif(r, 0.5, 2);
+    for (int i = 0; i < 4; ++i) k.m[i] = rand_rigid(r, 0.5, 3, 50);
+    set_scale(&k);
+    struct { ga_scheme s; const ga_group *g; long n; } runs[] = {
+        { GA_SCHEME_LIHAO3, &ga_group_se3, 1000001 }, { GA_SCHEME_LIHAO3, &ga_group_cga, 1000001 },
+        { GA_SCHEME_LIHAO2, &ga_group_cga, 200001 }, { GA_SCHEME_SCREW, &ga_group_se3, 200001 },
+        { GA_SCHEME_LIHAO3, &ga_group_affine, 100001 },
+    };
+    printf("exact stepping re-anchors every %d samples (GA_PATH_EXACT_REANCHOR)\n", GA_PATH_EXACT_REANCHOR);
+    for (size_t q = 0; q < sizeof runs / sizeof runs[0]; ++q) {
+        pathbuf b;
+        keyset kk = k;
+        if (runs[q].g == &ga_group_affine) { /* scaled and sheared keys at k's times */
+            affine_keys(r, &kk, 4);
+            memcpy(kk.t, k.t, sizeof k.t);
+        }
+        if (mkpath(&b, runs[q].g, runs[q].s, &kk, NULL)) { check(0, "exact init", 0, 0); continue; }
+        ga_path_stepper sx, sd;
+        ga_path_stepper_init(&sx, &b.p, GA_EVAL_EXACT, 0, runs[q].n, kk.t[0], kk.t[3]);
+        ga_path_stepper_init(&sd, &b.p, GA_EVAL_DIRECT, 0, runs[q].n, kk.t[0], kk.t[3]);
+        double e = 0, a[16], c[16];
+        clock_t c0 = clock();
+        for (long j = 0; j < runs[q].n; ++j) {
+            if (ga_path_stepper_next(&sx, a) || ga_path_stepper_next(&sd, c)) { e = NAN; break; }
+            e = fmax(e, mdiff(runs[q].g->to_mat4(a), runs[q].g->to_mat4(c)));
+        }
+        e /= kk.scale;
+        printf("exact stepping vs direct, %-6s on %-6s over %ld steps: %.3g  (%.2f s both; cond %.3g)\n",
+               ga_scheme_name(runs[q].s), runs[q].g->name, runs[q].n - 1, e,
+               (double)(clock() - c0) / CLOCKS_PER_SEC, path_cond(&b.p));
+        check(e <= 1e-12, "exact stepping within 1e-12 of direct", e, 1e-12);
+    }
+    /* batch call: N samples into a buffer, equal to direct */
+    pathbuf b;
+    mkpath(&b, &ga_group_cga, GA_SCHEME_LIHAO3, &k, NULL);
+    double buf[3][101 * 8], e = 0;
+    ga_path_sample_uniform(&b.p, GA_EVAL_EXACT, 0, 101, k.t[0], k.t[3], buf[0]);
+    double times[101];
+    for (int j = 0; j < 101; ++j) times[j] = k.t[0] + (k.t[3] - k.t[0]) * j / 100.0;
+    times[100] = k.t[3];
+    ga_path_sample(&b.p, GA_EVAL_DIRECT, 0, 101, times, buf[1]);
+    for (int j = 0; j < 101; ++j)
+        e = fmax(e, mdiff(ga_group_cga.to_mat4(buf[0] + 8 * j), ga_group_cga.to_mat4(buf[1] + 8 * j)));
+    check(e <= 1e-12 * k.scale, "batch uniform (exact) == batch at times (direct)", e, 1e-12);
+    int st = ga_path_sample(&b.p, GA_EVAL_EULER, 1e-3, 101, times, buf[2]);
+    check(st == GA_OK, "batch euler at times", st, 0);
+}
+
+/* ---- 10. bad input ---------------------------------------------------------------- */
+
+static void test_errors(void)
+{
+    keyset k;
+    k.n = 4;
+    for (int i = 0; i < 4; ++i) { k.t[i] = i; k.m[i] = ga_mat4_identity(); k.m[i].m[3] = i; }
+    pathbuf b;
+    int st;
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_SCREW, 1, k.t, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_EARG, "screw with 1 key -> GA_EARG", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_SMOOTH, 2, k.t, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_EARG, "smooth with 2 keys -> GA_EARG", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_EARG, "quadratic with 4 keys -> GA_EARG", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_LIHAO3, 0, k.t, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_EARG, "lihao3 with 0 keys -> GA_EARG", st, 0);
+    double t2[4] = { 0, 1, 1, 2 }, t3[4] = { 0, 2, 1, 3 }, t4[4] = { 0, NAN, 1, 3 };
+    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_LIHAO2, 4, t2, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_EARG, "equal times -> GA_EARG", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_BIVECTOR, 4, t3, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_EARG, "decreasing times -> GA_EARG", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_BIVECTOR, 4, t4, k.m, NULL, b.work, sizeof b.work);
+    check(st == GA_ENOTFINITE, "NaN time -> GA_ENOTFINITE", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
+                           ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4) - 8);
+    check(st == GA_EARG, "small workspace -> GA_EARG", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
+                           ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4));
+    check(st == GA_OK, "exact workspace size suffices", st, 0);
+    double out[16];
+    check(ga_path_eval(&b.p, 3.5, out) == GA_EARG, "t after the last key -> GA_EARG", 0, 0);
+    check(ga_path_eval(&b.p, NAN, out) == GA_EARG, "t NaN -> GA_EARG", 0, 0);
+    ga_path_stepper s;
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EULER, 0.0, 10, 0, 3) == GA_EARG, "Euler step 0 -> GA_EARG", 0, 0);
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EXACT, 0, 1, 1.5, 1.5) == GA_OK
+          && ga_path_stepper_next(&s, out) == GA_OK && ga_path_stepper_next(&s, out) == GA_EARG,
+          "one-sample stepper, then GA_EARG", 0, 0);
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, 2, 1) == GA_EARG, "t0 > t1 -> GA_EARG", 0, 0);
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, -1, 1) == GA_EARG, "t0 before keys -> GA_EARG", 0, 0);
+    double nanv[4 * 6];
+    for (int i = 0; i < 24; ++i) nanv[i] = NAN;
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, nanv, b.work, sizeof b.work);
+    check(st == GA_ENOTFINITE, "NaN velocity -> GA_ENOTFINITE", st, 0);
+    ga_mat4 nr[4];
+    memcpy(nr, k.m, sizeof nr);
+    nr[2].m[0] = 1.1;
+    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
+    check(st == GA_ENOTRIGID, "non-rigid key on cga -> GA_ENOTRIGID", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
+    check(st == GA_ENOTRIGID, "non-rigid key on se3 -> GA_ENOTRIGID", st, 0);
+    st = ga_path_init_mat4(&b.p, &ga_group_affine, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
+    check(st == GA_OK, "scaled key on affine -> ok", st, 0);
+    ga_scheme sc;
+    check(ga_scheme_by_name("smooth", &sc) == GA_OK && sc == GA_SCHEME_SMOOTH, "scheme by name", 0, 0);
+    check(ga_scheme_by_name("nope", &sc) == GA_EARG, "unknown scheme -> GA_EARG", 0, 0);
+    check(ga_group_by_name("matrix") == &ga_group_se3 && ga_group_by_name("x") == NULL, "group by name", 0, 0);
+    printf("bad input: too few keys, equal/decreasing/NaN times, small workspace, t out of range,\n"
+           "           step 0, NaN velocity, non-rigid keys: all rejected with their codes\n");
+}
+
+int main(void)
+{
+    rng r = { 20240607u };
+    clock_t c0 = clock();
+    test_keys(&r);
+    test_c1(&r);
+    test_cga_se3(&r);
+    test_screw(&r);
+    test_identities(&r);
+    test_dexp(&r);
+    test_affine(&r);
+    test_euler(&r);
+    test_exact(&r);
+    test_errors();
+    printf("%s: %d failure(s), %.2f s\n", fails ? "FAILED" : "ok", fails,
+           (double)(clock() - c0) / CLOCKS_PER_SEC);
+    return fails != 0;
+}
