@@ -17,10 +17,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "mat4.h"
-#include "rotor.h"
-#include "group.h"
-#include "path.h"
+#include "testkit.h"
 
 #define PI 3.14159265358979323846
 #define MAXK 8
@@ -36,40 +33,19 @@ static void check(int ok, const char *what, double figure, double tol)
     }
 }
 
-/* ---- PRNG: splitmix64 ------------------------------------------------------ */
+/* ---- random draws (testkit.h: splitmix64) -------------------------------- */
 
-typedef struct { uint64_t s; } rng;
-static uint64_t next64(rng *r)
-{
-    uint64_t z = (r->s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double unif(rng *r, double a, double b)
-{
-    return a + (b - a) * (double)(next64(r) >> 11) * 0x1.0p-53;
-}
 /* (Each draw is its own statement: the order of evaluation of arguments and
  * initializers is unspecified in C, and the sequence must not depend on the
  * compiler.) */
-static ga_vec3 rvec(rng *r, double s)
+static ga_vec3 rvec(tk_rng *r, double s)
 {
     ga_vec3 v;
-    v.x = unif(r, -s, s);
-    v.y = unif(r, -s, s);
-    v.z = unif(r, -s, s);
+    v.x = tk_range(r, -s, s);
+    v.y = tk_range(r, -s, s);
+    v.z = tk_range(r, -s, s);
     return v;
 }
-static ga_vec3 runit(rng *r)
-{
-    for (;;) {
-        ga_vec3 v = rvec(r, 1.0);
-        double n = sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-        if (n > 0.1 && n <= 1.0) { v.x /= n; v.y /= n; v.z /= n; return v; }
-    }
-}
-
 /* ---- matrices built independently of the library ------------------------- */
 
 /* Rodrigues: R = I + sin th K + (1 - cos th) K^2, then translation. */
@@ -105,14 +81,14 @@ static ga_mat4 mmul(ga_mat4 a, ga_mat4 b) { return ga_mat4_mul(a, b); }
 
 /* A random rigid motion: angle in [a0, a1] about a random axis, translation
  * in [-ts, ts]^3. */
-static ga_mat4 rand_rigid(rng *r, double a0, double a1, double ts)
+static ga_mat4 rand_rigid(tk_rng *r, double a0, double a1, double ts)
 {
-    ga_vec3 u = runit(r);
-    double th = unif(r, a0, a1);
+    ga_vec3 u = tk_unit(r);
+    double th = tk_range(r, a0, a1);
     ga_vec3 t = rvec(r, ts);
     return rigid(u, th, t);
 }
-static ga_twist rand_twist(rng *r, double sw, double sv)
+static ga_twist rand_twist(tk_rng *r, double sw, double sv)
 {
     ga_twist x;
     x.w = rvec(r, sw);
@@ -153,10 +129,10 @@ static double vnorm(const double *a, int d)
 
 typedef struct { int n; double t[MAXK]; ga_mat4 m[MAXK]; double scale; } keyset;
 
-static void random_times(rng *r, keyset *k)
+static void random_times(tk_rng *r, keyset *k)
 {
-    k->t[0] = unif(r, -2, 2);
-    for (int i = 1; i < k->n; ++i) k->t[i] = k->t[i - 1] + unif(r, 0.2, 3.0);
+    k->t[0] = tk_range(r, -2, 2);
+    for (int i = 1; i < k->n; ++i) k->t[i] = k->t[i - 1] + tk_range(r, 0.2, 3.0);
 }
 
 /* The j-th of N + 1 evenly spaced times over the keys, the last exactly t_{n-1}. */
@@ -173,24 +149,24 @@ static void set_scale(keyset *k)
 
 /* kind 0: generic; 1: some exact half turns (absolute); 2: tiny rotations under
  * large translations; 3: relative half turns between neighbours; 4: a mixture. */
-static void random_keys(rng *r, keyset *k, int n, int kind)
+static void random_keys(tk_rng *r, keyset *k, int n, int kind)
 {
     k->n = n;
     random_times(r, k);
     for (int i = 0; i < n; ++i) {
-        int kd = kind == 4 ? (int)(next64(r) % 4) : kind;
-        ga_vec3 u = runit(r);
-        if (kd == 1 && next64(r) % 2) {
-            if (next64(r) % 3 == 0) { u.x = 0; u.y = 0; u.z = 1; } /* coordinate axis */
+        int kd = kind == 4 ? (int)(tk_next(r) % 4) : kind;
+        ga_vec3 u = tk_unit(r);
+        if (kd == 1 && tk_next(r) % 2) {
+            if (tk_next(r) % 3 == 0) { u.x = 0; u.y = 0; u.z = 1; } /* coordinate axis */
             k->m[i] = half_turn(u, rvec(r, 5));
         } else if (kd == 2) {
-            double th = pow(10.0, unif(r, -9, -5));
+            double th = pow(10.0, tk_range(r, -9, -5));
             k->m[i] = rigid(u, th, rvec(r, 1e4));
-        } else if (kd == 3 && i > 0 && next64(r) % 2) {
-            ga_vec3 a = runit(r);
+        } else if (kd == 3 && i > 0 && tk_next(r) % 2) {
+            ga_vec3 a = tk_unit(r);
             k->m[i] = mmul(k->m[i - 1], half_turn(a, rvec(r, 2)));
         } else {
-            double th = unif(r, 0, PI);
+            double th = tk_range(r, 0, PI);
             k->m[i] = rigid(u, th, rvec(r, 5));
         }
     }
@@ -198,13 +174,13 @@ static void random_keys(rng *r, keyset *k, int n, int kind)
 }
 
 /* affine keys: exp of a random 3x4 (scalings, shears), det > 0 */
-static void affine_keys(rng *r, keyset *k, int n)
+static void affine_keys(tk_rng *r, keyset *k, int n)
 {
     k->n = n;
     random_times(r, k);
     for (int i = 0; i < n; ++i) {
         double x[12];
-        for (int j = 0; j < 12; ++j) x[j] = unif(r, -0.4, 0.4) * (j % 4 == 3 ? 5 : 1);
+        for (int j = 0; j < 12; ++j) x[j] = tk_range(r, -0.4, 0.4) * (j % 4 == 3 ? 5 : 1);
         ga_group_affine.exp(x, &k->m[i]);
     }
     set_scale(k);
@@ -323,7 +299,7 @@ static double path_cond(const ga_path *p)
     return c;
 }
 
-static void test_keys(rng *r)
+static void test_keys(tk_rng *r)
 {
     const ga_group *gs[3] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
     double worst_at = 0, worst_lim = 0, worst_mid = 0, worst_aff[6] = { 0 }, worst_cond = 0, worst_midv = 0;
@@ -392,7 +368,7 @@ static void test_keys(rng *r)
 
 /* ---- 2. C1 at keys; analytic velocity vs finite differences ---------------------- */
 
-static void test_c1(rng *r)
+static void test_c1(tk_rng *r)
 {
     const ga_group *gs[3] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
     double worst_an = 0, worst_fd[2] = { 0, 0 }, worst_afd = 0, worst_int = 0, kink = 1e300;
@@ -406,7 +382,7 @@ static void test_c1(rng *r)
         int d = gs[gi]->dim;
         double vel[MAXK * 12];
         for (int i = 0; i < k.n * d; ++i) /* affine: mild scaling rates, any translation */
-            vel[i] = d == 12 && i % 4 != 3 ? unif(r, -0.3, 0.3) : unif(r, -1.5, 1.5);
+            vel[i] = d == 12 && i % 4 != 3 ? tk_range(r, -0.3, 0.3) : tk_range(r, -1.5, 1.5);
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
             keyset kk = k;
@@ -507,7 +483,7 @@ static void test_c1(rng *r)
 
 /* ---- 3. cga == se3 on random key sets ----------------------------------------------- */
 
-static void test_cga_se3(rng *r)
+static void test_cga_se3(tk_rng *r)
 {
     double worst[6] = { 0 }, worst_v = 0;
     int sets = 0;
@@ -515,7 +491,7 @@ static void test_cga_se3(rng *r)
         keyset k;
         random_keys(r, &k, 3 + trial % 5, trial % 5);
         double vel[MAXK * 6];
-        for (int i = 0; i < k.n * 6; ++i) vel[i] = unif(r, -1, 1);
+        for (int i = 0; i < k.n * 6; ++i) vel[i] = tk_range(r, -1, 1);
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
             keyset kk = k;
@@ -642,7 +618,7 @@ static ga_mat4 sclerp(ga_mat4 a, ga_mat4 b, double u)
     return dq_mat(dq_mul(da, dq_pow(rel, u)));
 }
 
-static void test_screw(rng *r)
+static void test_screw(tk_rng *r)
 {
     double e_geo = 0, e_wl = 0, e_dq = 0, e_slerp = 0;
     for (int trial = 0; trial < 100; ++trial) {
@@ -708,7 +684,7 @@ static void test_screw(rng *r)
 
 /* ---- 5. scheme identities: W-L quadratic, smooth exactness, lihao3 screw, eq. 27 ---- */
 
-static void test_identities(rng *r)
+static void test_identities(tk_rng *r)
 {
     /* W-L §3.2 at times -1, 0, 1: B'_l = ((B3 + B1)/2 - B2) l^2 + (B3 - B1)/2 l + B2 */
     double e_wl = 0, e_sq = 0, e_exact = 0, e_l3 = 0, e_l3v = 0, e27 = 0, e16 = 0, e25 = 0;
@@ -737,9 +713,9 @@ static void test_identities(rng *r)
     for (int trial = 0; trial < 40; ++trial) {
         double c0[6], c1[6], c2[6];
         for (int j = 0; j < 6; ++j) {
-            c0[j] = unif(r, -0.5, 0.5);
-            c1[j] = unif(r, -0.3, 0.3);
-            c2[j] = unif(r, -0.05, 0.05);
+            c0[j] = tk_range(r, -0.5, 0.5);
+            c1[j] = tk_range(r, -0.3, 0.3);
+            c2[j] = tk_range(r, -0.05, 0.05);
         }
         keyset k;
         k.n = 4 + trial % 4;
@@ -764,7 +740,7 @@ static void test_identities(rng *r)
     /* lihao3 with the default velocities reproduces a screw motion A0 exp(t V) */
     for (int trial = 0; trial < 40; ++trial) {
         ga_twist V;
-        V.w = runit(r);
+        V.w = tk_unit(r);
         V.v = rvec(r, 1);
         ga_mat4 A0 = rand_rigid(r, 0, 3, 3);
         keyset k;
@@ -832,17 +808,17 @@ static void test_identities(rng *r)
 
 /* ---- 6. dexp: closed form vs the affine series vs finite differences -------------- */
 
-static void test_dexp(rng *r)
+static void test_dexp(tk_rng *r)
 {
     double e_aff = 0, e_fd = 0;
     for (int trial = 0; trial < 200; ++trial) {
         double x[6], y[6], j1[6], j2[12], xa[12], ya[12];
-        ga_vec3 u = runit(r);
-        double th = trial % 5 == 0 ? pow(10.0, unif(r, -12, -1)) : trial % 5 == 1 ? PI - pow(10.0, unif(r, -12, -1))
-                  : trial % 5 == 2 ? unif(r, 0.9, 1.1) : unif(r, 0, 8);
+        ga_vec3 u = tk_unit(r);
+        double th = trial % 5 == 0 ? pow(10.0, tk_range(r, -12, -1)) : trial % 5 == 1 ? PI - pow(10.0, tk_range(r, -12, -1))
+                  : trial % 5 == 2 ? tk_range(r, 0.9, 1.1) : tk_range(r, 0, 8);
         x[0] = th * u.x; x[1] = th * u.y; x[2] = th * u.z;
-        for (int i = 3; i < 6; ++i) x[i] = unif(r, -3, 3);
-        for (int i = 0; i < 6; ++i) y[i] = unif(r, -1, 1);
+        for (int i = 3; i < 6; ++i) x[i] = tk_range(r, -3, 3);
+        for (int i = 0; i < 6; ++i) y[i] = tk_range(r, -1, 1);
         ga_group_se3.dexp(x, y, j1);
         /* the same twists as affine algebra elements (top rows of the hat) */
         ga_mat4 hx = ga_twist_hat((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
@@ -872,7 +848,7 @@ static void test_dexp(rng *r)
 
 /* ---- 7. affine vs se3 on rigid keys; affine paths through scaled/sheared keys ---- */
 
-static void test_affine(rng *r)
+static void test_affine(tk_rng *r)
 {
     double e = 0;
     for (int trial = 0; trial < 30; ++trial) {
@@ -920,7 +896,7 @@ static double euler_error(const ga_path *p, double h, int nsamp)
     return e;
 }
 
-static void test_euler(rng *r)
+static void test_euler(tk_rng *r)
 {
     keyset k;
     k.n = 4;
@@ -954,12 +930,12 @@ static void test_euler(rng *r)
 
 /* ---- 9. exact stepping vs direct over 10^6 steps ----------------------------------- */
 
-static void test_exact(rng *r)
+static void test_exact(tk_rng *r)
 {
     keyset k;
     k.n = 4;
     k.t[0] = 0;
-    for (int i = 1; i < 4; ++i) k.t[i] = k.t[i - 1] + unif(r, 0.5, 2);
+    for (int i = 1; i < 4; ++i) k.t[i] = k.t[i - 1] + tk_range(r, 0.5, 2);
     for (int i = 0; i < 4; ++i) k.m[i] = rand_rigid(r, 0.5, 3, 50);
     set_scale(&k);
     struct { ga_scheme s; const ga_group *g; long n; } runs[] = {
@@ -1070,7 +1046,7 @@ static void test_errors(void)
 
 int main(void)
 {
-    rng r = { 20240607u };
+    tk_rng r = { 20240607u };
     clock_t c0 = clock();
     test_keys(&r);
     test_c1(&r);

@@ -16,7 +16,7 @@
  * explained at its check). The PRNG is splitmix64 with a fixed seed, so
  * every run is the same.
  */
-#include "mat4.h"
+#include "testkit.h"
 
 #include <float.h>
 #include <math.h>
@@ -30,30 +30,7 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* ---- PRNG: splitmix64 ------------------------------------------------- */
-static uint64_t rng_next(uint64_t *s)
-{
-    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double uni(uint64_t *s) { return (double)(rng_next(s) >> 11) * 0x1p-53; }
-static double range(uint64_t *s, double lo, double hi) { return lo + (hi - lo) * uni(s); }
-static double loguni(uint64_t *s, double lo, double hi) { return exp(range(s, log(lo), log(hi))); }
-static ga_vec3 unit(uint64_t *s)
-{
-    for (;;) {
-        ga_vec3 u; /* one draw per statement: argument order is unspecified in C */
-        u.x = range(s, -1, 1);
-        u.y = range(s, -1, 1);
-        u.z = range(s, -1, 1);
-        double n = sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
-        if (n > 0.1 && n <= 1.0) { u.x /= n; u.y /= n; u.z /= n; return u; }
-    }
-}
-static ga_vec3 scaled(ga_vec3 u, double k) { ga_vec3 r = {k * u.x, k * u.y, k * u.z}; return r; }
-static double len(ga_vec3 u) { return sqrt(u.x * u.x + u.y * u.y + u.z * u.z); }
+/* ---- random draws: testkit.h (splitmix64) ---------------------------- */
 
 /* ---- reporting ---------------------------------------------------------- */
 static int failures;
@@ -93,7 +70,7 @@ static double twist_err(ga_twist a, ga_twist b)
     double e = 0;
     for (int i = 0; i < 6; i++) e = fmax(e, fabs(d[i]));
     if (e != e) return NAN;
-    return e / fmax(1.0, len(b.v));
+    return e / fmax(1.0, tk_norm(b.v));
 }
 
 /* ---- twist families (issue 4) ------------------------------------------- */
@@ -102,29 +79,29 @@ static const char *family_name[N_FAMILIES] = {
     "near half turn (pi - 1e-12..1e-1)", "pure translation", "identity / zero",
     "half turn, |w| = pi", "beyond a half turn (pi..3pi)"};
 
-static ga_twist random_twist(uint64_t *s, int fam)
+static ga_twist random_twist(tk_rng *s, int fam)
 {
     ga_twist xi;
-    ga_vec3 n = unit(s);
-    double th = 0, vl = loguni(s, 1e-3, 1e6);
+    ga_vec3 n = tk_unit(s);
+    double th = 0, vl = tk_loguni(s, 1e-3, 1e6);
     switch (fam) {
-    case 0: th = range(s, 0, PI); vl = loguni(s, 1e-3, 1e3); break;
-    case 1: th = loguni(s, 1e-12, 1e-6); vl = loguni(s, 1.0, 1e6); break;
-    case 2: th = loguni(s, 1e-6, 1.0); break;
-    case 3: th = PI - (uni(s) < 0.2 ? 1e-9 : loguni(s, 1e-12, 1e-1)); break;
-    case 4: th = 0; vl = loguni(s, 1e-6, 1e6); break;
-    case 5: th = 0; vl = uni(s) < 0.5 ? 0.0 : loguni(s, 1e-300, 1e-12);
-            if (uni(s) < 0.5) th = loguni(s, 1e-300, 1e-12);
+    case 0: th = tk_range(s, 0, PI); vl = tk_loguni(s, 1e-3, 1e3); break;
+    case 1: th = tk_loguni(s, 1e-12, 1e-6); vl = tk_loguni(s, 1.0, 1e6); break;
+    case 2: th = tk_loguni(s, 1e-6, 1.0); break;
+    case 3: th = PI - (tk_uni(s) < 0.2 ? 1e-9 : tk_loguni(s, 1e-12, 1e-1)); break;
+    case 4: th = 0; vl = tk_loguni(s, 1e-6, 1e6); break;
+    case 5: th = 0; vl = tk_uni(s) < 0.5 ? 0.0 : tk_loguni(s, 1e-300, 1e-12);
+            if (tk_uni(s) < 0.5) th = tk_loguni(s, 1e-300, 1e-12);
             break;
     case 6: th = PI; break;
-    default: th = range(s, PI, 3 * PI); break;
+    default: th = tk_range(s, PI, 3 * PI); break;
     }
-    if (fam == 6 && uni(s) < 0.3) { /* along a coordinate axis */
+    if (fam == 6 && tk_uni(s) < 0.3) { /* along a coordinate axis */
         ga_vec3 e[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        n = e[rng_next(s) % 3];
+        n = e[tk_next(s) % 3];
     }
-    xi.w = scaled(n, th);
-    xi.v = scaled(unit(s), vl);
+    xi.w = tk_scale(n, th);
+    xi.v = tk_scale(tk_unit(s), vl);
     return xi;
 }
 
@@ -135,24 +112,24 @@ static ga_twist random_twist(uint64_t *s, int fam)
  * shears up to 10 sqrt(d_i d_j) above the diagonal. Positive determinant and
  * no eigenvalue on the negative real axis, so the real principal log exists.
  * Kept only if cond_1(A) <= 1e6. */
-static ga_mat4 random_affine(uint64_t *s, double *cond)
+static ga_mat4 random_affine(tk_rng *s, double *cond)
 {
     for (;;) {
         double t[3][3] = {{0}}, d[3];
-        for (int i = 0; i < 3; i++) d[i] = loguni(s, 1e-3, 1e3);
+        for (int i = 0; i < 3; i++) d[i] = tk_loguni(s, 1e-3, 1e3);
         for (int i = 0; i < 3; i++) t[i][i] = d[i];
-        if (uni(s) < 0.5) { /* a rotation-scaling block in rows/cols 1,2 */
-            double phi = range(s, -0.95 * PI, 0.95 * PI);
+        if (tk_uni(s) < 0.5) { /* a rotation-scaling block in rows/cols 1,2 */
+            double phi = tk_range(s, -0.95 * PI, 0.95 * PI);
             t[1][1] = d[1] * cos(phi); t[1][2] = -d[1] * sin(phi);
             t[2][1] = d[1] * sin(phi); t[2][2] = d[1] * cos(phi);
             d[2] = d[1];
         }
-        double h = loguni(s, 1e-3, 10.0);
-        t[0][1] = h * sqrt(d[0] * d[1]) * range(s, -1, 1);
-        t[0][2] = h * sqrt(d[0] * d[2]) * range(s, -1, 1);
-        if (t[2][1] == 0) t[1][2] = h * sqrt(d[1] * d[2]) * range(s, -1, 1);
-        ga_vec3 qn = unit(s);
-        ga_twist q = {scaled(qn, range(s, 0, PI)), {0, 0, 0}};
+        double h = tk_loguni(s, 1e-3, 10.0);
+        t[0][1] = h * sqrt(d[0] * d[1]) * tk_range(s, -1, 1);
+        t[0][2] = h * sqrt(d[0] * d[2]) * tk_range(s, -1, 1);
+        if (t[2][1] == 0) t[1][2] = h * sqrt(d[1] * d[2]) * tk_range(s, -1, 1);
+        ga_vec3 qn = tk_unit(s);
+        ga_twist q = {tk_scale(qn, tk_range(s, 0, PI)), {0, 0, 0}};
         ga_mat4 qm = ga_se3_exp(q), a = ga_mat4_identity();
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) {
@@ -161,7 +138,7 @@ static ga_mat4 random_affine(uint64_t *s, double *cond)
                     for (int l = 0; l < 3; l++) acc += qm.m[4 * i + k] * t[k][l] * qm.m[4 * j + l];
                 a.m[4 * i + j] = acc;
             }
-        ga_vec3 tn = unit(s), tr = scaled(tn, loguni(s, 1e-3, 1e3));
+        ga_vec3 tn = tk_unit(s), tr = tk_scale(tn, tk_loguni(s, 1e-3, 1e3));
         a.m[3] = tr.x; a.m[7] = tr.y; a.m[11] = tr.z;
         ga_mat4 inv;
         if (ga_mat4_inverse(a, &inv) != GA_OK) continue;
@@ -206,7 +183,7 @@ int main(void)
      * 1e-13 (measured ~1e-14 there, ~1e-15 elsewhere). */
     {
         double worst[N_FAMILIES] = {0}, all = 0;
-        uint64_t s = seed;
+        tk_rng s = {seed};
         for (long i = 0; i < N_TWISTS; i++) {
             int fam = (int)(i % N_FAMILIES);
             ga_twist xi = random_twist(&s, fam);
@@ -224,7 +201,7 @@ int main(void)
     /* ---- 2. log(exp(xi)) = xi for angles < pi ----------------------------- */
     {
         double worst[6] = {0}, all = 0;
-        uint64_t s = seed ^ 1;
+        tk_rng s = {seed ^ 1};
         for (long i = 0; i < N_TWISTS; i++) {
             int fam = (int)(i % 6); /* the families with |w| < pi */
             ga_twist xi = random_twist(&s, fam), back;
@@ -240,17 +217,17 @@ int main(void)
     /* ---- 3. half turns and beyond: the backward error ---------------------- */
     {
         double back = 0, axis = 0, angle = 0;
-        uint64_t s = seed ^ 2;
+        tk_rng s = {seed ^ 2};
         long n = 0;
         for (long i = 0; i < N_TWISTS / 4; i++, n++) {
             ga_twist xi = random_twist(&s, 6), l;
             ga_mat4 m = ga_se3_exp(xi);
             if (i % 2) { /* an exactly symmetric R = 2 n n^T - I: skew part 0 */
-                ga_vec3 u = unit(&s);
+                ga_vec3 u = tk_unit(&s);
                 double uv[3] = {u.x, u.y, u.z};
                 for (int r = 0; r < 3; r++)
                     for (int c = 0; c < 3; c++) m.m[4 * r + c] = 2 * uv[r] * uv[c] - (r == c);
-                xi.w = scaled(u, PI);
+                xi.w = tk_scale(u, PI);
             }
             int st = ga_se3_log(m, &l);
             if (st != GA_OK) { back = INFINITY; continue; }
@@ -260,7 +237,7 @@ int main(void)
             double a[3] = {l.w.x, l.w.y, l.w.z}, b[3] = {xi.w.x, xi.w.y, xi.w.z};
             for (int k = 0; k < 3; k++) { dp = fmax(dp, fabs(a[k] - b[k])); dm = fmax(dm, fabs(a[k] + b[k])); }
             axis = fmax(axis, fmin(dp, dm));
-            angle = fmax(angle, fabs(len(l.w) - PI));
+            angle = fmax(angle, fabs(tk_norm(l.w) - PI));
         }
         report("th = pi: |exp(log M) - M|", n, back, 1e-13);
         report("th = pi: w = +-pi n", n, axis, 1e-13);
@@ -271,7 +248,7 @@ int main(void)
             ga_mat4 m = ga_se3_exp(xi);
             if (ga_se3_log(m, &l) != GA_OK) { back7 = INFINITY; continue; }
             back7 = fmax(back7, mat_err(ga_se3_exp(l), m));
-            over = fmax(over, len(l.w) - PI);
+            over = fmax(over, tk_norm(l.w) - PI);
         }
         report("th in (pi, 3pi): |exp(log M) - M|", N_TWISTS / 4, back7, 1e-13);
         report("th in (pi, 3pi): principal, |w| - pi <= 0", N_TWISTS / 4, over, 4 * eps);
@@ -287,7 +264,7 @@ int main(void)
      * band mat4.h documents (measured: it starts near 1e-11 rad). */
     {
         double worst[6] = {0}, all = 0, domain_max = 0, wrel = 0;
-        uint64_t s = seed ^ 3;
+        tk_rng s = {seed ^ 3};
         long domain = 0, nw = 0;
         for (long i = 0; i < N_TWISTS; i++) {
             int fam = (int)(i % 6);
@@ -295,7 +272,7 @@ int main(void)
             ga_mat4 m = ga_se3_exp(xi), l2;
             if (ga_se3_log(m, &l1) != GA_OK) { all = INFINITY; continue; }
             int st = ga_mat4_logm(m, &l2);
-            double th = len(l1.w), e;
+            double th = tk_norm(l1.w), e;
             double cond = th > 0 ? th / sin(th) : 1.0;
             double margin = (PI - th) / fmax(1.0, trans_len(m));
             if (st == GA_EDOMAIN && margin <= 1e-10) {
@@ -309,7 +286,7 @@ int main(void)
             if ((fam == 1 || fam == 2) && st == GA_OK) { /* w relative to itself */
                 ga_twist l3 = ga_twist_vee(l2);
                 ga_vec3 dw = {l3.w.x - l1.w.x, l3.w.y - l1.w.y, l3.w.z - l1.w.z};
-                wrel = fmax(wrel, len(dw) / len(l1.w));
+                wrel = fmax(wrel, tk_norm(dw) / tk_norm(l1.w));
                 nw++;
             }
         }
@@ -328,7 +305,7 @@ int main(void)
     /* ---- 5. the general exp and log on affine matrices --------------------- */
     {
         double worst = 0, maxcond = 0, inv = 0;
-        uint64_t s = seed ^ 4;
+        tk_rng s = {seed ^ 4};
         long bad = 0, hard = 0;
         for (long i = 0; i < N_AFFINE; i++) {
             double cond;
@@ -356,7 +333,7 @@ int main(void)
 
     /* ---- 6. identities and closed forms ----------------------------------- */
     {
-        uint64_t s = seed ^ 5;
+        tk_rng s = {seed ^ 5};
         double hv = 0, sinv = 0, geo = 0, mid = 0, adj = 0, check = 0;
         long n = N_TWISTS / 4;
         for (long i = 0; i < n; i++) {
@@ -381,7 +358,7 @@ int main(void)
             /* adjoint: exp(Ad_g xi) = g exp(xi) g^-1 */
             ga_mat4 lhs = ga_se3_exp(ga_se3_adjoint(g, a));
             ga_mat4 rhs = ga_mat4_mul(ga_mat4_mul(g, h0), ga_se3_inverse(g));
-            adj = fmax(adj, mat_err(lhs, rhs) / fmax(1.0, len(c.v)));
+            adj = fmax(adj, mat_err(lhs, rhs) / fmax(1.0, tk_norm(c.v)));
         }
         report("vee(hat(xi)) = xi", n, hv, 0.0);
         report("se3_exp output passes se3_check(., 1e-14)", n, check, 0.0);
