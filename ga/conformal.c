@@ -26,6 +26,24 @@ static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
 /* The e1 e2 e3 part of a vector. */
 static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_E1], X.c[GA_E2], X.c[GA_E3]); }
 
+/* X scaled by a power of 2 (exactly) so that its largest coefficient is in
+ * [1/2, 1). Every object here is homogeneous (X and k X are the same object),
+ * so the read-backs work on this copy: without it, squares of coefficients
+ * beyond ~1e154 overflowed (a dual plane 1e200 (m + d n) read back a zero
+ * normal with GA_OK) and below ~1e-154 underflowed (found by
+ * fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it). X must be finite. */
+static ga_mv unit_scaled(ga_mv X)
+{
+    double s = ga_mv_maxabs(X);
+    if (s == 0.0)
+        return X;
+    int e;
+    frexp(s, &e);
+    for (int i = 0; i < 32; i++)
+        X.c[i] = ldexp(X.c[i], -e);
+    return X;
+}
+
 /* Largest coefficient of X outside grade k. */
 static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_sub(X, ga_grade(X, k))); }
 
@@ -51,6 +69,7 @@ static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
 {
     if (!ga_mv_isfinite(X))
         return GA_ENOTFINITE;
+    X = unit_scaled(X);
     double s = ga_mv_maxabs(X);
     if (s == 0.0 || off_grade(X, 1) > GA_POINT_TOL * s)
         return GA_ENOTPOINT;
@@ -128,6 +147,7 @@ static int dual_vector(ga_mv X, ga_mv *v)
 {
     if (!ga_mv_isfinite(X))
         return GA_ENOTFINITE;
+    X = unit_scaled(X);
     double s = ga_mv_maxabs(X);
     if (s == 0.0)
         return GA_ENOTBLADE;
@@ -200,6 +220,7 @@ int ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
 {
     if (!ga_mv_isfinite(L))
         return GA_ENOTFINITE;
+    L = unit_scaled(L);
     double s = ga_mv_maxabs(L);
     if (s == 0.0 || off_grade(L, 3) > GA_POINT_TOL * s)
         return GA_ENOTBLADE;
@@ -241,6 +262,7 @@ int ga_point_pair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
 {
     if (!ga_mv_isfinite(PP))
         return GA_ENOTFINITE;
+    PP = unit_scaled(PP);
     double s = ga_mv_maxabs(PP);
     if (s == 0.0 || off_grade(PP, 2) > GA_POINT_TOL * s)
         return GA_ENOTBLADE;
@@ -262,6 +284,7 @@ int ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal)
 {
     if (!ga_mv_isfinite(C))
         return GA_ENOTFINITE;
+    C = unit_scaled(C);
     double s = ga_mv_maxabs(C);
     if (s == 0.0 || off_grade(C, 3) > GA_POINT_TOL * s)
         return GA_ENOTBLADE;

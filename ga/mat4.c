@@ -22,11 +22,16 @@ static ga_vec3 axpy3(double s, ga_vec3 x, ga_vec3 y) /* s x + y */
 }
 static double norm3(ga_vec3 a) { return hypot(hypot(a.x, a.y), a.z); }
 
+/* No NaN or Inf in a. x - x is +0 for every finite x and NaN for NaN and
+ * +-Inf, so the sum below is 0 exactly when all 16 entries are finite: one
+ * test in place of sixteen, in four partial sums that can share vector lanes
+ * (under -ffast-math this test, like isfinite() itself, cannot be relied on). */
 static int mat4_isfinite(const ga_mat4 *a)
 {
-    for (int i = 0; i < 16; i++)
-        if (!isfinite(a->m[i])) return 0;
-    return 1;
+    double z[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 16; i += 4)
+        for (int j = 0; j < 4; j++) z[j] += a->m[i + j] - a->m[i + j];
+    return (z[0] + z[1]) + (z[2] + z[3]) == 0.0;
 }
 
 static ga_mat4 mat4_zero(void) { ga_mat4 z; memset(&z, 0, sizeof z); return z; }
@@ -187,24 +192,28 @@ ga_twist ga_twist_vee(ga_mat4 a)
 
 /* ---- SE(3) ----------------------------------------------------------- */
 
-int ga_se3_check(ga_mat4 m, double tol)
+/* ga_se3_check through a pointer: ga_se3_log and the geodesic check the
+ * matrix in place instead of copying its 128 bytes for each call. */
+static inline int se3_check(const ga_mat4 *m, double tol)
 {
-    if (!mat4_isfinite(&m)) return GA_ENOTFINITE;
+    if (!mat4_isfinite(m)) return GA_ENOTFINITE;
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            double g = M(m, 0, i) * M(m, 0, j) + M(m, 1, i) * M(m, 1, j)
-                     + M(m, 2, i) * M(m, 2, j) - (i == j);
+        for (int j = i; j < 3; j++) { /* R^T R - I is symmetric */
+            double g = M(*m, 0, i) * M(*m, 0, j) + M(*m, 1, i) * M(*m, 1, j)
+                     + M(*m, 2, i) * M(*m, 2, j) - (i == j);
             if (!(fabs(g) <= tol)) return GA_ENOTRIGID; /* !(<=): a NaN tol rejects */
         }
-    ga_vec3 c0 = v3(M(m, 0, 0), M(m, 1, 0), M(m, 2, 0));
-    ga_vec3 c1 = v3(M(m, 0, 1), M(m, 1, 1), M(m, 2, 1));
-    ga_vec3 c2 = v3(M(m, 0, 2), M(m, 1, 2), M(m, 2, 2));
+    ga_vec3 c0 = v3(M(*m, 0, 0), M(*m, 1, 0), M(*m, 2, 0));
+    ga_vec3 c1 = v3(M(*m, 0, 1), M(*m, 1, 1), M(*m, 2, 1));
+    ga_vec3 c2 = v3(M(*m, 0, 2), M(*m, 1, 2), M(*m, 2, 2));
     if (!(dot3(c0, cross3(c1, c2)) > 0.0)) return GA_ENOTRIGID; /* a reflection */
-    if (!(fabs(M(m, 3, 0)) <= tol && fabs(M(m, 3, 1)) <= tol && fabs(M(m, 3, 2)) <= tol
-          && fabs(M(m, 3, 3) - 1.0) <= tol))
+    if (!(fabs(M(*m, 3, 0)) <= tol && fabs(M(*m, 3, 1)) <= tol && fabs(M(*m, 3, 2)) <= tol
+          && fabs(M(*m, 3, 3) - 1.0) <= tol))
         return GA_ENOTRIGID;
     return GA_OK;
 }
+
+int ga_se3_check(ga_mat4 m, double tol) { return se3_check(&m, tol); }
 
 ga_mat4 ga_se3_inverse(ga_mat4 m)
 {
@@ -217,56 +226,70 @@ ga_mat4 ga_se3_inverse(ga_mat4 m)
 }
 
 /* f_j(th) = sum_k (-1)^k th^2k / (2k+j)!, for j = 1, 2, 3:
- *   f_1 = sin th / th,  f_2 = (1 - cos th)/th^2,  f_3 = (th - sin th)/th^3.
- * For th < 1 the series is summed to k = 8: the first omitted term,
- * th^18/(18+j)!, is below 1/19! < 1e-17 of f_j(0) = 1/j!. For th >= 1 the
- * closed forms have no harmful cancellation (th - sin th loses at most
- * log2(th / (th - sin th)) <= 2.7 bits, at th = 1), and 1 - cos th is taken
- * as 2 sin^2(th/2). */
-static double sinc_family(double th, int j)
-{
-    if (th < 1.0) {
-        double c[9], t2 = th * th, s = 0.0;
-        c[0] = j == 1 ? 1.0 : j == 2 ? 0.5 : 1.0 / 6.0;
-        for (int k = 1; k < 9; k++) c[k] = -c[k - 1] / ((2 * k + j - 1) * (2 * k + j));
-        for (int k = 8; k >= 0; k--) s = s * t2 + c[k]; /* Horner in th^2 */
-        return s;
-    }
-    switch (j) {
-    case 1: return sin(th) / th;
-    case 2: { double h = sin(0.5 * th) / th; return 2.0 * h * h; }
-    default: return (th - sin(th)) / (th * th * th);
-    }
-}
+ *   f_1 = sin th / th,  f_2 = (1 - cos th)/th^2,  f_3 = (th - sin th)/th^3,
+ * the coefficients of expm(xi^) (Eberly eqs. 9, 19, 20). For th < 1 the
+ * series is summed to k = 8 (these tables): the first omitted term,
+ * th^18/(18+j)!, is below 1/19! < 1e-17 of f_j(0) = 1/j!. */
+static const double sinc_series[3][9] = {
+    {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
+     1.0 / 6227020800.0, -1.0 / 1307674368000.0, 1.0 / 355687428096000.0},
+    {1.0 / 2, -1.0 / 24, 1.0 / 720, -1.0 / 40320, 1.0 / 3628800, -1.0 / 479001600,
+     1.0 / 87178291200.0, -1.0 / 20922789888000.0, 1.0 / 6402373705728000.0},
+    {1.0 / 6, -1.0 / 120, 1.0 / 5040, -1.0 / 362880, 1.0 / 39916800, -1.0 / 6227020800.0,
+     1.0 / 1307674368000.0, -1.0 / 355687428096000.0, 1.0 / 121645100408832000.0}};
 
 ga_mat4 ga_se3_exp(ga_twist xi)
 {
     ga_vec3 w = xi.w, v = xi.v;
-    double th = norm3(w);
-    double a = sinc_family(th, 1), b = sinc_family(th, 2), c = sinc_family(th, 3);
+    /* th = |w|: w.w overflows only for |w| > 1e154; then the scaled norm, so
+     * that sin and cos still see the angle */
+    double t2 = dot3(w, w), th = t2 <= DBL_MAX ? sqrt(t2) : norm3(w), a, b, c, co;
+    if (th < 1.0) {
+        /* the series, no trig call and no division; cos th = 1 - b th^2 (Rodrigues) */
+        a = b = c = 0.0;
+        for (int k = 8; k >= 0; k--) { /* Horner in th^2 */
+            a = a * t2 + sinc_series[0][k];
+            b = b * t2 + sinc_series[1][k];
+            c = c * t2 + sinc_series[2][k];
+        }
+        co = 1.0 - b * t2;
+    } else {
+        /* the closed forms, from one sincos: no harmful cancellation for
+         * th >= 1 (th - sin th loses at most log2(th / (th - sin th)) <= 2.7
+         * bits, at th = 1), and where 1 - cos th would cancel (cos th > 1/2,
+         * near th = 2 pi k) it is taken as sin^2 th / (1 + cos th) */
+        double sn = sin(th);
+        co = cos(th);
+        a = sn / th;
+        b = (co < 0.5 ? 1.0 - co : sn * sn / (1.0 + co)) / t2;
+        c = (th - sn) / (t2 * th);
+    }
     /* Eq. 9 with S^2 = w w^T - th^2 I and 1 - b th^2 = cos th (Rodrigues):
-     * R = cos th I + a [w]x + b w w^T. */
-    double co = cos(th), wv[3] = {w.x, w.y, w.z};
-    ga_mat4 r = ga_twist_hat(xi);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            M(r, i, j) = (i == j ? co : a * M(r, i, j)) + b * wv[i] * wv[j];
-    /* Eq. 19-20: t = V v = v + b w x v + c w x (w x v). */
+     * R = cos th I + a [w]x + b w w^T, its entries (b w_i) w_j written out.
+     * Eq. 19-20: t = V v = v + b w x v + c w x (w x v). */
+    double bx = b * w.x, by = b * w.y, bz = b * w.z;
+    double ax = a * w.x, ay = a * w.y, az = a * w.z;
     ga_vec3 u = cross3(w, v);
     ga_vec3 t = axpy3(c, cross3(w, u), axpy3(b, u, v));
-    M(r, 0, 3) = t.x; M(r, 1, 3) = t.y; M(r, 2, 3) = t.z; M(r, 3, 3) = 1.0;
+    ga_mat4 r = {{co + bx * w.x, bx * w.y - az, bx * w.z + ay, t.x,
+                  by * w.x + az, co + by * w.y, by * w.z - ax, t.y,
+                  bz * w.x - ay, bz * w.y + ax, co + bz * w.z, t.z,
+                  0.0, 0.0, 0.0, 1.0}};
     return r;
 }
 
 /* The principal log of a matrix already known to be rigid to GA_SE3_TOL. */
-static ga_twist se3_log_core(ga_mat4 m)
+static inline ga_twist se3_log_core(const ga_mat4 *m)
 {
     /* R = cos th I + sin th [n]x + (1 - cos th) n n^T for a unit axis n, so the
      * skew part gives s = sin th n and the trace c = cos th. */
-    ga_vec3 s = v3(0.5 * (M(m, 2, 1) - M(m, 1, 2)), 0.5 * (M(m, 0, 2) - M(m, 2, 0)),
-                   0.5 * (M(m, 1, 0) - M(m, 0, 1)));
-    double c = 0.5 * (M(m, 0, 0) + M(m, 1, 1) + M(m, 2, 2) - 1.0);
-    double sn = norm3(s);
+    ga_vec3 s = v3(0.5 * (M(*m, 2, 1) - M(*m, 1, 2)), 0.5 * (M(*m, 0, 2) - M(*m, 2, 0)),
+                   0.5 * (M(*m, 1, 0) - M(*m, 0, 1)));
+    double c = 0.5 * (M(*m, 0, 0) + M(*m, 1, 1) + M(*m, 2, 2) - 1.0);
+    /* sn = |s| <= 1 + tol: s.s cannot overflow, and for |s| >= 2^-450 it does
+     * not underflow, so its plain sqrt is exact to rounding; below, the
+     * scaled norm keeps a rotation of 1e-200 rad */
+    double ss = dot3(s, s), sn = ss >= 0x1p-900 ? sqrt(ss) : norm3(s);
     double th = atan2(sn, c); /* in [0, pi]; accurate at both ends, unlike acos(c) */
     ga_twist xi;
     if (c >= 0.0) {
@@ -282,11 +305,11 @@ static ga_twist se3_log_core(ga_mat4 m)
          * (B_jj = (1 - c) n_j^2 >= (1 - c)/3), then take the sign of s. */
         int j = 0;
         for (int i = 1; i < 3; i++)
-            if (M(m, i, i) > M(m, j, j)) j = i;
+            if (M(*m, i, i) > M(*m, j, j)) j = i;
         double col[3];
-        for (int i = 0; i < 3; i++) col[i] = 0.5 * (M(m, i, j) + M(m, j, i)) - (i == j ? c : 0.0);
+        for (int i = 0; i < 3; i++) col[i] = 0.5 * (M(*m, i, j) + M(*m, j, i)) - (i == j ? c : 0.0);
         ga_vec3 n = v3(col[0], col[1], col[2]);
-        double k = th / norm3(n);
+        double k = th / sqrt(dot3(n, n)); /* |n| in [0.57, 2]: no over- or underflow */
         if (dot3(n, s) < 0.0) k = -k; /* at th = pi exactly s = 0 and either sign is right */
         xi.w = axpy3(k, n, v3(0, 0, 0));
     }
@@ -294,7 +317,11 @@ static ga_twist se3_log_core(ga_mat4 m)
      * c2 = (1 - (th/2) cot(th/2)) / th^2 = sum_n>=1 (-1)^(n+1) B_2n th^(2n-2) / (2n)!
      * (Bernoulli numbers). The closed form cancels as th -> 0, so for th < 1/2
      * the series is summed to n = 8 (next term < 2e-18 of the first). At
-     * th <= pi, cot(th/2) >= 0 and V^{-1} is bounded. */
+     * th <= pi, cot(th/2) >= 0 and V^{-1} is bounded. cot(th/2) needs no trig
+     * call: with rho = |(sn, c)|, th/2 = atan2(sn, c)/2 has
+     * cot(th/2) = (rho + c)/sn = sn/(rho - c), the first form for c >= 0 and
+     * the second for c < 0, so that neither cancels (rho - c > rho for c < 0;
+     * at th = pi, sn = 0 and cot = 0). */
     double c2;
     if (th < 0.5) {
         static const double cs[8] = {1.0 / 12, 1.0 / 720, 1.0 / 30240, 1.0 / 1209600,
@@ -304,10 +331,11 @@ static ga_twist se3_log_core(ga_mat4 m)
         c2 = 0.0;
         for (int i = 7; i >= 0; i--) c2 = c2 * t2 + cs[i];
     } else {
-        double h = 0.5 * th;
-        c2 = (1.0 - h * cos(h) / sin(h)) / (th * th);
+        double rho = sqrt(sn * sn + c * c);
+        double cot = c >= 0.0 ? (rho + c) / sn : sn / (rho - c);
+        c2 = (1.0 - 0.5 * th * cot) / (th * th);
     }
-    ga_vec3 t = v3(M(m, 0, 3), M(m, 1, 3), M(m, 2, 3));
+    ga_vec3 t = v3(M(*m, 0, 3), M(*m, 1, 3), M(*m, 2, 3));
     ga_vec3 u = cross3(xi.w, t);
     xi.v = axpy3(c2, cross3(xi.w, u), axpy3(-0.5, u, t));
     return xi;
@@ -315,9 +343,13 @@ static ga_twist se3_log_core(ga_mat4 m)
 
 int ga_se3_log(ga_mat4 m, ga_twist *out)
 {
-    int st = ga_se3_check(m, GA_SE3_TOL);
+    int st = se3_check(&m, GA_SE3_TOL);
     if (st != GA_OK) return st;
-    *out = se3_log_core(m);
+    ga_twist xi = se3_log_core(&m);
+    /* v = V^{-1} t overflows for a translation near DBL_MAX: report it, never
+       return Inf or NaN (fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
+    if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z))) return GA_EDOMAIN;
+    *out = xi;
     return GA_OK;
 }
 
@@ -329,10 +361,16 @@ int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
     if (st != GA_OK) return st;
     /* h1 h0^{-1} is rigid to about 2 GA_SE3_TOL, so it goes to the unchecked
      * log: re-checking it at GA_SE3_TOL could reject two valid inputs. */
-    ga_twist xi = se3_log_core(ga_mat4_mul(h1, ga_se3_inverse(h0)));
+    ga_mat4 rel = ga_mat4_mul(h1, ga_se3_inverse(h0));
+    ga_twist xi = se3_log_core(&rel);
     xi.w = axpy3(t, xi.w, v3(0, 0, 0));
     xi.v = axpy3(t, xi.v, v3(0, 0, 0));
-    *out = ga_mat4_mul(ga_se3_exp(xi), h0);
+    ga_mat4 g = ga_mat4_mul(ga_se3_exp(xi), h0);
+    /* a far extrapolation or a translation near DBL_MAX overflows: reported,
+       never returned as Inf or NaN (found by fuzz/fuzz_numeric;
+       fuzz/regress/numeric/ replays it) */
+    if (!mat4_isfinite(&g)) return GA_EDOMAIN;
+    *out = g;
     return GA_OK;
 }
 
@@ -518,7 +556,11 @@ static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
  * singular Y_k or Z_k or never converges (for a real negative eigenvalue the
  * scalar iterates stay real and cannot approach its imaginary root):
  * GA_EDOMAIN either way. */
-/* max_ij |Y Z - I|_ij / (|Y| |Z|)_ij, the residual of Denman-Beavers. */
+/* max_ij |Y Z - I|_ij / (|Y| |Z|)_ij, the residual of Denman-Beavers. A
+ * scale (|Y| |Z|)_ij below DBL_MIN is taken as DBL_MIN: subnormal products
+ * round absolutely, to 2^-1074, so their relative residual need never fall
+ * below 1e-8 (found by fuzz/fuzz_numeric: logm(expm(X)) was GA_EDOMAIN for
+ * an X with one entry of -8e-322; fuzz/regress/numeric/ replays it). */
 static double db_residual(const ga_mat4 *y, const ga_mat4 *z)
 {
     double worst = 0.0;
@@ -529,6 +571,7 @@ static double db_residual(const ga_mat4 *y, const ga_mat4 *z)
                 r += M(*y, i, k) * M(*z, k, j);
                 d += fabs(M(*y, i, k) * M(*z, k, j));
             }
+            d = fmax(d, DBL_MIN);
             if (fabs(r) > worst * d) worst = d > 0.0 ? fabs(r) / d : INFINITY;
         }
     return worst;

@@ -91,14 +91,16 @@ ga_mat4 ga_se3_exp(ga_twist xi);
  *    V^{-1} = I - S/2 + (1 - (th/2) cot(th/2))/th^2 S^2    (eq. 20),
  *  whose last coefficient comes from its series for th < 1/2. A matrix that is
  *  rigid only to GA_SE3_TOL is accepted as it is: the angle from atan2 and the
- *  normalised axis are those of a rotation within that tolerance of R. */
+ *  normalised axis are those of a rotation within that tolerance of R.
+ *  GA_EDOMAIN if v overflows (a translation near DBL_MAX). */
 int ga_se3_log(ga_mat4 m, ga_twist *out);
 
 /** The geodesic F(t) = exp(t log(h1 h0^{-1})) h0 (Eberly eq. 21): F(0) = h0,
  *  F(1) = h1, constant speed. Any finite t is accepted (extrapolation). When
  *  h1 h0^{-1} is a half turn the shortest path is not unique; the principal
- *  log's choice is taken. GA_ENOTFINITE (NaN/Inf in h0, h1 or t) or
- *  GA_ENOTRIGID (h0 or h1 fails ga_se3_check(., GA_SE3_TOL)). */
+ *  log's choice is taken. GA_ENOTFINITE (NaN/Inf in h0, h1 or t),
+ *  GA_ENOTRIGID (h0 or h1 fails ga_se3_check(., GA_SE3_TOL)) or GA_EDOMAIN
+ *  (the result overflows: a far extrapolation, or translations near DBL_MAX). */
 int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out);
 
 /** The adjoint action Ad_g xi = vee(g xi^ g^{-1}) of a rigid motion

@@ -212,6 +212,15 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
 {
     if (!ga_mv_isfinite(a))
         return GA_ENOTFINITE;
+    /* work on a 2^-e (exact), its largest coefficient in [1/2, 1): a ~a of a
+       tiny or huge a underflowed or overflowed, and 1/s became Inf with GA_OK
+       (found by fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it).
+       (a 2^-e)^-1 = a^-1 2^e. */
+    int e = 0;
+    if (ga_mv_maxabs(a) > 0.0)
+        frexp(ga_mv_maxabs(a), &e);
+    for (int i = 0; i < 32; i++)
+        a.c[i] = ldexp(a.c[i], -e);
     ga_mv rev = ga_reverse(a);
     ga_mv aa = ga_gp(a, rev);
     double s = aa.c[GA_S];
@@ -222,6 +231,11 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
     aa.c[GA_S] = 0.0;
     if (!(fabs(s) > tol) || ga_mv_maxabs(aa) > tol + 1e-12 * fabs(s))
         return GA_ESINGULAR;
-    *out = ga_scale(rev, 1.0 / s);
+    ga_mv r = ga_scale(rev, 1.0 / s);
+    for (int i = 0; i < 32; i++)
+        r.c[i] = ldexp(r.c[i], -e);
+    if (!ga_mv_isfinite(r))
+        return GA_ESINGULAR; /* the inverse overflows, as ga_mat4_inverse */
+    *out = r;
     return GA_OK;
 }

@@ -89,8 +89,8 @@ double ga_norm2(ga_mv a);
 /** sqrt(|<a ~a>_0|). */
 double ga_norm(ga_mv a);
 /** Inverse of a versor or blade: ~a / (a ~a). Fails with GA_ESINGULAR when a ~a is
- *  not a nonzero scalar (then a is not a versor, or is null), GA_ENOTFINITE on
- *  NaN/Inf input. */
+ *  not a nonzero scalar (then a is not a versor, or is null) or the inverse
+ *  overflows, GA_ENOTFINITE on NaN/Inf input. */
 int ga_mv_inverse(ga_mv a, ga_mv *out);
 
 #ifdef __cplusplus

@@ -22,18 +22,23 @@ static vec v_make(double x, double y, double z) { vec r = {x, y, z}; return r; }
 static vec v_add(vec a, vec b) { return v_make(a.x + b.x, a.y + b.y, a.z + b.z); }
 static vec v_sub(vec a, vec b) { return v_make(a.x - b.x, a.y - b.y, a.z - b.z); }
 static vec v_scale(vec a, double k) { return v_make(k * a.x, k * a.y, k * a.z); }
+/* a / k, divided (1/k overflows for a subnormal k) */
+static vec v_div(vec a, double k) { return v_make(a.x / k, a.y / k, a.z / k); }
 static double v_dot(vec a, vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static vec v_cross(vec a, vec b)
 {
     return v_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-/* |a| without underflow or overflow: scale by the largest component first. */
+/* |a| without underflow or overflow: scale by the largest component first.
+ * Divide by m rather than multiply by 1/m, which overflows to Inf for a
+ * subnormal m (found by fuzz/fuzz_numeric: l(R) was NaN for a rotation of
+ * 1e-322 rad; fuzz/regress/numeric/ replays it). */
 static double v_norm(vec a)
 {
     double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
     if (m == 0.0 || !isfinite(m))
         return m;
-    a = v_scale(a, 1.0 / m);
+    a = v_div(a, m);
     return m * sqrt(v_dot(a, a));
 }
 static vec v_of(ga_vec3 a) { return v_make(a.x, a.y, a.z); }
@@ -119,15 +124,34 @@ int ga_rotor_check(ga_rotor r, double tol)
     return (d <= tol && isfinite(d)) ? GA_OK : GA_ENOTRIGID;
 }
 
-/* R (R ~R)^(-1/2) for a finite r with q != 0 (not overflowing). */
-static ga_rotor rotor_project(ga_rotor r)
+/* The fast test of ga_rotor_log: true only if r is finite and
+ * rotor_drift(r) <= GA_ROTOR_DRIFT_MAX, and then always, except for
+ * |P|^2 > 1e300. The test is squared, so it needs neither a sqrt nor a division:
+ *     | |q|^2 - 1 | <= tol   and   4 <P ~q>_3^2 <= tol^2 max(1, |P|^2).
+ * With |q|^2 within tol of 1, <P ~q>_3^2 <= |q|^2 |P|^2 (Cauchy-Schwarz), so
+ * nothing overflows while |P|^2 <= 1e300. NaN or Inf fails a comparison. */
+static int rotor_near_group(ga_rotor r)
 {
-    double k = 1.0 / sqrt(r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23);
+    const double tol = GA_ROTOR_DRIFT_MAX;
+    double q2 = r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23;
+    double p2 = r.e1n * r.e1n + r.e2n * r.e2n + r.e3n * r.e3n + r.e123n * r.e123n;
+    double pq3 = rotor_pq3(r);
+    return p2 <= 1e300 && fabs(q2 - 1.0) <= tol &&
+           4.0 * pq3 * pq3 <= tol * tol * (p2 > 1.0 ? p2 : 1.0);
+}
+
+/* R (R ~R)^(-1/2) for a finite r with q != 0 (not overflowing), given
+ * k = 1/|q|; k = -1/|q| gives -R (R ~R)^(-1/2) (every term is odd in k).
+ * With q and P scaled by k, P ~q = x + I mu (mu = <P ~q>_3), and dropping mu
+ * is P <- x q = P - mu I q, with I q = -b + I s. This is exact: R ~R =
+ * 1 + 2 mu I n and (I n)^2 = 0, so (R ~R)^(-1/2) = 1 - mu I n and
+ * R (1 - mu I n) = q + (P - mu I q) n. */
+static inline ga_rotor rotor_project(ga_rotor r, double k)
+{
     double s = k * r.s, p4 = k * r.e123n;
     vec b = v_scale(rotor_b(r), k), p = v_scale(rotor_p(r), k);
-    /* X = <P ~q>_1 (its e123 part dropped), then P = X q */
-    vec x = v_add(v_add(v_scale(p, s), v_scale(b, p4)), v_cross(p, b));
-    return rotor_make(s, b, v_sub(v_scale(x, s), v_cross(x, b)), v_dot(x, b));
+    double mu = s * p4 - v_dot(p, b);
+    return rotor_make(s, b, v_add(p, v_scale(b, mu)), p4 - mu * s);
 }
 
 int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
@@ -140,11 +164,20 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
     /* scale to |q| ~ 1 first, so that neither |q|^2 nor P / |q| can overflow */
     ga_rotor t = {r.s / m, r.e12 / m, r.e13 / m, r.e23 / m,
                   r.e1n / m, r.e2n / m, r.e3n / m, r.e123n / m};
+    /* P / |q| or the projection may overflow (P near DBL_MAX): that rotor is
+       rigid but its projection is not representable, GA_EDOMAIN, not
+       GA_ENOTRIGID (found by fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
     if (!rotor_isfinite(t))
-        return GA_ENOTRIGID;
-    ga_rotor o = rotor_project(t);
+        return GA_EDOMAIN;
+    ga_rotor o = rotor_project(t, 1.0 / sqrt(t.s * t.s + t.e12 * t.e12 + t.e13 * t.e13 + t.e23 * t.e23));
+    /* Once more (q is now unit, k = 1): the projection's e123 update
+       p4 - mu s cancels when P ~q has a large e123 part (far from the group),
+       leaving <P ~q>_3 at eps |p4| |b|; the second pass removes that (found by
+       fuzz/fuzz_numeric: R ~R - 1 was 3.5e-10 for e123n = 5e54;
+       fuzz/regress/numeric/ replays it). */
+    o = rotor_project(o, 1.0);
     if (!rotor_isfinite(o))
-        return GA_ENOTRIGID;
+        return GA_EDOMAIN;
     *out = o;
     return GA_OK;
 }
@@ -163,9 +196,11 @@ int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
         !(fabs(m.c[GA_E24] - m.c[GA_E25]) <= lim) || !(fabs(m.c[GA_E34] - m.c[GA_E35]) <= lim) ||
         !(fabs(m.c[GA_E1234] - m.c[GA_E1235]) <= lim))
         return GA_ENOTRIGID;
+    /* the mean as 0.5 a + 0.5 b: (a + b) overflows for a, b near DBL_MAX and
+       made a finite input GA_ENOTFINITE (found by fuzz/fuzz_numeric) */
     ga_rotor r = {m.c[GA_S], m.c[GA_E12], m.c[GA_E13], m.c[GA_E23],
-                  0.5 * (m.c[GA_E14] + m.c[GA_E15]), 0.5 * (m.c[GA_E24] + m.c[GA_E25]),
-                  0.5 * (m.c[GA_E34] + m.c[GA_E35]), 0.5 * (m.c[GA_E1234] + m.c[GA_E1235])};
+                  0.5 * m.c[GA_E14] + 0.5 * m.c[GA_E15], 0.5 * m.c[GA_E24] + 0.5 * m.c[GA_E25],
+                  0.5 * m.c[GA_E34] + 0.5 * m.c[GA_E35], 0.5 * m.c[GA_E1234] + 0.5 * m.c[GA_E1235]};
     int st = ga_rotor_check(r, tol);
     if (st != GA_OK)
         return st;
@@ -242,54 +277,133 @@ ga_twist ga_twist_from_generator(ga_generator b)
 
 /* ---- exp and log ------------------------------------------------------- */
 
+/* The coefficients of exp as series in phi^2 for phi < 1/2 (a rotation angle
+ * 2 phi < 1, where ga_se3_exp sums its series too): cos phi, sinc phi and
+ * k = (cos phi - sinc phi) / phi^2 = sum_{j>=1} (-1)^j 2j phi^(2j-2) / (2j+1)!,
+ * each to the term in phi^14; the first omitted term is below 1e-18 of the
+ * first (phi^16/16!, phi^16/17!, 18 phi^16/19! against 1, 1, 1/3). */
+static const double exp_series[3][8] = {
+    {1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800, 1.0 / 479001600,
+     -1.0 / 87178291200.0},
+    {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
+     1.0 / 6227020800.0, -1.0 / 1307674368000.0},
+    {-1.0 / 3, 1.0 / 30, -1.0 / 840, 1.0 / 45360, -1.0 / 3991680, 1.0 / 518918400,
+     -1.0 / 93405312000.0, 1.0 / 22230464256000.0}};
+
 ga_rotor ga_rotor_exp(ga_generator g)
 {
     vec beta = v_make(g.e23, -g.e13, g.e12), c = v_make(g.e1n, g.e2n, g.e3n);
-    double phi2 = v_dot(beta, beta), phi = sqrt(phi2);
-    double cs = cos(phi), sn = sin(phi);
-    double sinc = phi > 0.0 ? sn / phi : 1.0;
-    /* k = (cos phi - sinc phi) / phi^2 = sum_{j>=1} (-1)^j 2j phi^(2j-2) / (2j+1)!;
-       the series' next term is below 2e-19 for phi < 0.1 */
-    double k = phi2 < 1e-2
-        ? -1.0 / 3 + phi2 * (1.0 / 30 - phi2 * (1.0 / 840 - phi2 * (1.0 / 45360 - phi2 / 3991680)))
-        : (cs - sinc) / phi2;
+    double phi2 = v_dot(beta, beta), cs, sinc, k;
+    if (phi2 < 0.25) { /* phi < 1/2: the series, no trig call and no division */
+        cs = sinc = k = 0.0;
+        for (int j = 7; j >= 0; j--) { /* Horner in phi^2 */
+            cs = cs * phi2 + exp_series[0][j];
+            sinc = sinc * phi2 + exp_series[1][j];
+            k = k * phi2 + exp_series[2][j];
+        }
+    } else { /* one sincos; k cancels by at most 3.6 bits (at phi = 1/2) */
+        double phi = sqrt(phi2), sn = sin(phi);
+        cs = cos(phi);
+        sinc = sn / phi;
+        k = (cs - sinc) / phi2;
+    }
     double bc = v_dot(beta, c);
     /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
     vec p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
     return rotor_make(cs, v_scale(beta, sinc), p, sinc * bc);
 }
 
-static int rotor_log(ga_rotor r, int principal, ga_generator *out)
+static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
 {
-    if (!rotor_isfinite(r))
-        return GA_ENOTFINITE;
-    if (!(rotor_drift(r) <= GA_ROTOR_DRIFT_MAX))
-        return GA_ENOTRIGID;
-    r = rotor_project(r);
-    if (principal && r.s < 0.0)
-        r = rotor_make(-r.s, v_scale(rotor_b(r), -1.0), v_scale(rotor_p(r), -1.0), -r.e123n);
-    vec b = rotor_b(r), p = rotor_p(r), beta, c;
-    double nb = v_norm(b); /* sin(phi), b = sin(phi) u */
+    if (!rotor_near_group(r)) { /* rare: decide as ga_rotor_check does */
+        if (!rotor_isfinite(r))
+            return GA_ENOTFINITE;
+        if (!(rotor_drift(r) <= GA_ROTOR_DRIFT_MAX))
+            return GA_ENOTRIGID;
+    }
+    vec b = rotor_b(r), beta, c;
+    double nb2 = v_dot(b, b);
+    if (nb2 >= 0x1p-900) {
+        /* The common case, |b| >= 2^-450 (so 1/|b| is finite): l of the
+         * projection R (R ~R)^(-1/2), computed from R itself. Projecting
+         * (rotor_project) scales q and P by k = 1/|q| and adds mu (b - I s) to
+         * P, along the axis and in its e123 part only. That changes neither
+         * the angle phi = atan2(|b|, s) nor the axis u = b/|b|, nor
+         * c_perp = (phi/|b|) p_perp (the k of p_perp cancels the 1/k of
+         * phi/|b|), and it scales c.u = cos(phi) (p.u) + sin(phi) p4 (below)
+         * by exactly 1/|q|^2 (the mu terms cancel): no sqrt for |q|, no
+         * projected copy. The principal log takes -R when <R>_0 < 0. */
+        double sg = principal && r.s < 0.0 ? -1.0 : 1.0, q2 = r.s * r.s + nb2;
+        double s = sg * r.s, nb = sqrt(nb2), inv = 1.0 / nb;
+        double phi = atan2(nb, s); /* in [0, pi/2] for the principal log */
+        vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
+        double pu = v_dot(p, u);
+        double cpar = (s * pu + nb * (sg * r.e123n)) / q2;
+        vec pperp = v_sub(p, v_scale(u, pu));
+        beta = v_scale(u, phi);
+        c = v_add(v_scale(pperp, phi * inv), v_scale(u, cpar));
+        /* finite when rotor_near_group(r) (|p| <= 1e150, phi/|b| <= pi 2^450);
+         * past it, as below: x - x is 0 for finite x, NaN for Inf and NaN */
+        if (!((c.x - c.x) + (c.y - c.y) + (c.z - c.z) == 0.0))
+            return GA_EDOMAIN;
+        ga_generator g = {beta.z, -beta.y, beta.x, c.x, c.y, c.z};
+        *out = g;
+        return GA_OK;
+    }
+    /* project onto the group; the principal log takes -R when <R>_0 < 0, by
+     * the sign of the projection's scale */
+    double k = 1.0 / sqrt(r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23);
+    r = rotor_project(r, principal && r.s < 0.0 ? -k : k);
+    vec p = rotor_p(r);
+    b = rotor_b(r);
+    /* nb = sin(phi) = |b|, b = sin(phi) u. |b| <= 1 after the projection, so
+     * b.b cannot overflow; for |b| >= 2^-450 it does not underflow either,
+     * its plain sqrt is exact to rounding and 1/|b| is finite. Below that,
+     * the scaled norm, and divisions (a subnormal |b| has no finite reciprocal). */
+    nb2 = v_dot(b, b);
+    int big = nb2 >= 0x1p-900;
+    double nb = big ? sqrt(nb2) : v_norm(b);
     if (nb == 0.0) {
         if (r.s > 0.0) { /* q = 1: a pure translation, P = c */
             beta = v_make(0, 0, 0);
             c = p;
         } else { /* q = -1: a turn of 2 pi; P = cos(pi) c_par, so the axis is along p */
             double np = v_norm(p);
-            vec u = np > 0.0 ? v_scale(p, 1.0 / np) : v_make(0, 0, 1);
+            vec u = np > 0.0 ? v_div(p, np) : v_make(0, 0, 1);
             beta = v_scale(u, GA_PI);
             c = v_scale(p, -1.0);
         }
     } else {
-        double phi = atan2(nb, r.s);
-        vec u = v_scale(b, 1.0 / nb);
+        double phi = atan2(nb, r.s), f; /* f = phi / sin(phi) = 1 / sinc(phi) */
+        vec u;
+        if (big) {
+            double inv = 1.0 / nb;
+            u = v_scale(b, inv);
+            f = phi * inv;
+        } else {
+            /* u from b scaled up by 2^600 (exact): nb itself may be subnormal,
+               rounded to a few bits, and b / nb then not a unit vector (found by
+               fuzz/fuzz_numeric: 0.4% off for a rotation of 1e-321 rad) */
+            vec bs = v_scale(b, 0x1p600);
+            u = v_div(bs, sqrt(v_dot(bs, bs)));
+            f = phi / nb;
+        }
         double pu = v_dot(p, u);
         /* P = cos c_par + sinc c_perp + I sin (c.u): c.u = cos (p.u) + sin p4 */
         double cpar = r.s * pu + nb * r.e123n;
         vec pperp = v_sub(p, v_scale(u, pu));
         beta = v_scale(u, phi);
-        c = v_add(v_scale(pperp, phi / nb), v_scale(u, cpar));
+        /* when f = phi / nb overflows (a literal log within 1e-308 of a full
+           turn), (pperp phi) / nb: 0 for pperp = 0, else Inf, reported below */
+        c = v_add(isfinite(f) ? v_scale(pperp, f) : v_div(v_scale(pperp, phi), nb),
+                  v_scale(u, cpar));
     }
+    /* A generator beyond the range of double (a translation near DBL_MAX, or
+       the literal log's translation across the axis divided by sin(phi) -> 0
+       near a full turn) is reported, never returned as Inf or NaN (found by
+       fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it). */
+    if (!(isfinite(c.x) && isfinite(c.y) && isfinite(c.z)))
+        return GA_EDOMAIN;
     ga_generator g = {beta.z, -beta.y, beta.x, c.x, c.y, c.z};
     *out = g;
     return GA_OK;
@@ -312,21 +426,26 @@ int ga_screw_from_rotor(ga_rotor r, ga_screw *out)
     ga_screw s = {0, {0, 0, 1}, {0, 0, 0}, 0, 0};
     if (th == 0.0) {
         if (nv > 0.0) {
-            s.axis = v_out(v_scale(v, 1.0 / nv));
+            s.axis = v_out(v_div(v, nv));
             s.shift = nv;
             s.pitch = INFINITY;
         }
     } else {
-        vec u = v_scale(w, 1.0 / th);
+        vec u = v_div(w, th);
         s.angle = th;
         s.axis = v_out(u);
         s.shift = v_dot(u, v);
-        s.point = v_out(v_scale(v_cross(u, v), 1.0 / th));
+        s.point = v_out(v_div(v_cross(u, v), th));
         s.pitch = s.shift / th;
-        if (!isfinite(s.point.x) || !isfinite(s.point.y) || !isfinite(s.point.z) ||
-            !isfinite(s.pitch))
+        if (!isfinite(s.pitch))
             return GA_EDOMAIN;
     }
+    /* the twist is twice the generator and may overflow where the generator
+       did not (a translation beyond DBL_MAX / 2): report it, never return
+       Inf or NaN (found by fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
+    if (!isfinite(s.shift) || !isfinite(s.point.x) || !isfinite(s.point.y) ||
+        !isfinite(s.point.z) || !isfinite(s.axis.x) || !isfinite(s.axis.y) || !isfinite(s.axis.z))
+        return GA_EDOMAIN;
     *out = s;
     return GA_OK;
 }
@@ -337,7 +456,7 @@ ga_rotor ga_rotor_from_screw(ga_screw s)
     double len = v_norm(u);
     if (!(len > 0.0))
         return ga_rotor_identity();
-    u = v_scale(u, 1.0 / len);
+    u = v_div(u, len);
     if (s.angle == 0.0)
         return ga_rotor_translation(v_out(v_scale(u, s.shift)));
     /* w = angle u, v = -w x point + shift u */

@@ -99,7 +99,8 @@ int ga_rotor_check(ga_rotor r, double tol);
 
 /** The rotor R (R ~R)^(-1/2) on the group: q /= |q|, P /= |q|, then the e123 part of
  *  P ~q is dropped (P = <P ~q>_1 q). GA_ENOTFINITE on NaN/Inf, GA_ENOTRIGID if
- *  q = 0 (no rotor is near). Works for any distance from the group. */
+ *  q = 0 (no rotor is near), GA_EDOMAIN if the result overflows (P near
+ *  DBL_MAX). Works for any distance from the group. */
 int ga_rotor_normalize(ga_rotor r, ga_rotor *out);
 
 /* ---- action ---------------------------------------------------------------- */
@@ -151,13 +152,15 @@ ga_rotor ga_rotor_exp(ga_generator b);
  *  p_perp / sinc(phi), so no branch or series is needed: exact at 0, near and
  *  at pi, and for pure translations. A rotor that has drifted from the group
  *  by at most GA_ROTOR_DRIFT_MAX is projected first; farther is GA_ENOTRIGID;
- *  NaN/Inf is GA_ENOTFINITE. exp(l(R)) = +-R. */
+ *  NaN/Inf is GA_ENOTFINITE; a generator that overflows (a translation near
+ *  DBL_MAX) is GA_EDOMAIN. exp(l(R)) = +-R. */
 int ga_rotor_log(ga_rotor r, ga_generator *out);
 
 /** The literal logarithm: exp(l(R)) = R exactly, no sign flip, rotation angle in
  *  [0, 2 pi]. At exactly q = -1 (a turn of 2 pi) the axis is taken along the
  *  translation (or e3 if there is none); near 2 pi the perpendicular
- *  translation is ill-conditioned (divided by sinc(phi) -> 0). Statuses as ga_rotor_log. */
+ *  translation is ill-conditioned (divided by sinc(phi) -> 0; GA_EDOMAIN when that
+ *  overflows). Statuses as ga_rotor_log. */
 int ga_rotor_log_literal(ga_rotor r, ga_generator *out);
 
 /* ---- screws (Chasles; W-L §4.1) ------------------------------------------- */

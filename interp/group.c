@@ -115,16 +115,35 @@ static int cga_inverse(const void *a, void *out)
     *(ga_rotor *)out = ga_rotor_reverse(*(const ga_rotor *)a);
     return GA_OK;
 }
+/* exp and log report a result that is not finite (the group's contract: a
+ * status, never Inf or NaN with GA_OK). NaN/Inf in is GA_ENOTFINITE; finite
+ * in and not finite out is GA_EDOMAIN: ga_rotor_exp of an angle beyond ~1e154
+ * (phi^2 overflows) or of a translation near DBL_MAX, a twist = 2 generator
+ * beyond DBL_MAX (found by fuzz/fuzz_path and fuzz/fuzz_tool: `garotor exp`
+ * printed nan; fuzz/regress/path/ replays it). */
+static int finite_status(const double *in, int n_in, const double *out, int n_out)
+{
+    for (int i = 0; i < n_in; ++i)
+        if (!isfinite(in[i])) return GA_ENOTFINITE;
+    for (int i = 0; i < n_out; ++i)
+        if (!isfinite(out[i])) return GA_EDOMAIN;
+    return GA_OK;
+}
 static int cga_exp(const double *x, void *out)
 {
-    *(ga_rotor *)out = ga_rotor_exp(ga_generator_from_twist(twist_of(x)));
-    return GA_OK;
+    ga_rotor r = ga_rotor_exp(ga_generator_from_twist(twist_of(x)));
+    int st = finite_status(x, 6, &r.s, 8);
+    if (st == GA_OK) *(ga_rotor *)out = r;
+    return st;
 }
 static int cga_log(const void *g, double *x)
 {
     ga_generator b;
     int st = ga_rotor_log(*(const ga_rotor *)g, &b);
-    if (st == GA_OK) twist_put(ga_twist_from_generator(b), x);
+    if (st != GA_OK) return st;
+    ga_twist t = ga_twist_from_generator(b);
+    st = finite_status(NULL, 0, &t.w.x, 6);
+    if (st == GA_OK) twist_put(t, x);
     return st;
 }
 /* Ad_R B = R B ~R, computed in the compact 8-component form, which is closed
@@ -161,8 +180,10 @@ static int se3_inverse(const void *a, void *out)
 }
 static int se3_exp(const double *x, void *out)
 {
-    *(ga_mat4 *)out = ga_se3_exp(twist_of(x));
-    return GA_OK;
+    ga_mat4 m = ga_se3_exp(twist_of(x));
+    int st = finite_status(x, 6, m.m, 16);
+    if (st == GA_OK) *(ga_mat4 *)out = m;
+    return st;
 }
 static int se3_log(const void *g, double *x)
 {

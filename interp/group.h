@@ -45,10 +45,12 @@ struct ga_group {
     void (*compose)(const void *a, const void *b, void *out);
     /** out = a^-1 (for affine: GA_ESINGULAR if not invertible) */
     int (*inverse)(const void *a, void *out);
-    /** out = exp(x) */
+    /** out = exp(x); GA_ENOTFINITE for NaN/Inf in x, GA_EDOMAIN when the
+     *  result is not representable (overflows: docs/errors.md) */
     int (*exp)(const double *x, void *out);
     /** x = the principal log of g: rotation angle in [0, pi] for cga/se3;
-     *  GA_EDOMAIN where the group element has no principal log (affine) */
+     *  GA_EDOMAIN where the group element has no principal log (affine) or
+     *  the log overflows */
     int (*log)(const void *g, double *x);
     /** out = Ad_g x = log-free conjugation g x g^-1, in algebra coordinates */
     void (*adjoint)(const void *g, const double *x, double *out);

@@ -1,0 +1,553 @@
+/* fuzz/fuzz_numeric.c: libFuzzer target for the numeric API of ga/.
+ *
+ * The first byte picks an operation; the rest is read as doubles by
+ * fuzz_reader.h (raw IEEE bit patterns, or one-byte tags for NaN, +-Inf,
+ * subnormals, +-1e308, +-DBL_MAX, 0, pi, pi - 1e-9...). Every operation
+ * asserts, besides "no crash and no sanitizer report":
+ *
+ *   - status:  NaN or Inf anywhere in the input of a status-returning
+ *              function gives GA_ENOTFINITE; every status is one types.h
+ *              lists for that function; GA_OK never comes with a non-finite
+ *              output (that would be a silent wrong answer).
+ *   - group:   a rotor a function returns with GA_OK is on the group,
+ *              ga_rotor_check(R, 1e-12) (R ~R = 1 to 1e-12); a rigid-motion
+ *              matrix passes ga_se3_check(M, 1e-10).
+ *   - valid:   inside the documented range of valid input the operation
+ *              succeeds, its output is finite, and it inverts its partner
+ *              (exp/log, bridge there and back) to the stated tolerance.
+ *
+ * "Valid" (the thresholds this target asserts against):
+ *   VALID_MAX = 1e6   exp of a generator or twist whose components are at most
+ *                     1e6 in size (rotations up to 1e6 rad, translations up
+ *                     to 1e6); rotor or matrix coefficients up to 1e6 for the
+ *                     bridge. Beyond, exp may lose every digit of the angle
+ *                     (an angle of 1e20 rad is exact but meaningless) and, past
+ *                     ~1e154, overflow to NaN: the value-returning functions
+ *                     (ga_rotor_exp, ga_se3_exp) cannot say so, the group
+ *                     interface (group.h) returns GA_EDOMAIN (docs/errors.md).
+ *   round trips       exp(log(R)) = +-R to 1e-10 max(1, |t|), far above the
+ *                     measured 8 eps (the soak suite measures the real figure;
+ *                     this is a net for gross failures, not a precision test).
+ *   points            |x| <= 1e4 for F(x) and down (GA_POINT_TOL: a point
+ *                     beyond ~4.5e4 reads as the point at infinity).
+ *   expm              ||a||_1 <= 100: GA_OK and finite (e^100 ~ 3e43).
+ *   logm round trip   logm(expm(X)) = X for ||X||_1 <= 1 (all eigenvalues
+ *                     well inside the principal strip), to 1e-9.
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "fuzz_check.h"
+#include "fuzz_reader.h"
+#include "garotor.h"
+
+#define VALID_MAX 1e6
+#define RT_TOL 1e-10
+
+static int rotor_finite(ga_rotor r) { return fz_all_finite(&r.s, 8); }
+static double vnorm(ga_vec3 a) { return hypot(hypot(a.x, a.y), a.z); }
+static int vfinite(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+/* max(1, |t|) of a rotor: the scale its P part is measured against. */
+static double rotor_scale(ga_rotor r)
+{
+    ga_vec3 t;
+    ga_rotor_quat(r, &t);
+    return fmax(1.0, vnorm(t));
+}
+
+/* The distance between a and +-b: q parts absolute, P parts relative to scale. */
+static double rotor_dist_pm(ga_rotor a, ga_rotor b, double scale)
+{
+    double best = INFINITY;
+    for (int sg = -1; sg <= 1; sg += 2) {
+        const double *x = &a.s, *y = &b.s;
+        double d = 0.0;
+        for (int i = 0; i < 8; i++)
+            d = fmax(d, fabs(x[i] - sg * y[i]) / (i < 4 ? 1.0 : scale));
+        best = fmin(best, d);
+    }
+    return best;
+}
+
+static double mat_dist(ga_mat4 a, ga_mat4 b, double tscale)
+{
+    double d = 0.0;
+    for (int i = 0; i < 16; i++)
+        d = fmax(d, fabs(a.m[i] - b.m[i]) / ((i % 4 == 3 && i < 12) ? tscale : 1.0));
+    return d;
+}
+
+static int is_status(int st)
+{
+    return st == GA_OK || st == GA_ENOTFINITE || st == GA_ESINGULAR || st == GA_ENOTPOINT ||
+           st == GA_ENOTRIGID || st == GA_EDOMAIN || st == GA_EARG || st == GA_ENOTBLADE;
+}
+
+/* ---- rotors --------------------------------------------------------------- */
+
+/* Everything that takes an arbitrary rotor: check, normalize, both logs, the
+ * screw, the matrix. */
+static void rotor_any(ga_rotor r)
+{
+    int fin = rotor_finite(r);
+    int chk = ga_rotor_check(r, GA_ROTOR_DRIFT_MAX);
+    ga_rotor nr;
+    int nst = ga_rotor_normalize(r, &nr);
+    ga_generator L, Ll;
+    int lst = ga_rotor_log(r, &L), llst = ga_rotor_log_literal(r, &Ll);
+    ga_screw sc;
+    int sst = ga_screw_from_rotor(r, &sc);
+    if (!fin) {
+        FZ_CHECK(chk == GA_ENOTFINITE && nst == GA_ENOTFINITE && lst == GA_ENOTFINITE &&
+                     llst == GA_ENOTFINITE && sst == GA_ENOTFINITE,
+                 "non-finite rotor: check %d normalize %d log %d literal %d screw %d", chk, nst,
+                 lst, llst, sst);
+        return;
+    }
+    FZ_CHECK(chk == GA_OK || chk == GA_ENOTRIGID, "check status %d", chk);
+    FZ_CHECK(nst == GA_OK || nst == GA_ENOTRIGID || nst == GA_EDOMAIN, "normalize status %d", nst);
+    FZ_CHECK(lst == GA_OK || lst == GA_ENOTRIGID || lst == GA_EDOMAIN, "log status %d", lst);
+    FZ_CHECK(llst == GA_OK || llst == GA_ENOTRIGID || llst == GA_EDOMAIN, "literal log status %d",
+             llst);
+    FZ_CHECK(sst == GA_OK || sst == GA_ENOTRIGID || sst == GA_EDOMAIN, "screw status %d", sst);
+    /* log accepts exactly what the check at GA_ROTOR_DRIFT_MAX accepts */
+    FZ_CHECK((lst == GA_ENOTRIGID) == (chk == GA_ENOTRIGID), "log %d but check %d", lst, chk);
+    FZ_CHECK((llst == GA_ENOTRIGID) == (chk == GA_ENOTRIGID), "literal log %d but check %d", llst,
+             chk);
+    if (nst == GA_OK) {
+        FZ_CHECK(rotor_finite(nr), "normalize: GA_OK with a non-finite rotor");
+        FZ_CHECK(ga_rotor_check(nr, 1e-12) == GA_OK, "normalize: result off the group");
+    }
+    if (lst == GA_OK) {
+        FZ_CHECK(fz_all_finite(&L.e12, 6), "log: GA_OK with a non-finite generator");
+        ga_twist xi = ga_twist_from_generator(L);
+        FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "log: angle %.17g > pi",
+                 vnorm(xi.w));
+        FZ_CHECK(nst == GA_OK || nst == GA_EDOMAIN, "log ok but normalize %d", nst);
+        if (nst == GA_OK && fz_maxabs(&r.s, 8) <= VALID_MAX) {
+            ga_rotor e = ga_rotor_exp(L);
+            double d = rotor_dist_pm(e, nr, rotor_scale(nr));
+            FZ_CHECK(d <= RT_TOL, "exp(log(R)) = +-normalize(R): off by %.3g", d);
+        }
+    }
+    if (llst == GA_OK)
+        FZ_CHECK(fz_all_finite(&Ll.e12, 6), "literal log: GA_OK with a non-finite generator");
+    if (sst == GA_OK) {
+        FZ_CHECK(isfinite(sc.angle) && vfinite(sc.axis) && vfinite(sc.point) &&
+                     isfinite(sc.shift) && !isnan(sc.pitch),
+                 "screw: GA_OK with a non-finite field");
+        FZ_CHECK(sc.angle >= 0 && sc.angle <= 3.141592653589793 * (1 + 1e-15), "screw angle %.17g",
+                 sc.angle);
+        /* a rotation (or pure translation) below the normal range carries its
+           axis in subnormal coefficients with only a few significant bits */
+        if (sc.angle >= 1e-300 || (sc.angle == 0.0 && (sc.shift == 0.0 || sc.shift >= 1e-300)))
+            FZ_CHECK(fabs(vnorm(sc.axis) - 1.0) <= 1e-14, "screw axis not unit: %.17g",
+                     vnorm(sc.axis));
+    }
+    if (ga_rotor_check(r, 1e-12) == GA_OK) {
+        ga_mat4 m = ga_rotor_to_mat4(r);
+        if (fz_all_finite(m.m, 16))
+            FZ_CHECK(ga_se3_check(m, 1e-10) == GA_OK, "to_mat4 of a unit rotor is not rigid");
+    }
+}
+
+/* exp of a generator, then back. */
+static void op_exp_log(fz_reader *rd)
+{
+    double x[6];
+    fz_doubles(rd, x, 6);
+    ga_generator B = {x[0], x[1], x[2], x[3], x[4], x[5]};
+    ga_rotor R = ga_rotor_exp(B);
+    if (!fz_all_finite(x, 6)) {
+        FZ_CHECK(!rotor_finite(R), "exp: NaN/Inf in, finite out");
+        rotor_any(R);
+        return;
+    }
+    if (fz_maxabs(x, 6) <= VALID_MAX) {
+        FZ_CHECK(rotor_finite(R), "exp of a valid generator is not finite");
+        FZ_CHECK(ga_rotor_check(R, 1e-12) == GA_OK, "exp of a valid generator is off the group");
+        ga_generator L;
+        FZ_CHECK(ga_rotor_log(R, &L) == GA_OK, "log of exp(B) fails");
+        double d = rotor_dist_pm(ga_rotor_exp(L), R, rotor_scale(R));
+        FZ_CHECK(d <= RT_TOL, "exp(log(exp(B))) = +-exp(B): off by %.3g", d);
+        /* the matrix side agrees: expm(xi^) = to_mat4(exp(B(xi))) */
+        ga_twist xi = ga_twist_from_generator(B);
+        ga_mat4 M = ga_se3_exp(xi), MR = ga_rotor_to_mat4(R);
+        double s = fmax(1.0, vnorm((ga_vec3){M.m[3], M.m[7], M.m[11]}));
+        d = mat_dist(M, MR, s);
+        FZ_CHECK(d <= 1e-9, "se3_exp and rotor exp differ by %.3g", d);
+    }
+    rotor_any(R);
+}
+
+/* A rotor drifted off the group by arbitrary amounts. */
+static void op_rotor_drift(fz_reader *rd)
+{
+    double x[6], d[8];
+    fz_doubles(rd, x, 6);
+    fz_doubles(rd, d, 8);
+    if (!fz_all_finite(x, 6))
+        return;
+    ga_rotor R = ga_rotor_exp((ga_generator){x[0], x[1], x[2], x[3], x[4], x[5]});
+    double *c = &R.s;
+    for (int i = 0; i < 8; i++)
+        c[i] += d[i];
+    rotor_any(R);
+}
+
+static void op_rotor_any(fz_reader *rd)
+{
+    ga_rotor r;
+    fz_doubles(rd, &r.s, 8);
+    rotor_any(r);
+}
+
+/* ---- matrices ------------------------------------------------------------- */
+
+static void mat_any(ga_mat4 m)
+{
+    int fin = fz_all_finite(m.m, 16);
+    ga_rotor R;
+    ga_twist xi;
+    ga_mat4 inv;
+    int rst = ga_rotor_from_mat4(m, &R), cst = ga_se3_check(m, GA_SE3_TOL);
+    int lst = ga_se3_log(m, &xi), ist = ga_mat4_inverse(m, &inv);
+    if (!fin) {
+        FZ_CHECK(rst == GA_ENOTFINITE && cst == GA_ENOTFINITE && lst == GA_ENOTFINITE &&
+                     ist == GA_ENOTFINITE,
+                 "non-finite matrix: from_mat4 %d check %d log %d inverse %d", rst, cst, lst, ist);
+        return;
+    }
+    FZ_CHECK(rst == GA_OK || rst == GA_ENOTRIGID || rst == GA_EDOMAIN, "from_mat4 status %d", rst);
+    FZ_CHECK(lst == GA_OK || lst == GA_ENOTRIGID || lst == GA_EDOMAIN, "se3_log status %d", lst);
+    FZ_CHECK(ist == GA_OK || ist == GA_ESINGULAR, "inverse status %d", ist);
+    if (ist == GA_OK)
+        FZ_CHECK(fz_all_finite(inv.m, 16), "inverse: GA_OK with a non-finite matrix");
+    if (rst == GA_OK) {
+        FZ_CHECK(rotor_finite(R), "from_mat4: GA_OK with a non-finite rotor");
+        FZ_CHECK(ga_rotor_check(R, 1e-12) == GA_OK, "from_mat4: rotor off the group");
+        double ts = fmax(1.0, vnorm((ga_vec3){m.m[3], m.m[7], m.m[11]}));
+        if (ts <= VALID_MAX) {
+            double d = mat_dist(ga_rotor_to_mat4(R), m, ts);
+            FZ_CHECK(d <= 1e-8, "to_mat4(from_mat4(M)) = M: off by %.3g", d);
+        }
+        rotor_any(R);
+    }
+    if (lst == GA_OK) {
+        FZ_CHECK(fz_all_finite(&xi.w.x, 6), "se3_log: GA_OK with a non-finite twist");
+        FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "se3_log: angle %.17g > pi",
+                 vnorm(xi.w));
+        double ts = fmax(1.0, vnorm((ga_vec3){m.m[3], m.m[7], m.m[11]}));
+        if (ts <= VALID_MAX) {
+            double d = mat_dist(ga_se3_exp(xi), m, ts);
+            FZ_CHECK(d <= 1e-8, "se3_exp(se3_log(M)) = M: off by %.3g", d);
+        }
+    }
+    if (cst == GA_OK) {
+        ga_mat4 mi = ga_se3_inverse(m);
+        double ts = fmax(1.0, vnorm((ga_vec3){m.m[3], m.m[7], m.m[11]}));
+        if (ts <= VALID_MAX) {
+            double d = mat_dist(ga_mat4_mul(m, mi), ga_mat4_identity(), ts);
+            FZ_CHECK(d <= 1e-8, "M se3_inverse(M) = I: off by %.3g", d);
+        }
+    }
+}
+
+static void op_mat_any(fz_reader *rd)
+{
+    ga_mat4 m;
+    fz_doubles(rd, m.m, 16);
+    mat_any(m);
+}
+
+/* A rigid motion perturbed by arbitrary amounts (most of them tiny). */
+static void op_mat_near(fz_reader *rd)
+{
+    double x[6], d[16];
+    fz_doubles(rd, x, 6);
+    fz_doubles(rd, d, 16);
+    if (!fz_all_finite(x, 6))
+        return;
+    ga_mat4 m = ga_se3_exp((ga_twist){{x[0], x[1], x[2]}, {x[3], x[4], x[5]}});
+    for (int i = 0; i < 16; i++)
+        m.m[i] += d[i];
+    mat_any(m);
+}
+
+/* exp and log on the matrix side, and the geodesic and adjoint. */
+static void op_se3(fz_reader *rd)
+{
+    double x[6], y[6];
+    fz_doubles(rd, x, 6);
+    fz_doubles(rd, y, 6);
+    double t = fz_double(rd);
+    ga_twist xi = {{x[0], x[1], x[2]}, {x[3], x[4], x[5]}};
+    ga_twist eta = {{y[0], y[1], y[2]}, {y[3], y[4], y[5]}};
+    ga_mat4 M = ga_se3_exp(xi), N = ga_se3_exp(eta), G;
+    int gst = ga_se3_geodesic(M, N, t, &G);
+    FZ_CHECK(is_status(gst), "geodesic status %d", gst);
+    if (gst == GA_OK)
+        FZ_CHECK(fz_all_finite(G.m, 16), "geodesic: GA_OK with a non-finite matrix");
+    if (!fz_all_finite(x, 6)) {
+        FZ_CHECK(!fz_all_finite(M.m, 16), "se3_exp: NaN/Inf in, finite out");
+        FZ_CHECK(gst == GA_ENOTFINITE, "geodesic from a NaN matrix: status %d", gst);
+        mat_any(M);
+        return;
+    }
+    if (fz_maxabs(x, 6) <= VALID_MAX) {
+        FZ_CHECK(fz_all_finite(M.m, 16), "se3_exp of a valid twist is not finite");
+        FZ_CHECK(ga_se3_check(M, 1e-10) == GA_OK, "se3_exp of a valid twist is not rigid");
+        ga_twist l;
+        FZ_CHECK(ga_se3_log(M, &l) == GA_OK, "se3_log(se3_exp(xi)) fails");
+        if (fz_all_finite(y, 6) && fz_maxabs(y, 6) <= VALID_MAX && isfinite(t) && fabs(t) <= 1e3)
+            FZ_CHECK(gst == GA_OK, "geodesic between valid motions fails: %d", gst);
+        ga_twist a = ga_se3_adjoint(M, eta);
+        if (fz_all_finite(y, 6) && fz_maxabs(y, 6) <= VALID_MAX)
+            FZ_CHECK(fz_all_finite(&a.w.x, 6), "adjoint of valid input not finite");
+    }
+    mat_any(M);
+}
+
+/* The general exp and log. */
+static void op_expm_logm(fz_reader *rd)
+{
+    ga_mat4 a, e, l;
+    fz_doubles(rd, a.m, 16);
+    int fin = fz_all_finite(a.m, 16);
+    int est = ga_mat4_expm(a, &e), lst = ga_mat4_logm(a, &l);
+    if (!fin) {
+        FZ_CHECK(est == GA_ENOTFINITE && lst == GA_ENOTFINITE, "non-finite: expm %d logm %d", est,
+                 lst);
+        return;
+    }
+    FZ_CHECK(est == GA_OK || est == GA_EDOMAIN, "expm status %d", est);
+    FZ_CHECK(lst == GA_OK || lst == GA_ESINGULAR || lst == GA_EDOMAIN, "logm status %d", lst);
+    if (est == GA_OK)
+        FZ_CHECK(fz_all_finite(e.m, 16), "expm: GA_OK with a non-finite matrix");
+    if (lst == GA_OK)
+        FZ_CHECK(fz_all_finite(l.m, 16), "logm: GA_OK with a non-finite matrix");
+    double n1 = ga_mat4_norm1(a);
+    if (n1 <= 100)
+        FZ_CHECK(est == GA_OK, "expm of ||a||_1 = %.3g fails: %d", n1, est);
+    if (n1 <= 1 && est == GA_OK) {
+        ga_mat4 back;
+        int st = ga_mat4_logm(e, &back);
+        FZ_CHECK(st == GA_OK, "logm(expm(X)), ||X||_1 = %.3g, fails: %d", n1, st);
+        double d = mat_dist(back, a, 1.0);
+        FZ_CHECK(d <= 1e-9, "logm(expm(X)) = X: off by %.3g", d);
+    }
+}
+
+/* ---- the bridge ------------------------------------------------------------- */
+
+static void op_bridge(fz_reader *rd)
+{
+    double q4[4], t3[3], r8[8];
+    fz_doubles(rd, q4, 4);
+    fz_doubles(rd, t3, 3);
+    fz_doubles(rd, r8, 8);
+    /* dual quaternions: an exact relabelling, there and back, any bits */
+    ga_rotor r;
+    memcpy(&r.s, r8, sizeof r8);
+    ga_rotor back = ga_rotor_from_dualquat(ga_rotor_to_dualquat(r));
+    FZ_CHECK(memcmp(&back, &r, sizeof r) == 0, "from_dualquat(to_dualquat(R)) != R");
+    /* quaternion and translation to a rotor and back */
+    if (!fz_all_finite(q4, 4) || !fz_all_finite(t3, 3))
+        return;
+    /* scale to [1/2, 1) by a power of 2 first: normalising subnormal
+       components directly would leave a norm off by their rounding */
+    double qm = fz_maxabs(q4, 4);
+    if (!(qm > 0))
+        return;
+    int qe;
+    frexp(qm, &qe);
+    for (int i = 0; i < 4; i++)
+        q4[i] = ldexp(q4[i], -qe);
+    double qn = hypot(hypot(q4[0], q4[1]), hypot(q4[2], q4[3]));
+    if (!(qn > 0) || !isfinite(qn))
+        return;
+    ga_quat q = {q4[0] / qn, q4[1] / qn, q4[2] / qn, q4[3] / qn};
+    ga_vec3 t = {t3[0], t3[1], t3[2]};
+    ga_rotor R = ga_rotor_from_quat(q, t);
+    if (fz_maxabs(t3, 3) > VALID_MAX)
+        return;
+    FZ_CHECK(ga_rotor_check(R, 1e-12) == GA_OK, "from_quat of a unit quaternion is off the group");
+    ga_vec3 t2;
+    ga_quat qb = ga_rotor_quat(R, &t2);
+    FZ_CHECK(qb.w == q.w && qb.x == q.x && qb.y == q.y && qb.z == q.z, "quaternion not kept");
+    double s = fmax(1.0, vnorm(t));
+    double d = vnorm((ga_vec3){t2.x - t.x, t2.y - t.y, t2.z - t.z}) / s;
+    FZ_CHECK(d <= 1e-14, "translation not kept: off by %.3g", d);
+    ga_rotor R2;
+    int st = ga_rotor_from_mat4(ga_rotor_to_mat4(R), &R2);
+    FZ_CHECK(st == GA_OK, "from_mat4(to_mat4(R)) fails: %d", st);
+    d = rotor_dist_pm(R2, R, s);
+    FZ_CHECK(d <= 1e-13, "from_mat4(to_mat4(R)) = +-R: off by %.3g", d);
+    ga_vec3 x = ga_rotor_apply(R, t);
+    FZ_CHECK(vfinite(x), "apply of a valid rotor to a valid point is not finite");
+}
+
+/* ---- screws ----------------------------------------------------------------- */
+
+static void op_screw(fz_reader *rd)
+{
+    double x[9];
+    fz_doubles(rd, x, 9);
+    ga_screw s = {x[0], {x[1], x[2], x[3]}, {x[4], x[5], x[6]}, x[7], x[8]};
+    ga_rotor R = ga_rotor_from_screw(s);
+    if (fz_all_finite(x, 8) && fz_maxabs(x, 8) <= VALID_MAX) {
+        FZ_CHECK(rotor_finite(R), "from_screw of a valid screw is not finite");
+        FZ_CHECK(ga_rotor_check(R, 1e-12) == GA_OK, "from_screw: off the group");
+        ga_screw s2;
+        int st = ga_screw_from_rotor(R, &s2);
+        FZ_CHECK(st == GA_OK || st == GA_EDOMAIN, "screw_from_rotor status %d", st);
+        if (st == GA_OK) {
+            double d = rotor_dist_pm(ga_rotor_from_screw(s2), R, rotor_scale(R));
+            FZ_CHECK(d <= RT_TOL, "from_screw(screw_from_rotor(R)) = +-R: off by %.3g", d);
+        }
+    }
+    rotor_any(R);
+}
+
+/* ---- the conformal model ---------------------------------------------------- */
+
+static void mv_any(const ga_mv *X, double lambda)
+{
+    int fin = fz_all_finite(X->c, 32);
+    ga_vec3 a, b, c;
+    double r, d;
+    int st;
+    st = ga_down(*X, &a);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTPOINT) : st == GA_ENOTFINITE, "down status %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a), "down: GA_OK with a non-finite point");
+    st = ga_down_scaled(*X, lambda, &a);
+    FZ_CHECK(is_status(st), "down_scaled status %d", st);
+    /* both NaN/Inf and lambda <= 0: either status is right */
+    if (!fin || !isfinite(lambda))
+        FZ_CHECK(st == GA_ENOTFINITE || (st == GA_EARG && lambda <= 0),
+                 "down_scaled of NaN/Inf, lambda %.17g: %d", lambda, st);
+    else if (!(lambda > 0))
+        FZ_CHECK(st == GA_EARG, "down_scaled, lambda %.17g: %d", lambda, st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a), "down_scaled: GA_OK with a non-finite point");
+    st = ga_sphere_params(*X, &a, &r);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "sphere %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a) && isfinite(r) && r >= 0, "sphere: GA_OK with bad output");
+    st = ga_plane_params(*X, &a, &d);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "plane %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a) && isfinite(d) && fabs(vnorm(a) - 1) <= 1e-12,
+                 "plane: GA_OK with bad output");
+    st = ga_line_params(*X, &a, &b);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "line %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a) && vfinite(b) && fabs(vnorm(a) - 1) <= 1e-12,
+                 "line: GA_OK with bad output");
+    st = ga_point_pair_points(*X, &a, &b);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "pair %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a) && vfinite(b), "point pair: GA_OK with bad output");
+    st = ga_circle_params(*X, &a, &r, &c);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "circle %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(a) && isfinite(r) && vfinite(c), "circle: GA_OK with bad output");
+    ga_mv inv;
+    st = ga_mv_inverse(*X, &inv);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ESINGULAR) : st == GA_ENOTFINITE, "inverse %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(fz_all_finite(inv.c, 32), "mv inverse: GA_OK with a non-finite result");
+    ga_rotor R;
+    st = ga_rotor_from_mv(*X, 1e-9, &R);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTRIGID || st == GA_EDOMAIN) : st == GA_ENOTFINITE,
+             "from_mv %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(rotor_finite(R) && ga_rotor_check(R, 1e-12) == GA_OK,
+                 "from_mv: GA_OK with a bad rotor");
+}
+
+static void op_mv_any(fz_reader *rd)
+{
+    ga_mv X;
+    fz_doubles(rd, X.c, 32);
+    mv_any(&X, fz_double(rd));
+}
+
+/* Objects built from points, read back; points up and down. */
+static void op_points(fz_reader *rd)
+{
+    double x[12];
+    fz_doubles(rd, x, 12);
+    double lambda = fz_double(rd), rad = fz_double(rd);
+    uint8_t which = fz_byte(rd);
+    ga_vec3 p[4] = {{x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]}};
+    for (int i = 0; i < 4; i++) {
+        ga_vec3 y;
+        int st = ga_down(ga_point(p[i]), &y);
+        if (!vfinite(p[i])) {
+            FZ_CHECK(st == GA_ENOTFINITE, "down(F(NaN)): %d", st);
+            continue;
+        }
+        double s = fmax(1.0, vnorm(p[i]));
+        if (s <= 1e4) {
+            FZ_CHECK(st == GA_OK, "down(F(x)), |x| = %.3g: %d", s, st);
+            double d = vnorm((ga_vec3){y.x - p[i].x, y.y - p[i].y, y.z - p[i].z}) / s;
+            FZ_CHECK(d <= 1e-13, "down(F(x)) = x: off by %.3g", d);
+        }
+        if (isfinite(lambda) && lambda >= 1e-6 && lambda <= 1e6 && vnorm(p[i]) <= 1e4 * lambda) {
+            st = ga_down_scaled(ga_point_scaled(p[i], lambda), lambda, &y);
+            FZ_CHECK(st == GA_OK, "down_scaled(F(x)), |x| = %.3g, lambda %.3g: %d", vnorm(p[i]),
+                     lambda, st);
+            double d = vnorm((ga_vec3){y.x - p[i].x, y.y - p[i].y, y.z - p[i].z}) /
+                       fmax(lambda, vnorm(p[i]));
+            FZ_CHECK(d <= 1e-13, "down_scaled(F(x)) = x: off by %.3g", d);
+        }
+    }
+    ga_mv X;
+    switch (which % 8) {
+    case 0: X = ga_point_pair(p[0], p[1]); break;
+    case 1: X = ga_circle(p[0], p[1], p[2]); break;
+    case 2: X = ga_line(p[0], p[1]); break;
+    case 3: X = ga_sphere(p[0], p[1], p[2], p[3]); break;
+    case 4: X = ga_plane(p[0], p[1], p[2]); break;
+    case 5: X = ga_dual_sphere(p[0], rad); break;
+    case 6: X = ga_dual_plane(p[0], rad); break;
+    default: X = ga_point_scaled(p[0], lambda); break;
+    }
+    mv_any(&X, lambda);
+    if (which % 8 == 5 && vfinite(p[0]) && isfinite(rad) && vnorm(p[0]) <= 1e3 &&
+        fabs(rad) >= 1e-3 && fabs(rad) <= 1e3) {
+        ga_vec3 c;
+        double r;
+        int st = ga_sphere_params(X, &c, &r);
+        FZ_CHECK(st == GA_OK, "sphere_params(dual_sphere(c, r)) fails: %d", st);
+        double s = fmax(1.0, fmax(vnorm(p[0]), fabs(rad)));
+        double d = fmax(vnorm((ga_vec3){c.x - p[0].x, c.y - p[0].y, c.z - p[0].z}),
+                        fabs(r - fabs(rad)));
+        FZ_CHECK(d <= 1e-12 * s * s, "dual sphere read back off by %.3g (scene %.3g)", d, s);
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_reader rd = fz_begin(data, size);
+    switch (fz_byte(&rd) % 11) {
+    case 0: op_exp_log(&rd); break;
+    case 1: op_rotor_any(&rd); break;
+    case 2: op_rotor_drift(&rd); break;
+    case 3: op_mat_any(&rd); break;
+    case 4: op_mat_near(&rd); break;
+    case 5: op_se3(&rd); break;
+    case 6: op_expm_logm(&rd); break;
+    case 7: op_bridge(&rd); break;
+    case 8: op_screw(&rd); break;
+    case 9: op_mv_any(&rd); break;
+    default: op_points(&rd); break;
+    }
+    return 0;
+}

@@ -1,0 +1,325 @@
+/* fuzz/fuzz_path.c: libFuzzer target for the interpolation paths (path.h) on
+ * every group, with every scheme and evaluator.
+ *
+ * Input: byte 0 picks the group (cga, matrix, affine) and the scheme; byte 1
+ * the evaluator and the number of keys (2..6, whatever the scheme needs, so
+ * wrong counts are tried too); byte 2 flags (times raw or as increments; keys
+ * as algebra elements through the group's exp, or as perturbed 4x4 matrices
+ * through ga_path_init_mat4; velocities or none). Then doubles (fuzz_reader.h)
+ * for times, keys, velocities, evaluation times and the Euler step.
+ *
+ * Invariants, besides "no crash, no sanitizer report, no read or write past
+ * the workspace of exactly ga_path_workspace_size bytes":
+ *   - every status is a GA_* code; NaN/Inf times or keys give GA_ENOTFINITE
+ *     or GA_EARG, times not increasing GA_EARG, a wrong key count GA_EARG;
+ *   - GA_OK never comes with a non-finite sample or velocity;
+ *   - for a valid path (below), init, eval, velocity and every evaluator
+ *     succeed, and every sample is on the group: a rotor to 1e-12
+ *     (ga_rotor_check), an SE(3) matrix to 1e-10 (ga_se3_check), an affine
+ *     matrix with last row exactly 0 0 0 1; and exact stepping agrees with
+ *     the closed form to 1e-9 max(1, |t|).
+ *
+ * Valid path: finite times, increasing by spacings in [1e-3, 1e3], |t| <= 1e6;
+ * key twists and velocities with components at most 1e3 (cga, matrix) or key
+ * generators with entries at most 0.25 (affine: ||X||_1 <= 1, so every
+ * relative log is principal); the Euler step in [1e-3, 1]. An Euler step
+ * below 1e-3 is raised to 1e-3 before the call (steps down to 1e-9 are
+ * accepted by the library but cost up to 1e9 products a sample: a fuzzer
+ * timeout, not a bug); at most 17 uniform and 8 given-time samples.
+ */
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fuzz_check.h"
+#include "fuzz_reader.h"
+#include "garotor.h"
+
+#define MAXK 6
+/* Known, reported (docs/errors.md, "Known limits"): a velocity is a segment's
+ * twist divided by its duration h, which overflows when h is below ~1e-300
+ * (times 0 and 5e-324): ga_path_velocity returns GA_OK with Inf. Not checked
+ * for such spacings, so the run goes on to find other things. */
+#define VEL_HMIN 1e-280
+/* Likewise, path.c does not check its results for overflow: with keys whose
+ * entries are near DBL_MAX (affine exp of a nilpotent generator 1e308),
+ * times 1e308 apart, or spacings whose ratios overflow (lihao2's B_{i+1}
+ * scales by h_{i+1}/h_i), samples and velocities come back Inf or NaN with
+ * GA_OK. Reported (fuzz/known/path/); so "GA_OK means finite" is asserted
+ * only for moderate input: keys, velocities and times at most MODERATE in
+ * size, spacings at least 1/MODERATE. */
+#define MODERATE 1e12
+
+static const ga_group *const groups[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
+
+static int is_status(int st)
+{
+    return st == GA_OK || st == GA_ENOTFINITE || st == GA_ESINGULAR || st == GA_ENOTPOINT ||
+           st == GA_ENOTRIGID || st == GA_EDOMAIN || st == GA_EARG || st == GA_ENOTBLADE;
+}
+
+/* Is a group element finite, and (strict) on its group? */
+static int elem_finite(const ga_group *g, const void *e)
+{
+    return fz_all_finite((const double *)e, (int)(g->elem_size / sizeof(double)));
+}
+
+static int moderate; /* of the current input: see MODERATE */
+
+static void check_elem(const ga_group *g, const void *e, int strict, const char *what)
+{
+    if (moderate || strict)
+        FZ_CHECK(elem_finite(g, e), "%s on %s: GA_OK with a non-finite element", what, g->name);
+    if (!strict)
+        return;
+    if (g == &ga_group_cga) {
+        int st = ga_rotor_check(*(const ga_rotor *)e, 1e-12);
+        FZ_CHECK(st == GA_OK, "%s on cga: rotor off the group (R ~R != 1 to 1e-12)", what);
+    } else if (g == &ga_group_se3) {
+        int st = ga_se3_check(*(const ga_mat4 *)e, 1e-10);
+        FZ_CHECK(st == GA_OK, "%s on matrix: not rigid to 1e-10", what);
+    } else {
+        const double *m = ((const ga_mat4 *)e)->m;
+        FZ_CHECK(m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1,
+                 "%s on affine: last row not 0 0 0 1", what);
+    }
+}
+
+/* Distance between two elements as 4x4 matrices, translation relative. */
+static double elem_dist(const ga_group *g, const void *a, const void *b)
+{
+    ga_mat4 x = g->to_mat4(a), y = g->to_mat4(b);
+    double s = 1.0, d = 0.0;
+    for (int i = 0; i < 3; i++)
+        s = fmax(s, fmax(fabs(x.m[4 * i + 3]), fabs(y.m[4 * i + 3])));
+    for (int i = 0; i < 16; i++)
+        d = fmax(d, fabs(x.m[i] - y.m[i]) / (i % 4 == 3 ? s : 1.0));
+    return d;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_reader rd = fz_begin(data, size);
+    uint8_t b0 = fz_byte(&rd), b1 = fz_byte(&rd), flags = fz_byte(&rd);
+    const ga_group *g = groups[b0 % 3];
+    ga_scheme scheme = (ga_scheme)((b0 / 3) % 6);
+    ga_eval ev = (ga_eval)(b1 % 3);
+    int n = 2 + (b1 / 3) % (MAXK - 1);
+    int dim = g->dim;
+    int affine = g == &ga_group_affine;
+    double key_max = affine ? 0.25 : 1e3;
+
+    /* times */
+    double times[MAXK];
+    int valid = 1;
+    if (flags & 1) {
+        fz_doubles(&rd, times, n);
+    } else {
+        times[0] = fz_double(&rd);
+        for (int i = 1; i < n; i++) {
+            double h = fz_double(&rd);
+            times[i] = times[i - 1] + fabs(h);
+        }
+    }
+    int times_finite = fz_all_finite(times, n), increasing = 1;
+    moderate = 1;
+    double hmin = INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (!(fabs(times[i]) <= 1e6))
+            valid = 0;
+        if (!(fabs(times[i]) <= MODERATE))
+            moderate = 0;
+        if (i > 0) {
+            double h = times[i] - times[i - 1];
+            hmin = fmin(hmin, h);
+            if (!(h > 0))
+                increasing = 0;
+            if (!(h >= 1e-3 && h <= 1e3))
+                valid = 0;
+            if (!(h >= 1 / MODERATE))
+                moderate = 0;
+        }
+    }
+
+    /* keys */
+    /* the keys contiguous, elem_size bytes each, as ga_path_init reads them */
+    double keybuf[MAXK * GA_GROUP_MAX_ELEM];
+    size_t estride = g->elem_size / sizeof(double);
+#define KEY(i) (keybuf + (size_t)(i) * estride)
+    ga_mat4 mkeys[MAXK];
+    int via_mat = (flags & 2) != 0, keys_finite = 1;
+    for (int i = 0; i < n; i++) {
+        double x[GA_GROUP_MAX_DIM];
+        fz_doubles(&rd, x, dim);
+        if (!fz_all_finite(x, dim))
+            return 0; /* no element to build */
+        if (!(fz_maxabs(x, dim) <= key_max))
+            valid = 0;
+        if (!(fz_maxabs(x, dim) <= (affine ? 1e2 : MODERATE)))
+            moderate = 0; /* affine: exp(1e2) ~ 1e43, so ~1e86 in a product */
+        int st = g->exp(x, KEY(i));
+        FZ_CHECK(st == GA_OK || st == GA_EDOMAIN, "%s exp status %d", g->name, st);
+        if (st != GA_OK)
+            return 0;
+        FZ_CHECK(elem_finite(g, KEY(i)), "%s exp: GA_OK with a non-finite element", g->name);
+        if (via_mat) {
+            mkeys[i] = g->to_mat4(KEY(i));
+            if (flags & 8) { /* perturb one entry by an arbitrary amount */
+                uint8_t k = fz_byte(&rd);
+                double d = fz_double(&rd);
+                mkeys[i].m[k % 16] += d;
+                valid = 0;
+                if (!(fabs(d) <= MODERATE))
+                    moderate = 0;
+                if (!fz_all_finite(mkeys[i].m, 16))
+                    keys_finite = 0;
+            }
+        }
+    }
+
+    /* velocities */
+    double vel[MAXK * GA_GROUP_MAX_DIM];
+    const double *velp = NULL;
+    if (flags & 4) {
+        int nv = scheme == GA_SCHEME_LIHAO3 ? n * dim : dim;
+        fz_doubles(&rd, vel, nv);
+        if (!(fz_maxabs(vel, nv) <= 1e3))
+            valid = 0; /* NaN gives NaN here, so it is not valid either */
+        if (!(fz_maxabs(vel, nv) <= MODERATE))
+            moderate = 0;
+        velp = vel;
+    }
+    int uses_vel = scheme == GA_SCHEME_LIHAO2 || scheme == GA_SCHEME_LIHAO3;
+    int vel_finite = !velp || !uses_vel ||
+                     fz_all_finite(vel, scheme == GA_SCHEME_LIHAO3 ? n * dim : dim);
+
+    /* build */
+    size_t wbytes = ga_path_workspace_size(g, scheme, n);
+    void *work = malloc(wbytes ? wbytes : 1);
+    if (!work)
+        return 0;
+    ga_path p;
+    int st = via_mat ? ga_path_init_mat4(&p, g, scheme, n, times, mkeys, velp, work, wbytes)
+                     : ga_path_init(&p, g, scheme, n, times, keybuf, velp, work, wbytes);
+    FZ_CHECK(is_status(st), "init status %d", st);
+    int count_ok = n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3);
+    if (!count_ok)
+        FZ_CHECK(st == GA_EARG, "%s with %d keys: status %d", ga_scheme_name(scheme), n, st);
+    if (count_ok && !times_finite)
+        FZ_CHECK(st == GA_ENOTFINITE || st == GA_EARG, "NaN/Inf times: status %d", st);
+    if (count_ok && times_finite && !increasing)
+        FZ_CHECK(st == GA_EARG, "times not increasing: status %d", st);
+    if (count_ok && (!keys_finite || !vel_finite))
+        FZ_CHECK(st != GA_OK, "NaN/Inf keys or velocities accepted");
+    valid = valid && count_ok && times_finite && increasing;
+    if (valid)
+        FZ_CHECK(st == GA_OK, "valid %s path on %s fails to build: %d", ga_scheme_name(scheme),
+                 g->name, st);
+    if (st != GA_OK) {
+        free(work);
+        return 0;
+    }
+    double t0 = times[0], t1 = times[n - 1];
+
+    /* closed form and velocity at a few times, inside and outside */
+    for (int k = 0; k < 3; k++) {
+        double t = fz_double(&rd);
+        if (fz_byte(&rd) & 1) /* mostly inside: t0 + frac (t1 - t0) */
+            t = t0 + (t1 - t0) * (fabs(fmod(t, 1.0)) + 0.0);
+        double A[GA_GROUP_MAX_ELEM], v[GA_GROUP_MAX_DIM];
+        int inside = t >= t0 && t <= t1;
+        int est = ga_path_eval(&p, t, A), vst = ga_path_velocity(&p, t, v);
+        FZ_CHECK(is_status(est) && is_status(vst), "eval %d velocity %d", est, vst);
+        if (!inside)
+            FZ_CHECK(est != GA_OK && vst != GA_OK, "t = %.17g outside [%.17g, %.17g] accepted", t,
+                     t0, t1);
+        if (valid && inside)
+            FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: eval %d velocity %d at t %.17g",
+                     est, vst, t);
+        if (est == GA_OK)
+            check_elem(g, A, valid, "eval");
+        if (vst == GA_OK && hmin >= VEL_HMIN && moderate)
+            FZ_CHECK(fz_all_finite(v, dim), "velocity: GA_OK with a non-finite velocity");
+    }
+    /* one segment formula at an arbitrary u (extrapolation beyond [0, 1]) */
+    {
+        int seg = fz_byte(&rd) % n; /* n - 1 is out of range */
+        double u = fz_double(&rd);
+        double A[GA_GROUP_MAX_ELEM], v[GA_GROUP_MAX_DIM];
+        int est = ga_path_eval_segment(&p, seg, u, A), vst = ga_path_velocity_segment(&p, seg, u, v);
+        FZ_CHECK(is_status(est) && is_status(vst), "eval_segment %d velocity_segment %d", est, vst);
+        if (seg == n - 1 || !isfinite(u))
+            FZ_CHECK(est != GA_OK, "eval_segment seg %d u %.17g accepted", seg, u);
+        int u_ok = valid && seg < n - 1 && fabs(u) <= 4;
+        if (u_ok)
+            FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: segment %d u %.17g: %d %d", seg, u,
+                     est, vst);
+        if (est == GA_OK && fabs(u) <= 1e3) /* far extrapolation: see MODERATE */
+            check_elem(g, A, u_ok, "eval_segment");
+        if (vst == GA_OK && hmin >= VEL_HMIN && moderate && fabs(u) <= 1e3)
+            FZ_CHECK(fz_all_finite(v, dim), "velocity_segment: GA_OK with a non-finite velocity");
+    }
+    /* uniform samples with the chosen evaluator, and the closed form beside them */
+    {
+        size_t ns = 2 + fz_byte(&rd) % 16;
+        double step = fz_double(&rd);
+        int step_ok = step >= 1e-3 && step <= 1.0;
+        if (step >= 1e-9 && step < 1e-3)
+            step = 1e-3;
+        double *out = malloc(ns * g->elem_size), *ref = malloc(ns * g->elem_size);
+        if (out && ref) {
+            int sst = ga_path_sample_uniform(&p, ev, step, ns, t0, t1, out);
+            int rst = ga_path_sample_uniform(&p, GA_EVAL_DIRECT, 1.0, ns, t0, t1, ref);
+            FZ_CHECK(is_status(sst) && is_status(rst), "sample_uniform %d %d", sst, rst);
+            if (ev == GA_EVAL_EULER && !(step >= 1e-9 && step <= 1.0))
+                FZ_CHECK(sst == GA_EARG, "Euler step %.17g accepted: %d", step, sst);
+            if (valid)
+                FZ_CHECK(rst == GA_OK && (sst == GA_OK || (ev == GA_EVAL_EULER && !step_ok)),
+                         "valid path: sample_uniform (%s) %d, direct %d", ga_eval_name(ev), sst,
+                         rst);
+            for (size_t k = 0; k < ns; k++) {
+                const char *e = (const char *)out + k * g->elem_size;
+                const char *r = (const char *)ref + k * g->elem_size;
+                if (sst == GA_OK)
+                    check_elem(g, e, valid, ga_eval_name(ev));
+                if (rst == GA_OK)
+                    check_elem(g, r, valid, "direct");
+                if (valid && sst == GA_OK && rst == GA_OK && ev == GA_EVAL_EXACT) {
+                    double d = elem_dist(g, e, r);
+                    FZ_CHECK(d <= 1e-9, "exact stepping differs from direct by %.3g (sample %zu)",
+                             d, k);
+                }
+            }
+        }
+        free(out);
+        free(ref);
+        /* samples at given times, in any order */
+        size_t nt = 1 + fz_byte(&rd) % 8;
+        double at[8];
+        for (size_t k = 0; k < nt; k++) {
+            double f = fz_double(&rd);
+            at[k] = (fz_byte(&rd) & 1) ? f : t0 + (t1 - t0) * fabs(fmod(f, 1.0));
+        }
+        out = malloc(nt * g->elem_size);
+        if (out) {
+            int sst = ga_path_sample(&p, ev, step, nt, at, out);
+            FZ_CHECK(is_status(sst), "sample %d", sst);
+            int all_inside = 1;
+            for (size_t k = 0; k < nt; k++)
+                all_inside &= at[k] >= t0 && at[k] <= t1;
+            if (!all_inside)
+                FZ_CHECK(sst != GA_OK, "sample at a time outside the keys accepted");
+            if (valid && all_inside && (ev != GA_EVAL_EULER || step_ok))
+                FZ_CHECK(sst == GA_OK, "valid path: sample (%s) %d", ga_eval_name(ev), sst);
+            if (sst == GA_OK)
+                for (size_t k = 0; k < nt; k++)
+                    check_elem(g, (const char *)out + k * g->elem_size, valid, "sample");
+        }
+        free(out);
+    }
+    free(work);
+    return 0;
+}

@@ -1,0 +1,305 @@
+/* fuzz/fuzz_tool.c: libFuzzer target for the garotor tool, end to end.
+ *
+ * The tool's main() is compiled in as garotor_main (fuzz/meson.build builds
+ * tools/main.c with -Dmain=garotor_main), so option parsing, every input
+ * format and the output files are all exercised as a user meets them.
+ *
+ * Input (text, so the seed corpus in fuzz/corpus/tool/ reads as examples):
+ *
+ *     line 1     the command line after "garotor": a command (exp, log,
+ *                interp) and its options, e.g.
+ *                "interp --scheme lihao3 --format pose --samples 5"
+ *     the rest   the input file (twists, matrices, keyframes, CSV...); a line
+ *                "%%" splits off a velocity file (for --velocities)
+ *
+ * The target removes --in, --out, --svg and --velocities with their values
+ * from line 1 and adds its own files in a private temporary directory
+ * (--velocities and --svg only when line 1 asked for them). Resource limits,
+ * so that a run measures correctness and not patience: --samples is capped at
+ * 4096 and an Euler --step below 1e-3 is raised to 1e-3 (both are legal and
+ * merely slow); "demo" and --help are skipped.
+ *
+ * Invariants (CONTRACT.md, docs/errors.md), besides "no crash, no sanitizer
+ * report, no leak":
+ *   - the exit status is 0 or 2;
+ *   - status 2 leaves no output file, no picture and no temporary file;
+ *   - status 0 leaves the output file, every number in it finite, lines of
+ *     one width (6, 16, 8 or 17 numbers);
+ *   - exp (cga, matrix) writes rigid motions: last row exactly 0 0 0 1,
+ *     rotation part orthonormal to 1e-9; log (cga, matrix) writes twists with
+ *     rotation angle in [0, pi]; interp --format mat on cga/matrix writes
+ *     rigid motions, --format pose unit quaternions (to 1e-9).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fuzz_check.h"
+
+int garotor_main(int argc, char **argv);
+
+static char dir[256], in_path[300], vel_path[300], out_path[300], svg_path[300];
+
+static void cleanup(void)
+{
+    unlink(in_path);
+    unlink(vel_path);
+    unlink(out_path);
+    unlink(svg_path);
+    rmdir(dir);
+}
+
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    (void)argc;
+    (void)argv;
+    const char *base = getenv("TMPDIR");
+    if (!base || !*base)
+        base = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
+    snprintf(dir, sizeof dir, "%s/garotor-fuzz-XXXXXX", base);
+    if (!mkdtemp(dir)) {
+        perror("fuzz_tool: mkdtemp");
+        exit(1);
+    }
+    snprintf(in_path, sizeof in_path, "%s/in", dir);
+    snprintf(vel_path, sizeof vel_path, "%s/vel", dir);
+    snprintf(out_path, sizeof out_path, "%s/out", dir);
+    snprintf(svg_path, sizeof svg_path, "%s/pic.svg", dir);
+    atexit(cleanup);
+    return 0;
+}
+
+static int write_file(const char *path, const uint8_t *p, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    size_t w = n ? fwrite(p, 1, n, f) : 0;
+    return (fclose(f) != 0 || w != n) ? -1 : 0;
+}
+
+/* Only the target's own files may be in the directory. */
+static void check_no_stray_files(int allow_out)
+{
+    DIR *d = opendir(dir);
+    FZ_CHECK(d != NULL, "cannot list %s", dir);
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        const char *nm = e->d_name;
+        if (!strcmp(nm, ".") || !strcmp(nm, "..") || !strcmp(nm, "in") || !strcmp(nm, "vel"))
+            continue;
+        if (allow_out && (!strcmp(nm, "out") || !strcmp(nm, "pic.svg")))
+            continue;
+        closedir(d);
+        FZ_CHECK(0, "file '%s' left behind (exit status %s)", nm, allow_out ? "0" : "2");
+    }
+    closedir(d);
+}
+
+enum { K_EXP, K_LOG, K_INTERP };
+
+/* Read the output back and check it. */
+static void check_output(int kind, int affine, int pose)
+{
+    FILE *f = fopen(out_path, "r");
+    FZ_CHECK(f != NULL, "exit status 0 but no output file");
+    char *line = NULL;
+    size_t cap = 0;
+    int width = -1;
+    long lineno = 0;
+    while (getline(&line, &cap, f) >= 0) {
+        lineno++;
+        double v[32];
+        int k = 0;
+        char *s = line, *end;
+        for (;;) {
+            while (*s == ' ' || *s == '\n')
+                s++;
+            if (!*s)
+                break;
+            double x = strtod(s, &end);
+            FZ_CHECK(end != s, "output line %ld: not a number: %.40s", lineno, s);
+            FZ_CHECK(isfinite(x), "output line %ld, number %d is %g", lineno, k + 1, x);
+            FZ_CHECK(k < 32, "output line %ld has more than 32 numbers", lineno);
+            v[k++] = x;
+            s = end;
+        }
+        FZ_CHECK(k == 6 || k == 16 || k == 8 || k == 17, "output line %ld has %d numbers", lineno,
+                 k);
+        FZ_CHECK(width < 0 || k == width, "output line %ld: %d numbers after %d", lineno, k, width);
+        width = k;
+        const double *m = NULL;
+        if (kind == K_EXP && !affine && k == 16)
+            m = v;
+        if (kind == K_INTERP && !affine && k == 17)
+            m = v + 1;
+        if (m) {
+            FZ_CHECK(m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1,
+                     "output line %ld: last row not 0 0 0 1", lineno);
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 3; c++) {
+                    double d = m[r] * m[c] + m[4 + r] * m[4 + c] + m[8 + r] * m[8 + c];
+                    FZ_CHECK(fabs(d - (r == c)) <= 1e-9,
+                             "output line %ld: rotation not orthonormal (%.3g)", lineno,
+                             fabs(d - (r == c)));
+                }
+        }
+        if (kind == K_INTERP && affine && k == 17)
+            FZ_CHECK(v[13] == 0 && v[14] == 0 && v[15] == 0 && v[16] == 1,
+                     "output line %ld: affine sample's last row not 0 0 0 1", lineno);
+        if (kind == K_LOG && !affine && k == 6) {
+            double th = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            FZ_CHECK(th <= 3.141592653589793 * (1 + 1e-15), "output line %ld: angle %.17g > pi",
+                     lineno, th);
+        }
+        if (kind == K_INTERP && pose && k == 8) {
+            double qn = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
+            FZ_CHECK(fabs(qn - 1) <= 1e-9, "output line %ld: quaternion norm %.17g", lineno, qn);
+        }
+    }
+    free(line);
+    fclose(f);
+}
+
+#define MAXARG 40
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    /* line 1: the command line */
+    const uint8_t *nl = memchr(data, '\n', size);
+    size_t l1 = nl ? (size_t)(nl - data) : size;
+    if (l1 > 400)
+        return 0;
+    char cmdline[401];
+    memcpy(cmdline, data, l1);
+    cmdline[l1] = '\0';
+    if (memchr(cmdline, '\0', l1))
+        return 0; /* a NUL would cut an argument short: not a command line */
+    const uint8_t *rest = nl ? nl + 1 : data + size;
+    size_t nrest = (size_t)(data + size - rest);
+
+    /* split off the velocity file at a line "%%" */
+    const uint8_t *vel = NULL;
+    size_t nin = nrest, nvel = 0;
+    for (size_t i = 0; i + 2 <= nrest; i++)
+        if ((i == 0 || rest[i - 1] == '\n') && rest[i] == '%' && rest[i + 1] == '%' &&
+            (i + 2 == nrest || rest[i + 2] == '\n')) {
+            nin = i;
+            vel = rest + i + 2 + (i + 2 < nrest);
+            nvel = (size_t)(data + size - vel);
+            break;
+        }
+
+    /* argv: filter the command line */
+    char *argv[MAXARG + 12];
+    int argc = 0;
+    argv[argc++] = "garotor";
+    int want_vel = 0, want_svg = 0, kind = -1, affine = 0, pose = 0;
+    static char capped[2][32];
+    char *save = NULL;
+    for (char *tok = strtok_r(cmdline, " \t\r", &save); tok; tok = strtok_r(NULL, " \t\r", &save)) {
+        if (argc == 1) {
+            if (!strcmp(tok, "exp"))
+                kind = K_EXP;
+            else if (!strcmp(tok, "log"))
+                kind = K_LOG;
+            else if (!strcmp(tok, "interp"))
+                kind = K_INTERP;
+            else
+                return 0;
+            argv[argc++] = tok;
+            continue;
+        }
+        if (argc >= MAXARG)
+            return 0;
+        if (!strcmp(tok, "--help") || !strcmp(tok, "-h"))
+            return 0;
+        if (!strcmp(tok, "--in") || !strcmp(tok, "--out") || !strcmp(tok, "--svg") ||
+            !strcmp(tok, "--velocities")) {
+            want_vel |= !strcmp(tok, "--velocities");
+            want_svg |= !strcmp(tok, "--svg");
+            strtok_r(NULL, " \t\r", &save); /* and its value */
+            continue;
+        }
+        if (!strcmp(tok, "--group")) {
+            char *v = strtok_r(NULL, " \t\r", &save);
+            argv[argc++] = tok;
+            if (v) {
+                argv[argc++] = v;
+                affine = !strcmp(v, "affine");
+            }
+            continue;
+        }
+        if (!strcmp(tok, "--format")) {
+            char *v = strtok_r(NULL, " \t\r", &save);
+            argv[argc++] = tok;
+            if (v) {
+                argv[argc++] = v;
+                pose = !strcmp(v, "pose");
+            }
+            continue;
+        }
+        if (!strcmp(tok, "--samples") || !strcmp(tok, "--step")) {
+            int is_step = tok[2] == 's' && tok[3] == 't';
+            char *v = strtok_r(NULL, " \t\r", &save);
+            argv[argc++] = tok;
+            if (v) {
+                char *end;
+                double x = is_step ? strtod(v, &end) : (double)strtol(v, &end, 10);
+                if (!is_step && *end == '\0' && x > 4096) {
+                    snprintf(capped[0], sizeof capped[0], "4096");
+                    v = capped[0];
+                }
+                if (is_step && *end == '\0' && x > 0 && x < 1e-3) {
+                    snprintf(capped[1], sizeof capped[1], "1e-3");
+                    v = capped[1];
+                }
+                argv[argc++] = v;
+            }
+            continue;
+        }
+        argv[argc++] = tok;
+    }
+    if (kind < 0)
+        return 0;
+    char *in_opt = "--in", *out_opt = "--out", *vel_opt = "--velocities", *svg_opt = "--svg";
+    argv[argc++] = in_opt;
+    argv[argc++] = in_path;
+    if (want_vel) {
+        argv[argc++] = vel_opt;
+        argv[argc++] = vel_path;
+    }
+    if (want_svg) {
+        argv[argc++] = svg_opt;
+        argv[argc++] = svg_path;
+    }
+    argv[argc++] = out_opt;
+    argv[argc++] = out_path;
+    argv[argc] = NULL;
+
+    FZ_CHECK(write_file(in_path, rest, nin) == 0, "cannot write %s", in_path);
+    if (want_vel)
+        FZ_CHECK(write_file(vel_path, vel ? vel : rest, vel ? nvel : 0) == 0, "cannot write %s",
+                 vel_path);
+
+    int rc = garotor_main(argc, argv);
+    FZ_CHECK(rc == 0 || rc == 2, "exit status %d", rc);
+    if (rc == 2) {
+        check_no_stray_files(0);
+    } else {
+        check_output(kind, affine, pose);
+        check_no_stray_files(1);
+    }
+    unlink(out_path);
+    unlink(svg_path);
+    unlink(vel_path);
+    return 0;
+}
