@@ -1,9 +1,11 @@
 #!/bin/sh
-# The garotor tool from outside: round trips through files, and every error
-# case of docs/tool.md: exit status 2, a message naming the file and line,
-# and no output file left behind.
+# The garotor tool from outside: round trips through files, pictures, and
+# every error case of docs/tool.md: exit status 2, a message naming the file
+# and line, and no output file left behind. At the end, every message of the
+# error table in docs/tool.md must have been produced by one of the cases.
 set -u
 G=$1
+doc=$(cd "$(dirname "$0")/../docs" && pwd)/tool.md
 d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
 fails=0
@@ -17,6 +19,7 @@ expect_error() {
     rm -f "$d"/out*
     "$@" >"$d/stdout" 2>"$d/stderr"
     rc=$?
+    cat "$d/stderr" >>"$d/all_stderr"
     [ "$rc" -eq 2 ] || fail "$name: exit status $rc, want 2"
     grep -q -- "$pattern" "$d/stderr" || fail "$name: message '$(cat "$d/stderr")' lacks '$pattern'"
     [ -s "$d/stdout" ] && fail "$name: wrote to standard output"
@@ -146,10 +149,158 @@ expect_error "interp: affine with poses" "affine takes keys as matrices" \
 expect_error "interp: neither --samples nor --at" "either --samples" \
     "$G" interp --format pose --in "$d/keys" --out "$d/out"
 
+# ---- more of the error table ----------------------------------------------
+K="$d/keys"
+expect_error "missing value" "missing value for: --samples" "$G" interp --in "$K" --samples
+expect_error "--step not > 0" "--step needs a number > 0, not: 0" \
+    "$G" interp --format pose --samples 3 --eval euler --step 0 --in "$K" --out "$d/out"
+expect_error "--v0 not a number" "--v0 needs 6 finite numbers, not: x" \
+    "$G" interp --scheme lihao2 --format pose --samples 3 --v0 1 2 3 4 5 x --in "$K" --out "$d/out"
+expect_error "unknown eval" "--eval must be" \
+    "$G" interp --format pose --samples 3 --eval rk4 --in "$K" --out "$d/out"
+expect_error "--step without euler" "--step applies only" \
+    "$G" interp --format pose --samples 3 --step 0.1 --in "$K" --out "$d/out"
+expect_error "unknown format" "--format must be" \
+    "$G" interp --format csv --samples 3 --in "$K" --out "$d/out"
+expect_error "--v0 with screw" "--v0 applies only" \
+    "$G" interp --format pose --samples 3 --v0 0 0 0 0 0 0 --in "$K" --out "$d/out"
+expect_error "--velocities with screw" "--velocities applies only" \
+    "$G" interp --format pose --samples 3 --velocities "$d/vel2" --in "$K" --out "$d/out"
+expect_error "--at not numbers" "--at needs finite times" \
+    "$G" interp --format pose --at 0,x --in "$K" --out "$d/out"
+expect_error "--view without --svg" "--view applies only with --svg" \
+    "$G" interp --format pose --samples 3 --view xy --in "$K" --out "$d/out"
+expect_error "demo --view without --svg" "demo: --view applies only with --svg" "$G" demo --view xy
+expect_error "--svg to stdout" "--svg needs a file name, not '-'" \
+    "$G" interp --format pose --samples 3 --svg - --in "$K" --out "$d/out"
+expect_error "unknown view" "--view must be iso, xy, xz or yz, not 'top'" \
+    "$G" interp --format pose --samples 3 --svg "$d/out.svg" --view top --in "$K" --out "$d/out"
+expect_error "demo: unknown view" "--view must be" "$G" demo --svg "$d/out.svg" --view top
+expect_error "read error" "$d: read error" "$G" exp --in "$d" --out "$d/out"
+printf '0 0 0 0 0 2x\n' >"$d/junk"
+expect_error "junk after a number" "junk:1: junk after number 6" "$G" exp --in "$d/junk" --out "$d/out"
+printf '1000 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n' >"$d/abig"
+expect_error "exp affine: overflow" "abig:1: outside the domain" \
+    "$G" exp --group affine --in "$d/abig" --out "$d/out"
+printf '0  1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n1  -1 0 0 0 0 -2 0 0 0 0 1 0 0 0 0 1\n' >"$d/negkeys"
+expect_error "interp affine: no real log" "negkeys: cannot build the bivector path" \
+    "$G" interp --group affine --scheme bivector --samples 3 --in "$d/negkeys" --out "$d/out" --svg "$d/out.svg"
+printf '0 0 0 0 0 0\n0 0 0 0 0 0\n0 0 0 0 0 0\n0 0 0 0 0 0\n' >"$d/vel4"
+expect_error "interp: more velocities than keys" "vel4:4: one velocity per key" \
+    "$G" interp --scheme lihao3 --format pose --samples 3 --in "$K" --velocities "$d/vel4" --out "$d/out"
+expect_error "--out in a missing directory" "nodir/x: cannot write" \
+    "$G" exp --in "$d/twists" --out "$d/nodir/x"
+expect_error "--svg in a missing directory" "nodir/x.svg: cannot write" \
+    "$G" interp --format pose --samples 3 --in "$K" --out "$d/out" --svg "$d/nodir/x.svg"
+expect_error "--out fails: no picture left" "nodir/x: cannot write" \
+    "$G" interp --format pose --samples 3 --in "$K" --out "$d/nodir/x" --svg "$d/out.svg"
+expect_error "demo --svg in a missing directory" "nodir/x.svg: cannot write" \
+    "$G" demo --svg "$d/nodir/x.svg"
+expect_error "interp: bad keys, no picture left" "same_t:3: key times must increase" \
+    "$G" interp --format pose --samples 3 --in "$d/same_t" --out "$d/out" --svg "$d/out.svg"
+expect_error "interp: bad keys, picture to a new name" "badq:2: not a rigid motion" \
+    "$G" interp --format pose --samples 3 --in "$d/badq" --svg "$d/out.svg"
+long=$d/out$(awk -v n=$((4090 - ${#d})) 'BEGIN { while (n-- > 0) printf "a" }')
+expect_error "name too long" "name too long" "$G" exp --in "$d/twists" --out "$long"
+if [ -w /dev/full ]; then
+    "$G" exp --in "$d/twists" >/dev/full 2>"$d/stderr"
+    rc=$?
+    cat "$d/stderr" >>"$d/all_stderr"
+    [ "$rc" -eq 2 ] && grep -q "<stdout>: write error" "$d/stderr" || fail "write error: status $rc, $(cat "$d/stderr")"
+fi
+ls "$d"/*.tmp* >/dev/null 2>&1 && fail "temporary files left behind: $(ls "$d"/*.tmp*)"
+
+# ---- pictures ---------------------------------------------------------------
+svg_ok() { # svg_ok NAME FILE: well-formed (xmllint, if installed), an <svg> with a path
+    [ -s "$2" ] || { fail "$1: no picture"; return; }
+    if command -v xmllint >/dev/null 2>&1; then
+        xmllint --noout "$2" 2>"$d/xml" || fail "$1: not well-formed XML: $(cat "$d/xml")"
+    fi
+    grep -q '^<svg xmlns="http://www.w3.org/2000/svg"' "$2" || fail "$1: no <svg> element"
+    grep -q '<polyline' "$2" || fail "$1: no trajectory"
+    [ "$(tail -n 1 "$2")" = "</svg>" ] || fail "$1: does not end with </svg>"
+}
+head -n 2 "$K" >"$d/two_turn"
+"$G" interp --format pose --samples 21 --in "$d/two_turn" --out "$d/p.txt" --svg "$d/p.svg" ||
+    fail "interp --svg"
+svg_ok "interp --svg" "$d/p.svg"
+[ "$(wc -l <"$d/p.txt")" -eq 21 ] || fail "interp --svg still writes the samples"
+grep -q 'screw axis' "$d/p.svg" || fail "two keys, screw: the axis is drawn"
+"$G" interp --scheme quadratic --format pose --samples 21 --in "$K" --out "$d/q.txt" \
+    --svg "$d/q.svg" || fail "interp --svg quadratic"
+svg_ok "quadratic" "$d/q.svg"
+grep -q 'screw axis' "$d/q.svg" && fail "quadratic: no screw axis"
+"$G" interp --format pose --samples 21 --in "$K" --out "$d/s.txt" --svg "$d/s.svg"
+grep -q 'screw axis' "$d/s.svg" && fail "three keys on different screws: no axis"
+for v in iso xy xz yz; do
+    "$G" interp --format pose --samples 21 --in "$K" --out "$d/v.txt" --svg "$d/v-$v.svg" \
+        --view "$v" || fail "--view $v"
+    svg_ok "--view $v" "$d/v-$v.svg"
+    grep -q "view $v<" "$d/v-$v.svg" || fail "--view $v: not named in the picture"
+done
+cmp -s "$d/v-iso.svg" "$d/v-xy.svg" && fail "--view xy draws the same as iso"
+"$G" interp --format pose --samples 21 --in "$K" --out "$d/v.txt" --svg "$d/again.svg" --view xy
+cmp -s "$d/v-xy.svg" "$d/again.svg" || fail "the same picture twice differs"
+"$G" interp --group matrix --format pose --samples 21 --in "$K" --svg "$d/m.svg" >"$d/m.txt" ||
+    fail "interp --svg with samples on standard output"
+[ "$(wc -l <"$d/m.txt")" -eq 21 ] || fail "samples on standard output beside --svg"
+svg_ok "--group matrix" "$d/m.svg"
+"$G" interp --header --format pose --samples 5 --in "$(dirname "$doc")/figures/tool-poses.csv" >/dev/null ||
+    fail "interp --header reads the tutorial's CSV"
+
+# ---- the demonstration: no arguments, under a second, and its picture ------
+start=$(date +%s%N 2>/dev/null)
+"$G" >"$d/demo.txt" || fail "garotor with no arguments exits non-zero"
+end=$(date +%s%N 2>/dev/null)
+case "$start$end" in
+*N*) ;; # no nanoseconds in this date
+*) [ $(((end - start) / 1000000)) -lt 1000 ] || fail "garotor took $(((end - start) / 1000000)) ms" ;;
+esac
+grep -q "largest difference of a matrix entry" "$d/demo.txt" || fail "demo: the cross-check is reported"
+grep -q "pitch" "$d/demo.txt" || fail "demo: the screws are reported"
+"$G" demo --svg "$d/demo.svg" >"$d/demo2.txt" || fail "demo --svg"
+svg_ok "demo --svg" "$d/demo.svg"
+[ "$(grep -c '<polyline' "$d/demo.svg")" -eq 2 ] || fail "demo --svg draws two paths"
+"$G" --svg "$d/demo3.svg" --view yz >/dev/null || fail "garotor --svg (the demo, options only)"
+svg_ok "garotor --svg" "$d/demo3.svg"
+
 # --help of every command exits 0 and names it
 for c in demo exp log interp; do
     "$G" "$c" --help | grep -q "usage: garotor" || fail "$c --help"
 done
+
+# ---- every message of docs/tool.md's error table was produced above ---------
+# A row's first code span is the message; {...} stands for any text.
+if [ -f "$doc" ]; then
+    awk '
+    function regex(t,   r, i, c, inbrace) {
+        r = "^"
+        for (i = 1; i <= length(t); i++) {
+            c = substr(t, i, 1)
+            if (inbrace) { if (c == "}") { inbrace = 0; r = r ".*" } continue }
+            if (c == "{") { inbrace = 1; continue }
+            if (index("\\^$.|?*+()[]/", c)) r = r "\\" c; else r = r c
+        }
+        return r "$"
+    }
+    FNR == NR {
+        if ($0 ~ /<!-- errors -->/) on = 1
+        else if ($0 ~ /<!-- \/errors -->/) on = 0
+        else if (on && $0 ~ /^\| `/) {
+            t = $0; sub(/^\| `/, "", t); sub(/`.*/, "", t); gsub(/\\\|/, "|", t)
+            n++; msg[n] = t; re[n] = regex(t)
+        }
+        next
+    }
+    { for (i = 1; i <= n; i++) if ($0 ~ re[i]) hit[i] = 1 }
+    END {
+        if (n < 30) { print "FAIL: only " n " rows read from the error table of docs/tool.md"; bad = 1 }
+        for (i = 1; i <= n; i++) if (!hit[i]) { print "FAIL: no case produces: " msg[i]; bad = 1 }
+        exit bad
+    }' "$doc" "$d/all_stderr" || fails=$((fails + 1))
+else
+    fail "$doc is missing"
+fi
 
 [ "$fails" -eq 0 ] && echo "tool_test: all passed"
 exit $((fails > 0))

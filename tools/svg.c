@@ -105,7 +105,7 @@ int svg_screw_axis(const ga_mat4 *key, size_t n, ga_vec3 *point, ga_vec3 *dir)
 
 /* ---- drawing --------------------------------------------------------------- */
 
-enum { WIDTH = 800, MARGIN = 24, TITLE_H = 40, LEGEND_H = 48 };
+enum { WIDTH = 800, MARGIN = 24, TITLE_H = 40, LEGEND_H = 48, KEYS_SHOWN = 10 };
 
 static const char *const axis_colour[3] = {"#d62728", "#2ca02c", "#1f77b4"};
 static const char key_colour[] = "#000000", screw_colour[] = "#8c564b";
@@ -254,14 +254,23 @@ int svg_write(const char *file, const svg_picture *pic)
     scene_extent(pic, &centre, &diag);
     c.frame_len = diag > 0.0 ? 0.07 * diag : 1.0;
 
-    /* the screw axis: a segment through the point of the axis nearest the
-     * scene's centre, as long as the scene's diagonal and a little more */
+    /* the screw axis: the segment of it alongside the frame origins, and a
+     * little more at each end */
     ga_vec3 axis_a = {0}, axis_b = {0};
     if (pic->has_axis) {
-        double half = 0.6 * fmax(diag, 4.0 * c.frame_len);
-        double s = dot(pic->axis_dir, axpy(-1.0, pic->axis_point, centre));
-        axis_a = axpy(s - half, pic->axis_dir, pic->axis_point);
-        axis_b = axpy(s + half, pic->axis_dir, pic->axis_point);
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t p = 0; p <= pic->npaths; p++) {
+            const ga_mat4 *m = p < pic->npaths ? pic->path[p].sample : pic->key;
+            size_t n = p < pic->npaths ? pic->path[p].n : pic->nkeys;
+            for (size_t i = 0; i < n; i++) {
+                double s = dot(pic->axis_dir, axpy(-1.0, pic->axis_point, origin_of(&m[i])));
+                lo = fmin(lo, s);
+                hi = fmax(hi, s);
+            }
+        }
+        double margin = 0.15 * diag + c.frame_len;
+        axis_a = axpy(lo - margin, pic->axis_dir, pic->axis_point);
+        axis_b = axpy(hi + margin, pic->axis_dir, pic->axis_point);
     }
 
     /* fit everything drawn into the plot area, the same scale both ways */
@@ -339,7 +348,10 @@ int svg_write(const char *file, const svg_picture *pic)
             last = i;
         }
     }
-    fputs("</g>\n<g stroke-width=\"2.6\" stroke-linecap=\"round\">\n", f);
+    /* up to KEYS_SHOWN keys: bold frames and labels; more: dots, and labels
+     * at the first and last */
+    int few = pic->nkeys <= KEYS_SHOWN;
+    fprintf(f, "</g>\n<g stroke-width=\"%s\" stroke-linecap=\"round\">\n", few ? "2.6" : "1.3");
     for (size_t k = 0; k < pic->nkeys; k++)
         frame(&c, &pic->key[k]);
     fputs("</g>\n", f);
@@ -349,7 +361,7 @@ int svg_write(const char *file, const svg_picture *pic)
         fputs("<circle cx=\"", f); num(f, x);
         fputs("\" cy=\"", f); num(f, y);
         fprintf(f, "\" r=\"3.5\" fill=\"%s\"/>\n", key_colour);
-        if (pic->key_t) {
+        if (pic->key_t && (few || k == 0 || k + 1 == pic->nkeys)) {
             fputs("<text x=\"", f); num(f, x + 7);
             fputs("\" y=\"", f); num(f, y - 7);
             fprintf(f, "\">t=%g</text>\n", pic->key_t[k]);
