@@ -93,6 +93,16 @@ printf '0 0 0 0 0\n' >"$d/short"
 expect_error "exp: wrong count" "short:1: expected 6 numbers" "$G" exp --in "$d/short" --out "$d/out"
 printf '0 0 0 0 0 0\n0 0 x 0 0 0\n' >"$d/word"
 expect_error "exp: not a number" "word:2: 'x' is not a number" "$G" exp --in "$d/word" --out "$d/out"
+# an empty CSV field is an error, not skipped: 1,,2,3,4,5,6 must not read as
+# six numbers with the 2 in the second column
+printf '0,0,0,0,0,0\n1,,2,3,4,5,6\n' >"$d/empty"
+expect_error "exp: empty field" "empty:2: empty field after number 1" "$G" exp --in "$d/empty" --out "$d/out"
+printf ' , 0,0,0,0,0,0\n' >"$d/empty0"
+expect_error "exp: leading comma" "empty0:1: empty field before number 1" "$G" exp --in "$d/empty0" --out "$d/out"
+printf '0, 0, 0, 0, 0, 0 ,\r\n' >"$d/empty6"
+expect_error "exp: trailing comma" "empty6:1: empty field after number 6" "$G" exp --in "$d/empty6" --out "$d/out"
+printf '0 , 0,\t0 ,0\t0 0\r\n' >"$d/seps"
+"$G" exp --in "$d/seps" >/dev/null || fail "one comma with blanks around it, or blanks alone, separate numbers"
 printf '0 0 0 0 0 0\n\n# c\n0 0 nan 0 0 0\n' >"$d/nan"
 expect_error "exp: NaN" "nan:4: number 3 is not finite" "$G" exp --in "$d/nan" --out "$d/out"
 printf '0 0 0 inf 0 0\n' >"$d/inf"
@@ -208,7 +218,42 @@ if [ -w /dev/full ]; then
     cat "$d/stderr" >>"$d/all_stderr"
     [ "$rc" -eq 2 ] && grep -q "<stdout>: write error" "$d/stderr" || fail "write error: status $rc, $(cat "$d/stderr")"
 fi
+if [ -w /dev/full ]; then
+    # --out a device: written in place; its write error is reported, and the
+    # picture already written is removed again
+    expect_error "--out a full device" "/dev/full: write error" \
+        "$G" interp --format pose --samples 3 --in "$K" --out /dev/full --svg "$d/out.svg"
+fi
 ls "$d"/*.tmp* >/dev/null 2>&1 && fail "temporary files left behind: $(ls "$d"/*.tmp*)"
+
+# ---- where output goes ------------------------------------------------------
+# a new file gets 0666 less the umask (not mkstemp's 0600); a replaced file
+# keeps its mode; a symbolic link stays a link to the rewritten file
+(umask 022 && "$G" exp --in "$d/twists" --out "$d/mode_new") || fail "exp --out a new file"
+[ "$(stat -c %a "$d/mode_new")" = 644 ] || fail "new --out file has mode $(stat -c %a "$d/mode_new"), not 644"
+chmod 640 "$d/mode_new"
+"$G" exp --in "$d/twists" --out "$d/mode_new" || fail "exp --out an existing file"
+[ "$(stat -c %a "$d/mode_new")" = 640 ] || fail "replaced --out file has mode $(stat -c %a "$d/mode_new"), not 640"
+echo old >"$d/link_target"
+ln -s link_target "$d/link"
+"$G" exp --in "$d/twists" --out "$d/link" || fail "exp --out a symbolic link"
+[ -L "$d/link" ] || fail "--out replaced a symbolic link by a file"
+"$G" exp --in "$d/twists" | cmp -s - "$d/link_target" || fail "--out through a link did not write its target"
+# a FIFO (and so /dev/null or a terminal) is written in place, never replaced
+# by a regular file, and never removed when a later step fails
+mkfifo "$d/fifo"
+cat "$d/fifo" >"$d/fifo_read" &
+"$G" exp --in "$d/twists" --out "$d/fifo" || fail "exp --out a FIFO"
+wait
+[ -p "$d/fifo" ] || fail "--out replaced a FIFO by a regular file"
+"$G" exp --in "$d/twists" | cmp -s - "$d/fifo_read" || fail "--out a FIFO: not what standard output gets"
+if [ -w /dev/full ]; then
+    cat "$d/fifo" >/dev/null &
+    "$G" interp --format pose --samples 3 --in "$K" --out /dev/full --svg "$d/fifo" 2>/dev/null &&
+        fail "--out /dev/full succeeded"
+    wait
+    [ -p "$d/fifo" ] || fail "a picture written to a FIFO was removed after a later error"
+fi
 
 # ---- pictures ---------------------------------------------------------------
 svg_ok() { # svg_ok NAME FILE: well-formed (xmllint, if installed), an <svg> with a path

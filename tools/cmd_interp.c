@@ -309,7 +309,7 @@ int cmd_interp(const cli_opts *o)
         if (tio_out_close(&out, 1) == 0)
             rc = 0;
         else if (o->svg)
-            remove(o->svg);
+            tio_out_unwrite(o->svg);
     }
     goto done;
 oom:

@@ -1,5 +1,5 @@
 /* tools/textio.c: see textio.h. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "textio.h"
 
 #include <errno.h>
@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static int grow(void **p, size_t *cap, size_t need, size_t size)
@@ -74,11 +75,30 @@ int tio_read(const char *path, int skip_header, tio_items *out)
         cur->first = nval;
         cur->count = 0;
         cur->line = lineno;
+        /* Between two numbers: whitespace, or one comma with optional
+         * whitespace around it. A comma with no number on one side of it is an
+         * empty CSV field ("1,,2", ",1", "1,"): an error, never skipped, so a
+         * missing value cannot shift the ones after it. */
         for (;;) {
-            while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n' || *s == ',')
-                s++;
-            if (*s == '\0')
+            int comma = 0;
+            for (;; s++) {
+                if (*s == ',' && (comma || cur->count == 0)) {
+                    status = tio_error(&it, it.n - 1, "empty field %s number %d",
+                                       cur->count ? "after" : "before", cur->count + (cur->count == 0));
+                    break;
+                }
+                if (*s == ',')
+                    comma = 1;
+                else if (*s != ' ' && *s != '\t' && *s != '\r' && *s != '\n')
+                    break;
+            }
+            if (status)
                 break;
+            if (*s == '\0') {
+                if (comma)
+                    status = tio_error(&it, it.n - 1, "empty field after number %d", cur->count);
+                break;
+            }
             char *end;
             errno = 0;
             double x = strtod(s, &end);
@@ -126,6 +146,12 @@ int tio_read(const char *path, int skip_header, tio_items *out)
     return 0;
 }
 
+static void tio_out_release(tio_out *o)
+{
+    free(o->resolved);
+    o->resolved = NULL;
+}
+
 int tio_out_open(tio_out *o, const char *path)
 {
     memset(o, 0, sizeof *o);
@@ -134,17 +160,46 @@ int tio_out_open(tio_out *o, const char *path)
         return 0;
     }
     o->path = path;
-    if (snprintf(o->tmp, sizeof o->tmp, "%s.tmpXXXXXX", path) >= (int)sizeof o->tmp) {
+    /* A symbolic link is followed, so that the file it names is replaced and
+     * the link stays a link. */
+    struct stat st;
+    int exists = stat(path, &st) == 0;
+    if (exists && !S_ISREG(st.st_mode)) {
+        /* a FIFO, a terminal or a device such as /dev/null: written in place,
+         * never replaced by a regular file */
+        o->direct = 1;
+        if (!(o->fp = fopen(path, "w"))) {
+            fprintf(stderr, "garotor: %s: cannot write: %s\n", path, strerror(errno));
+            return -1;
+        }
+        return 0;
+    }
+    if (exists) {
+        char *real = realpath(path, NULL);
+        if (!real) {
+            fprintf(stderr, "garotor: %s: cannot write: %s\n", path, strerror(errno));
+            return -1;
+        }
+        o->path = o->resolved = real;
+    }
+    if (snprintf(o->tmp, sizeof o->tmp, "%s.tmpXXXXXX", o->path) >= (int)sizeof o->tmp) {
         fprintf(stderr, "garotor: %s: name too long\n", path);
+        tio_out_release(o);
         return -1;
     }
     int fd = mkstemp(o->tmp);
-    if (fd < 0 || !(o->fp = fdopen(fd, "w"))) {
+    /* mkstemp creates the file private (0600); give it the mode the file it
+     * replaces had, or that a new file gets (0666 less the umask) */
+    mode_t mask = umask(0);
+    umask(mask);
+    mode_t mode = exists ? st.st_mode & 07777 : 0666 & ~mask;
+    if (fd < 0 || fchmod(fd, mode) != 0 || !(o->fp = fdopen(fd, "w"))) {
         fprintf(stderr, "garotor: %s: cannot write: %s\n", path, strerror(errno));
         if (fd >= 0) {
             close(fd);
             unlink(o->tmp);
         }
+        tio_out_release(o);
         return -1;
     }
     return 0;
@@ -172,10 +227,28 @@ int tio_out_close(tio_out *o, int ok)
     }
     werr |= fclose(o->fp) != 0;
     o->fp = NULL;
-    if (ok && !werr && rename(o->tmp, o->path) == 0)
-        return 0;
-    if (ok)
-        fprintf(stderr, "garotor: %s: cannot write: %s\n", o->path, strerror(errno));
-    unlink(o->tmp);
-    return -1;
+    int rc = -1;
+    if (o->direct) {
+        if (werr)
+            fprintf(stderr, "garotor: %s: write error\n", o->path);
+        else
+            rc = ok ? 0 : -1;
+    } else if (ok && !werr && rename(o->tmp, o->path) == 0) {
+        rc = 0;
+    } else {
+        if (ok)
+            fprintf(stderr, "garotor: %s: cannot write: %s\n", o->path, strerror(errno));
+        unlink(o->tmp);
+    }
+    tio_out_release(o);
+    return rc;
+}
+
+void tio_out_unwrite(const char *path)
+{
+    char *real = realpath(path, NULL);
+    struct stat st;
+    if (real && stat(real, &st) == 0 && S_ISREG(st.st_mode))
+        remove(real);
+    free(real);
 }

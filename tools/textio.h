@@ -7,7 +7,10 @@
  * partial output on standard output nor an output file behind.
  *
  * Output: to standard output, or to a temporary file beside --out that is
- * renamed onto it only when everything succeeded.
+ * renamed onto it only when everything succeeded; the file keeps the mode of
+ * the one it replaces (a new one gets 0666 less the umask), and a symbolic
+ * link is followed, not replaced. An --out that exists and is not a regular
+ * file (a FIFO, a terminal, /dev/null) is written in place.
  */
 #ifndef GAROTOR_TOOLS_TEXTIO_H
 #define GAROTOR_TOOLS_TEXTIO_H
@@ -46,6 +49,8 @@ int tio_error(const tio_items *items, size_t i, const char *fmt, ...)
 typedef struct {
     FILE *fp;
     const char *path; /* final name, NULL for standard output */
+    char *resolved;   /* the file a symbolic link at path names (allocated) */
+    int direct;       /* path is not a regular file (a FIFO, /dev/null): written in place */
     char tmp[4096];   /* temporary name while writing */
 } tio_out;
 
@@ -56,5 +61,8 @@ void tio_out_line(tio_out *o, const double *v, int n);
 /** Finish: flush, and rename the temporary file onto the target when ok;
  *  when !ok remove it. Returns 0 or -1 (message printed). */
 int tio_out_close(tio_out *o, int ok);
+/** Remove what a successful tio_out_open/close wrote to path: the regular
+ *  file it names (through a symbolic link too), never a FIFO or a device. */
+void tio_out_unwrite(const char *path);
 
 #endif
