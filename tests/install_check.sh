@@ -11,8 +11,8 @@ meson install -C "$build" --destdir "$d/root" --no-rebuild >/dev/null
 pc=$(find "$d/root" -name garotor.pc | head -n 1)
 [ -n "$pc" ] || { echo "garotor.pc not installed"; exit 1; }
 find "$d/root" -name garotor.h | grep -q . || { echo "garotor.h not installed"; exit 1; }
-# the first C block after "Five lines of C" in the README
-awk '/^## Five lines of C/{f=1} f&&/^```c/{p=1;next} p&&/^```/{exit} p' "$readme" > "$d/prog.c"
+# the first C block after "A few lines of C" in the README
+awk '/^## A few lines of C/{f=1} f&&/^```c/{p=1;next} p&&/^```/{exit} p' "$readme" > "$d/prog.c"
 [ -s "$d/prog.c" ] || { echo "no C example found in $readme"; exit 1; }
 export PKG_CONFIG_SYSROOT_DIR="$d/root" PKG_CONFIG_PATH="$(dirname "$pc")"
 # shellcheck disable=SC2046
