@@ -333,8 +333,9 @@ ga_rotor ga_rotor_exp(ga_generator g)
             cs = cos(phi);
             sinc = sin(phi) / phi;
         }
-        /* sinc c + (cos - sinc) c_par: cos - sinc (phi >= pi/4) loses at most
-         * 2.3 bits, relative to a term that is at most a third of c_par */
+        /* P = sinc c + (cos - sinc) c_par: for phi >= pi/4 the difference
+         * loses at most 2.3 bits of its own, which is an absolute error of
+         * a few 2^-53 |c_par|, as large as the rounding of sinc c anyway */
         p = v_add(v_scale(c, sinc), v_scale(beta, (cs - sinc) * m));
     }
     return rotor_make(cs, v_scale(beta, sinc), p, sinc * bc);
@@ -393,7 +394,7 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         double sg = principal && r.s < 0.0 ? -1.0 : 1.0, q2 = r.s * r.s + nb2;
         double s = sg * r.s, nb = sqrt(nb2), inv = 1.0 / nb;
         /* the angle in [0, pi/2] for the principal log; the literal log's
-           s < 0 gives pi - atan2(nb, -s), pi = PI_HI + PIO2_LO * 2 */
+           s < 0 gives pi - atan2(nb, -s), with pi = 2 PIO2_HI + 2 PIO2_LO */
         double phi = s >= 0.0 ? atan2_quadrant(nb, s)
                               : (2 * PIO2_HI - atan2_quadrant(nb, -s)) + 2 * PIO2_LO;
         vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
