@@ -4,6 +4,7 @@
  *   garotor-bench            a plain text table
  *   garotor-bench --json     one JSON object: {"ns": {...}, "err": {...}, ...}
  *   garotor-bench --quick    fewer and shorter batches (a smoke test)
+ *   garotor-bench --only K,K only these keys (for a profiler; no throughput)
  *
  * Method. Every figure is the median, over repeated timed batches, of the
  * nanoseconds per call (clock_gettime(CLOCK_MONOTONIC) around a batch, divided
