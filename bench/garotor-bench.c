@@ -4,6 +4,7 @@
  *   garotor-bench            a plain text table
  *   garotor-bench --json     one JSON object: {"ns": {...}, "err": {...}, ...}
  *   garotor-bench --quick    fewer and shorter batches (a smoke test)
+ *   garotor-bench --only K,K only these keys (for a profiler; no throughput)
  *
  * Method. Every figure is the median, over repeated timed batches, of the
  * nanoseconds per call (clock_gettime(CLOCK_MONOTONIC) around a batch, divided
@@ -768,7 +769,20 @@ static bench *find(const char *key)
 static double ns_of(const char *key)
 {
     bench *b = find(key);
-    return b ? b->median : NAN;
+    return b && b->ns ? b->median : NAN;
+}
+
+/* --only KEY,KEY,...: is key in the list (NULL: every key)? */
+static int selected(const char *only, const char *key)
+{
+    size_t n = strlen(key);
+    for (const char *p = only; p; p = strchr(p, ',')) {
+        if (*p == ',')
+            p++;
+        if (strncmp(p, key, n) == 0 && (p[n] == ',' || p[n] == 0))
+            return 1;
+    }
+    return only == NULL;
 }
 
 /* ---- setup and checks --------------------------------------------------------- */
@@ -1039,6 +1053,7 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: garotor-bench [--json] [--quick] [--seed N] [--batches N] [--batch-ms X]\n"
+            "                     [--only KEY,KEY,...]\n"
             "\n"
             "Times garotor's hot paths against 4x4 matrices, a textbook dual-quaternion\n"
             "product and (where built with Eigen 3) Eigen's MatrixFunctions and slerp.\n"
@@ -1049,6 +1064,7 @@ static void usage(FILE *f)
             "  --seed N       seed of the input PRNG (default 1)\n"
             "  --batches N    timed batches per figure (default %d)\n"
             "  --batch-ms X   target duration of one batch in ms (default %g)\n"
+            "  --only KEYS    time only these keys (comma-separated; for profiling)\n"
             "  --help         this text\n",
             DEFAULT_BATCHES, DEFAULT_BATCH_MS);
 }
@@ -1058,6 +1074,7 @@ int main(int argc, char **argv)
     int json = 0, quick = 0, opt_batches = 0;
     double opt_batch_ms = 0.0;
     unsigned long long seed = 1;
+    const char *only = NULL;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--json") == 0)
             json = 1;
@@ -1069,6 +1086,8 @@ int main(int argc, char **argv)
             opt_batches = atoi(argv[++i]);
         else if (strcmp(argv[i], "--batch-ms") == 0 && i + 1 < argc)
             opt_batch_ms = atof(argv[++i]);
+        else if (strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            only = argv[++i];
         else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
             return 0;
@@ -1096,8 +1115,11 @@ int main(int argc, char **argv)
     path_errors(PG_CGA_LIHAO3, &euler_max_l3, &exact_max_l3);
     path_errors(PG_SE3_LIHAO3, &euler_max_l3_se3, &exact_max_l3_se3);
 
-    /* calibrate, warm up, then interleaved batches */
+    /* calibrate, warm up, then interleaved batches (b->ns == NULL: not
+       selected by --only, not timed, printed as not measured) */
     for (size_t i = 0; i < N_BENCH; i++) {
+        if (!selected(only, benches[i].key))
+            continue;
         benches[i].ns = malloc((size_t)n_batches * sizeof(double));
         if (!benches[i].ns) {
             fprintf(stderr, "garotor-bench: out of memory\n");
@@ -1108,9 +1130,14 @@ int main(int argc, char **argv)
     }
     for (int r = 0; r < n_batches; r++)
         for (size_t i = 0; i < N_BENCH; i++)
-            benches[i].ns[r] = time_batch(&benches[i]);
+            if (benches[i].ns)
+                benches[i].ns[r] = time_batch(&benches[i]);
     for (size_t i = 0; i < N_BENCH; i++) {
         bench *b = &benches[i];
+        if (!b->ns) {
+            b->median = b->p25 = b->p75 = NAN;
+            continue;
+        }
         qsort(b->ns, (size_t)n_batches, sizeof(double), cmp_double);
         b->median = quantile(b->ns, n_batches, 0.5);
         b->p25 = quantile(b->ns, n_batches, 0.25);
@@ -1120,11 +1147,11 @@ int main(int argc, char **argv)
     /* batch sampling throughput, N = 1e6 poses into a caller buffer */
     double pps_direct = NAN, pps_exact = NAN;
     void *big = malloc((size_t)BATCH_POSES * sizeof(ga_rotor));
-    if (big) {
+    if (big && !only) {
         pps_direct = batch_poses_per_s(GA_EVAL_DIRECT, batch_reps, big);
         pps_exact = batch_poses_per_s(GA_EVAL_EXACT, batch_reps, big);
-        free(big);
     }
+    free(big);
 
     char cpu[256];
     cpu_model(cpu, sizeof cpu);
@@ -1245,6 +1272,8 @@ int main(int argc, char **argv)
     printf("%-26s %10s %14s  %s\n", "key", "ns/call", "p25..p75", "one call of");
     for (size_t i = 0; i < N_BENCH; i++) {
         const bench *b = &benches[i];
+        if (!b->ns)
+            continue;
         char spread[64];
         snprintf(spread, sizeof spread, "%.4g..%.4g", b->p25, b->p75);
         printf("%-26s %10.4g %14s  %s\n", b->key, b->median, spread, b->what);

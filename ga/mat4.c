@@ -71,6 +71,19 @@ double ga_mat4_norm1(ga_mat4 a)
     return best;
 }
 
+/* a *= 2^e. For |e| <= 1000 the power is a normal double and the product
+ * rounds exactly as ldexp does, without a call per entry. */
+static void mat4_scale2(ga_mat4 *a, int e)
+{
+    if (e == 0) return;
+    if (e >= -1000 && e <= 1000) {
+        double f = ldexp(1.0, e);
+        for (int i = 0; i < 16; i++) a->m[i] *= f;
+    } else {
+        for (int i = 0; i < 16; i++) a->m[i] = ldexp(a->m[i], e);
+    }
+}
+
 /* ---- LU with partial pivoting ------------------------------------------
  * P A^ = L U with A^ = Dr A Dc: L (unit lower) below the diagonal of lu, U on
  * and above it; piv[k] is the row swapped with row k at step k; re, ce hold
@@ -97,8 +110,8 @@ static int lu4_try(ga_mat4 a, lu4 *f, int equilibrate)
             }
             (pass ? f->ce : f->re)[i] = e;
         }
-    double big = 0.0;
-    for (int i = 0; i < 16; i++) big = fmax(big, fabs(a.m[i]));
+    double big = 0.0; /* max |a_ij| (a is finite here: no NaN to skip) */
+    for (int i = 0; i < 16; i++) big = fabs(a.m[i]) > big ? fabs(a.m[i]) : big;
     for (int k = 0; k < 4; k++) {
         int p = k;
         for (int i = k + 1; i < 4; i++)
@@ -131,8 +144,11 @@ static int lu4_factor(ga_mat4 a, lu4 *f)
 /* A^{-1} b = Dc A^^{-1} Dr b from the factors of A. */
 static ga_mat4 lu4_solve(const lu4 *f, ga_mat4 b)
 {
+    /* the scalings are powers of 2, and 2^0 (A not equilibrated, the common
+     * case) is skipped: ldexp is a call per entry */
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) M(b, i, j) = ldexp(M(b, i, j), -f->re[i]);
+        if (f->re[i])
+            for (int j = 0; j < 4; j++) M(b, i, j) = ldexp(M(b, i, j), -f->re[i]);
     for (int k = 0; k < 4; k++)
         for (int j = 0; j < 4; j++) {
             double t = M(b, k, j); M(b, k, j) = M(b, f->piv[k], j); M(b, f->piv[k], j) = t;
@@ -146,7 +162,8 @@ static ga_mat4 lu4_solve(const lu4 *f, ga_mat4 b)
         }
     }
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) M(b, i, j) = ldexp(M(b, i, j), -f->ce[i]);
+        if (f->ce[i])
+            for (int j = 0; j < 4; j++) M(b, i, j) = ldexp(M(b, i, j), -f->ce[i]);
     return b;
 }
 
@@ -421,7 +438,7 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
     while (idx < 4 && !(eta4 <= 0.25 * theta[idx])) idx++;
     if (idx == 4 && eta4 > 0.25 * theta[4]) /* scale so that ||a/2^s||_1 <= theta_13 */
         s = (int)ceil(log2(eta4 / (0.25 * theta[4])));
-    for (int i = 0; i < 16; i++) a.m[i] = ldexp(a.m[i], -s);
+    mat4_scale2(&a, -s);
 
     /* r_m = (V - U)^{-1} (V + U), U the odd and V the even part of p_m. */
     const double *b = coef[idx];
@@ -650,7 +667,7 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         ga_mat4 term = lu4_solve(&f, z);
         mat4_acc(&l, weight[j], &term);
     }
-    for (int i = 0; i < 16; i++) l.m[i] = ldexp(l.m[i], k);
+    mat4_scale2(&l, k);
     if (!mat4_isfinite(&l)) return GA_EDOMAIN;
     /* A posteriori check. Within rounding of the negative real axis (a
      * rounded half turn has eigenvalues -1 +- 1e-16 i) a square root can

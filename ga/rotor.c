@@ -277,40 +277,98 @@ ga_twist ga_twist_from_generator(ga_generator b)
 
 /* ---- exp and log ------------------------------------------------------- */
 
-/* The coefficients of exp as series in phi^2 for phi < 1/2 (a rotation angle
- * 2 phi < 1, where ga_se3_exp sums its series too): cos phi, sinc phi and
- * k = (cos phi - sinc phi) / phi^2 = sum_{j>=1} (-1)^j 2j phi^(2j-2) / (2j+1)!,
- * each to the term in phi^14; the first omitted term is below 1e-18 of the
- * first (phi^16/16!, phi^16/17!, 18 phi^16/19! against 1, 1, 1/3). */
-static const double exp_series[3][8] = {
-    {1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800, 1.0 / 479001600,
-     -1.0 / 87178291200.0},
-    {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
-     1.0 / 6227020800.0, -1.0 / 1307674368000.0},
-    {-1.0 / 3, 1.0 / 30, -1.0 / 840, 1.0 / 45360, -1.0 / 3991680, 1.0 / 518918400,
-     -1.0 / 93405312000.0, 1.0 / 22230464256000.0}};
+/* A polynomial of 9 coefficients in y by Estrin's scheme (y2 = y^2, y4 = y^4,
+ * y8 = y^8): a dependency chain of four multiply-adds instead of Horner's
+ * eight, for the same number of operations; the exp below is bound by that
+ * chain, not by its arithmetic. */
+static inline double estrin9(const double c[9], double y, double y2, double y4, double y8)
+{
+    return ((c[0] + c[1] * y) + y2 * (c[2] + c[3] * y))
+         + y4 * ((c[4] + c[5] * y) + y2 * (c[6] + c[7] * y)) + y8 * c[8];
+}
+
+/* Taylor coefficients, in x^2, of cos x, sin(x)/x and
+ * k(x) = (cos x - sinc x) / x^2 = sum_{j>=1} (-1)^j 2j x^(2j-2) / (2j+1)!,
+ * each to the term in x^16. For |x| <= pi/4 the first omitted term is below
+ * 3e-18 of the sum (x^18/18! against cos x >= 0.7, x^18/19! against
+ * sinc x >= 0.9, 20 x^18/21! against |k| >= 0.3). */
+static const double cos_taylor[9] = {
+    1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800, 1.0 / 479001600,
+    -1.0 / 87178291200.0, 1.0 / 20922789888000.0};
+static const double sinc_taylor[9] = {
+    1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
+    1.0 / 6227020800.0, -1.0 / 1307674368000.0, 1.0 / 355687428096000.0};
+static const double k_taylor[9] = {
+    -1.0 / 3, 1.0 / 30, -1.0 / 840, 1.0 / 45360, -1.0 / 3991680, 1.0 / 518918400,
+    -1.0 / 93405312000.0, 1.0 / 22230464256000.0, -1.0 / 6758061133824000.0};
+
+/* pi/2 = PIO2_HI + PIO2_LO to about 2^-107 */
+#define PIO2_HI 1.5707963267948966    /* 0x1.921fb54442d18p+0 */
+#define PIO2_LO 6.123233995736766e-17 /* 0x1.1a62633145c07p-54 */
 
 ga_rotor ga_rotor_exp(ga_generator g)
 {
     vec beta = v_make(g.e23, -g.e13, g.e12), c = v_make(g.e1n, g.e2n, g.e3n);
-    double phi2 = v_dot(beta, beta), cs, sinc, k;
-    if (phi2 < 0.25) { /* phi < 1/2: the series, no trig call and no division */
-        cs = sinc = k = 0.0;
-        for (int j = 7; j >= 0; j--) { /* Horner in phi^2 */
-            cs = cs * phi2 + exp_series[0][j];
-            sinc = sinc * phi2 + exp_series[1][j];
-            k = k * phi2 + exp_series[2][j];
+    double phi2 = v_dot(beta, beta), bc = v_dot(beta, c), cs, sinc;
+    vec p;
+    if (phi2 <= (GA_PI / 4) * (GA_PI / 4)) {
+        /* phi <= pi/4: the series, no trig call and no division */
+        double y2 = phi2 * phi2, y4 = y2 * y2, y8 = y4 * y4;
+        cs = estrin9(cos_taylor, phi2, y2, y4, y8);
+        sinc = estrin9(sinc_taylor, phi2, y2, y4, y8);
+        double k = estrin9(k_taylor, phi2, y2, y4, y8);
+        /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
+        p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
+    } else {
+        double phi = sqrt(phi2), m = bc / phi2; /* c_par = m beta */
+        if (phi <= 3 * GA_PI / 4) {
+            /* with r = pi/2 - phi in [-pi/4, pi/4], sin phi = cos r and
+             * cos phi = r sinc r, the same series; PIO2_HI - phi is exact
+             * (Sterbenz), so r is pi/2 - phi to an ulp of r and cos phi keeps
+             * its relative accuracy where it vanishes, at phi = pi/2 */
+            double r = (PIO2_HI - phi) + PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+            cs = r * estrin9(sinc_taylor, y, y2, y4, y8);
+            sinc = estrin9(cos_taylor, y, y2, y4, y8) / phi;
+        } else { /* a rotation by more than 3 pi/2: libm reduces the angle */
+            cs = cos(phi);
+            sinc = sin(phi) / phi;
         }
-    } else { /* one sincos; k cancels by at most 3.6 bits (at phi = 1/2) */
-        double phi = sqrt(phi2), sn = sin(phi);
-        cs = cos(phi);
-        sinc = sn / phi;
-        k = (cs - sinc) / phi2;
+        /* P = sinc c + (cos - sinc) c_par: for phi >= pi/4 the difference
+         * loses at most 2.3 bits of its own, which is an absolute error of
+         * a few 2^-53 |c_par|, as large as the rounding of sinc c anyway */
+        p = v_add(v_scale(c, sinc), v_scale(beta, (cs - sinc) * m));
     }
-    double bc = v_dot(beta, c);
-    /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
-    vec p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
     return rotor_make(cs, v_scale(beta, sinc), p, sinc * bc);
+}
+
+/* atan2(y, x) for y > 0 and x >= 0, in [0, pi/2], without a call: with
+ * a = j pi/8 the multiple of pi/8 nearest the angle (j counted from
+ * comparisons of y with x tan((2j+1) pi/16), no division),
+ * z = tan(angle - a) = (y cos a - x sin a) / (x cos a + y sin a) is at most
+ * tan(pi/16) = 0.199 in magnitude (a little more where the comparisons
+ * round), and atan z its Taylor series to z^23, whose first omitted term is
+ * below 3e-19 of z. For j = 0 (cos a = 1, sin a = 0) z = y/x, so small angles
+ * keep their relative accuracy; otherwise the angle is at least pi/16 and
+ * has an absolute error of a few 2^-53. */
+static inline double atan2_quadrant(double y, double x)
+{
+    static const double bound[4] = {0.19891236737965801, 0.66817863791929888,
+                                    1.4966057626654889, 5.0273394921258463};
+    static const double cos_a[5] = {1.0, 0.92387953251128674, 0.70710678118654757,
+                                    0.38268343236508984, 0.0};
+    static const double sin_a[5] = {0.0, 0.38268343236508978, 0.70710678118654746,
+                                    0.92387953251128674, 1.0};
+    static const double a[5] = {0.0, 0.39269908169872414, 0.78539816339744828,
+                                1.1780972450961724, 1.5707963267948966};
+    static const double atan_taylor[12] = {
+        1.0, -1.0 / 3, 1.0 / 5, -1.0 / 7, 1.0 / 9, -1.0 / 11,
+        1.0 / 13, -1.0 / 15, 1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23};
+    int j = (y > bound[0] * x) + (y > bound[1] * x) + (y > bound[2] * x) + (y > bound[3] * x);
+    double z = (y * cos_a[j] - x * sin_a[j]) / (x * cos_a[j] + y * sin_a[j]);
+    double w = z * z, w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
+    const double *c = atan_taylor;
+    double poly = estrin9(c, w, w2, w4, 0.0) + w8 * ((c[8] + c[9] * w) + w2 * (c[10] + c[11] * w));
+    return a[j] + z * poly;
 }
 
 static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
@@ -335,7 +393,10 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
          * projected copy. The principal log takes -R when <R>_0 < 0. */
         double sg = principal && r.s < 0.0 ? -1.0 : 1.0, q2 = r.s * r.s + nb2;
         double s = sg * r.s, nb = sqrt(nb2), inv = 1.0 / nb;
-        double phi = atan2(nb, s); /* in [0, pi/2] for the principal log */
+        /* the angle in [0, pi/2] for the principal log; the literal log's
+           s < 0 gives pi - atan2(nb, -s), with pi = 2 PIO2_HI + 2 PIO2_LO */
+        double phi = s >= 0.0 ? atan2_quadrant(nb, s)
+                              : (2 * PIO2_HI - atan2_quadrant(nb, -s)) + 2 * PIO2_LO;
         vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
         double pu = v_dot(p, u);
         double cpar = (s * pu + nb * (sg * r.e123n)) / q2;

@@ -139,15 +139,19 @@ ga_twist ga_twist_from_generator(ga_generator b);
 /* ---- exp and log ------------------------------------------------------- */
 
 /** exp(B), closed form (W-L Thm 3 / eq. 2), one sin/cos pair, exact for every B
- *  (pure translations and small angles included; a series for the coefficient
- *  (cos phi - sinc phi)/phi^2 when phi = |beta| < 0.1). Any angle is accepted
- *  (no reduction is needed). NaN in, NaN out. */
+ *  (pure translations and small angles included). For phi = |beta| <= pi/4,
+ *  cos phi, sinc phi and (cos phi - sinc phi)/phi^2 are Taylor series in
+ *  phi^2; up to 3 pi/4 (rotations up to 3 pi/2) the same series after
+ *  reduction by pi/2, no libm call; beyond, libm's sin and cos. Any angle is
+ *  accepted. NaN in, NaN out. */
 ga_rotor ga_rotor_exp(ga_generator b);
 
 /** The principal logarithm l(R) (W-L Thm 9, made robust): the generator of the
  *  shortest motion, rotation angle in [0, pi] (R is replaced by -R when its
  *  scalar part is negative; at exactly pi either axis sign is returned). The
- *  half angle is atan2(|<q>_2|, <q>_0), the parallel translation
+ *  half angle is atan2(|<q>_2|, <q>_0) (in the common case without a libm
+ *  call: a Taylor series after reduction to the nearest multiple of pi/8),
+ *  the parallel translation
  *  c.u = cos(phi)(p.u) + sin(phi) p123 and the perpendicular one
  *  p_perp / sinc(phi), so no branch or series is needed: exact at 0, near and
  *  at pi, and for pure translations. A rotor that has drifted from the group
