@@ -38,19 +38,6 @@
 #include "garotor.h"
 
 #define MAXK 6
-/* Known, reported (docs/errors.md, "Known limits"): a velocity is a segment's
- * twist divided by its duration h, which overflows when h is below ~1e-300
- * (times 0 and 5e-324): ga_path_velocity returns GA_OK with Inf. Not checked
- * for such spacings, so the run goes on to find other things. */
-#define VEL_HMIN 1e-280
-/* Likewise, path.c does not check its results for overflow: with keys whose
- * entries are near DBL_MAX (affine exp of a nilpotent generator 1e308),
- * times 1e308 apart, or spacings whose ratios overflow (lihao2's B_{i+1}
- * scales by h_{i+1}/h_i), samples and velocities come back Inf or NaN with
- * GA_OK. Reported (fuzz/known/path/); so "GA_OK means finite" is asserted
- * only for moderate input: keys, velocities and times at most MODERATE in
- * size, spacings at least 1/MODERATE. */
-#define MODERATE 1e12
 
 static const ga_group *const groups[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
 
@@ -66,12 +53,9 @@ static int elem_finite(const ga_group *g, const void *e)
     return fz_all_finite((const double *)e, (int)(g->elem_size / sizeof(double)));
 }
 
-static int moderate; /* of the current input: see MODERATE */
-
 static void check_elem(const ga_group *g, const void *e, int strict, const char *what)
 {
-    if (moderate || strict)
-        FZ_CHECK(elem_finite(g, e), "%s on %s: GA_OK with a non-finite element", what, g->name);
+    FZ_CHECK(elem_finite(g, e), "%s on %s: GA_OK with a non-finite element", what, g->name);
     if (!strict)
         return;
     if (g == &ga_group_cga) {
@@ -125,22 +109,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
     int times_finite = fz_all_finite(times, n), increasing = 1;
-    moderate = 1;
-    double hmin = INFINITY;
     for (int i = 0; i < n; i++) {
         if (!(fabs(times[i]) <= 1e6))
             valid = 0;
-        if (!(fabs(times[i]) <= MODERATE))
-            moderate = 0;
         if (i > 0) {
             double h = times[i] - times[i - 1];
-            hmin = fmin(hmin, h);
             if (!(h > 0))
                 increasing = 0;
             if (!(h >= 1e-3 && h <= 1e3))
                 valid = 0;
-            if (!(h >= 1 / MODERATE))
-                moderate = 0;
         }
     }
 
@@ -158,8 +135,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             return 0; /* no element to build */
         if (!(fz_maxabs(x, dim) <= key_max))
             valid = 0;
-        if (!(fz_maxabs(x, dim) <= (affine ? 1e2 : MODERATE)))
-            moderate = 0; /* affine: exp(1e2) ~ 1e43, so ~1e86 in a product */
         int st = g->exp(x, KEY(i));
         FZ_CHECK(st == GA_OK || st == GA_EDOMAIN, "%s exp status %d", g->name, st);
         if (st != GA_OK)
@@ -172,8 +147,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 double d = fz_double(&rd);
                 mkeys[i].m[k % 16] += d;
                 valid = 0;
-                if (!(fabs(d) <= MODERATE))
-                    moderate = 0;
                 if (!fz_all_finite(mkeys[i].m, 16))
                     keys_finite = 0;
             }
@@ -188,8 +161,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fz_doubles(&rd, vel, nv);
         if (!(fz_maxabs(vel, nv) <= 1e3))
             valid = 0; /* NaN gives NaN here, so it is not valid either */
-        if (!(fz_maxabs(vel, nv) <= MODERATE))
-            moderate = 0;
         velp = vel;
     }
     int uses_vel = scheme == GA_SCHEME_LIHAO2 || scheme == GA_SCHEME_LIHAO3;
@@ -241,7 +212,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                      est, vst, t);
         if (est == GA_OK)
             check_elem(g, A, valid, "eval");
-        if (vst == GA_OK && hmin >= VEL_HMIN && moderate)
+        if (vst == GA_OK)
             FZ_CHECK(fz_all_finite(v, dim), "velocity: GA_OK with a non-finite velocity");
     }
     /* one segment formula at an arbitrary u (extrapolation beyond [0, 1]) */
@@ -257,9 +228,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (u_ok)
             FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: segment %d u %.17g: %d %d", seg, u,
                      est, vst);
-        if (est == GA_OK && fabs(u) <= 1e3) /* far extrapolation: see MODERATE */
+        if (est == GA_OK)
             check_elem(g, A, u_ok, "eval_segment");
-        if (vst == GA_OK && hmin >= VEL_HMIN && moderate && fabs(u) <= 1e3)
+        if (vst == GA_OK)
             FZ_CHECK(fz_all_finite(v, dim), "velocity_segment: GA_OK with a non-finite velocity");
     }
     /* uniform samples with the chosen evaluator, and the closed form beside them */
