@@ -100,9 +100,15 @@ int ga_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
     double w;
     ga_vec3 y;
     int st = down_unit(X, &w, &y);
-    if (st == GA_OK)
-        *out = v3(lambda * y.x, lambda * y.y, lambda * y.z);
-    return st;
+    if (st != GA_OK)
+        return st;
+    /* a large lambda can overflow the point (found by fuzz/fuzz_numeric:
+       fuzz/regress/numeric/down-scaled-overflow) */
+    ga_vec3 x = v3(lambda * y.x, lambda * y.y, lambda * y.z);
+    if (!isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
+        return GA_EDOMAIN;
+    *out = x;
+    return GA_OK;
 }
 
 int ga_down(ga_mv X, ga_vec3 *out) { return ga_down_scaled(X, 1.0, out); }
