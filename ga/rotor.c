@@ -536,7 +536,14 @@ int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
     double k = (w < 0.0 ? -1.0 : 1.0) / sqrt(w * w + x * x + y * y + z * z);
     ga_quat q = {k * w, k * x, k * y, k * z};
     ga_vec3 t = {m[3], m[7], m[11]};
-    *out = ga_rotor_from_quat(q, t);
+    /* P = t q / 2 sums products of t: a translation near DBL_MAX overflows
+       (found by fuzz/fuzz_numeric: fuzz/regress/numeric/from-mat4-translation-overflow) */
+    ga_rotor r = ga_rotor_from_quat(q, t);
+    const double *c = &r.s;
+    for (int i = 0; i < 8; i++)
+        if (!isfinite(c[i]))
+            return GA_EDOMAIN;
+    *out = r;
     return GA_OK;
 }
 
