@@ -197,6 +197,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_CHECK(st == GA_EARG, "times not increasing: status %d", st);
     if (count_ok && (!keys_finite || !vel_finite))
         FZ_CHECK(st != GA_OK, "NaN/Inf keys or velocities accepted");
+    /* GA_ENOTFINITE means NaN/Inf input; finite input that overflows is GA_EDOMAIN */
+    if (times_finite && keys_finite && vel_finite)
+        FZ_CHECK(st != GA_ENOTFINITE, "finite input, GA_ENOTFINITE from init");
     valid = valid && count_ok && times_finite && increasing;
     if (valid)
         FZ_CHECK(st == GA_OK, "valid %s path on %s fails to build: %d", ga_scheme_name(scheme),

@@ -272,12 +272,18 @@ static int build_lihao(ga_path *p, const double *vel)
             lin(d, p->vel, 1.0 / seg_len(p, 0), p->vel, 0.0, p->vel);
         }
     }
+    /* finite input, but a default velocity plog/h or B = h V can overflow (a
+       subnormal segment): GA_EDOMAIN, not the GA_ENOTFINITE exp would give
+       (fuzz/regress/path/lihao3-default-velocity-overflow-status) */
+    if (!allfinite(p->vel, (size_t)(p->scheme == GA_SCHEME_LIHAO3 ? n : 1) * d))
+        return GA_EDOMAIN;
     for (int i = 0; i + 1 < n; ++i) {
         double h = seg_len(p, i);
         double *B = p->coef + (size_t)i * nf * d, *C = B + d, *D = C + d;
         const double *vi = p->vel + (size_t)i * d;
         /* eq. 26: B_i = velocity at the key, per unit u */
         lin(d, B, h, vi, 0.0, vi);
+        if (!allfinite(B, (size_t)d)) return GA_EDOMAIN;
         /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
         double ai[MAXE];
         if ((st = g->inverse(key_of(p, i), ai))) return st;
