@@ -401,10 +401,20 @@ static int build_scheme(ga_path *p, const double *vel)
 }
 
 /* The scheme's coefficients, which follow the keys in the workspace, must be
- * finite (see finite_elem). */
+ * finite (see finite_elem). The keys and velocities are checked first, so a
+ * GA_ENOTFINITE from inside (a log of a product of keys that overflowed) is
+ * finite input overflowing: GA_EDOMAIN (found by fuzz/fuzz_path:
+ * fuzz/regress/path/cga-key-product-overflow). */
 static int build(ga_path *p, const double *vel)
 {
+    const ga_group *g = p->group;
+    size_t ed = g->elem_size / sizeof(double);
+    for (int i = 0; i < p->n; ++i)
+        if (!allfinite(key_of(p, i), ed)) return GA_ENOTFINITE;
+    int nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
+    if (vel && !allfinite(vel, (size_t)nv * g->dim)) return GA_ENOTFINITE;
     int st = build_scheme(p, vel);
+    if (st == GA_ENOTFINITE) return GA_EDOMAIN;
     if (st != GA_OK) return st;
     const double *c = p->key + (size_t)p->n * p->key_stride;
     return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_EDOMAIN;
