@@ -31,7 +31,8 @@ static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_E1], X.c[GA_E2], X.c[GA_E3]); 
  * so the read-backs work on this copy: without it, squares of coefficients
  * beyond ~1e154 overflowed (a dual plane 1e200 (m + d n) read back a zero
  * normal with GA_OK) and below ~1e-154 underflowed (found by
- * fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it). X must be finite. */
+ * fuzz/fuzz_numeric; fuzz/regress/numeric/plane-params-huge-coefficients
+ * replays it). X must be finite. */
 static ga_mv unit_scaled(ga_mv X)
 {
     double s = ga_mv_maxabs(X);

@@ -347,7 +347,8 @@ int ga_se3_log(ga_mat4 m, ga_twist *out)
     if (st != GA_OK) return st;
     ga_twist xi = se3_log_core(&m);
     /* v = V^{-1} t overflows for a translation near DBL_MAX: report it, never
-       return Inf or NaN (fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
+       return Inf or NaN (found by fuzz/fuzz_numeric;
+       fuzz/regress/numeric/log-subnormal-rotation-translation replays it) */
     if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z))) return GA_EDOMAIN;
     *out = xi;
     return GA_OK;
@@ -368,7 +369,7 @@ int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
     ga_mat4 g = ga_mat4_mul(ga_se3_exp(xi), h0);
     /* a far extrapolation or a translation near DBL_MAX overflows: reported,
        never returned as Inf or NaN (found by fuzz/fuzz_numeric;
-       fuzz/regress/numeric/ replays it) */
+       fuzz/regress/numeric/geodesic-overflow replays it) */
     if (!mat4_isfinite(&g)) return GA_EDOMAIN;
     *out = g;
     return GA_OK;
