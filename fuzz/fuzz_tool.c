@@ -17,7 +17,7 @@
  * (--velocities and --svg only when line 1 asked for them). Resource limits,
  * so that a run measures correctness and not patience: --samples is capped at
  * 4096 and an Euler --step below 1e-3 is raised to 1e-3 (both are legal and
- * merely slow); "demo" and --help are skipped.
+ * merely slow); "demo" and --help (anywhere) are skipped.
  *
  * Invariants (CONTRACT.md, docs/errors.md), besides "no crash, no sanitizer
  * report, no leak":
@@ -198,6 +198,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             break;
         }
 
+    /* the tool takes --help (or -h) anywhere, even where an option's value
+       goes ("log --group --help" prints the usage, status 0, no output
+       file): skipped like --help itself (fuzz/regress/tool/help-as-value) */
+    {
+        char scan[401], *sv = NULL;
+        memcpy(scan, cmdline, l1 + 1);
+        for (char *t = strtok_r(scan, " \t\r", &sv); t; t = strtok_r(NULL, " \t\r", &sv))
+            if (!strcmp(t, "--help") || !strcmp(t, "-h"))
+                return 0;
+    }
     /* argv: filter the command line */
     char *argv[MAXARG + 12];
     int argc = 0;

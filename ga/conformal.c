@@ -31,7 +31,8 @@ static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_E1], X.c[GA_E2], X.c[GA_E3]); 
  * so the read-backs work on this copy: without it, squares of coefficients
  * beyond ~1e154 overflowed (a dual plane 1e200 (m + d n) read back a zero
  * normal with GA_OK) and below ~1e-154 underflowed (found by
- * fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it). X must be finite. */
+ * fuzz/fuzz_numeric; fuzz/regress/numeric/plane-params-huge-coefficients
+ * replays it). X must be finite. */
 static ga_mv unit_scaled(ga_mv X)
 {
     double s = ga_mv_maxabs(X);
@@ -100,9 +101,15 @@ int ga_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
     double w;
     ga_vec3 y;
     int st = down_unit(X, &w, &y);
-    if (st == GA_OK)
-        *out = v3(lambda * y.x, lambda * y.y, lambda * y.z);
-    return st;
+    if (st != GA_OK)
+        return st;
+    /* a large lambda can overflow the point (found by fuzz/fuzz_numeric:
+       fuzz/regress/numeric/down-scaled-overflow) */
+    ga_vec3 x = v3(lambda * y.x, lambda * y.y, lambda * y.z);
+    if (!isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
+        return GA_EDOMAIN;
+    *out = x;
+    return GA_OK;
 }
 
 int ga_down(ga_mv X, ga_vec3 *out) { return ga_down_scaled(X, 1.0, out); }

@@ -80,7 +80,8 @@ int ga_down(ga_mv X, ga_vec3 *out);
  *  GA_ENOTPOINT when X is not a finite point, relative to s = max |coefficient|:
  *  a part of grade other than 1 above GA_POINT_TOL s, |X.n| <= GA_POINT_TOL s
  *  (the point at infinity, or X = 0), or X farther than GA_POINT_TOL s from
- *  w F(x) (X not null: X - w F(x) = 0 exactly when X.X = 0). */
+ *  w F(x) (X not null: X - w F(x) = 0 exactly when X.X = 0); GA_EDOMAIN when
+ *  x overflows (a lambda near DBL_MAX). */
 int ga_down_scaled(ga_mv X, double lambda, ga_vec3 *out);
 
 /* ---- objects built from points (direct forms) -------------------------- */

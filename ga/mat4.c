@@ -364,7 +364,8 @@ int ga_se3_log(ga_mat4 m, ga_twist *out)
     if (st != GA_OK) return st;
     ga_twist xi = se3_log_core(&m);
     /* v = V^{-1} t overflows for a translation near DBL_MAX: report it, never
-       return Inf or NaN (fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
+       return Inf or NaN (found by fuzz/fuzz_numeric;
+       fuzz/regress/numeric/log-subnormal-rotation-translation replays it) */
     if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z))) return GA_EDOMAIN;
     *out = xi;
     return GA_OK;
@@ -385,7 +386,7 @@ int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
     ga_mat4 g = ga_mat4_mul(ga_se3_exp(xi), h0);
     /* a far extrapolation or a translation near DBL_MAX overflows: reported,
        never returned as Inf or NaN (found by fuzz/fuzz_numeric;
-       fuzz/regress/numeric/ replays it) */
+       fuzz/regress/numeric/geodesic-overflow replays it) */
     if (!mat4_isfinite(&g)) return GA_EDOMAIN;
     *out = g;
     return GA_OK;
@@ -573,23 +574,39 @@ static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
  * singular Y_k or Z_k or never converges (for a real negative eigenvalue the
  * scalar iterates stay real and cannot approach its imaginary root):
  * GA_EDOMAIN either way. */
-/* max_ij |Y Z - I|_ij / (|Y| |Z|)_ij, the residual of Denman-Beavers. A
- * scale (|Y| |Z|)_ij below DBL_MIN is taken as DBL_MIN: subnormal products
- * round absolutely, to 2^-1074, so their relative residual need never fall
- * below 1e-8 (found by fuzz/fuzz_numeric: logm(expm(X)) was GA_EDOMAIN for
- * an X with one entry of -8e-322; fuzz/regress/numeric/ replays it). */
+/* max_ij |Y Z - I|_ij / S_ij, the residual of Denman-Beavers, with the scale
+ * S_ij = max(D_ij, 1e-6 min(max_l D_il, max_l D_lj), DBL_MIN), D = |Y| |Z|.
+ * D_ij is the scale at which (Y Z)_ij rounds when its terms carry the
+ * entry's weight. An entry that should be exactly 0 but holds rounding noise
+ * of its row and column (eps times max_l D_il, say) would read as a residual
+ * near 1 against its own terms and stop convergence forever, and with it
+ * keep the determinant scaling on (found by fuzz/fuzz_path: logm of
+ * [1 0 0 0; 0 1 0 0; 0 -.98 .016 -.98; 0 0 0 1] was GA_EDOMAIN; replayed by
+ * fuzz/regress/path/affine-logm-db-stall): such entries are measured against
+ * 1e-6 of the smaller of their row's and column's largest scale, which
+ * leaves the noise near 1e-9. A translation column keeps its own scale (its
+ * D_ij is the largest of its row). Below DBL_MIN products round absolutely,
+ * to 2^-1074, so a relative residual need never fall below 1e-8 (found by
+ * fuzz/fuzz_numeric: logm(expm(X)) was GA_EDOMAIN for an X with one entry of
+ * -8e-322; replayed by fuzz/regress/numeric/logm-subnormal-entry). */
 static double db_residual(const ga_mat4 *y, const ga_mat4 *z)
 {
-    double worst = 0.0;
+    double d[4][4], r[4][4], rowmax[4] = {0}, colmax[4] = {0}, worst = 0.0;
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
-            double r = -(double)(i == j), d = 0.0;
+            r[i][j] = -(double)(i == j);
+            d[i][j] = 0.0;
             for (int k = 0; k < 4; k++) {
-                r += M(*y, i, k) * M(*z, k, j);
-                d += fabs(M(*y, i, k) * M(*z, k, j));
+                r[i][j] += M(*y, i, k) * M(*z, k, j);
+                d[i][j] += fabs(M(*y, i, k) * M(*z, k, j));
             }
-            d = fmax(d, DBL_MIN);
-            if (fabs(r) > worst * d) worst = d > 0.0 ? fabs(r) / d : INFINITY;
+            rowmax[i] = fmax(rowmax[i], d[i][j]);
+            colmax[j] = fmax(colmax[j], d[i][j]);
+        }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double s = fmax(fmax(d[i][j], 1e-6 * fmin(rowmax[i], colmax[j])), DBL_MIN);
+            if (fabs(r[i][j]) > worst * s) worst = fabs(r[i][j]) / s;
         }
     return worst;
 }

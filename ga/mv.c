@@ -214,7 +214,8 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
         return GA_ENOTFINITE;
     /* work on a 2^-e (exact), its largest coefficient in [1/2, 1): a ~a of a
        tiny or huge a underflowed or overflowed, and 1/s became Inf with GA_OK
-       (found by fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it).
+       (found by fuzz/fuzz_numeric; fuzz/regress/numeric/mv-inverse-underflow
+       replays it).
        (a 2^-e)^-1 = a^-1 2^e. */
     int e = 0;
     if (ga_mv_maxabs(a) > 0.0)

@@ -32,7 +32,7 @@ static vec v_cross(vec a, vec b)
 /* |a| without underflow or overflow: scale by the largest component first.
  * Divide by m rather than multiply by 1/m, which overflows to Inf for a
  * subnormal m (found by fuzz/fuzz_numeric: l(R) was NaN for a rotation of
- * 1e-322 rad; fuzz/regress/numeric/ replays it). */
+ * 1e-322 rad; fuzz/regress/numeric/rotor-log-subnormal-rotation replays it). */
 static double v_norm(vec a)
 {
     double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
@@ -166,7 +166,8 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
                   r.e1n / m, r.e2n / m, r.e3n / m, r.e123n / m};
     /* P / |q| or the projection may overflow (P near DBL_MAX): that rotor is
        rigid but its projection is not representable, GA_EDOMAIN, not
-       GA_ENOTRIGID (found by fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
+       GA_ENOTRIGID (found by fuzz/fuzz_numeric;
+       fuzz/regress/numeric/normalize-overflow-status replays it) */
     if (!rotor_isfinite(t))
         return GA_EDOMAIN;
     ga_rotor o = rotor_project(t, 1.0 / sqrt(t.s * t.s + t.e12 * t.e12 + t.e13 * t.e13 + t.e23 * t.e23));
@@ -174,7 +175,7 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
        p4 - mu s cancels when P ~q has a large e123 part (far from the group),
        leaving <P ~q>_3 at eps |p4| |b|; the second pass removes that (found by
        fuzz/fuzz_numeric: R ~R - 1 was 3.5e-10 for e123n = 5e54;
-       fuzz/regress/numeric/ replays it). */
+       fuzz/regress/numeric/normalize-far-e123 replays it). */
     o = rotor_project(o, 1.0);
     if (!rotor_isfinite(o))
         return GA_EDOMAIN;
@@ -197,7 +198,8 @@ int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
         !(fabs(m.c[GA_E1234] - m.c[GA_E1235]) <= lim))
         return GA_ENOTRIGID;
     /* the mean as 0.5 a + 0.5 b: (a + b) overflows for a, b near DBL_MAX and
-       made a finite input GA_ENOTFINITE (found by fuzz/fuzz_numeric) */
+       made a finite input GA_ENOTFINITE (found by fuzz/fuzz_numeric;
+       fuzz/regress/numeric/from-mv-mean-overflow replays it) */
     ga_rotor r = {m.c[GA_S], m.c[GA_E12], m.c[GA_E13], m.c[GA_E23],
                   0.5 * m.c[GA_E14] + 0.5 * m.c[GA_E15], 0.5 * m.c[GA_E24] + 0.5 * m.c[GA_E25],
                   0.5 * m.c[GA_E34] + 0.5 * m.c[GA_E35], 0.5 * m.c[GA_E1234] + 0.5 * m.c[GA_E1235]};
@@ -444,7 +446,8 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         } else {
             /* u from b scaled up by 2^600 (exact): nb itself may be subnormal,
                rounded to a few bits, and b / nb then not a unit vector (found by
-               fuzz/fuzz_numeric: 0.4% off for a rotation of 1e-321 rad) */
+               fuzz/fuzz_numeric: 0.4% off for a rotation of 1e-321 rad;
+               fuzz/regress/numeric/log-subnormal-rotation-axis replays it) */
             vec bs = v_scale(b, 0x1p600);
             u = v_div(bs, sqrt(v_dot(bs, bs)));
             f = phi / nb;
@@ -462,7 +465,8 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
     /* A generator beyond the range of double (a translation near DBL_MAX, or
        the literal log's translation across the axis divided by sin(phi) -> 0
        near a full turn) is reported, never returned as Inf or NaN (found by
-       fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it). */
+       fuzz/fuzz_numeric; fuzz/regress/numeric/log-translation-overflow and
+       literal-log-near-full-turn replay it). */
     if (!(isfinite(c.x) && isfinite(c.y) && isfinite(c.z)))
         return GA_EDOMAIN;
     ga_generator g = {beta.z, -beta.y, beta.x, c.x, c.y, c.z};
@@ -503,7 +507,8 @@ int ga_screw_from_rotor(ga_rotor r, ga_screw *out)
     }
     /* the twist is twice the generator and may overflow where the generator
        did not (a translation beyond DBL_MAX / 2): report it, never return
-       Inf or NaN (found by fuzz/fuzz_numeric; fuzz/regress/numeric/ replays it) */
+       Inf or NaN (found by fuzz/fuzz_numeric;
+       fuzz/regress/numeric/screw-translation-overflow replays it) */
     if (!isfinite(s.shift) || !isfinite(s.point.x) || !isfinite(s.point.y) ||
         !isfinite(s.point.z) || !isfinite(s.axis.x) || !isfinite(s.axis.y) || !isfinite(s.axis.z))
         return GA_EDOMAIN;
@@ -597,7 +602,14 @@ int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
     double k = (w < 0.0 ? -1.0 : 1.0) / sqrt(w * w + x * x + y * y + z * z);
     ga_quat q = {k * w, k * x, k * y, k * z};
     ga_vec3 t = {m[3], m[7], m[11]};
-    *out = ga_rotor_from_quat(q, t);
+    /* P = t q / 2 sums products of t: a translation near DBL_MAX overflows
+       (found by fuzz/fuzz_numeric: fuzz/regress/numeric/from-mat4-translation-overflow) */
+    ga_rotor r = ga_rotor_from_quat(q, t);
+    const double *c = &r.s;
+    for (int i = 0; i < 8; i++)
+        if (!isfinite(c[i]))
+            return GA_EDOMAIN;
+    *out = r;
     return GA_OK;
 }
 

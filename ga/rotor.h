@@ -188,7 +188,8 @@ ga_mat4 ga_rotor_to_mat4(ga_rotor r);
  *  largest of trace, m00, m11, m22, robust at half turns), with the sign chosen
  *  so that the scalar part is >= 0. GA_ENOTFINITE on NaN/Inf; GA_ENOTRIGID if the
  *  3x3 block is not orthonormal to 1e-9 (max |M^T M - 1|), has det <= 0, or the
- *  last row is not 0 0 0 1 to 1e-9. */
+ *  last row is not 0 0 0 1 to 1e-9; GA_EDOMAIN if the rotor overflows (a
+ *  translation near DBL_MAX). */
 int ga_rotor_from_mat4(ga_mat4 m, ga_rotor *out);
 
 /** The rotation quaternion of r; the translation t = -2 <P ~q>_1 is written to

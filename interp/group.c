@@ -120,7 +120,7 @@ static int cga_inverse(const void *a, void *out)
  * in and not finite out is GA_EDOMAIN: ga_rotor_exp of an angle beyond ~1e154
  * (phi^2 overflows) or of a translation near DBL_MAX, a twist = 2 generator
  * beyond DBL_MAX (found by fuzz/fuzz_path and fuzz/fuzz_tool: `garotor exp`
- * printed nan; fuzz/regress/path/ replays it). */
+ * printed nan; fuzz/regress/path/cga-exp-overflow replays it). */
 static int finite_status(const double *in, int n_in, const double *out, int n_out)
 {
     /* The common case in a few operations and one branch: v - v is 0 for a

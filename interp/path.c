@@ -106,6 +106,18 @@ static int allfinite(const double *x, size_t n)
     return 1;
 }
 
+/* Results are checked before they are handed out: finite input can still
+ * overflow on the way (a velocity divided by a subnormal segment length, a
+ * lihao2 velocity scaled by a ratio h_{i+1}/h_i near DBL_MAX, products of
+ * keys near DBL_MAX), and a result that is not finite is GA_EDOMAIN, never
+ * GA_OK with Inf or NaN (docs/errors.md; found by fuzz/fuzz_path, replayed by
+ * fuzz/regress/path/velocity-subnormal-spacing and
+ * fuzz/regress/path/affine-lihao3-velocity-overflow). */
+static int finite_elem(const ga_group *g, const void *x)
+{
+    return allfinite(x, g->elem_size / sizeof(double)) ? GA_OK : GA_EDOMAIN;
+}
+
 /* ---- twist branches (cga and se3: dim 6) ------------------------------------ */
 
 static double twist_angle(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
@@ -269,12 +281,18 @@ static int build_lihao(ga_path *p, const double *vel)
             lin(d, p->vel, 1.0 / seg_len(p, 0), p->vel, 0.0, p->vel);
         }
     }
+    /* finite input, but a default velocity plog/h or B = h V can overflow (a
+       subnormal segment): GA_EDOMAIN, not the GA_ENOTFINITE exp would give
+       (fuzz/regress/path/lihao3-default-velocity-overflow-status) */
+    if (!allfinite(p->vel, (size_t)(p->scheme == GA_SCHEME_LIHAO3 ? n : 1) * d))
+        return GA_EDOMAIN;
     for (int i = 0; i + 1 < n; ++i) {
         double h = seg_len(p, i);
         double *B = p->coef + (size_t)i * nf * d, *C = B + d, *D = C + d;
         const double *vi = p->vel + (size_t)i * d;
         /* eq. 26: B_i = velocity at the key, per unit u */
         lin(d, B, h, vi, 0.0, vi);
+        if (!allfinite(B, (size_t)d)) return GA_EDOMAIN;
         /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
         double ai[MAXE];
         if ((st = g->inverse(key_of(p, i), ai))) return st;
@@ -374,7 +392,7 @@ static void build_smooth(ga_path *p)
     }
 }
 
-static int build(ga_path *p, const double *vel)
+static int build_scheme(ga_path *p, const double *vel)
 {
     switch (p->scheme) {
     case GA_SCHEME_SCREW:
@@ -389,6 +407,26 @@ static int build(ga_path *p, const double *vel)
     }
     }
     return GA_EARG;
+}
+
+/* The scheme's coefficients, which follow the keys in the workspace, must be
+ * finite (see finite_elem). The keys and velocities are checked first, so a
+ * GA_ENOTFINITE from inside (a log of a product of keys that overflowed) is
+ * finite input overflowing: GA_EDOMAIN (found by fuzz/fuzz_path:
+ * fuzz/regress/path/cga-key-product-overflow). */
+static int build(ga_path *p, const double *vel)
+{
+    const ga_group *g = p->group;
+    size_t ed = g->elem_size / sizeof(double);
+    for (int i = 0; i < p->n; ++i)
+        if (!allfinite(key_of(p, i), ed)) return GA_ENOTFINITE;
+    int nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
+    if (vel && !allfinite(vel, (size_t)nv * g->dim)) return GA_ENOTFINITE;
+    int st = build_scheme(p, vel);
+    if (st == GA_ENOTFINITE) return GA_EDOMAIN;
+    if (st != GA_OK) return st;
+    const double *c = p->key + (size_t)p->n * p->key_stride;
+    return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_EDOMAIN;
 }
 
 int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
@@ -476,7 +514,8 @@ int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
         g->compose(left, e, dst);
         left = dst;
     }
-    return GA_OK;
+    /* a product of finite factors can still overflow: GA_EDOMAIN, not Inf */
+    return finite_elem(g, out);
 }
 
 /* DIRECT at (seg, u): at a key time the key itself, not its rounding. */
@@ -530,9 +569,14 @@ static int velocity_u(const ga_path *p, int seg, double u, double *v)
 int ga_path_velocity_segment(const ga_path *p, int seg, double u, double *v)
 {
     if (!p || !v || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_EARG;
-    int st = velocity_u(p, seg, u, v);
-    if (st == GA_OK) lin(p->group->dim, v, 1.0 / seg_len(p, seg), v, 0.0, v);
-    return st;
+    int d = p->group->dim;
+    double w[MAXD];
+    int st = velocity_u(p, seg, u, w);
+    if (st != GA_OK) return st;
+    lin(d, w, 1.0 / seg_len(p, seg), w, 0.0, w);
+    if (!allfinite(w, (size_t)d)) return GA_EDOMAIN; /* see finite_elem */
+    memcpy(v, w, (size_t)d * sizeof(double));
+    return GA_OK;
 }
 
 int ga_path_velocity(const ga_path *p, double t, double *v)
@@ -684,6 +728,7 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
         ++s->since;
         if (st == GA_OK) exact_output(s, out);
     }
+    if (st == GA_OK) st = finite_elem(p->group, out);
     if (st == GA_OK) ++s->k;
     return st;
 }
@@ -715,6 +760,7 @@ int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const do
         if (st == GA_OK)
             st = ev == GA_EVAL_EULER ? euler_sample(p, step, &cur, &grid, A, seg, u, o)
                                      : eval_direct(p, seg, u, o);
+        if (st == GA_OK) st = finite_elem(p->group, o);
         if (st) return st;
     }
     return GA_OK;

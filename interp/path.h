@@ -120,7 +120,11 @@
  * code (types.h): GA_EARG for too few keys, times not strictly increasing, a
  * bad count, a t outside [t_0, t_{n-1}], a small or misaligned workspace;
  * GA_ENOTFINITE for NaN/Inf input; a failing log (GA_EDOMAIN for an affine key
- * with no real principal log) is passed on.
+ * with no real principal log) is passed on; GA_EDOMAIN when finite input
+ * overflows (a coefficient, sample or velocity would be Inf or NaN: keys near
+ * DBL_MAX, a segment of subnormal length, spacings whose ratio overflows).
+ * GA_OK always comes with finite output. On an error a velocity is left
+ * untouched; a sampler may have written the samples before the failing one.
  */
 #ifndef GAROTOR_PATH_H
 #define GAROTOR_PATH_H

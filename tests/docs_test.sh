@@ -3,7 +3,7 @@
 #  1. `garotor --help` and `garotor CMD --help` must print exactly the block
 #     that follows "$ garotor ... --help" in docs/tool.md.
 #  2. Every shell session shown in a ```text block of docs/tool.md,
-#     docs/tutorial.md and docs/schemes.md ("$ command" lines, each followed
+#     docs/tutorial.md, docs/schemes.md and docs/errors.md ("$ command" lines, each followed
 #     by what it printed) is run again, from a scratch directory laid out like
 #     the repository (build/garotor, docs/, and `garotor` on the PATH), and
 #     must print the same: words exactly, numbers to 1e-12 relative (so a
@@ -76,7 +76,7 @@ same() {
          }' "$1" "$2"
 }
 
-for page in tool tutorial schemes; do
+for page in tool tutorial schemes errors; do
     # one .cmds (a command a line) and one .want (@@ before each command's
     # output) per block of `$ ` lines
     awk -v dir="$d/blocks" -v page="$page" '

@@ -8,6 +8,13 @@ G=$1
 doc=$(cd "$(dirname "$0")/../docs" && pwd)/tool.md
 d=$(mktemp -d)
 trap 'rm -rf "$d"' EXIT
+# TOOL_WRAPPER (the soak suite: valgrind and its options) runs every call of
+# the tool under that command, through a wrapper script standing in for it.
+if [ -n "${TOOL_WRAPPER:-}" ]; then
+    printf '#!/bin/sh\nexec %s "%s" "$@"\n' "$TOOL_WRAPPER" "$(cd "$(dirname "$G")" && pwd)/$(basename "$G")" >"$d/wrapped-tool"
+    chmod +x "$d/wrapped-tool"
+    G=$d/wrapped-tool
+fi
 fails=0
 pass() { :; }
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }

@@ -192,7 +192,11 @@ int cmd_interp(const cli_opts *o)
     if (!times || !keys)
         goto oom;
     for (size_t i = 0; i < n; i++) {
-        const double *v = in.value + in.item[i].first;
+        /* a line of separators only is an item of no numbers, and with no
+           number in the whole input value is NULL: no pointer arithmetic on
+           it (undefined; found by fuzz/fuzz_tool under UBSan:
+           fuzz/regress/tool/interp-comma-line-no-numbers) */
+        const double *v = in.item[i].count ? in.value + in.item[i].first : NULL;
         if (in.item[i].count != want) {
             tio_error(&in, i, "expected %d numbers (t, then %s), found %d", want,
                       pose ? "x y z qx qy qz qw" : "a 4x4 matrix", in.item[i].count);
@@ -248,7 +252,8 @@ int cmd_interp(const cli_opts *o)
         if (!vel)
             goto oom;
         for (size_t i = 0; i < n; i++)
-            if (read_velocity(g, vin.value + vin.item[i].first, vin.item[i].count,
+            if (read_velocity(g, vin.item[i].count ? vin.value + vin.item[i].first : NULL,
+                              vin.item[i].count,
                               vel + i * (size_t)g->dim)) {
                 tio_error(&vin, i, "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
                                    "found %d", g->dim == 12 ? " or 16 (a 4x4, last row zero)" : "",
