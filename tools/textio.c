@@ -83,8 +83,9 @@ int tio_read(const char *path, int skip_header, tio_items *out)
             int comma = 0;
             for (;; s++) {
                 if (*s == ',' && (comma || cur->count == 0)) {
-                    status = tio_error(&it, it.n - 1, "empty field %s number %d",
-                                       cur->count ? "after" : "before", cur->count + (cur->count == 0));
+                    status = cur->count
+                        ? tio_error(&it, it.n - 1, "empty field after number %d", cur->count)
+                        : tio_error(&it, it.n - 1, "empty field before number 1");
                     break;
                 }
                 if (*s == ',')
