@@ -106,7 +106,11 @@
  *           build up (the cubic factor's rounding grows like the cube of the
  *           samples since the anchor). The generator-space schemes are not
  *           products of fixed-X factors: for them EXACT is DIRECT. So is EXACT
- *           for samples at arbitrary times (ga_path_sample).
+ *           for samples at arbitrary times (ga_path_sample). Its sample
+ *           times are the anchor's t_k = t0 + k dt (rounded to a double) plus
+ *           whole steps of dt, not each t_k rounded as DIRECT takes them: the
+ *           two grids are a few ulp(t) apart, so at large |t| the samples
+ *           differ by that gap times the path's speed (docs/schemes.md).
  *
  * Body velocity (ga_path_velocity): Li-Hao forms, for M = F_1 F_2 F_3 with
  * F_j = exp(p_j(u) X_j): M^-1 M' = Ad_{F_3^-1}(Ad_{F_2^-1}(p_1' X_1) + p_2' X_2)
