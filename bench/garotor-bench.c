@@ -316,247 +316,59 @@ static void path_errors(int kind, double *euler_max, double *exact_max)
 
 typedef size_t (*run_fn)(const void *ctx, size_t n);
 
-static size_t run_gp_full(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_mv[j] = ga_gp(mv_a[j], mv_b[j]);
+/* Every loop over the input rings has this shape: for each call, j is the
+ * next slot of the rings (k & MASK), BODY computes the output at j (st |= the
+ * status where one comes back, in = the ring ctx selects where there is a
+ * choice), and the last output, LAST (at slot `last`), goes to the sink so
+ * that nothing can be optimised away. A macro, so that each loop is compiled
+ * with its call inlined, as a loop written out by hand would be. */
+#define RING_LOOP(name, BODY, LAST)                                                                \
+    static size_t name(const void *ctx, size_t n)                                                  \
+    {                                                                                              \
+        const ga_mat4 *in = ctx;                                                                   \
+        (void)in;                                                                                  \
+        size_t k = cursor;                                                                         \
+        int st = 0;                                                                                \
+        for (size_t i = 0; i < n; i++, k++) {                                                      \
+            size_t j = k & MASK;                                                                   \
+            BODY;                                                                                  \
+        }                                                                                          \
+        cursor = k;                                                                                \
+        status_or |= st;                                                                           \
+        size_t last = (k - 1) & MASK;                                                              \
+        sink = (LAST);                                                                             \
+        return n;                                                                                  \
     }
-    cursor = k;
-    sink = out_mv[(k - 1) & MASK].c[31];
-    return n;
-}
 
-static size_t run_motor_mul(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]);
-    }
-    cursor = k;
-    sink = out_rot[(k - 1) & MASK].e123n;
-    return n;
-}
-
-static size_t run_dualquat_mul(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_dq[j] = bench_dualquat_mul(dq_a[j], dq_b[j]);
-    }
-    cursor = k;
-    sink = out_dq[(k - 1) & MASK].dual.z;
-    return n;
-}
-
-static size_t run_mat4_mul(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]);
-    }
-    cursor = k;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
-
-static size_t run_motor_apply(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]);
-    }
-    cursor = k;
-    sink = out_v3[(k - 1) & MASK].z;
-    return n;
-}
-
-/* The same point moved through the full algebra: F(x), R F(x) ~R, down. */
-static size_t run_apply_sandwich(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    int st = 0;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        st |= ga_down(ga_rotor_apply_mv(rot_a[j], ga_point(pts[j])), &out_v3[j]);
-    }
-    cursor = k;
-    status_or |= st;
-    sink = out_v3[(k - 1) & MASK].z;
-    return n;
-}
-
-static size_t run_mat4_apply(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_v3[j] = bench_mat4_apply(&rigid_a[j], pts[j]);
-    }
-    cursor = k;
-    sink = out_v3[(k - 1) & MASK].z;
-    return n;
-}
-
-static size_t run_exp(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_rot[j] = ga_rotor_exp(gens[j]);
-    }
-    cursor = k;
-    sink = out_rot[(k - 1) & MASK].e123n;
-    return n;
-}
-
-static size_t run_log(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    int st = 0;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        st |= ga_rotor_log(rot_a[j], &out_gen[j]);
-    }
-    cursor = k;
-    status_or |= st;
-    sink = out_gen[(k - 1) & MASK].e3n;
-    return n;
-}
-
-static size_t run_se3_exp(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_mat[j] = ga_se3_exp(twists[j]);
-    }
-    cursor = k;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
-
-static size_t run_se3_log(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    int st = 0;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        st |= ga_se3_log(rigid_a[j], &out_tw[j]);
-    }
-    cursor = k;
-    status_or |= st;
-    sink = out_tw[(k - 1) & MASK].v.z;
-    return n;
-}
-
+RING_LOOP(run_gp_full, out_mv[j] = ga_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_dualquat_mul, out_dq[j] = bench_dualquat_mul(dq_a[j], dq_b[j]), out_dq[last].dual.z)
+RING_LOOP(run_mat4_mul, out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]), out_mat[last].m[11])
+RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
+/* the same point moved through the full algebra: F(x), R F(x) ~R, down */
+RING_LOOP(run_apply_sandwich, st |= ga_down(ga_rotor_apply_mv(rot_a[j], ga_point(pts[j])), &out_v3[j]),
+          out_v3[last].z)
+RING_LOOP(run_mat4_apply, out_v3[j] = bench_mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
+RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
+RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
+RING_LOOP(run_se3_log, st |= ga_se3_log(rigid_a[j], &out_tw[j]), out_tw[last].v.z)
 /* twist -> 4x4 matrix through the rotor: exp, then the rotor's matrix */
-static size_t run_exp_to_mat4(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_generator_from_twist(twists[j])));
-    }
-    cursor = k;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
-
+RING_LOOP(run_exp_to_mat4,
+          out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_generator_from_twist(twists[j]))),
+          out_mat[last].m[11])
 /* 4x4 rigid matrix -> twist through the rotor: checked Shepperd, then the log */
-static size_t run_log_from_mat4(const void *ctx, size_t n)
-{
-    (void)ctx;
-    size_t k = cursor;
-    int st = 0;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        ga_rotor r;
-        ga_generator g;
-        st |= ga_rotor_from_mat4(rigid_a[j], &r);
-        st |= ga_rotor_log(r, &g);
-        out_tw[j] = ga_twist_from_generator(g);
-    }
-    cursor = k;
-    status_or |= st;
-    sink = out_tw[(k - 1) & MASK].v.z;
-    return n;
-}
-
-/* ga_mat4_expm / ga_mat4_logm of the ring selected by ctx */
-static size_t run_mat4_expm(const void *ctx, size_t n)
-{
-    const ga_mat4 *in = ctx;
-    size_t k = cursor;
-    int st = 0;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        st |= ga_mat4_expm(in[j], &out_mat[j]);
-    }
-    cursor = k;
-    status_or |= st;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
-
-static size_t run_mat4_logm(const void *ctx, size_t n)
-{
-    const ga_mat4 *in = ctx;
-    size_t k = cursor;
-    int st = 0;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        st |= ga_mat4_logm(in[j], &out_mat[j]);
-    }
-    cursor = k;
-    status_or |= st;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
+RING_LOOP(run_log_from_mat4,
+          ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4(rigid_a[j], &r);
+          st |= ga_rotor_log(r, &g); out_tw[j] = ga_twist_from_generator(g),
+          out_tw[last].v.z)
+/* ga_mat4_expm / ga_mat4_logm (and Eigen's) of the ring selected by ctx */
+RING_LOOP(run_mat4_expm, st |= ga_mat4_expm(in[j], &out_mat[j]), out_mat[last].m[11])
+RING_LOOP(run_mat4_logm, st |= ga_mat4_logm(in[j], &out_mat[j]), out_mat[last].m[11])
 
 #ifdef GAROTOR_BENCH_EIGEN
-static size_t run_eigen_expm(const void *ctx, size_t n)
-{
-    const ga_mat4 *in = ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        garotor_eigen_expm(in[j].m, out_mat[j].m);
-    }
-    cursor = k;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
-
-static size_t run_eigen_logm(const void *ctx, size_t n)
-{
-    const ga_mat4 *in = ctx;
-    size_t k = cursor;
-    for (size_t i = 0; i < n; i++, k++) {
-        size_t j = k & MASK;
-        garotor_eigen_logm(in[j].m, out_mat[j].m);
-    }
-    cursor = k;
-    sink = out_mat[(k - 1) & MASK].m[11];
-    return n;
-}
+RING_LOOP(run_eigen_expm, garotor_eigen_expm(in[j].m, out_mat[j].m), out_mat[last].m[11])
+RING_LOOP(run_eigen_logm, garotor_eigen_logm(in[j].m, out_mat[j].m), out_mat[last].m[11])
 
 /* Decoupled interpolation at the same sample times as the sample_* figures:
  * locate the segment, then slerp + lerp between its two keys. */
