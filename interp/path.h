@@ -239,8 +239,9 @@ typedef struct {
 } ga_path_stepper;
 
 /** Prepare n >= 1 samples at t_k = t0 + k (t1 - t0)/(n - 1), the last exactly
- *  t1, t_0 <= t0 <= t1 <= t_{n-1} (n = 1: t0 alone). step: the Euler step in u
- *  units (> 0), ignored by the other evaluators. */
+ *  t1, t_0 <= t0 <= t1 <= t_{n-1} (n = 1: t0 alone), each rounded to a double
+ *  (EXACT: only at its anchors, whole steps from there; see EXACT above).
+ *  step: the Euler step in u units (> 0), ignored by the other evaluators. */
 int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev,
                          double step, size_t n, double t0, double t1);
 /** Write the next sample to out. GA_EARG after the last. */
