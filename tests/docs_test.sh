@@ -8,9 +8,11 @@
 #     the repository (build/garotor, docs/, and `garotor` on the PATH), and
 #     must print the same: words exactly, numbers to 1e-12 relative (so a
 #     change of the library at rounding level does not fail it), the version
-#     in the demo's first line aside. The tutorial's C program is
-#     compiled from its ```c block; if it cannot be linked here (a sanitizer
-#     build), the block that compiles it is skipped with a note.
+#     in the demo's first line aside. The tutorial's C programs are written
+#     out from its ```c blocks, each to the file its first line names
+#     ("/* point.c: ..."), for its sessions to compile; if they cannot be
+#     linked here (a sanitizer build), the blocks that compile them are
+#     skipped with a note.
 set -u
 G=$1
 case $G in /*) ;; *) G=$(pwd)/$G ;; esac
@@ -42,7 +44,14 @@ ln -s "$(dirname "$G")/libgarotor.a" "$w/build/libgarotor.a"
 for f in docs ga interp garotor.h; do ln -s "$src/$f" "$w/$f"; done
 printf '#!/bin/sh\nexec "%s" "$@"\n' "$G" >"$w/bin/garotor"
 chmod +x "$w/bin/garotor"
-awk '/^```c$/ { on = 1; next } on && /^```/ { exit } on' "$src/docs/tutorial.md" >"$w/point.c"
+awk -v dir="$w" '
+    /^```c$/ { on = 1; name = ""; next }
+    on && /^```/ { on = 0; next }
+    on && name == "" { name = match($0, /^\/\* [a-z_]+\.c:/) ? substr($0, 4, RLENGTH - 4) : "unnamed.c" }
+    on { print > (dir "/" name) }
+' "$src/docs/tutorial.md"
+[ -f "$w/point.c" ] && [ -f "$w/path.c" ] && [ ! -f "$w/unnamed.c" ] ||
+    fail "docs/tutorial.md: its C blocks should be point.c and path.c, each named in its first line"
 can_cc=0
 (cd "$w" && cc -std=c11 -I. -Iga -Iinterp point.c build/libgarotor.a -lm -o point) \
     >/dev/null 2>&1 && can_cc=1
