@@ -624,7 +624,7 @@ static int euler_sample(const ga_path *p, double h, int *cur, long *grid, double
     } else {
         copy_elem(g, out, A);
     }
-    return GA_OK;
+    return finite_elem(g, out); /* a product of many steps can overflow */
 }
 
 /* ---- exact incremental stepping --------------------------------------------------- */
@@ -726,9 +726,12 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
             exact_advance(s);
         }
         ++s->since;
-        if (st == GA_OK) exact_output(s, out);
+        if (st == GA_OK) {
+            exact_output(s, out);
+            st = finite_elem(p->group, out);
+        }
     }
-    if (st == GA_OK) st = finite_elem(p->group, out);
+    /* DIRECT and EULER checked their own results (finite_elem) */
     if (st == GA_OK) ++s->k;
     return st;
 }
@@ -759,8 +762,7 @@ int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const do
         int st = ga_path_locate(p, times[k], &seg, &u);
         if (st == GA_OK)
             st = ev == GA_EVAL_EULER ? euler_sample(p, step, &cur, &grid, A, seg, u, o)
-                                     : eval_direct(p, seg, u, o);
-        if (st == GA_OK) st = finite_elem(p->group, o);
+                                     : eval_direct(p, seg, u, o); /* both checked */
         if (st) return st;
     }
     return GA_OK;
