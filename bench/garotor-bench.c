@@ -35,11 +35,11 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "garotor.h"
-#include "conformal.h"
-#include "mat4.h"
-#include "path.h"
-#include "rotor.h"
+#include <garotor/garotor.h>
+#include <garotor/conformal.h>
+#include <garotor/mat4.h>
+#include <garotor/path.h>
+#include <garotor/rotor.h>
 
 #ifdef GAROTOR_BENCH_EIGEN
 #include "eigen_peer.h"
@@ -141,7 +141,7 @@ static ga_twist random_twist(void)
     return xi;
 }
 
-static ga_rotor rotor_of_twist(ga_twist xi) { return ga_rotor_exp(ga_generator_from_twist(xi)); }
+static ga_rotor rotor_of_twist(ga_twist xi) { return ga_rotor_exp(ga_twist_to_generator(xi)); }
 
 /* ---- the reference dual-quaternion product ------------------------------- */
 
@@ -240,8 +240,8 @@ static int build_paths(void)
     for (int p = 0; p < N_PATHS; p++) {
         for (int i = 0; i < N_KEYS; i++) {
             ga_rotor r = rotor_of_twist(random_twist());
-            ga_vec3 t;
-            ga_quat q = ga_rotor_quat(r, &t);
+            ga_vec3 t = ga_rotor_to_translation(r);
+            ga_quat q = ga_rotor_to_quat(r);
             double pose[7] = {t.x, t.y, t.z, q.x, q.y, q.z, q.w};
             key_rotors[p][i] = r;
             keys[i] = ga_rotor_to_mat4(r);
@@ -252,7 +252,7 @@ static int build_paths(void)
             size_t bytes = ga_path_workspace_size(g, path_kind[k].scheme, N_KEYS);
             void *work = malloc(bytes);
             if (!work)
-                return GA_EARG;
+                return GA_ERR_ARG;
             int st = ga_path_init_mat4(&paths[k][p], g, path_kind[k].scheme, N_KEYS, times,
                                        keys, NULL, work, bytes);
             if (st != GA_OK)
@@ -340,13 +340,13 @@ typedef size_t (*run_fn)(const void *ctx, size_t n);
         return n;                                                                                  \
     }
 
-RING_LOOP(run_gp_full, out_mv[j] = ga_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_gp_full, out_mv[j] = ga_mv_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
 RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
 RING_LOOP(run_dualquat_mul, out_dq[j] = bench_dualquat_mul(dq_a[j], dq_b[j]), out_dq[last].dual.z)
 RING_LOOP(run_mat4_mul, out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]), out_mat[last].m[11])
 RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
 /* the same point moved through the full algebra: F(x), R F(x) ~R, down */
-RING_LOOP(run_apply_sandwich, st |= ga_down(ga_rotor_apply_mv(rot_a[j], ga_point(pts[j])), &out_v3[j]),
+RING_LOOP(run_apply_sandwich, st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]),
           out_v3[last].z)
 RING_LOOP(run_mat4_apply, out_v3[j] = bench_mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
 RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
@@ -355,12 +355,12 @@ RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
 RING_LOOP(run_se3_log, st |= ga_se3_log(rigid_a[j], &out_tw[j]), out_tw[last].v.z)
 /* twist -> 4x4 matrix through the rotor: exp, then the rotor's matrix */
 RING_LOOP(run_exp_to_mat4,
-          out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_generator_from_twist(twists[j]))),
+          out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
           out_mat[last].m[11])
 /* 4x4 rigid matrix -> twist through the rotor: checked Shepperd, then the log */
 RING_LOOP(run_log_from_mat4,
           ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4(rigid_a[j], &r);
-          st |= ga_rotor_log(r, &g); out_tw[j] = ga_twist_from_generator(g),
+          st |= ga_rotor_log(r, &g); out_tw[j] = ga_generator_to_twist(g),
           out_tw[last].v.z)
 /* ga_mat4_expm / ga_mat4_logm (and Eigen's) of the ring selected by ctx */
 RING_LOOP(run_mat4_expm, st |= ga_mat4_expm(in[j], &out_mat[j]), out_mat[last].m[11])
@@ -442,7 +442,7 @@ static const sample_ctx ctx_se3_lihao3_euler = {PG_SE3_LIHAO3, GA_EVAL_EULER};
 
 static bench benches[] = {
     /* CONTRACT.md's keys */
-    {"gp_full", "ga_gp: full 32x32 geometric product, two dense multivectors", run_gp_full,
+    {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full,
      NULL, 0, NULL, 0, 0, 0},
     {"motor_mul", "ga_rotor_mul: product of two compact rotors (8 doubles)", run_motor_mul,
      NULL, 0, NULL, 0, 0, 0},
@@ -467,7 +467,7 @@ static bench benches[] = {
      0, 0, 0},
     {"mat4_apply", "4x4 rigid motion times a point (in the bench)", run_mat4_apply, NULL, 0,
      NULL, 0, 0, 0},
-    {"apply_sandwich", "ga_down(ga_rotor_apply_mv(R, ga_point(x))): full sandwich",
+    {"apply_sandwich", "ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x))): full sandwich",
      run_apply_sandwich, NULL, 0, NULL, 0, 0, 0},
     {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4", run_exp_to_mat4,
      NULL, 0, NULL, 0, 0, 0},
@@ -615,7 +615,7 @@ static int setup_inputs(void)
             mv_b[j].c[i] = uniform(-1, 1);
         }
         twists[j] = random_twist();
-        gens[j] = ga_generator_from_twist(twists[j]);
+        gens[j] = ga_twist_to_generator(twists[j]);
         rot_a[j] = ga_rotor_exp(gens[j]);
         rot_b[j] = rotor_of_twist(random_twist());
         dq_a[j] = ga_rotor_to_dualquat(rot_a[j]);
@@ -679,7 +679,7 @@ static checks run_checks(void)
 
         ga_vec3 y1 = ga_rotor_apply(rot_a[j], pts[j]), y2 = bench_mat4_apply(&rigid_a[j], pts[j]);
         ga_vec3 y3;
-        ga_down(ga_rotor_apply_mv(rot_a[j], ga_point(pts[j])), &y3);
+        ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &y3);
         c.apply_vs_matrix = fmax(c.apply_vs_matrix, maxdiff(&y1.x, &y2.x, 3));
         c.apply_vs_sandwich = fmax(c.apply_vs_sandwich, maxdiff(&y1.x, &y3.x, 3));
 
@@ -688,7 +688,7 @@ static checks run_checks(void)
         ga_generator g;
         ga_twist t1, t2;
         ga_rotor_log(rot_a[j], &g);
-        t1 = ga_twist_from_generator(g);
+        t1 = ga_generator_to_twist(g);
         ga_se3_log(rigid_a[j], &t2);
         c.log_vs_se3 = fmax(c.log_vs_se3, maxdiff(&t1.w.x, &t2.w.x, 6));
         ga_mat4_expm(hats[j], &e3);
@@ -916,7 +916,7 @@ int main(int argc, char **argv)
     rng_seed(seed);
     int st = setup_inputs();
     if (st != GA_OK) {
-        fprintf(stderr, "garotor-bench: building the inputs failed: %s\n", ga_strerror(st));
+        fprintf(stderr, "garotor-bench: building the inputs failed: %s\n", ga_status_string(st));
         return 1;
     }
     checks chk = run_checks();

@@ -6,7 +6,7 @@
  * asserts, besides "no crash and no sanitizer report":
  *
  *   - status:  NaN or Inf anywhere in the input of a status-returning
- *              function gives GA_ENOTFINITE; every status is one types.h
+ *              function gives GA_ERR_NOTFINITE; every status is one types.h
  *              lists for that function; GA_OK never comes with a non-finite
  *              output (that would be a silent wrong answer).
  *   - group:   a rotor a function returns with GA_OK is on the group,
@@ -24,7 +24,7 @@
  *                     (an angle of 1e20 rad is exact but meaningless) and, past
  *                     ~1e154, overflow to NaN: the value-returning functions
  *                     (ga_rotor_exp, ga_se3_exp) cannot say so, the group
- *                     interface (group.h) returns GA_EDOMAIN (docs/errors.md).
+ *                     interface (group.h) returns GA_ERR_DOMAIN (docs/errors.md).
  *   round trips       exp(log(R)) = +-R to 1e-10 max(1, |t|), far above the
  *                     measured 8 eps (the soak suite measures the real figure;
  *                     this is a net for gross failures, not a precision test).
@@ -41,7 +41,7 @@
 
 #include "fuzz_check.h"
 #include "fuzz_reader.h"
-#include "garotor.h"
+#include <garotor/garotor.h>
 
 #define VALID_MAX 1e6
 #define RT_TOL 1e-10
@@ -53,8 +53,7 @@ static int vfinite(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinit
 /* max(1, |t|) of a rotor: the scale its P part is measured against. */
 static double rotor_scale(ga_rotor r)
 {
-    ga_vec3 t;
-    ga_rotor_quat(r, &t);
+    ga_vec3 t = ga_rotor_to_translation(r);
     return fmax(1.0, vnorm(t));
 }
 
@@ -82,8 +81,8 @@ static double mat_dist(ga_mat4 a, ga_mat4 b, double tscale)
 
 static int is_status(int st)
 {
-    return st == GA_OK || st == GA_ENOTFINITE || st == GA_ESINGULAR || st == GA_ENOTPOINT ||
-           st == GA_ENOTRIGID || st == GA_EDOMAIN || st == GA_EARG || st == GA_ENOTBLADE;
+    return st == GA_OK || st == GA_ERR_NOTFINITE || st == GA_ERR_SINGULAR || st == GA_ERR_NOTPOINT ||
+           st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN || st == GA_ERR_ARG || st == GA_ERR_NOTBLADE;
 }
 
 /* ---- rotors --------------------------------------------------------------- */
@@ -99,23 +98,23 @@ static void rotor_any(ga_rotor r)
     ga_generator L, Ll;
     int lst = ga_rotor_log(r, &L), llst = ga_rotor_log_literal(r, &Ll);
     ga_screw sc;
-    int sst = ga_screw_from_rotor(r, &sc);
+    int sst = ga_rotor_to_screw(r, &sc);
     if (!fin) {
-        FZ_CHECK(chk == GA_ENOTFINITE && nst == GA_ENOTFINITE && lst == GA_ENOTFINITE &&
-                     llst == GA_ENOTFINITE && sst == GA_ENOTFINITE,
+        FZ_CHECK(chk == GA_ERR_NOTFINITE && nst == GA_ERR_NOTFINITE && lst == GA_ERR_NOTFINITE &&
+                     llst == GA_ERR_NOTFINITE && sst == GA_ERR_NOTFINITE,
                  "non-finite rotor: check %d normalize %d log %d literal %d screw %d", chk, nst,
                  lst, llst, sst);
         return;
     }
-    FZ_CHECK(chk == GA_OK || chk == GA_ENOTRIGID, "check status %d", chk);
-    FZ_CHECK(nst == GA_OK || nst == GA_ENOTRIGID || nst == GA_EDOMAIN, "normalize status %d", nst);
-    FZ_CHECK(lst == GA_OK || lst == GA_ENOTRIGID || lst == GA_EDOMAIN, "log status %d", lst);
-    FZ_CHECK(llst == GA_OK || llst == GA_ENOTRIGID || llst == GA_EDOMAIN, "literal log status %d",
+    FZ_CHECK(chk == GA_OK || chk == GA_ERR_NOTRIGID, "check status %d", chk);
+    FZ_CHECK(nst == GA_OK || nst == GA_ERR_NOTRIGID || nst == GA_ERR_DOMAIN, "normalize status %d", nst);
+    FZ_CHECK(lst == GA_OK || lst == GA_ERR_NOTRIGID || lst == GA_ERR_DOMAIN, "log status %d", lst);
+    FZ_CHECK(llst == GA_OK || llst == GA_ERR_NOTRIGID || llst == GA_ERR_DOMAIN, "literal log status %d",
              llst);
-    FZ_CHECK(sst == GA_OK || sst == GA_ENOTRIGID || sst == GA_EDOMAIN, "screw status %d", sst);
+    FZ_CHECK(sst == GA_OK || sst == GA_ERR_NOTRIGID || sst == GA_ERR_DOMAIN, "screw status %d", sst);
     /* log accepts exactly what the check at GA_ROTOR_DRIFT_MAX accepts */
-    FZ_CHECK((lst == GA_ENOTRIGID) == (chk == GA_ENOTRIGID), "log %d but check %d", lst, chk);
-    FZ_CHECK((llst == GA_ENOTRIGID) == (chk == GA_ENOTRIGID), "literal log %d but check %d", llst,
+    FZ_CHECK((lst == GA_ERR_NOTRIGID) == (chk == GA_ERR_NOTRIGID), "log %d but check %d", lst, chk);
+    FZ_CHECK((llst == GA_ERR_NOTRIGID) == (chk == GA_ERR_NOTRIGID), "literal log %d but check %d", llst,
              chk);
     if (nst == GA_OK) {
         FZ_CHECK(rotor_finite(nr), "normalize: GA_OK with a non-finite rotor");
@@ -123,10 +122,10 @@ static void rotor_any(ga_rotor r)
     }
     if (lst == GA_OK) {
         FZ_CHECK(fz_all_finite(&L.e12, 6), "log: GA_OK with a non-finite generator");
-        ga_twist xi = ga_twist_from_generator(L);
+        ga_twist xi = ga_generator_to_twist(L);
         FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "log: angle %.17g > pi",
                  vnorm(xi.w));
-        FZ_CHECK(nst == GA_OK || nst == GA_EDOMAIN, "log ok but normalize %d", nst);
+        FZ_CHECK(nst == GA_OK || nst == GA_ERR_DOMAIN, "log ok but normalize %d", nst);
         if (nst == GA_OK && fz_maxabs(&r.s, 8) <= VALID_MAX) {
             ga_rotor e = ga_rotor_exp(L);
             double d = rotor_dist_pm(e, nr, rotor_scale(nr));
@@ -174,7 +173,7 @@ static void op_exp_log(fz_reader *rd)
         double d = rotor_dist_pm(ga_rotor_exp(L), R, rotor_scale(R));
         FZ_CHECK(d <= RT_TOL, "exp(log(exp(B))) = +-exp(B): off by %.3g", d);
         /* the matrix side agrees: expm(xi^) = to_mat4(exp(B(xi))) */
-        ga_twist xi = ga_twist_from_generator(B);
+        ga_twist xi = ga_generator_to_twist(B);
         ga_mat4 M = ga_se3_exp(xi), MR = ga_rotor_to_mat4(R);
         double s = fmax(1.0, vnorm((ga_vec3){M.m[3], M.m[7], M.m[11]}));
         d = mat_dist(M, MR, s);
@@ -216,14 +215,14 @@ static void mat_any(ga_mat4 m)
     int rst = ga_rotor_from_mat4(m, &R), cst = ga_se3_check(m, GA_SE3_TOL);
     int lst = ga_se3_log(m, &xi), ist = ga_mat4_inverse(m, &inv);
     if (!fin) {
-        FZ_CHECK(rst == GA_ENOTFINITE && cst == GA_ENOTFINITE && lst == GA_ENOTFINITE &&
-                     ist == GA_ENOTFINITE,
+        FZ_CHECK(rst == GA_ERR_NOTFINITE && cst == GA_ERR_NOTFINITE && lst == GA_ERR_NOTFINITE &&
+                     ist == GA_ERR_NOTFINITE,
                  "non-finite matrix: from_mat4 %d check %d log %d inverse %d", rst, cst, lst, ist);
         return;
     }
-    FZ_CHECK(rst == GA_OK || rst == GA_ENOTRIGID || rst == GA_EDOMAIN, "from_mat4 status %d", rst);
-    FZ_CHECK(lst == GA_OK || lst == GA_ENOTRIGID || lst == GA_EDOMAIN, "se3_log status %d", lst);
-    FZ_CHECK(ist == GA_OK || ist == GA_ESINGULAR, "inverse status %d", ist);
+    FZ_CHECK(rst == GA_OK || rst == GA_ERR_NOTRIGID || rst == GA_ERR_DOMAIN, "from_mat4 status %d", rst);
+    FZ_CHECK(lst == GA_OK || lst == GA_ERR_NOTRIGID || lst == GA_ERR_DOMAIN, "se3_log status %d", lst);
+    FZ_CHECK(ist == GA_OK || ist == GA_ERR_SINGULAR, "inverse status %d", ist);
     if (ist == GA_OK)
         FZ_CHECK(fz_all_finite(inv.m, 16), "inverse: GA_OK with a non-finite matrix");
     if (rst == GA_OK) {
@@ -301,7 +300,7 @@ static void op_se3(fz_reader *rd)
         FZ_CHECK(fz_all_finite(G.m, 16), "geodesic: GA_OK with a non-finite matrix");
     if (!fz_all_finite(x, 6)) {
         FZ_CHECK(!fz_all_finite(M.m, 16), "se3_exp: NaN/Inf in, finite out");
-        FZ_CHECK(gst == GA_ENOTFINITE, "geodesic from a NaN matrix: status %d", gst);
+        FZ_CHECK(gst == GA_ERR_NOTFINITE, "geodesic from a NaN matrix: status %d", gst);
         mat_any(M);
         return;
     }
@@ -327,12 +326,12 @@ static void op_expm_logm(fz_reader *rd)
     int fin = fz_all_finite(a.m, 16);
     int est = ga_mat4_expm(a, &e), lst = ga_mat4_logm(a, &l);
     if (!fin) {
-        FZ_CHECK(est == GA_ENOTFINITE && lst == GA_ENOTFINITE, "non-finite: expm %d logm %d", est,
+        FZ_CHECK(est == GA_ERR_NOTFINITE && lst == GA_ERR_NOTFINITE, "non-finite: expm %d logm %d", est,
                  lst);
         return;
     }
-    FZ_CHECK(est == GA_OK || est == GA_EDOMAIN, "expm status %d", est);
-    FZ_CHECK(lst == GA_OK || lst == GA_ESINGULAR || lst == GA_EDOMAIN, "logm status %d", lst);
+    FZ_CHECK(est == GA_OK || est == GA_ERR_DOMAIN, "expm status %d", est);
+    FZ_CHECK(lst == GA_OK || lst == GA_ERR_SINGULAR || lst == GA_ERR_DOMAIN, "logm status %d", lst);
     if (est == GA_OK)
         FZ_CHECK(fz_all_finite(e.m, 16), "expm: GA_OK with a non-finite matrix");
     if (lst == GA_OK)
@@ -383,8 +382,8 @@ static void op_bridge(fz_reader *rd)
     if (fz_maxabs(t3, 3) > VALID_MAX)
         return;
     FZ_CHECK(ga_rotor_check(R, 1e-12) == GA_OK, "from_quat of a unit quaternion is off the group");
-    ga_vec3 t2;
-    ga_quat qb = ga_rotor_quat(R, &t2);
+    ga_vec3 t2 = ga_rotor_to_translation(R);
+    ga_quat qb = ga_rotor_to_quat(R);
     FZ_CHECK(qb.w == q.w && qb.x == q.x && qb.y == q.y && qb.z == q.z, "quaternion not kept");
     double s = fmax(1.0, vnorm(t));
     double d = vnorm((ga_vec3){t2.x - t.x, t2.y - t.y, t2.z - t.z}) / s;
@@ -410,8 +409,8 @@ static void op_screw(fz_reader *rd)
         FZ_CHECK(rotor_finite(R), "from_screw of a valid screw is not finite");
         FZ_CHECK(ga_rotor_check(R, 1e-12) == GA_OK, "from_screw: off the group");
         ga_screw s2;
-        int st = ga_screw_from_rotor(R, &s2);
-        FZ_CHECK(st == GA_OK || st == GA_EDOMAIN, "screw_from_rotor status %d", st);
+        int st = ga_rotor_to_screw(R, &s2);
+        FZ_CHECK(st == GA_OK || st == GA_ERR_DOMAIN, "screw_from_rotor status %d", st);
         if (st == GA_OK) {
             double d = rotor_dist_pm(ga_rotor_from_screw(s2), R, rotor_scale(R));
             FZ_CHECK(d <= RT_TOL, "from_screw(screw_from_rotor(R)) = +-R: off by %.3g", d);
@@ -428,50 +427,50 @@ static void mv_any(const ga_mv *X, double lambda)
     ga_vec3 a, b, c;
     double r, d;
     int st;
-    st = ga_down(*X, &a);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTPOINT) : st == GA_ENOTFINITE, "down status %d", st);
+    st = ga_point_down(*X, &a);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTPOINT) : st == GA_ERR_NOTFINITE, "down status %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a), "down: GA_OK with a non-finite point");
-    st = ga_down_scaled(*X, lambda, &a);
+    st = ga_point_down_scaled(*X, lambda, &a);
     FZ_CHECK(is_status(st), "down_scaled status %d", st);
     /* both NaN/Inf and lambda <= 0: either status is right */
     if (!fin || !isfinite(lambda))
-        FZ_CHECK(st == GA_ENOTFINITE || (st == GA_EARG && lambda <= 0),
+        FZ_CHECK(st == GA_ERR_NOTFINITE || (st == GA_ERR_ARG && lambda <= 0),
                  "down_scaled of NaN/Inf, lambda %.17g: %d", lambda, st);
     else if (!(lambda > 0))
-        FZ_CHECK(st == GA_EARG, "down_scaled, lambda %.17g: %d", lambda, st);
+        FZ_CHECK(st == GA_ERR_ARG, "down_scaled, lambda %.17g: %d", lambda, st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a), "down_scaled: GA_OK with a non-finite point");
     st = ga_sphere_params(*X, &a, &r);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "sphere %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "sphere %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(r) && r >= 0, "sphere: GA_OK with bad output");
     st = ga_plane_params(*X, &a, &d);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "plane %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "plane %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(d) && fabs(vnorm(a) - 1) <= 1e-12,
                  "plane: GA_OK with bad output");
     st = ga_line_params(*X, &a, &b);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "line %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "line %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && vfinite(b) && fabs(vnorm(a) - 1) <= 1e-12,
                  "line: GA_OK with bad output");
-    st = ga_point_pair_points(*X, &a, &b);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "pair %d", st);
+    st = ga_pointpair_points(*X, &a, &b);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "pair %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && vfinite(b), "point pair: GA_OK with bad output");
     st = ga_circle_params(*X, &a, &r, &c);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTBLADE) : st == GA_ENOTFINITE, "circle %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "circle %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(r) && vfinite(c), "circle: GA_OK with bad output");
     ga_mv inv;
     st = ga_mv_inverse(*X, &inv);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ESINGULAR) : st == GA_ENOTFINITE, "inverse %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR) : st == GA_ERR_NOTFINITE, "inverse %d", st);
     if (st == GA_OK)
         FZ_CHECK(fz_all_finite(inv.c, 32), "mv inverse: GA_OK with a non-finite result");
     ga_rotor R;
     st = ga_rotor_from_mv(*X, 1e-9, &R);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ENOTRIGID || st == GA_EDOMAIN) : st == GA_ENOTFINITE,
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE,
              "from_mv %d", st);
     if (st == GA_OK)
         FZ_CHECK(rotor_finite(R) && ga_rotor_check(R, 1e-12) == GA_OK,
@@ -495,9 +494,9 @@ static void op_points(fz_reader *rd)
     ga_vec3 p[4] = {{x[0], x[1], x[2]}, {x[3], x[4], x[5]}, {x[6], x[7], x[8]}, {x[9], x[10], x[11]}};
     for (int i = 0; i < 4; i++) {
         ga_vec3 y;
-        int st = ga_down(ga_point(p[i]), &y);
+        int st = ga_point_down(ga_point_up(p[i]), &y);
         if (!vfinite(p[i])) {
-            FZ_CHECK(st == GA_ENOTFINITE, "down(F(NaN)): %d", st);
+            FZ_CHECK(st == GA_ERR_NOTFINITE, "down(F(NaN)): %d", st);
             continue;
         }
         double s = fmax(1.0, vnorm(p[i]));
@@ -507,7 +506,10 @@ static void op_points(fz_reader *rd)
             FZ_CHECK(d <= 1e-13, "down(F(x)) = x: off by %.3g", d);
         }
         if (isfinite(lambda) && lambda >= 1e-6 && lambda <= 1e6 && vnorm(p[i]) <= 1e4 * lambda) {
-            st = ga_down_scaled(ga_point_scaled(p[i], lambda), lambda, &y);
+            ga_mv Xs;
+            st = ga_point_up_scaled(p[i], lambda, &Xs);
+            FZ_CHECK(st == GA_OK, "up_scaled(x), |x| = %.3g, lambda %.3g: %d", vnorm(p[i]), lambda, st);
+            st = ga_point_down_scaled(Xs, lambda, &y);
             FZ_CHECK(st == GA_OK, "down_scaled(F(x)), |x| = %.3g, lambda %.3g: %d", vnorm(p[i]),
                      lambda, st);
             double d = vnorm((ga_vec3){y.x - p[i].x, y.y - p[i].y, y.z - p[i].z}) /
@@ -517,14 +519,16 @@ static void op_points(fz_reader *rd)
     }
     ga_mv X;
     switch (which % 8) {
-    case 0: X = ga_point_pair(p[0], p[1]); break;
-    case 1: X = ga_circle(p[0], p[1], p[2]); break;
-    case 2: X = ga_line(p[0], p[1]); break;
-    case 3: X = ga_sphere(p[0], p[1], p[2], p[3]); break;
-    case 4: X = ga_plane(p[0], p[1], p[2]); break;
-    case 5: X = ga_dual_sphere(p[0], rad); break;
-    case 6: X = ga_dual_plane(p[0], rad); break;
-    default: X = ga_point_scaled(p[0], lambda); break;
+    case 0: X = ga_pointpair_from_points(p[0], p[1]); break;
+    case 1: X = ga_circle_from_points(p[0], p[1], p[2]); break;
+    case 2: X = ga_line_from_points(p[0], p[1]); break;
+    case 3: X = ga_sphere_from_points(p[0], p[1], p[2], p[3]); break;
+    case 4: X = ga_plane_from_points(p[0], p[1], p[2]); break;
+    case 5: X = ga_sphere_dual(p[0], rad); break;
+    case 6: X = ga_plane_dual(p[0], rad); break;
+    default:
+        if (ga_point_up_scaled(p[0], lambda, &X) != GA_OK) X = ga_point_up(p[0]);
+        break;
     }
     mv_any(&X, lambda);
     if (which % 8 == 5 && vfinite(p[0]) && isfinite(rad) && vnorm(p[0]) <= 1e3 &&

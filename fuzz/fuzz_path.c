@@ -10,8 +10,8 @@
  *
  * Invariants, besides "no crash, no sanitizer report, no read or write past
  * the workspace of exactly ga_path_workspace_size bytes":
- *   - every status is a GA_* code; NaN/Inf times or keys give GA_ENOTFINITE
- *     or GA_EARG, times not increasing GA_EARG, a wrong key count GA_EARG;
+ *   - every status is a GA_* code; NaN/Inf times or keys give GA_ERR_NOTFINITE
+ *     or GA_ERR_ARG, times not increasing GA_ERR_ARG, a wrong key count GA_ERR_ARG;
  *   - GA_OK never comes with a non-finite sample or velocity;
  *   - for a valid path (below), init, eval, velocity and every evaluator
  *     succeed, and every sample is on the group: a rotor to 1e-12
@@ -37,7 +37,7 @@
 
 #include "fuzz_check.h"
 #include "fuzz_reader.h"
-#include "garotor.h"
+#include <garotor/garotor.h>
 
 #define MAXK 6
 /* The smallest Euler step tried: 100 steps a segment. Smaller steps run the
@@ -48,8 +48,8 @@ static const ga_group *const groups[3] = {&ga_group_cga, &ga_group_se3, &ga_grou
 
 static int is_status(int st)
 {
-    return st == GA_OK || st == GA_ENOTFINITE || st == GA_ESINGULAR || st == GA_ENOTPOINT ||
-           st == GA_ENOTRIGID || st == GA_EDOMAIN || st == GA_EARG || st == GA_ENOTBLADE;
+    return st == GA_OK || st == GA_ERR_NOTFINITE || st == GA_ERR_SINGULAR || st == GA_ERR_NOTPOINT ||
+           st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN || st == GA_ERR_ARG || st == GA_ERR_NOTBLADE;
 }
 
 /* Is a group element finite, and (strict) on its group? */
@@ -176,7 +176,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (!(fz_maxabs(x, dim) <= key_max))
             valid = 0;
         int st = g->exp(x, KEY(i));
-        FZ_CHECK(st == GA_OK || st == GA_EDOMAIN, "%s exp status %d", g->name, st);
+        FZ_CHECK(st == GA_OK || st == GA_ERR_DOMAIN, "%s exp status %d", g->name, st);
         if (st != GA_OK)
             return 0;
         FZ_CHECK(elem_finite(g, KEY(i)), "%s exp: GA_OK with a non-finite element", g->name);
@@ -227,16 +227,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FZ_CHECK(is_status(st), "init status %d", st);
     int count_ok = n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3);
     if (!count_ok)
-        FZ_CHECK(st == GA_EARG, "%s with %d keys: status %d", ga_scheme_name(scheme), n, st);
+        FZ_CHECK(st == GA_ERR_ARG, "%s with %d keys: status %d", ga_scheme_name(scheme), n, st);
     if (count_ok && !times_finite)
-        FZ_CHECK(st == GA_ENOTFINITE || st == GA_EARG, "NaN/Inf times: status %d", st);
+        FZ_CHECK(st == GA_ERR_NOTFINITE || st == GA_ERR_ARG, "NaN/Inf times: status %d", st);
     if (count_ok && times_finite && !increasing)
-        FZ_CHECK(st == GA_EARG, "times not increasing: status %d", st);
+        FZ_CHECK(st == GA_ERR_ARG, "times not increasing: status %d", st);
     if (count_ok && (!keys_finite || !vel_finite))
         FZ_CHECK(st != GA_OK, "NaN/Inf keys or velocities accepted");
-    /* GA_ENOTFINITE means NaN/Inf input; finite input that overflows is GA_EDOMAIN */
+    /* GA_ERR_NOTFINITE means NaN/Inf input; finite input that overflows is GA_ERR_DOMAIN */
     if (times_finite && keys_finite && vel_finite)
-        FZ_CHECK(st != GA_ENOTFINITE, "finite input, GA_ENOTFINITE from init");
+        FZ_CHECK(st != GA_ERR_NOTFINITE, "finite input, GA_ERR_NOTFINITE from init");
     valid = valid && count_ok && times_finite && increasing;
     if (valid)
         FZ_CHECK(st == GA_OK, "valid %s path on %s fails to build: %d", ga_scheme_name(scheme),
@@ -298,7 +298,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             int rst = ga_path_sample_uniform(&p, GA_EVAL_DIRECT, 1.0, ns, t0, t1, ref);
             FZ_CHECK(is_status(sst) && is_status(rst), "sample_uniform %d %d", sst, rst);
             if (ev == GA_EVAL_EULER && !(step >= 1e-9 && step <= 1.0))
-                FZ_CHECK(sst == GA_EARG, "Euler step %.17g accepted: %d", step, sst);
+                FZ_CHECK(sst == GA_ERR_ARG, "Euler step %.17g accepted: %d", step, sst);
             if (valid)
                 FZ_CHECK(rst == GA_OK && (sst == GA_OK || (ev == GA_EVAL_EULER && !step_ok)),
                          "valid path: sample_uniform (%s) %d, direct %d", ga_eval_name(ev), sst,

@@ -1,17 +1,17 @@
 /* garotor/conformal.c: points, spheres, planes, lines and circles of the
  * conformal model (Wareham-Lasenby §1, §2.2), built by outer products and read
  * back with a status. See conformal.h for the conventions. */
-#include "conformal.h"
+#include <garotor/conformal.h>
 
 #include <math.h>
 
-ga_mv ga_n(void) { return ga_mv_vector(0, 0, 0, 1, 1); }
-ga_mv ga_nbar(void) { return ga_mv_vector(0, 0, 0, 1, -1); }
-ga_mv ga_e4(void) { return ga_mv_blade(GA_E4); }
-ga_mv ga_e5(void) { return ga_mv_blade(GA_E5); }
-ga_mv ga_I3(void) { return ga_mv_blade(GA_E123); }
-ga_mv ga_I5(void) { return ga_mv_blade(GA_E12345); }
-ga_mv ga_vec3_mv(ga_vec3 x) { return ga_mv_vector(x.x, x.y, x.z, 0, 0); }
+ga_mv ga_mv_n(void) { return ga_mv_vector(0, 0, 0, 1, 1); }
+ga_mv ga_mv_nbar(void) { return ga_mv_vector(0, 0, 0, 1, -1); }
+ga_mv ga_mv_e4(void) { return ga_mv_blade(GA_BLADE_E4); }
+ga_mv ga_mv_e5(void) { return ga_mv_blade(GA_BLADE_E5); }
+ga_mv ga_mv_i3(void) { return ga_mv_blade(GA_BLADE_E123); }
+ga_mv ga_mv_i5(void) { return ga_mv_blade(GA_BLADE_E12345); }
+ga_mv ga_vec3_to_mv(ga_vec3 x) { return ga_mv_vector(x.x, x.y, x.z, 0, 0); }
 
 static double dot3(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static ga_vec3 v3(double x, double y, double z)
@@ -24,7 +24,7 @@ static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 /* The e1 e2 e3 part of a vector. */
-static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_E1], X.c[GA_E2], X.c[GA_E3]); }
+static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_BLADE_E1], X.c[GA_BLADE_E2], X.c[GA_BLADE_E3]); }
 
 /* X scaled by a power of 2 (exactly) so that its largest coefficient is in
  * [1/2, 1). Every object here is homogeneous (X and k X are the same object),
@@ -46,39 +46,46 @@ static ga_mv unit_scaled(ga_mv X)
 }
 
 /* Largest coefficient of X outside grade k. */
-static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_sub(X, ga_grade(X, k))); }
+static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_mv_sub(X, ga_mv_grade(X, k))); }
 
-ga_mv ga_point_scaled(ga_vec3 x, double lambda)
+/* (x^2 n + 2 lambda x - lambda^2 nbar) / (2 lambda^2), coefficient by coefficient:
+   e_i: x_i / lambda; e4: (x^2 - lambda^2) / (2 lambda^2); e5: (x^2 + lambda^2) / (2 lambda^2). */
+static ga_mv point_up(ga_vec3 x, double lambda)
 {
-    if (!(lambda > 0.0) || !isfinite(lambda)) {
-        ga_mv r;
-        for (int i = 0; i < 32; i++)
-            r.c[i] = NAN;
-        return r;
-    }
-    /* (x^2 n + 2 lambda x - lambda^2 nbar) / (2 lambda^2), coefficient by coefficient:
-       e_i: x_i / lambda; e4: (x^2 - lambda^2) / (2 lambda^2); e5: (x^2 + lambda^2) / (2 lambda^2). */
     ga_vec3 y = v3(x.x / lambda, x.y / lambda, x.z / lambda);
     double y2 = dot3(y, y);
     return ga_mv_vector(y.x, y.y, y.z, 0.5 * (y2 - 1.0), 0.5 * (y2 + 1.0));
 }
 
-ga_mv ga_point(ga_vec3 x) { return ga_point_scaled(x, 1.0); }
+int ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out)
+{
+    if (!isfinite(lambda) || !isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
+        return GA_ERR_NOTFINITE;
+    if (!(lambda > 0.0))
+        return GA_ERR_ARG;
+    ga_mv X = point_up(x, lambda);
+    if (!ga_mv_isfinite(X))
+        return GA_ERR_DOMAIN;
+    *out = X;
+    return GA_OK;
+}
+
+ga_mv ga_point_up(ga_vec3 x) { return point_up(x, 1.0); }
 
 /* The down-projection (see conformal.h): X = w F(x). Writes w and y = x / lambda. */
 static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
 {
     if (!ga_mv_isfinite(X))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     X = unit_scaled(X);
     double s = ga_mv_maxabs(X);
     if (s == 0.0 || off_grade(X, 1) > GA_POINT_TOL * s)
-        return GA_ENOTPOINT;
+        return GA_ERR_NOTPOINT;
     ga_vec3 e = euclid(X);
-    double x4 = X.c[GA_E4], x5 = X.c[GA_E5];
+    double x4 = X.c[GA_BLADE_E4], x5 = X.c[GA_BLADE_E5];
     double xn = x4 - x5; /* X.n */
     if (!(fabs(xn) > GA_POINT_TOL * s) || x5 == 0.0)
-        return GA_ENOTPOINT;
+        return GA_ERR_NOTPOINT;
     /* w = -X.n + X.X / (2 X5): cancellation-free, and -X.n itself when X is null */
     double w = (dot3(e, e) + xn * xn) / (2.0 * x5);
     ga_vec3 y = v3(e.x / w, e.y / w, e.z / w);
@@ -86,18 +93,18 @@ static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
     double y2 = dot3(y, y);
     if (fabs(x4 - 0.5 * w * (y2 - 1.0)) > GA_POINT_TOL * s ||
         fabs(x5 - 0.5 * w * (y2 + 1.0)) > GA_POINT_TOL * s)
-        return GA_ENOTPOINT;
+        return GA_ERR_NOTPOINT;
     *w_out = w;
     *y_out = y;
     return GA_OK;
 }
 
-int ga_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
+int ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
 {
     if (!isfinite(lambda))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     if (!(lambda > 0.0))
-        return GA_EARG;
+        return GA_ERR_ARG;
     double w;
     ga_vec3 y;
     int st = down_unit(X, &w, &y);
@@ -107,31 +114,31 @@ int ga_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
        fuzz/regress/numeric/down-scaled-overflow) */
     ga_vec3 x = v3(lambda * y.x, lambda * y.y, lambda * y.z);
     if (!isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     *out = x;
     return GA_OK;
 }
 
-int ga_down(ga_mv X, ga_vec3 *out) { return ga_down_scaled(X, 1.0, out); }
+int ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 1.0, out); }
 
 /* ---- objects ---------------------------------------------------------------- */
 
-ga_mv ga_point_pair(ga_vec3 a, ga_vec3 b) { return ga_op(ga_point(a), ga_point(b)); }
-ga_mv ga_circle(ga_vec3 a, ga_vec3 b, ga_vec3 c) { return ga_op(ga_point_pair(a, b), ga_point(c)); }
-ga_mv ga_line(ga_vec3 a, ga_vec3 b) { return ga_op(ga_point_pair(a, b), ga_n()); }
-ga_mv ga_sphere(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d) { return ga_op(ga_circle(a, b, c), ga_point(d)); }
-ga_mv ga_plane(ga_vec3 a, ga_vec3 b, ga_vec3 c) { return ga_op(ga_circle(a, b, c), ga_n()); }
+ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b) { return ga_mv_op(ga_point_up(a), ga_point_up(b)); }
+ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c) { return ga_mv_op(ga_pointpair_from_points(a, b), ga_point_up(c)); }
+ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b) { return ga_mv_op(ga_pointpair_from_points(a, b), ga_mv_n()); }
+ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d) { return ga_mv_op(ga_circle_from_points(a, b, c), ga_point_up(d)); }
+ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c) { return ga_mv_op(ga_circle_from_points(a, b, c), ga_mv_n()); }
 
-ga_mv ga_dual_sphere(ga_vec3 centre, double radius)
+ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
 {
-    ga_mv s = ga_point(centre);
+    ga_mv s = ga_point_up(centre);
     double h = 0.5 * radius * radius; /* - (r^2/2) n */
-    s.c[GA_E4] -= h;
-    s.c[GA_E5] -= h;
+    s.c[GA_BLADE_E4] -= h;
+    s.c[GA_BLADE_E5] -= h;
     return s;
 }
 
-ga_mv ga_dual_plane(ga_vec3 m, double d) { return ga_mv_vector(m.x, m.y, m.z, d, d); }
+ga_mv ga_plane_dual(ga_vec3 m, double d) { return ga_mv_vector(m.x, m.y, m.z, d, d); }
 
 /* How far X is from being a multiple k Y (k > 0 if positive), relative to X:
    max |X - k Y| / max |X| with k the least-squares scale. 1 or more means "not". */
@@ -145,25 +152,25 @@ static double misfit(ga_mv X, ga_mv Y, int positive)
     double sx = ga_mv_maxabs(X);
     if (!(yy > 0.0) || sx == 0.0 || (positive && !(xy > 0.0)))
         return 1.0;
-    return ga_mv_maxabs(ga_sub(X, ga_scale(Y, xy / yy))) / sx;
+    return ga_mv_maxabs(ga_mv_sub(X, ga_mv_scale(Y, xy / yy))) / sx;
 }
 
 /* The vector of a dual object: X itself if a vector, X I if a 4-vector (the
-   undual, whose sign makes ga_plane(a,b,c) read back (b-a) x (c-a)). */
+   undual, whose sign makes ga_plane_from_points(a,b,c) read back (b-a) x (c-a)). */
 static int dual_vector(ga_mv X, ga_mv *v)
 {
     if (!ga_mv_isfinite(X))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     X = unit_scaled(X);
     double s = ga_mv_maxabs(X);
     if (s == 0.0)
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     if (off_grade(X, 1) <= GA_POINT_TOL * s)
-        *v = ga_grade(X, 1);
+        *v = ga_mv_grade(X, 1);
     else if (off_grade(X, 4) <= GA_POINT_TOL * s)
-        *v = ga_grade(ga_undual(X), 1);
+        *v = ga_mv_grade(ga_mv_undual(X), 1);
     else
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     return GA_OK;
 }
 
@@ -172,15 +179,15 @@ static int dual_vector(ga_mv X, ga_mv *v)
 static int dual_sphere_params(ga_mv s, ga_vec3 *centre, double *radius)
 {
     double sc = ga_mv_maxabs(s);
-    double w = s.c[GA_E5] - s.c[GA_E4];
+    double w = s.c[GA_BLADE_E5] - s.c[GA_BLADE_E4];
     if (!(fabs(w) > GA_POINT_TOL * sc))
-        return GA_ENOTBLADE; /* a plane (or the point at infinity) */
+        return GA_ERR_NOTBLADE; /* a plane (or the point at infinity) */
     ga_vec3 c = euclid(s);
     c = v3(c.x / w, c.y / w, c.z / w);
-    double r2 = dot3(c, c) - (s.c[GA_E4] + s.c[GA_E5]) / w;
+    double r2 = dot3(c, c) - (s.c[GA_BLADE_E4] + s.c[GA_BLADE_E5]) / w;
     /* r^2 is a difference of terms up to 2 sc / |w|: negative beyond that is imaginary */
     if (r2 < -GA_POINT_TOL * 2.0 * sc / fabs(w))
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     *centre = c;
     *radius = sqrt(fmax(r2, 0.0));
     return GA_OK;
@@ -199,10 +206,10 @@ static int dual_plane_params(ga_mv p, ga_vec3 *normal, double *distance)
     double sc = ga_mv_maxabs(p);
     ga_vec3 m = euclid(p);
     double len = sqrt(dot3(m, m));
-    if (fabs(p.c[GA_E4] - p.c[GA_E5]) > GA_POINT_TOL * sc || !(len > GA_POINT_TOL * sc))
-        return GA_ENOTBLADE; /* a sphere (p.n != 0), or n: the plane at infinity */
+    if (fabs(p.c[GA_BLADE_E4] - p.c[GA_BLADE_E5]) > GA_POINT_TOL * sc || !(len > GA_POINT_TOL * sc))
+        return GA_ERR_NOTBLADE; /* a sphere (p.n != 0), or n: the plane at infinity */
     *normal = v3(m.x / len, m.y / len, m.z / len);
-    *distance = 0.5 * (p.c[GA_E4] + p.c[GA_E5]) / len;
+    *distance = 0.5 * (p.c[GA_BLADE_E4] + p.c[GA_BLADE_E5]) / len;
     return GA_OK;
 }
 
@@ -216,35 +223,35 @@ int ga_plane_params(ga_mv P, ga_vec3 *normal, double *distance)
 /* The line u e45 + (p ^ u) ^ n (|u| = 1, p.u = 0). */
 static ga_mv line_of(ga_vec3 u, ga_vec3 p)
 {
-    ga_mv L = ga_op(ga_op(ga_vec3_mv(p), ga_vec3_mv(u)), ga_n());
-    L.c[GA_E145] += u.x;
-    L.c[GA_E245] += u.y;
-    L.c[GA_E345] += u.z;
+    ga_mv L = ga_mv_op(ga_mv_op(ga_vec3_to_mv(p), ga_vec3_to_mv(u)), ga_mv_n());
+    L.c[GA_BLADE_E145] += u.x;
+    L.c[GA_BLADE_E245] += u.y;
+    L.c[GA_BLADE_E345] += u.z;
     return L;
 }
 
 int ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
 {
     if (!ga_mv_isfinite(L))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     L = unit_scaled(L);
     double s = ga_mv_maxabs(L);
     if (s == 0.0 || off_grade(L, 3) > GA_POINT_TOL * s)
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     /* L = w (u e45 + B ^ n), B = p ^ u: u from the e_i45, B from the e_ij4 and e_ij5 */
-    ga_vec3 u = v3(L.c[GA_E145], L.c[GA_E245], L.c[GA_E345]);
+    ga_vec3 u = v3(L.c[GA_BLADE_E145], L.c[GA_BLADE_E245], L.c[GA_BLADE_E345]);
     double w = sqrt(dot3(u, u));
     if (!(w > GA_POINT_TOL * s))
-        return GA_ENOTBLADE; /* no direction: not a line */
+        return GA_ERR_NOTBLADE; /* no direction: not a line */
     u = v3(u.x / w, u.y / w, u.z / w);
-    double b12 = 0.5 * (L.c[GA_E124] + L.c[GA_E125]) / w;
-    double b13 = 0.5 * (L.c[GA_E134] + L.c[GA_E135]) / w;
-    double b23 = 0.5 * (L.c[GA_E234] + L.c[GA_E235]) / w;
+    double b12 = 0.5 * (L.c[GA_BLADE_E124] + L.c[GA_BLADE_E125]) / w;
+    double b13 = 0.5 * (L.c[GA_BLADE_E134] + L.c[GA_BLADE_E135]) / w;
+    double b23 = 0.5 * (L.c[GA_BLADE_E234] + L.c[GA_BLADE_E235]) / w;
     /* B = p ^ u is the 3D moment p x u = (b23, -b13, b12); p = u x (p x u) */
     ga_vec3 p = cross3(u, v3(b23, -b13, b12));
     /* everything else (e123, e_ij4 != e_ij5, B not containing u) is the misfit */
     if (misfit(L, line_of(u, p), 1) > GA_POINT_TOL)
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     *direction = u;
     *closest = p;
     return GA_OK;
@@ -257,31 +264,31 @@ static int carrier(ga_mv X, ga_mv flat, ga_vec3 *centre, double *radius)
 {
     ga_mv inv;
     if (ga_mv_inverse(flat, &inv) != GA_OK)
-        return GA_ENOTBLADE;
-    ga_mv sigma = ga_gp(X, inv);
+        return GA_ERR_NOTBLADE;
+    ga_mv sigma = ga_mv_gp(X, inv);
     double s = ga_mv_maxabs(sigma);
     if (s == 0.0 || off_grade(sigma, 1) > GA_POINT_TOL * s)
-        return GA_ENOTBLADE;
-    return dual_sphere_params(ga_grade(sigma, 1), centre, radius);
+        return GA_ERR_NOTBLADE;
+    return dual_sphere_params(ga_mv_grade(sigma, 1), centre, radius);
 }
 
-int ga_point_pair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
+int ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
 {
     if (!ga_mv_isfinite(PP))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     PP = unit_scaled(PP);
     double s = ga_mv_maxabs(PP);
     if (s == 0.0 || off_grade(PP, 2) > GA_POINT_TOL * s)
-        return GA_ENOTBLADE;
-    ga_mv L = ga_op(PP, ga_n());
+        return GA_ERR_NOTBLADE;
+    ga_mv L = ga_mv_op(PP, ga_mv_n());
     ga_vec3 u, p, c;
     double r;
     if (ga_line_params(L, &u, &p) != GA_OK || carrier(PP, L, &c, &r) != GA_OK)
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     ga_vec3 pa = v3(c.x - r * u.x, c.y - r * u.y, c.z - r * u.z);
     ga_vec3 pb = v3(c.x + r * u.x, c.y + r * u.y, c.z + r * u.z);
-    if (!(r > 0.0) || misfit(PP, ga_point_pair(pa, pb), 1) > GA_POINT_TOL)
-        return GA_ENOTBLADE;
+    if (!(r > 0.0) || misfit(PP, ga_pointpair_from_points(pa, pb), 1) > GA_POINT_TOL)
+        return GA_ERR_NOTBLADE;
     *a = pa;
     *b = pb;
     return GA_OK;
@@ -290,20 +297,20 @@ int ga_point_pair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
 int ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal)
 {
     if (!ga_mv_isfinite(C))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     C = unit_scaled(C);
     double s = ga_mv_maxabs(C);
     if (s == 0.0 || off_grade(C, 3) > GA_POINT_TOL * s)
-        return GA_ENOTBLADE;
-    ga_mv P = ga_op(C, ga_n());
+        return GA_ERR_NOTBLADE;
+    ga_mv P = ga_mv_op(C, ga_mv_n());
     ga_vec3 m, c;
     double d, r;
     if (ga_plane_params(P, &m, &d) != GA_OK || carrier(C, P, &c, &r) != GA_OK)
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     /* C is dual to sigma ^ pi, the carrier sphere and the plane through its centre */
-    ga_mv rebuilt = ga_undual(ga_op(ga_dual_sphere(c, r), ga_dual_plane(m, dot3(m, c))));
+    ga_mv rebuilt = ga_mv_undual(ga_mv_op(ga_sphere_dual(c, r), ga_plane_dual(m, dot3(m, c))));
     if (misfit(C, rebuilt, 0) > GA_POINT_TOL)
-        return GA_ENOTBLADE;
+        return GA_ERR_NOTBLADE;
     *centre = c;
     *radius = r;
     *normal = m;

@@ -1,6 +1,6 @@
 /* garotor/mat4.c: 4x4 matrices, SE(3) in closed form, general expm and logm.
  * See mat4.h for what each function computes and the equations it cites. */
-#include "mat4.h"
+#include <garotor/mat4.h>
 
 #include <float.h>
 #include <math.h>
@@ -102,7 +102,7 @@ static int lu4_try(ga_mat4 a, lu4 *f, int equilibrate)
         for (int i = 0; i < 4; i++) {
             double mx = 0.0;
             for (int j = 0; j < 4; j++) mx = fmax(mx, fabs(pass ? M(a, j, i) : M(a, i, j)));
-            if (!(mx > 0.0)) return GA_ESINGULAR;
+            if (!(mx > 0.0)) return GA_ERR_SINGULAR;
             int e = ilogb(mx);
             for (int j = 0; j < 4; j++) {
                 double *x = pass ? &M(a, j, i) : &M(a, i, j);
@@ -120,7 +120,7 @@ static int lu4_try(ga_mat4 a, lu4 *f, int equilibrate)
         for (int j = 0; j < 4; j++) {
             double t = M(a, k, j); M(a, k, j) = M(a, p, j); M(a, p, j) = t;
         }
-        if (!(fabs(M(a, k, k)) > 4.0 * DBL_EPSILON * big)) return GA_ESINGULAR;
+        if (!(fabs(M(a, k, k)) > 4.0 * DBL_EPSILON * big)) return GA_ERR_SINGULAR;
         for (int i = k + 1; i < 4; i++) {
             double l = M(a, i, k) /= M(a, k, k);
             for (int j = k + 1; j < 4; j++) M(a, i, j) -= l * M(a, k, j);
@@ -179,10 +179,10 @@ static double lu4_logabsdet(const lu4 *f)
 int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
 {
     lu4 f;
-    if (!mat4_isfinite(&a)) return GA_ENOTFINITE;
-    if (lu4_factor(a, &f) != GA_OK) return GA_ESINGULAR;
+    if (!mat4_isfinite(&a)) return GA_ERR_NOTFINITE;
+    if (lu4_factor(a, &f) != GA_OK) return GA_ERR_SINGULAR;
     ga_mat4 r = lu4_solve(&f, ga_mat4_identity());
-    if (!mat4_isfinite(&r)) return GA_ESINGULAR; /* the inverse overflows */
+    if (!mat4_isfinite(&r)) return GA_ERR_SINGULAR; /* the inverse overflows */
     *out = r;
     return GA_OK;
 }
@@ -213,20 +213,20 @@ ga_twist ga_twist_vee(ga_mat4 a)
  * matrix in place instead of copying its 128 bytes for each call. */
 static inline int se3_check(const ga_mat4 *m, double tol)
 {
-    if (!mat4_isfinite(m)) return GA_ENOTFINITE;
+    if (!mat4_isfinite(m)) return GA_ERR_NOTFINITE;
     for (int i = 0; i < 3; i++)
         for (int j = i; j < 3; j++) { /* R^T R - I is symmetric */
             double g = M(*m, 0, i) * M(*m, 0, j) + M(*m, 1, i) * M(*m, 1, j)
                      + M(*m, 2, i) * M(*m, 2, j) - (i == j);
-            if (!(fabs(g) <= tol)) return GA_ENOTRIGID; /* !(<=): a NaN tol rejects */
+            if (!(fabs(g) <= tol)) return GA_ERR_NOTRIGID; /* !(<=): a NaN tol rejects */
         }
     ga_vec3 c0 = v3(M(*m, 0, 0), M(*m, 1, 0), M(*m, 2, 0));
     ga_vec3 c1 = v3(M(*m, 0, 1), M(*m, 1, 1), M(*m, 2, 1));
     ga_vec3 c2 = v3(M(*m, 0, 2), M(*m, 1, 2), M(*m, 2, 2));
-    if (!(dot3(c0, cross3(c1, c2)) > 0.0)) return GA_ENOTRIGID; /* a reflection */
+    if (!(dot3(c0, cross3(c1, c2)) > 0.0)) return GA_ERR_NOTRIGID; /* a reflection */
     if (!(fabs(M(*m, 3, 0)) <= tol && fabs(M(*m, 3, 1)) <= tol && fabs(M(*m, 3, 2)) <= tol
           && fabs(M(*m, 3, 3) - 1.0) <= tol))
-        return GA_ENOTRIGID;
+        return GA_ERR_NOTRIGID;
     return GA_OK;
 }
 
@@ -366,7 +366,7 @@ int ga_se3_log(ga_mat4 m, ga_twist *out)
     /* v = V^{-1} t overflows for a translation near DBL_MAX: report it, never
        return Inf or NaN (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/log-subnormal-rotation-translation replays it) */
-    if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z))) return GA_EDOMAIN;
+    if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z))) return GA_ERR_DOMAIN;
     *out = xi;
     return GA_OK;
 }
@@ -375,7 +375,7 @@ int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
 {
     int st = ga_se3_check(h0, GA_SE3_TOL);
     if (st == GA_OK) st = ga_se3_check(h1, GA_SE3_TOL);
-    if (st == GA_OK && !isfinite(t)) st = GA_ENOTFINITE;
+    if (st == GA_OK && !isfinite(t)) st = GA_ERR_NOTFINITE;
     if (st != GA_OK) return st;
     /* h1 h0^{-1} is rigid to about 2 GA_SE3_TOL, so it goes to the unchecked
      * log: re-checking it at GA_SE3_TOL could reject two valid inputs. */
@@ -387,7 +387,7 @@ int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
     /* a far extrapolation or a translation near DBL_MAX overflows: reported,
        never returned as Inf or NaN (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/geodesic-overflow replays it) */
-    if (!mat4_isfinite(&g)) return GA_EDOMAIN;
+    if (!mat4_isfinite(&g)) return GA_ERR_DOMAIN;
     *out = g;
     return GA_OK;
 }
@@ -430,7 +430,7 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
                                  960960, 16380, 182, 1};
     static const double *const coef[5] = {b3, b5, b7, b9, b13};
 
-    if (!mat4_isfinite(&a)) return GA_ENOTFINITE;
+    if (!mat4_isfinite(&a)) return GA_ERR_NOTFINITE;
     /* The norm of a/4 cannot overflow (4 entries of at most DBL_MAX/4 each). */
     ga_mat4 q = a;
     for (int i = 0; i < 16; i++) q.m[i] *= 0.25;
@@ -470,7 +470,7 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
     lu4 f;
     /* q_m(A) is well conditioned for ||A||_1 <= theta_m (Higham 2005): this
      * failure is a guard, not an expected path. */
-    if (lu4_factor(den, &f) != GA_OK) return GA_EDOMAIN;
+    if (lu4_factor(den, &f) != GA_OK) return GA_ERR_DOMAIN;
     /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. */
     ga_mat4 x = lu4_solve(&f, u);
     for (int i = 0; i < 16; i++) x.m[i] *= 2.0;
@@ -493,10 +493,10 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
         ga_mat4 x2 = ga_mat4_mul(x, x);
         if (!plain) mat4_acc(&x2, 2.0, &x);
         x = x2;
-        if (!mat4_isfinite(&x)) return GA_EDOMAIN; /* overflow: stop before Inf - Inf */
+        if (!mat4_isfinite(&x)) return GA_ERR_DOMAIN; /* overflow: stop before Inf - Inf */
     }
     if (!plain) x = mat4_add_id(x, 1.0);
-    if (!mat4_isfinite(&x)) return GA_EDOMAIN;
+    if (!mat4_isfinite(&x)) return GA_ERR_DOMAIN;
     *out = x;
     return GA_OK;
 }
@@ -573,7 +573,7 @@ static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
  * With an eigenvalue on the closed negative real axis the iteration meets a
  * singular Y_k or Z_k or never converges (for a real negative eigenvalue the
  * scalar iterates stay real and cannot approach its imaginary root):
- * GA_EDOMAIN either way. */
+ * GA_ERR_DOMAIN either way. */
 /* max_ij |Y Z - I|_ij / S_ij, the residual of Denman-Beavers, with the scale
  * S_ij = max(D_ij, 1e-6 min(max_l D_il, max_l D_lj), DBL_MIN), D = |Y| |Z|.
  * D_ij is the scale at which (Y Z)_ij rounds when its terms carry the
@@ -581,13 +581,13 @@ static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
  * of its row and column (eps times max_l D_il, say) would read as a residual
  * near 1 against its own terms and stop convergence forever, and with it
  * keep the determinant scaling on (found by fuzz/fuzz_path: logm of
- * [1 0 0 0; 0 1 0 0; 0 -.98 .016 -.98; 0 0 0 1] was GA_EDOMAIN; replayed by
+ * [1 0 0 0; 0 1 0 0; 0 -.98 .016 -.98; 0 0 0 1] was GA_ERR_DOMAIN; replayed by
  * fuzz/regress/path/affine-logm-db-stall): such entries are measured against
  * 1e-6 of the smaller of their row's and column's largest scale, which
  * leaves the noise near 1e-9. A translation column keeps its own scale (its
  * D_ij is the largest of its row). Below DBL_MIN products round absolutely,
  * to 2^-1074, so a relative residual need never fall below 1e-8 (found by
- * fuzz/fuzz_numeric: logm(expm(X)) was GA_EDOMAIN for an X with one entry of
+ * fuzz/fuzz_numeric: logm(expm(X)) was GA_ERR_DOMAIN for an X with one entry of
  * -8e-322; replayed by fuzz/regress/numeric/logm-subnormal-entry). */
 static double db_residual(const ga_mat4 *y, const ga_mat4 *z)
 {
@@ -616,7 +616,7 @@ static int sqrtm_db(ga_mat4 a, ga_mat4 *root)
     ga_mat4 y = a, z = ga_mat4_identity(), id = ga_mat4_identity();
     for (int it = 0; it < 100; it++) {
         lu4 fy, fz;
-        if (lu4_factor(y, &fy) != GA_OK || lu4_factor(z, &fz) != GA_OK) return GA_EDOMAIN;
+        if (lu4_factor(y, &fy) != GA_OK || lu4_factor(z, &fz) != GA_OK) return GA_ERR_DOMAIN;
         ga_mat4 yinv = lu4_solve(&fy, id), zinv = lu4_solve(&fz, id);
         double res = db_residual(&y, &z), mu = 1.0;
         if (res > 1e-2) {
@@ -629,10 +629,10 @@ static int sqrtm_db(ga_mat4 a, ga_mat4 *root)
         mat4_acc(&zn, 0.5 / mu, &yinv);
         y = yn;
         z = zn;
-        if (!mat4_isfinite(&y) || !mat4_isfinite(&z)) return GA_EDOMAIN;
+        if (!mat4_isfinite(&y) || !mat4_isfinite(&z)) return GA_ERR_DOMAIN;
         if (res <= 1e-8) { sqrtm_newton(a, &y); *root = y; return GA_OK; }
     }
-    return GA_EDOMAIN;
+    return GA_ERR_DOMAIN;
 }
 
 int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
@@ -651,9 +651,9 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         1.11190517226687241e-01, 5.06142681451881293e-02};
     const double theta8 = 0.325;
 
-    if (!mat4_isfinite(&a)) return GA_ENOTFINITE;
+    if (!mat4_isfinite(&a)) return GA_ERR_NOTFINITE;
     lu4 f;
-    if (lu4_factor(a, &f) != GA_OK) return GA_ESINGULAR; /* eigenvalue 0: no log */
+    if (lu4_factor(a, &f) != GA_OK) return GA_ERR_SINGULAR; /* eigenvalue 0: no log */
 
     /* A_k = A^(1/2^k) and Z = A_k - I. Z is updated by the identity
      * A_k - I = (A_{k+1} + I)(A_{k+1} - I) (the factors commute) rather than
@@ -669,8 +669,8 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         /* Each root about halves ||Z||_1 <= 4 DBL_MAX < 2^1026 (a translation
          * t needs log2(|t|/theta8) roots, 23 for 1e6), so 1100 roots always
          * suffice; not getting there means no principal root is converging. */
-        if (k == 1100 || sqrtm_db(ak, &root) != GA_OK) return GA_EDOMAIN;
-        if (lu4_factor(mat4_add_id(root, 1.0), &f) != GA_OK) return GA_EDOMAIN;
+        if (k == 1100 || sqrtm_db(ak, &root) != GA_OK) return GA_ERR_DOMAIN;
+        if (lu4_factor(mat4_add_id(root, 1.0), &f) != GA_OK) return GA_ERR_DOMAIN;
         z = lu4_solve(&f, z);
         ak = root;
         k++;
@@ -680,12 +680,12 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         ga_mat4 d = z;
         for (int i = 0; i < 16; i++) d.m[i] *= node[j];
         /* I + t Z, ||t Z|| < 1/3: well conditioned, cannot be singular */
-        if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK) return GA_EDOMAIN;
+        if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK) return GA_ERR_DOMAIN;
         ga_mat4 term = lu4_solve(&f, z);
         mat4_acc(&l, weight[j], &term);
     }
     mat4_scale2(&l, k);
-    if (!mat4_isfinite(&l)) return GA_EDOMAIN;
+    if (!mat4_isfinite(&l)) return GA_ERR_DOMAIN;
     /* A posteriori check. Within rounding of the negative real axis (a
      * rounded half turn has eigenvalues -1 +- 1e-16 i) a square root can
      * settle on a non-principal branch, and the backward error of the whole
@@ -693,11 +693,11 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
      * than ~1e-8 (tests/test_cross.c). Rather than return a confident wrong
      * answer, accept L only if exp(L) reproduces A to GA_LOGM_BACKWARD_TOL. */
     ga_mat4 back;
-    if (ga_mat4_expm(l, &back) != GA_OK) return GA_EDOMAIN;
+    if (ga_mat4_expm(l, &back) != GA_OK) return GA_ERR_DOMAIN;
     double err = 0.0;
     for (int i = 0; i < 16; i++) back.m[i] -= a.m[i];
     err = ga_mat4_norm1(back);
-    if (!(err <= GA_LOGM_BACKWARD_TOL * ga_mat4_norm1(a))) return GA_EDOMAIN;
+    if (!(err <= GA_LOGM_BACKWARD_TOL * ga_mat4_norm1(a))) return GA_ERR_DOMAIN;
     *out = l;
     return GA_OK;
 }

@@ -6,7 +6,7 @@
  * e_k e_k = +1 for k <= 4 and -1 for k = 5 for every vector they share.
  * Everything below is that rule, applied to all 32 x 32 pairs.
  */
-#include "mv.h"
+#include <garotor/mv.h>
 
 #include <math.h>
 
@@ -29,10 +29,10 @@ static const char *const blade_names[32] = {
 
 /* Inverse of blade_mask: canonical index of each mask. */
 static const signed char mask_index[32] = {
-    GA_S, GA_E1, GA_E2, GA_E12, GA_E3, GA_E13, GA_E23, GA_E123,
-    GA_E4, GA_E14, GA_E24, GA_E124, GA_E34, GA_E134, GA_E234, GA_E1234,
-    GA_E5, GA_E15, GA_E25, GA_E125, GA_E35, GA_E135, GA_E235, GA_E1235,
-    GA_E45, GA_E145, GA_E245, GA_E1245, GA_E345, GA_E1345, GA_E2345, GA_E12345};
+    GA_BLADE_SCALAR, GA_BLADE_E1, GA_BLADE_E2, GA_BLADE_E12, GA_BLADE_E3, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E123,
+    GA_BLADE_E4, GA_BLADE_E14, GA_BLADE_E24, GA_BLADE_E124, GA_BLADE_E34, GA_BLADE_E134, GA_BLADE_E234, GA_BLADE_E1234,
+    GA_BLADE_E5, GA_BLADE_E15, GA_BLADE_E25, GA_BLADE_E125, GA_BLADE_E35, GA_BLADE_E135, GA_BLADE_E235, GA_BLADE_E1235,
+    GA_BLADE_E45, GA_BLADE_E145, GA_BLADE_E245, GA_BLADE_E1245, GA_BLADE_E345, GA_BLADE_E1345, GA_BLADE_E2345, GA_BLADE_E12345};
 
 static int popcount5(unsigned m)
 {
@@ -67,7 +67,7 @@ ga_mv ga_mv_zero(void)
 ga_mv ga_mv_scalar(double s)
 {
     ga_mv r = {{0}};
-    r.c[GA_S] = s;
+    r.c[GA_BLADE_SCALAR] = s;
     return r;
 }
 
@@ -82,29 +82,29 @@ ga_mv ga_mv_blade(int i)
 ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5)
 {
     ga_mv r = {{0}};
-    r.c[GA_E1] = x1;
-    r.c[GA_E2] = x2;
-    r.c[GA_E3] = x3;
-    r.c[GA_E4] = x4;
-    r.c[GA_E5] = x5;
+    r.c[GA_BLADE_E1] = x1;
+    r.c[GA_BLADE_E2] = x2;
+    r.c[GA_BLADE_E3] = x3;
+    r.c[GA_BLADE_E4] = x4;
+    r.c[GA_BLADE_E5] = x5;
     return r;
 }
 
-ga_mv ga_add(ga_mv a, ga_mv b)
+ga_mv ga_mv_add(ga_mv a, ga_mv b)
 {
     for (int i = 0; i < 32; i++)
         a.c[i] += b.c[i];
     return a;
 }
 
-ga_mv ga_sub(ga_mv a, ga_mv b)
+ga_mv ga_mv_sub(ga_mv a, ga_mv b)
 {
     for (int i = 0; i < 32; i++)
         a.c[i] -= b.c[i];
     return a;
 }
 
-ga_mv ga_scale(ga_mv a, double s)
+ga_mv ga_mv_scale(ga_mv a, double s)
 {
     for (int i = 0; i < 32; i++)
         a.c[i] *= s;
@@ -149,11 +149,11 @@ static ga_mv product(ga_mv a, ga_mv b, enum product_kind kind)
     return r;
 }
 
-ga_mv ga_gp(ga_mv a, ga_mv b) { return product(a, b, GEOMETRIC); }
-ga_mv ga_op(ga_mv a, ga_mv b) { return product(a, b, OUTER); }
-ga_mv ga_lc(ga_mv a, ga_mv b) { return product(a, b, LEFT_CONTRACTION); }
+ga_mv ga_mv_gp(ga_mv a, ga_mv b) { return product(a, b, GEOMETRIC); }
+ga_mv ga_mv_op(ga_mv a, ga_mv b) { return product(a, b, OUTER); }
+ga_mv ga_mv_lc(ga_mv a, ga_mv b) { return product(a, b, LEFT_CONTRACTION); }
 
-double ga_sp(ga_mv a, ga_mv b)
+double ga_mv_sp(ga_mv a, ga_mv b)
 {
     /* <ab>_0 pairs each blade with itself */
     double s = 0.0;
@@ -170,25 +170,25 @@ static ga_mv grade_signs(ga_mv a, const double sign[6])
     return a;
 }
 
-ga_mv ga_reverse(ga_mv a)
+ga_mv ga_mv_reverse(ga_mv a)
 {
     static const double s[6] = {1, 1, -1, -1, 1, 1}; /* (-1)^(k(k-1)/2) */
     return grade_signs(a, s);
 }
 
-ga_mv ga_involute(ga_mv a)
+ga_mv ga_mv_involute(ga_mv a)
 {
     static const double s[6] = {1, -1, 1, -1, 1, -1}; /* (-1)^k */
     return grade_signs(a, s);
 }
 
-ga_mv ga_conjugate(ga_mv a)
+ga_mv ga_mv_conjugate(ga_mv a)
 {
     static const double s[6] = {1, -1, -1, 1, 1, -1}; /* product of the two */
     return grade_signs(a, s);
 }
 
-ga_mv ga_grade(ga_mv a, int k)
+ga_mv ga_mv_grade(ga_mv a, int k)
 {
     for (int i = 0; i < 32; i++)
         if (popcount5(blade_mask[i]) != k)
@@ -196,22 +196,22 @@ ga_mv ga_grade(ga_mv a, int k)
     return a;
 }
 
-ga_mv ga_dual(ga_mv a)
+ga_mv ga_mv_dual(ga_mv a)
 {
     /* I^-1 = -I, since I^2 = -1 in G(4,1) */
-    return ga_scale(ga_gp(a, ga_mv_blade(GA_E12345)), -1.0);
+    return ga_mv_scale(ga_mv_gp(a, ga_mv_blade(GA_BLADE_E12345)), -1.0);
 }
 
-ga_mv ga_undual(ga_mv a) { return ga_gp(a, ga_mv_blade(GA_E12345)); }
+ga_mv ga_mv_undual(ga_mv a) { return ga_mv_gp(a, ga_mv_blade(GA_BLADE_E12345)); }
 
-double ga_norm2(ga_mv a) { return ga_sp(a, ga_reverse(a)); }
+double ga_mv_norm2(ga_mv a) { return ga_mv_sp(a, ga_mv_reverse(a)); }
 
-double ga_norm(ga_mv a) { return sqrt(fabs(ga_norm2(a))); }
+double ga_mv_norm(ga_mv a) { return sqrt(fabs(ga_mv_norm2(a))); }
 
 int ga_mv_inverse(ga_mv a, ga_mv *out)
 {
     if (!ga_mv_isfinite(a))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     /* work on a 2^-e (exact), its largest coefficient in [1/2, 1): a ~a of a
        tiny or huge a underflowed or overflowed, and 1/s became Inf with GA_OK
        (found by fuzz/fuzz_numeric; fuzz/regress/numeric/mv-inverse-underflow
@@ -222,21 +222,21 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
         frexp(ga_mv_maxabs(a), &e);
     for (int i = 0; i < 32; i++)
         a.c[i] = ldexp(a.c[i], -e);
-    ga_mv rev = ga_reverse(a);
-    ga_mv aa = ga_gp(a, rev);
-    double s = aa.c[GA_S];
+    ga_mv rev = ga_mv_reverse(a);
+    ga_mv aa = ga_mv_gp(a, rev);
+    double s = aa.c[GA_BLADE_SCALAR];
     /* a ~a must be a nonzero scalar: every other coefficient negligible against
        the size of the product of the sizes (rounding of 32 terms of a*~a). */
     double scale = ga_mv_maxabs(a);
     double tol = 64.0 * 2.220446049250313e-16 * scale * scale;
-    aa.c[GA_S] = 0.0;
+    aa.c[GA_BLADE_SCALAR] = 0.0;
     if (!(fabs(s) > tol) || ga_mv_maxabs(aa) > tol + 1e-12 * fabs(s))
-        return GA_ESINGULAR;
-    ga_mv r = ga_scale(rev, 1.0 / s);
+        return GA_ERR_SINGULAR;
+    ga_mv r = ga_mv_scale(rev, 1.0 / s);
     for (int i = 0; i < 32; i++)
         r.c[i] = ldexp(r.c[i], -e);
     if (!ga_mv_isfinite(r))
-        return GA_ESINGULAR; /* the inverse overflows, as ga_mat4_inverse */
+        return GA_ERR_SINGULAR; /* the inverse overflows, as ga_mat4_inverse */
     *out = r;
     return GA_OK;
 }

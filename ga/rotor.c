@@ -9,7 +9,7 @@
  *     P q   = (s p - p4 b - p x b) + I (s p4 + p.b),
  *     P ~q  = (s p + p4 b + p x b) + I (s p4 - p.b).
  */
-#include "rotor.h"
+#include <garotor/rotor.h>
 
 #include <math.h>
 #include <stddef.h>
@@ -94,14 +94,14 @@ ga_rotor ga_rotor_reverse(ga_rotor r)
 ga_mv ga_rotor_to_mv(ga_rotor r)
 {
     ga_mv m = ga_mv_zero();
-    m.c[GA_S] = r.s;
-    m.c[GA_E12] = r.e12;
-    m.c[GA_E13] = r.e13;
-    m.c[GA_E23] = r.e23;
-    m.c[GA_E14] = m.c[GA_E15] = r.e1n;
-    m.c[GA_E24] = m.c[GA_E25] = r.e2n;
-    m.c[GA_E34] = m.c[GA_E35] = r.e3n;
-    m.c[GA_E1234] = m.c[GA_E1235] = r.e123n;
+    m.c[GA_BLADE_SCALAR] = r.s;
+    m.c[GA_BLADE_E12] = r.e12;
+    m.c[GA_BLADE_E13] = r.e13;
+    m.c[GA_BLADE_E23] = r.e23;
+    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = r.e1n;
+    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = r.e2n;
+    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = r.e3n;
+    m.c[GA_BLADE_E1234] = m.c[GA_BLADE_E1235] = r.e123n;
     return m;
 }
 
@@ -119,9 +119,9 @@ static double rotor_drift(ga_rotor r)
 int ga_rotor_check(ga_rotor r, double tol)
 {
     if (!rotor_isfinite(r))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     double d = rotor_drift(r);
-    return (d <= tol && isfinite(d)) ? GA_OK : GA_ENOTRIGID;
+    return (d <= tol && isfinite(d)) ? GA_OK : GA_ERR_NOTRIGID;
 }
 
 /* The fast test of ga_rotor_log: true only if r is finite and
@@ -157,19 +157,19 @@ static inline ga_rotor rotor_project(ga_rotor r, double k)
 int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
 {
     if (!rotor_isfinite(r))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     double m = fmax(fmax(fabs(r.s), fabs(r.e12)), fmax(fabs(r.e13), fabs(r.e23)));
     if (m == 0.0)
-        return GA_ENOTRIGID;
+        return GA_ERR_NOTRIGID;
     /* scale to |q| ~ 1 first, so that neither |q|^2 nor P / |q| can overflow */
     ga_rotor t = {r.s / m, r.e12 / m, r.e13 / m, r.e23 / m,
                   r.e1n / m, r.e2n / m, r.e3n / m, r.e123n / m};
     /* P / |q| or the projection may overflow (P near DBL_MAX): that rotor is
-       rigid but its projection is not representable, GA_EDOMAIN, not
-       GA_ENOTRIGID (found by fuzz/fuzz_numeric;
+       rigid but its projection is not representable, GA_ERR_DOMAIN, not
+       GA_ERR_NOTRIGID (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/normalize-overflow-status replays it) */
     if (!rotor_isfinite(t))
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     ga_rotor o = rotor_project(t, 1.0 / sqrt(t.s * t.s + t.e12 * t.e12 + t.e13 * t.e13 + t.e23 * t.e23));
     /* Once more (q is now unit, k = 1): the projection's e123 update
        p4 - mu s cancels when P ~q has a large e123 part (far from the group),
@@ -178,31 +178,31 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
        fuzz/regress/numeric/normalize-far-e123 replays it). */
     o = rotor_project(o, 1.0);
     if (!rotor_isfinite(o))
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     *out = o;
     return GA_OK;
 }
 
 int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
 {
-    static const int inside[12] = {GA_S, GA_E12, GA_E13, GA_E23, GA_E14, GA_E15, GA_E24,
-                                   GA_E25, GA_E34, GA_E35, GA_E1234, GA_E1235};
+    static const int inside[12] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E14, GA_BLADE_E15, GA_BLADE_E24,
+                                   GA_BLADE_E25, GA_BLADE_E34, GA_BLADE_E35, GA_BLADE_E1234, GA_BLADE_E1235};
     if (!ga_mv_isfinite(m))
-        return GA_ENOTFINITE;
+        return GA_ERR_NOTFINITE;
     double lim = tol * fmax(1.0, ga_mv_maxabs(m));
     ga_mv rest = m;
     for (int i = 0; i < 12; i++)
         rest.c[inside[i]] = 0.0;
-    if (!(ga_mv_maxabs(rest) <= lim) || !(fabs(m.c[GA_E14] - m.c[GA_E15]) <= lim) ||
-        !(fabs(m.c[GA_E24] - m.c[GA_E25]) <= lim) || !(fabs(m.c[GA_E34] - m.c[GA_E35]) <= lim) ||
-        !(fabs(m.c[GA_E1234] - m.c[GA_E1235]) <= lim))
-        return GA_ENOTRIGID;
+    if (!(ga_mv_maxabs(rest) <= lim) || !(fabs(m.c[GA_BLADE_E14] - m.c[GA_BLADE_E15]) <= lim) ||
+        !(fabs(m.c[GA_BLADE_E24] - m.c[GA_BLADE_E25]) <= lim) || !(fabs(m.c[GA_BLADE_E34] - m.c[GA_BLADE_E35]) <= lim) ||
+        !(fabs(m.c[GA_BLADE_E1234] - m.c[GA_BLADE_E1235]) <= lim))
+        return GA_ERR_NOTRIGID;
     /* the mean as 0.5 a + 0.5 b: (a + b) overflows for a, b near DBL_MAX and
-       made a finite input GA_ENOTFINITE (found by fuzz/fuzz_numeric;
+       made a finite input GA_ERR_NOTFINITE (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/from-mv-mean-overflow replays it) */
-    ga_rotor r = {m.c[GA_S], m.c[GA_E12], m.c[GA_E13], m.c[GA_E23],
-                  0.5 * m.c[GA_E14] + 0.5 * m.c[GA_E15], 0.5 * m.c[GA_E24] + 0.5 * m.c[GA_E25],
-                  0.5 * m.c[GA_E34] + 0.5 * m.c[GA_E35], 0.5 * m.c[GA_E1234] + 0.5 * m.c[GA_E1235]};
+    ga_rotor r = {m.c[GA_BLADE_SCALAR], m.c[GA_BLADE_E12], m.c[GA_BLADE_E13], m.c[GA_BLADE_E23],
+                  0.5 * m.c[GA_BLADE_E14] + 0.5 * m.c[GA_BLADE_E15], 0.5 * m.c[GA_BLADE_E24] + 0.5 * m.c[GA_BLADE_E25],
+                  0.5 * m.c[GA_BLADE_E34] + 0.5 * m.c[GA_BLADE_E35], 0.5 * m.c[GA_BLADE_E1234] + 0.5 * m.c[GA_BLADE_E1235]};
     int st = ga_rotor_check(r, tol);
     if (st != GA_OK)
         return st;
@@ -230,7 +230,7 @@ ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x)
 ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
 {
     ga_mv R = ga_rotor_to_mv(r);
-    return ga_gp(ga_gp(R, X), ga_reverse(R));
+    return ga_mv_gp(ga_mv_gp(R, X), ga_mv_reverse(R));
 }
 
 /* ---- constructors ------------------------------------------------------- */
@@ -262,7 +262,7 @@ ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a)
     return ga_rotor_mul(rot, ga_rotor_translation(a));
 }
 
-ga_generator ga_generator_from_twist(ga_twist xi)
+ga_generator ga_twist_to_generator(ga_twist xi)
 {
     /* beta = -w/2, c = -v/2; (e12, e13, e23) = (beta_z, -beta_y, beta_x) */
     ga_generator g = {-0.5 * xi.w.z, 0.5 * xi.w.y, -0.5 * xi.w.x,
@@ -270,7 +270,7 @@ ga_generator ga_generator_from_twist(ga_twist xi)
     return g;
 }
 
-ga_twist ga_twist_from_generator(ga_generator b)
+ga_twist ga_generator_to_twist(ga_generator b)
 {
     ga_twist xi = {{-2.0 * b.e23, 2.0 * b.e13, -2.0 * b.e12},
                    {-2.0 * b.e1n, -2.0 * b.e2n, -2.0 * b.e3n}};
@@ -377,9 +377,9 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
 {
     if (!rotor_near_group(r)) { /* rare: decide as ga_rotor_check does */
         if (!rotor_isfinite(r))
-            return GA_ENOTFINITE;
+            return GA_ERR_NOTFINITE;
         if (!(rotor_drift(r) <= GA_ROTOR_DRIFT_MAX))
-            return GA_ENOTRIGID;
+            return GA_ERR_NOTRIGID;
     }
     vec b = rotor_b(r), beta, c;
     double nb2 = v_dot(b, b);
@@ -408,7 +408,7 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         /* finite when rotor_near_group(r) (|p| <= 1e150, phi/|b| <= pi 2^450);
          * past it, as below: x - x is 0 for finite x, NaN for Inf and NaN */
         if (!((c.x - c.x) + (c.y - c.y) + (c.z - c.z) == 0.0))
-            return GA_EDOMAIN;
+            return GA_ERR_DOMAIN;
         ga_generator g = {beta.z, -beta.y, beta.x, c.x, c.y, c.z};
         *out = g;
         return GA_OK;
@@ -468,7 +468,7 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
        fuzz/fuzz_numeric; fuzz/regress/numeric/log-translation-overflow and
        literal-log-near-full-turn replay it). */
     if (!(isfinite(c.x) && isfinite(c.y) && isfinite(c.z)))
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     ga_generator g = {beta.z, -beta.y, beta.x, c.x, c.y, c.z};
     *out = g;
     return GA_OK;
@@ -479,13 +479,13 @@ int ga_rotor_log_literal(ga_rotor r, ga_generator *out) { return rotor_log(r, 0,
 
 /* ---- screws ---------------------------------------------------------------- */
 
-int ga_screw_from_rotor(ga_rotor r, ga_screw *out)
+int ga_rotor_to_screw(ga_rotor r, ga_screw *out)
 {
     ga_generator g;
     int st = ga_rotor_log(r, &g);
     if (st != GA_OK)
         return st;
-    ga_twist xi = ga_twist_from_generator(g);
+    ga_twist xi = ga_generator_to_twist(g);
     vec w = v_of(xi.w), v = v_of(xi.v);
     double th = v_norm(w), nv = v_norm(v);
     ga_screw s = {0, {0, 0, 1}, {0, 0, 0}, 0, 0};
@@ -503,7 +503,7 @@ int ga_screw_from_rotor(ga_rotor r, ga_screw *out)
         s.point = v_out(v_div(v_cross(u, v), th));
         s.pitch = s.shift / th;
         if (!isfinite(s.pitch))
-            return GA_EDOMAIN;
+            return GA_ERR_DOMAIN;
     }
     /* the twist is twice the generator and may overflow where the generator
        did not (a translation beyond DBL_MAX / 2): report it, never return
@@ -511,7 +511,7 @@ int ga_screw_from_rotor(ga_rotor r, ga_screw *out)
        fuzz/regress/numeric/screw-translation-overflow replays it) */
     if (!isfinite(s.shift) || !isfinite(s.point.x) || !isfinite(s.point.y) ||
         !isfinite(s.point.z) || !isfinite(s.axis.x) || !isfinite(s.axis.y) || !isfinite(s.axis.z))
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     *out = s;
     return GA_OK;
 }
@@ -528,18 +528,14 @@ ga_rotor ga_rotor_from_screw(ga_screw s)
     /* w = angle u, v = -w x point + shift u */
     vec w = v_scale(u, s.angle);
     ga_twist xi = {v_out(w), v_out(v_add(v_cross(v_of(s.point), w), v_scale(u, s.shift)))};
-    return ga_rotor_exp(ga_generator_from_twist(xi));
+    return ga_rotor_exp(ga_twist_to_generator(xi));
 }
 
 /* ---- the bridge ----------------------------------------------------------- */
 
-ga_quat ga_rotor_quat(ga_rotor r, ga_vec3 *translation)
-{
-    ga_quat q = {r.s, -r.e23, r.e13, -r.e12};
-    if (translation)
-        *translation = v_out(rotor_translation(r));
-    return q;
-}
+ga_quat ga_rotor_to_quat(ga_rotor r) { return (ga_quat){r.s, -r.e23, r.e13, -r.e12}; }
+
+ga_vec3 ga_rotor_to_translation(ga_rotor r) { return v_out(rotor_translation(r)); }
 
 ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t)
 {
@@ -566,20 +562,20 @@ int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
     const double tol = 1e-9;
     for (int i = 0; i < 16; i++)
         if (!isfinite(m[i]))
-            return GA_ENOTFINITE;
+            return GA_ERR_NOTFINITE;
     if (!(fabs(m[12]) <= tol && fabs(m[13]) <= tol && fabs(m[14]) <= tol &&
           fabs(m[15] - 1.0) <= tol))
-        return GA_ENOTRIGID;
+        return GA_ERR_NOTRIGID;
     for (int i = 0; i < 3; i++)
         for (int j = i; j < 3; j++) {
             double d = m[i] * m[j] + m[4 + i] * m[4 + j] + m[8 + i] * m[8 + j];
             if (!(fabs(d - (i == j)) <= tol))
-                return GA_ENOTRIGID;
+                return GA_ERR_NOTRIGID;
         }
     double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
                  m[2] * (m[4] * m[9] - m[5] * m[8]);
     if (!(det > 0.0))
-        return GA_ENOTRIGID;
+        return GA_ERR_NOTRIGID;
     /* Shepperd: divide by the largest of 4w^2, 4x^2, 4y^2, 4z^2 */
     double tr = m[0] + m[5] + m[10], w, x, y, z, h;
     if (tr >= m[0] && tr >= m[5] && tr >= m[10]) {
@@ -608,7 +604,7 @@ int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
     const double *c = &r.s;
     for (int i = 0; i < 8; i++)
         if (!isfinite(c[i]))
-            return GA_EDOMAIN;
+            return GA_ERR_DOMAIN;
     *out = r;
     return GA_OK;
 }

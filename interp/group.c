@@ -14,9 +14,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "group.h"
-#include "mat4.h"
-#include "rotor.h"
+#include <garotor/group.h>
+#include <garotor/mat4.h>
+#include <garotor/rotor.h>
 
 /* ---- twist helpers ------------------------------------------------------ */
 
@@ -116,8 +116,8 @@ static int cga_inverse(const void *a, void *out)
     return GA_OK;
 }
 /* exp and log report a result that is not finite (the group's contract: a
- * status, never Inf or NaN with GA_OK). NaN/Inf in is GA_ENOTFINITE; finite
- * in and not finite out is GA_EDOMAIN: ga_rotor_exp of an angle beyond ~1e154
+ * status, never Inf or NaN with GA_OK). NaN/Inf in is GA_ERR_NOTFINITE; finite
+ * in and not finite out is GA_ERR_DOMAIN: ga_rotor_exp of an angle beyond ~1e154
  * (phi^2 overflows) or of a translation near DBL_MAX, a twist = 2 generator
  * beyond DBL_MAX (found by fuzz/fuzz_path and fuzz/fuzz_tool: `garotor exp`
  * printed nan; fuzz/regress/path/cga-exp-overflow replays it). */
@@ -132,12 +132,12 @@ static int finite_status(const double *in, int n_in, const double *out, int n_ou
     for (int i = 0; i < n_out; ++i) z[i & 3] += out[i] - out[i];
     if ((z[0] + z[1]) + (z[2] + z[3]) == 0.0) return GA_OK;
     for (int i = 0; i < n_in; ++i)
-        if (!isfinite(in[i])) return GA_ENOTFINITE;
-    return GA_EDOMAIN;
+        if (!isfinite(in[i])) return GA_ERR_NOTFINITE;
+    return GA_ERR_DOMAIN;
 }
 static int cga_exp(const double *x, void *out)
 {
-    /* B(xi) = -(w I3 + v n)/2 (ga_generator_from_twist), read from x in place */
+    /* B(xi) = -(w I3 + v n)/2 (ga_twist_to_generator), read from x in place */
     ga_generator b = { -0.5 * x[2], 0.5 * x[1], -0.5 * x[0], -0.5 * x[3], -0.5 * x[4], -0.5 * x[5] };
     ga_rotor r = ga_rotor_exp(b);
     int st = finite_status(x, 6, &r.s, 8);
@@ -149,7 +149,7 @@ static int cga_log(const void *g, double *x)
     ga_generator b;
     int st = ga_rotor_log(*(const ga_rotor *)g, &b);
     if (st != GA_OK) return st;
-    ga_twist t = ga_twist_from_generator(b);
+    ga_twist t = ga_generator_to_twist(b);
     st = finite_status(NULL, 0, &t.w.x, 6);
     if (st == GA_OK) twist_put(t, x);
     return st;
@@ -159,11 +159,11 @@ static int cga_log(const void *g, double *x)
 static void cga_adjoint(const void *g, const double *x, double *out)
 {
     ga_rotor r = *(const ga_rotor *)g;
-    ga_generator b = ga_generator_from_twist(twist_of(x));
+    ga_generator b = ga_twist_to_generator(twist_of(x));
     ga_rotor bb = { 0.0, b.e12, b.e13, b.e23, b.e1n, b.e2n, b.e3n, 0.0 };
     ga_rotor s = ga_rotor_mul(ga_rotor_mul(r, bb), ga_rotor_reverse(r));
     ga_generator o = { s.e12, s.e13, s.e23, s.e1n, s.e2n, s.e3n };
-    twist_put(ga_twist_from_generator(o), out);
+    twist_put(ga_generator_to_twist(o), out);
 }
 static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (ga_rotor *)out); }
 static ga_mat4 cga_to_mat4(const void *g) { return ga_rotor_to_mat4(*(const ga_rotor *)g); }
@@ -264,19 +264,19 @@ static void aff_adjoint(const void *g, const double *x, double *out)
     }
     aff_vee(ga_mat4_mul(ga_mat4_mul(m, aff_hat(x)), gi), out);
 }
-/* GA_ENOTFINITE for NaN/Inf; GA_EDOMAIN if the last row is not 0 0 0 1 to
- * 1e-12 or det < 0 (a reflection: no real log); GA_ESINGULAR if det = 0. */
+/* GA_ERR_NOTFINITE for NaN/Inf; GA_ERR_DOMAIN if the last row is not 0 0 0 1 to
+ * 1e-12 or det < 0 (a reflection: no real log); GA_ERR_SINGULAR if det = 0. */
 static int aff_from_mat4(ga_mat4 m, void *out)
 {
     for (int i = 0; i < 16; ++i)
-        if (!isfinite(m.m[i])) return GA_ENOTFINITE;
+        if (!isfinite(m.m[i])) return GA_ERR_NOTFINITE;
     if (fabs(m.m[12]) > 1e-12 || fabs(m.m[13]) > 1e-12 || fabs(m.m[14]) > 1e-12
         || fabs(m.m[15] - 1.0) > 1e-12)
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     double det = m.m[0] * (m.m[5] * m.m[10] - m.m[6] * m.m[9])
                - m.m[1] * (m.m[4] * m.m[10] - m.m[6] * m.m[8])
                + m.m[2] * (m.m[4] * m.m[9] - m.m[5] * m.m[8]);
-    if (!(det > 0.0)) return det == 0.0 ? GA_ESINGULAR : GA_EDOMAIN;
+    if (!(det > 0.0)) return det == 0.0 ? GA_ERR_SINGULAR : GA_ERR_DOMAIN;
     m.m[12] = m.m[13] = m.m[14] = 0.0; m.m[15] = 1.0;
     *(ga_mat4 *)out = m;
     return GA_OK;

@@ -6,8 +6,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "path.h"
-#include "rotor.h"
+#include <garotor/path.h>
+#include <garotor/rotor.h>
 
 #define PI 3.14159265358979323846
 #define MAXD GA_GROUP_MAX_DIM
@@ -29,7 +29,7 @@ int ga_scheme_by_name(const char *name, ga_scheme *out)
 {
     for (int i = 0; name && i < 6; ++i)
         if (strcmp(name, scheme_names[i]) == 0) { *out = (ga_scheme)i; return GA_OK; }
-    return GA_EARG;
+    return GA_ERR_ARG;
 }
 
 const char *ga_eval_name(ga_eval e)
@@ -41,7 +41,7 @@ int ga_eval_by_name(const char *name, ga_eval *out)
 {
     for (int i = 0; name && i < 3; ++i)
         if (strcmp(name, eval_names[i]) == 0) { *out = (ga_eval)i; return GA_OK; }
-    return GA_EARG;
+    return GA_ERR_ARG;
 }
 
 int ga_scheme_min_keys(ga_scheme s)
@@ -109,13 +109,13 @@ static int allfinite(const double *x, size_t n)
 /* Results are checked before they are handed out: finite input can still
  * overflow on the way (a velocity divided by a subnormal segment length, a
  * lihao2 velocity scaled by a ratio h_{i+1}/h_i near DBL_MAX, products of
- * keys near DBL_MAX), and a result that is not finite is GA_EDOMAIN, never
+ * keys near DBL_MAX), and a result that is not finite is GA_ERR_DOMAIN, never
  * GA_OK with Inf or NaN (docs/errors.md; found by fuzz/fuzz_path, replayed by
  * fuzz/regress/path/velocity-subnormal-spacing and
  * fuzz/regress/path/affine-lihao3-velocity-overflow). */
 static int finite_elem(const ga_group *g, const void *x)
 {
-    return allfinite(x, g->elem_size / sizeof(double)) ? GA_OK : GA_EDOMAIN;
+    return allfinite(x, g->elem_size / sizeof(double)) ? GA_OK : GA_ERR_DOMAIN;
 }
 
 /* ---- twist branches (cga and se3: dim 6) ------------------------------------ */
@@ -207,13 +207,13 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, int n, const doubl
                   const void *keys, void *work, size_t bytes)
 {
     if (!p || !g || !times || !keys || !work || (unsigned)s > GA_SCHEME_LIHAO3)
-        return GA_EARG;
-    if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)) return GA_EARG;
+        return GA_ERR_ARG;
+    if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)) return GA_ERR_ARG;
     if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
-        return GA_EARG;
-    if (!allfinite(times, (size_t)n)) return GA_ENOTFINITE;
+        return GA_ERR_ARG;
+    if (!allfinite(times, (size_t)n)) return GA_ERR_NOTFINITE;
     for (int i = 0; i + 1 < n; ++i)
-        if (!(times[i] < times[i + 1])) return GA_EARG;
+        if (!(times[i] < times[i + 1])) return GA_ERR_ARG;
     int d = g->dim;
     double *w = work;
     memset(p, 0, sizeof *p);
@@ -251,7 +251,7 @@ static int build_lihao(ga_path *p, const double *vel)
     }
     if (p->scheme == GA_SCHEME_LIHAO3) {
         if (vel) {
-            if (!allfinite(vel, (size_t)n * d)) return GA_ENOTFINITE;
+            if (!allfinite(vel, (size_t)n * d)) return GA_ERR_NOTFINITE;
             memcpy(p->vel, vel, (size_t)n * d * sizeof(double));
         } else {
             /* default rule (path.h): s_i = plog(A_i^-1 A_{i+1})/h_i, parked in D_i */
@@ -274,7 +274,7 @@ static int build_lihao(ga_path *p, const double *vel)
         }
     } else { /* LIHAO2: the first key's velocity */
         if (vel) {
-            if (!allfinite(vel, (size_t)d)) return GA_ENOTFINITE;
+            if (!allfinite(vel, (size_t)d)) return GA_ERR_NOTFINITE;
             memcpy(p->vel, vel, d * sizeof(double));
         } else {
             if ((st = rel_log(g, key_of(p, 0), key_of(p, 1), p->vel, rel))) return st;
@@ -282,17 +282,17 @@ static int build_lihao(ga_path *p, const double *vel)
         }
     }
     /* finite input, but a default velocity plog/h or B = h V can overflow (a
-       subnormal segment): GA_EDOMAIN, not the GA_ENOTFINITE exp would give
+       subnormal segment): GA_ERR_DOMAIN, not the GA_ERR_NOTFINITE exp would give
        (fuzz/regress/path/lihao3-default-velocity-overflow-status) */
     if (!allfinite(p->vel, (size_t)(p->scheme == GA_SCHEME_LIHAO3 ? n : 1) * d))
-        return GA_EDOMAIN;
+        return GA_ERR_DOMAIN;
     for (int i = 0; i + 1 < n; ++i) {
         double h = seg_len(p, i);
         double *B = p->coef + (size_t)i * nf * d, *C = B + d, *D = C + d;
         const double *vi = p->vel + (size_t)i * d;
         /* eq. 26: B_i = velocity at the key, per unit u */
         lin(d, B, h, vi, 0.0, vi);
-        if (!allfinite(B, (size_t)d)) return GA_EDOMAIN;
+        if (!allfinite(B, (size_t)d)) return GA_ERR_DOMAIN;
         /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
         double ai[MAXE];
         if ((st = g->inverse(key_of(p, i), ai))) return st;
@@ -406,27 +406,27 @@ static int build_scheme(ga_path *p, const double *vel)
         return st;
     }
     }
-    return GA_EARG;
+    return GA_ERR_ARG;
 }
 
 /* The scheme's coefficients, which follow the keys in the workspace, must be
  * finite (see finite_elem). The keys and velocities are checked first, so a
- * GA_ENOTFINITE from inside (a log of a product of keys that overflowed) is
- * finite input overflowing: GA_EDOMAIN (found by fuzz/fuzz_path:
+ * GA_ERR_NOTFINITE from inside (a log of a product of keys that overflowed) is
+ * finite input overflowing: GA_ERR_DOMAIN (found by fuzz/fuzz_path:
  * fuzz/regress/path/cga-key-product-overflow). */
 static int build(ga_path *p, const double *vel)
 {
     const ga_group *g = p->group;
     size_t ed = g->elem_size / sizeof(double);
     for (int i = 0; i < p->n; ++i)
-        if (!allfinite(key_of(p, i), ed)) return GA_ENOTFINITE;
+        if (!allfinite(key_of(p, i), ed)) return GA_ERR_NOTFINITE;
     int nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
-    if (vel && !allfinite(vel, (size_t)nv * g->dim)) return GA_ENOTFINITE;
+    if (vel && !allfinite(vel, (size_t)nv * g->dim)) return GA_ERR_NOTFINITE;
     int st = build_scheme(p, vel);
-    if (st == GA_ENOTFINITE) return GA_EDOMAIN;
+    if (st == GA_ERR_NOTFINITE) return GA_ERR_DOMAIN;
     if (st != GA_OK) return st;
     const double *c = p->key + (size_t)p->n * p->key_stride;
-    return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_EDOMAIN;
+    return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_ERR_DOMAIN;
 }
 
 int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
@@ -454,7 +454,7 @@ int ga_path_init_mat4(ga_path *p, const ga_group *g, ga_scheme s, int n, const d
 int ga_path_locate(const ga_path *p, double t, int *seg, double *u)
 {
     int n = p->n;
-    if (!(t >= p->t[0] && t <= p->t[n - 1])) return GA_EARG; /* also NaN */
+    if (!(t >= p->t[0] && t <= p->t[n - 1])) return GA_ERR_ARG; /* also NaN */
     int lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
     while (lo < hi) {
         int mid = (lo + hi + 1) / 2;
@@ -494,7 +494,7 @@ static void gen_curve(const ga_path *p, int j, double u, double *x, double *xd)
 
 int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
 {
-    if (!p || !out || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_EARG;
+    if (!p || !out || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_ERR_ARG;
     const ga_group *g = p->group;
     int d = g->dim, nf = nfac(p->scheme), st;
     double x[MAXD], xd[MAXD];
@@ -514,7 +514,7 @@ int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
         g->compose(left, e, dst);
         left = dst;
     }
-    /* a product of finite factors can still overflow: GA_EDOMAIN, not Inf */
+    /* a product of finite factors can still overflow: GA_ERR_DOMAIN, not Inf */
     return finite_elem(g, out);
 }
 
@@ -532,7 +532,7 @@ int ga_path_eval(const ga_path *p, double t, void *out)
 {
     int seg;
     double u;
-    if (!p || !out) return GA_EARG;
+    if (!p || !out) return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
     return st ? st : eval_direct(p, seg, u, out);
 }
@@ -568,13 +568,13 @@ static int velocity_u(const ga_path *p, int seg, double u, double *v)
 
 int ga_path_velocity_segment(const ga_path *p, int seg, double u, double *v)
 {
-    if (!p || !v || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_EARG;
+    if (!p || !v || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_ERR_ARG;
     int d = p->group->dim;
     double w[MAXD];
     int st = velocity_u(p, seg, u, w);
     if (st != GA_OK) return st;
     lin(d, w, 1.0 / seg_len(p, seg), w, 0.0, w);
-    if (!allfinite(w, (size_t)d)) return GA_EDOMAIN; /* see finite_elem */
+    if (!allfinite(w, (size_t)d)) return GA_ERR_DOMAIN; /* see finite_elem */
     memcpy(v, w, (size_t)d * sizeof(double));
     return GA_OK;
 }
@@ -583,7 +583,7 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
 {
     int seg;
     double u;
-    if (!p || !v) return GA_EARG;
+    if (!p || !v) return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
     return st ? st : ga_path_velocity_segment(p, seg, u, v);
 }
@@ -687,10 +687,10 @@ static void exact_output(const ga_path_stepper *s, void *out)
 int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev, double step,
                          size_t n, double t0, double t1)
 {
-    if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT) return GA_EARG;
-    if (!isfinite(t0) || !isfinite(t1)) return GA_ENOTFINITE;
-    if (!(t0 >= p->t[0] && t1 <= p->t[p->n - 1] && t0 <= t1)) return GA_EARG;
-    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_EARG;
+    if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT) return GA_ERR_ARG;
+    if (!isfinite(t0) || !isfinite(t1)) return GA_ERR_NOTFINITE;
+    if (!(t0 >= p->t[0] && t1 <= p->t[p->n - 1] && t0 <= t1)) return GA_ERR_ARG;
+    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_ERR_ARG;
     s->path = p; s->eval = ev; s->step = step;
     s->n = n; s->k = 0;
     s->t0 = t0; s->t1 = t1;
@@ -701,7 +701,7 @@ int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev, doubl
 
 int ga_path_stepper_next(ga_path_stepper *s, void *out)
 {
-    if (!s || !out || s->k >= s->n) return GA_EARG;
+    if (!s || !out || s->k >= s->n) return GA_ERR_ARG;
     const ga_path *p = s->path;
     double t = s->k + 1 == s->n ? s->t1 : s->t0 + (double)s->k * s->dt, u;
     int seg = s->seg, st;
@@ -741,7 +741,7 @@ int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
 {
     ga_path_stepper s;
     int st = ga_path_stepper_init(&s, p, ev, step, n, t0, t1);
-    if (!out && st == GA_OK) st = GA_EARG;
+    if (!out && st == GA_OK) st = GA_ERR_ARG;
     for (size_t k = 0; st == GA_OK && k < n; ++k)
         st = ga_path_stepper_next(&s, (unsigned char *)out + k * p->group->elem_size);
     return st;
@@ -750,8 +750,8 @@ int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
 int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times,
                    void *out)
 {
-    if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT) return GA_EARG;
-    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_EARG;
+    if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT) return GA_ERR_ARG;
+    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_ERR_ARG;
     int cur = -1;
     long grid = 0;
     double A[MAXE];

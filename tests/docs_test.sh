@@ -41,7 +41,8 @@ w=$d/work
 mkdir -p "$w/build" "$w/bin" "$d/blocks"
 ln -s "$G" "$w/build/garotor"
 ln -s "$(dirname "$G")/libgarotor.a" "$w/build/libgarotor.a"
-for f in docs ga interp garotor.h; do ln -s "$src/$f" "$w/$f"; done
+for f in docs include; do ln -s "$src/$f" "$w/$f"; done
+ln -s "$(dirname "$G")/include" "$w/build/include"
 printf '#!/bin/sh\nexec "%s" "$@"\n' "$G" >"$w/bin/garotor"
 chmod +x "$w/bin/garotor"
 awk -v dir="$w" '
@@ -53,7 +54,7 @@ awk -v dir="$w" '
 [ -f "$w/point.c" ] && [ -f "$w/path.c" ] && [ ! -f "$w/unnamed.c" ] ||
     fail "docs/tutorial.md: its C blocks should be point.c and path.c, each named in its first line"
 can_cc=0
-(cd "$w" && cc -std=c11 -I. -Iga -Iinterp point.c build/libgarotor.a -lm -o point) \
+(cd "$w" && cc -std=c11 -Iinclude -Ibuild/include point.c build/libgarotor.a -lm -o point) \
     >/dev/null 2>&1 && can_cc=1
 rm -f "$w/point"
 

@@ -129,7 +129,7 @@ int main(int argc, char **argv)
     ga_twist xi = {tk_scale(u, 1e-3),
                    {1e-3 * across.x + 1e-6 * u.x, 1e-3 * across.y + 1e-6 * u.y,
                     1e-3 * across.z + 1e-6 * u.z}};
-    ga_rotor M = ga_rotor_exp(ga_generator_from_twist(xi));
+    ga_rotor M = ga_rotor_exp(ga_twist_to_generator(xi));
     ldq Mq = ldq_of(M), ref = ldq_of(ga_rotor_identity());
     ga_rotor R = ga_rotor_identity(), raw = R;
     double T = 0, w_group = 0, w_pose = 0, w_raw_group = 0, w_raw_pose = 0;
@@ -146,8 +146,7 @@ int main(int argc, char **argv)
         raw = ga_rotor_mul(M, raw);
         ref = ldq_mul(Mq, ref);
         if (k % (n / 20) == 0 || k == n) {
-            ga_vec3 t;
-            ga_rotor_quat(R, &t);
+            ga_vec3 t = ga_rotor_to_translation(R);
             T = fmax(T, tk_norm(t));
             double g = group_err(ldq_of(R)), p = pose_err(R, ref);
             double rg = group_err(ldq_of(raw)), rp = pose_err(raw, ref);

@@ -72,19 +72,18 @@ int main(int argc, char **argv)
     long failed_logs = 0;
     for (long i = 0; i < n; i++) {
         ga_twist xi = tk_twist(&rng, f);
-        ga_generator B = ga_generator_from_twist(xi), L;
+        ga_generator B = ga_twist_to_generator(xi), L;
         ga_rotor R = ga_rotor_exp(B);
         if (ga_rotor_log(R, &L) != GA_OK) {
             failed_logs++;
             tk_add(&el, INFINITY);
             continue;
         }
-        ga_vec3 t;
-        ga_rotor_quat(R, &t);
+        ga_vec3 t = ga_rotor_to_translation(R);
         tk_add(&el, rotor_dist_pm(ga_rotor_exp(L), R) / fmax(1.0, tk_norm(t)));
         double d = gen_dist(L, B);
         if (f == TK_ROT_PI)
-            d = fmin(d, gen_dist(L, ga_generator_from_twist(half_turn_other(xi))));
+            d = fmin(d, gen_dist(L, ga_twist_to_generator(half_turn_other(xi))));
         tk_add(&le, d / fmax(1.0, tk_norm(xi.v)));
     }
     printf("family %d: %s, %ld round trips\n", f, tk_family_name[f], n);

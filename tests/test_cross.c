@@ -19,7 +19,7 @@
  * Its backward error is 1e-13 on the well-conditioned families; within 1e-9
  * rad of a half turn it grows (measured ~3e-12 there), and at a rounded
  * half turn a square root can take a non-principal branch. There the
- * contract is: GA_EDOMAIN, or a result whose exp reproduces M to
+ * contract is: GA_ERR_DOMAIN, or a result whose exp reproduces M to
  * GA_LOGM_BACKWARD_TOL; never a confident wrong log.
  */
 #include "testkit.h"
@@ -56,14 +56,14 @@ int main(void)
     tk_check log_rs = tk_begin("log: l(R) = se3_log, both ways (angle < pi)", 1e-13);
     tk_check back = tk_begin("log at exactly pi: backward error of l(R) and se3_log", 1e-13);
     tk_check back_g = tk_begin("log: backward error of the general logm, all but the half turns", 1e-13);
-    tk_check back_near = tk_begin("logm within 1e-9 of pi: backward error when not GA_EDOMAIN",
+    tk_check back_near = tk_begin("logm within 1e-9 of pi: backward error when not GA_ERR_DOMAIN",
                                   GA_LOGM_BACKWARD_TOL);
     long pi_domain = 0, pi_cases = 0, status_fail = 0;
 
     for (int f = 0; f < TK_FAMILIES; f++) {
         for (int k = 0; k < N_PER_FAMILY; k++) {
             ga_twist xi = tk_twist(&rng, f);
-            ga_mat4 rotor_m = ga_rotor_to_mat4(ga_rotor_exp(ga_generator_from_twist(xi)));
+            ga_mat4 rotor_m = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(xi)));
             ga_mat4 se3_m = ga_se3_exp(xi), pade_m;
             if (ga_mat4_expm(ga_twist_hat(xi), &pade_m) != GA_OK) {
                 status_fail++;
@@ -82,13 +82,13 @@ int main(void)
                 status_fail++;
                 continue;
             }
-            by_rotor = ga_twist_from_generator(b);
+            by_rotor = ga_generator_to_twist(b);
             ga_mat4 logm;
             int st = ga_mat4_logm(se3_m, &logm);
             ga_mat4 back_m;
             if (f == TK_ROT_PI) {
                 pi_cases++;
-                pi_domain += st == GA_EDOMAIN;
+                pi_domain += st == GA_ERR_DOMAIN;
                 if (st == GA_OK && ga_mat4_expm(logm, &back_m) == GA_OK)
                     tk_add(&back_near, mat_err(back_m, se3_m, se3_m));
                 tk_add(&back, mat_err(ga_se3_exp(by_rotor), se3_m, se3_m));
@@ -100,8 +100,8 @@ int main(void)
             tk_add(&log_rs, twist_err(by_rotor, by_se3));
             tk_add(&log_rs, twist_err(by_se3, by_rotor));
             if (st != GA_OK) {
-                /* GA_EDOMAIN is the contract within rounding of a half turn */
-                status_fail += !(st == GA_EDOMAIN && f == TK_ROT_NEAR_PI);
+                /* GA_ERR_DOMAIN is the contract within rounding of a half turn */
+                status_fail += !(st == GA_ERR_DOMAIN && f == TK_ROT_NEAR_PI);
                 continue;
             }
             double th = tk_norm(xi.w);
@@ -125,7 +125,7 @@ int main(void)
     tk_end(&back_near);
     tk_end(&back);
     char what[128];
-    printf("     logm at exactly pi: GA_EDOMAIN in %ld of %ld cases, the rest checked above\n",
+    printf("     logm at exactly pi: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n",
            pi_domain, pi_cases);
     snprintf(what, sizeof what, "no unexpected failure status (%ld)", status_fail);
     tk_expect(status_fail == 0, what);

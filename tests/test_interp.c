@@ -316,7 +316,7 @@ static void test_keys(tk_rng *r)
             set_scale(&kk);
             pathbuf b;
             int st = mkpath(&b, gs[gi], s, &kk, NULL);
-            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_EDOMAIN || st == GA_ESINGULAR)) {
+            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_ERR_DOMAIN || st == GA_ERR_SINGULAR)) {
                 ++skipped; /* Li-Hao's chained quadratic: velocities grow along the keys */
                 continue;
             }
@@ -391,7 +391,7 @@ static void test_c1(tk_rng *r)
             const double *vv = s == GA_SCHEME_LIHAO3 && trial % 2 ? vel
                              : s == GA_SCHEME_LIHAO2 && trial % 2 ? vel : NULL;
             int st = mkpath(&b, gs[gi], s, &kk, vv);
-            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_EDOMAIN || st == GA_ESINGULAR)) { ++skipped; continue; }
+            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_ERR_DOMAIN || st == GA_ERR_SINGULAR)) { ++skipped; continue; }
             if (st) { check(0, "path init (C1 test)", st, 0); printf("  (%s on %s)\n", ga_scheme_name(s), gs[gi]->name); continue; }
             /* equalities of velocities hold to rounding amplified by Ad of the
              * factors: on affine keys, by their condition number */
@@ -861,7 +861,7 @@ static void test_affine(tk_rng *r)
         for (int si = 0; si < 3; ++si) {
             pathbuf a, b;
             int s1 = mkpath(&a, &ga_group_affine, ss[si], &k, NULL), s2 = mkpath(&b, &ga_group_se3, ss[si], &k, NULL);
-            if (s1 == GA_EDOMAIN) continue; /* a relative motion near a half turn: no real logm */
+            if (s1 == GA_ERR_DOMAIN) continue; /* a relative motion near a half turn: no real logm */
             check(s1 == GA_OK && s2 == GA_OK, "affine/se3 init", s1 ? s1 : s2, 0);
             if (s1 || s2) continue;
             for (int j = 0; j <= 20; ++j) {
@@ -993,52 +993,52 @@ static void test_errors(void)
     pathbuf b;
     int st;
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_SCREW, 1, k.t, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_EARG, "screw with 1 key -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "screw with 1 key -> GA_ERR_ARG", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_SMOOTH, 2, k.t, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_EARG, "smooth with 2 keys -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "smooth with 2 keys -> GA_ERR_ARG", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_EARG, "quadratic with 4 keys -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "quadratic with 4 keys -> GA_ERR_ARG", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_LIHAO3, 0, k.t, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_EARG, "lihao3 with 0 keys -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "lihao3 with 0 keys -> GA_ERR_ARG", st, 0);
     double t2[4] = { 0, 1, 1, 2 }, t3[4] = { 0, 2, 1, 3 }, t4[4] = { 0, NAN, 1, 3 };
     st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_LIHAO2, 4, t2, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_EARG, "equal times -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "equal times -> GA_ERR_ARG", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_BIVECTOR, 4, t3, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_EARG, "decreasing times -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "decreasing times -> GA_ERR_ARG", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_BIVECTOR, 4, t4, k.m, NULL, b.work, sizeof b.work);
-    check(st == GA_ENOTFINITE, "NaN time -> GA_ENOTFINITE", st, 0);
+    check(st == GA_ERR_NOTFINITE, "NaN time -> GA_ERR_NOTFINITE", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
                            ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4) - 8);
-    check(st == GA_EARG, "small workspace -> GA_EARG", st, 0);
+    check(st == GA_ERR_ARG, "small workspace -> GA_ERR_ARG", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
                            ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4));
     check(st == GA_OK, "exact workspace size suffices", st, 0);
     double out[16];
-    check(ga_path_eval(&b.p, 3.5, out) == GA_EARG, "t after the last key -> GA_EARG", 0, 0);
-    check(ga_path_eval(&b.p, NAN, out) == GA_EARG, "t NaN -> GA_EARG", 0, 0);
+    check(ga_path_eval(&b.p, 3.5, out) == GA_ERR_ARG, "t after the last key -> GA_ERR_ARG", 0, 0);
+    check(ga_path_eval(&b.p, NAN, out) == GA_ERR_ARG, "t NaN -> GA_ERR_ARG", 0, 0);
     ga_path_stepper s;
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EULER, 0.0, 10, 0, 3) == GA_EARG, "Euler step 0 -> GA_EARG", 0, 0);
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EULER, 0.0, 10, 0, 3) == GA_ERR_ARG, "Euler step 0 -> GA_ERR_ARG", 0, 0);
     check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EXACT, 0, 1, 1.5, 1.5) == GA_OK
-          && ga_path_stepper_next(&s, out) == GA_OK && ga_path_stepper_next(&s, out) == GA_EARG,
-          "one-sample stepper, then GA_EARG", 0, 0);
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, 2, 1) == GA_EARG, "t0 > t1 -> GA_EARG", 0, 0);
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, -1, 1) == GA_EARG, "t0 before keys -> GA_EARG", 0, 0);
+          && ga_path_stepper_next(&s, out) == GA_OK && ga_path_stepper_next(&s, out) == GA_ERR_ARG,
+          "one-sample stepper, then GA_ERR_ARG", 0, 0);
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, 2, 1) == GA_ERR_ARG, "t0 > t1 -> GA_ERR_ARG", 0, 0);
+    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, -1, 1) == GA_ERR_ARG, "t0 before keys -> GA_ERR_ARG", 0, 0);
     double nanv[4 * 6];
     for (int i = 0; i < 24; ++i) nanv[i] = NAN;
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, nanv, b.work, sizeof b.work);
-    check(st == GA_ENOTFINITE, "NaN velocity -> GA_ENOTFINITE", st, 0);
+    check(st == GA_ERR_NOTFINITE, "NaN velocity -> GA_ERR_NOTFINITE", st, 0);
     ga_mat4 nr[4];
     memcpy(nr, k.m, sizeof nr);
     nr[2].m[0] = 1.1;
     st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
-    check(st == GA_ENOTRIGID, "non-rigid key on cga -> GA_ENOTRIGID", st, 0);
+    check(st == GA_ERR_NOTRIGID, "non-rigid key on cga -> GA_ERR_NOTRIGID", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
-    check(st == GA_ENOTRIGID, "non-rigid key on se3 -> GA_ENOTRIGID", st, 0);
+    check(st == GA_ERR_NOTRIGID, "non-rigid key on se3 -> GA_ERR_NOTRIGID", st, 0);
     st = ga_path_init_mat4(&b.p, &ga_group_affine, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
     check(st == GA_OK, "scaled key on affine -> ok", st, 0);
     ga_scheme sc;
     check(ga_scheme_by_name("smooth", &sc) == GA_OK && sc == GA_SCHEME_SMOOTH, "scheme by name", 0, 0);
-    check(ga_scheme_by_name("nope", &sc) == GA_EARG, "unknown scheme -> GA_EARG", 0, 0);
+    check(ga_scheme_by_name("nope", &sc) == GA_ERR_ARG, "unknown scheme -> GA_ERR_ARG", 0, 0);
     check(ga_group_by_name("matrix") == &ga_group_se3 && ga_group_by_name("x") == NULL, "group by name", 0, 0);
     printf("bad input: too few keys, equal/decreasing/NaN times, small workspace, t out of range,\n"
            "           step 0, NaN velocity, non-rigid keys: all rejected with their codes\n");

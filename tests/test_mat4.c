@@ -259,7 +259,7 @@ int main(void)
      * error is bounded by its condition number th / sin th (the divided
      * difference of log over the eigenvalues e^{+-i th}) times eps: the
      * tolerance is 1e-13 times that. Near th = pi logm verifies its result
-     * (backward error <= GA_LOGM_BACKWARD_TOL) and otherwise says GA_EDOMAIN;
+     * (backward error <= GA_LOGM_BACKWARD_TOL) and otherwise says GA_ERR_DOMAIN;
      * that answer is accepted only when pi - th <= 1e-10 max(1, |t|), the
      * band mat4.h documents (measured: it starts near 1e-11 rad). */
     {
@@ -275,7 +275,7 @@ int main(void)
             double th = tk_norm(l1.w), e;
             double cond = th > 0 ? th / sin(th) : 1.0;
             double margin = (PI - th) / fmax(1.0, trans_len(m));
-            if (st == GA_EDOMAIN && margin <= 1e-10) {
+            if (st == GA_ERR_DOMAIN && margin <= 1e-10) {
                 domain++;
                 domain_max = fmax(domain_max, margin);
                 continue;
@@ -292,7 +292,7 @@ int main(void)
         }
         for (int f = 0; f < 6; f++)
             printf("       %-44s worst %.3e x 1e-13 th/sin th\n", family_name[f], worst[f]);
-        printf("       GA_EDOMAIN within rounding of pi: %ld cases, (pi - th)/max(1,|t|) <= %.2e\n",
+        printf("       GA_ERR_DOMAIN within rounding of pi: %ld cases, (pi - th)/max(1,|t|) <= %.2e\n",
                domain, domain_max);
         report("logm(M) = hat(se3_log(M)), / (1e-13 th/sin th)", N_TWISTS, all, 1.0);
         /* Tiny rotations under large translations: logm's w keeps relative
@@ -446,66 +446,66 @@ int main(void)
         ga_mat4 id = ga_mat4_identity(), m;
         ga_twist tw, t0 = {{1, 2, 3}, {4, 5, 6}};
         m = id; m.m[6] = NAN;
-        expect_fail("mat4_inverse(NaN)", ga_mat4_inverse, m, GA_ENOTFINITE);
-        expect_fail("mat4_expm(NaN)", ga_mat4_expm, m, GA_ENOTFINITE);
-        expect_fail("mat4_logm(NaN)", ga_mat4_logm, m, GA_ENOTFINITE);
+        expect_fail("mat4_inverse(NaN)", ga_mat4_inverse, m, GA_ERR_NOTFINITE);
+        expect_fail("mat4_expm(NaN)", ga_mat4_expm, m, GA_ERR_NOTFINITE);
+        expect_fail("mat4_logm(NaN)", ga_mat4_logm, m, GA_ERR_NOTFINITE);
         m = id; m.m[3] = INFINITY;
-        expect_fail("mat4_expm(Inf)", ga_mat4_expm, m, GA_ENOTFINITE);
-        expect_fail("mat4_logm(Inf)", ga_mat4_logm, m, GA_ENOTFINITE);
+        expect_fail("mat4_expm(Inf)", ga_mat4_expm, m, GA_ERR_NOTFINITE);
+        expect_fail("mat4_logm(Inf)", ga_mat4_logm, m, GA_ERR_NOTFINITE);
         tw = t0;
-        expect("se3_log(Inf)", ga_se3_log(m, &tw), GA_ENOTFINITE);
-        expect("se3_check(Inf)", ga_se3_check(m, 1e-9), GA_ENOTFINITE);
+        expect("se3_log(Inf)", ga_se3_log(m, &tw), GA_ERR_NOTFINITE);
+        expect("se3_check(Inf)", ga_se3_check(m, 1e-9), GA_ERR_NOTFINITE);
         m = id; m.m[0] = NAN;
-        expect("se3_log(NaN)", ga_se3_log(m, &tw), GA_ENOTFINITE);
+        expect("se3_log(NaN)", ga_se3_log(m, &tw), GA_ERR_NOTFINITE);
         m = id; m.m[0] = m.m[5] = m.m[10] = 1.001;
-        expect("se3_log(scaled R)", ga_se3_log(m, &tw), GA_ENOTRIGID);
+        expect("se3_log(scaled R)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
         m = id; m.m[1] = 1e-6;
-        expect("se3_log(sheared R)", ga_se3_log(m, &tw), GA_ENOTRIGID);
+        expect("se3_log(sheared R)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
         m = id; m.m[0] = -1;
-        expect("se3_log(reflection)", ga_se3_log(m, &tw), GA_ENOTRIGID);
+        expect("se3_log(reflection)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
         m = id; m.m[12] = 0.5;
-        expect("se3_log(last row 0.5 0 0 1)", ga_se3_log(m, &tw), GA_ENOTRIGID);
+        expect("se3_log(last row 0.5 0 0 1)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
         m = id; m.m[15] = 2;
-        expect("se3_log(last row 0 0 0 2)", ga_se3_log(m, &tw), GA_ENOTRIGID);
+        expect("se3_log(last row 0 0 0 2)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
         expect("... output untouched", tw.w.x == 1 && tw.v.z == 6, 1);
         m = ga_se3_exp(t0); m.m[0] += 1e-12; /* slightly off: accepted */
         expect("se3_log(R off by 1e-12)", ga_se3_log(m, &tw), GA_OK);
         m.m[0] += 1e-8; /* far off */
-        expect("se3_log(R off by 1e-8)", ga_se3_log(m, &tw), GA_ENOTRIGID);
-        expect("se3_check(I, NaN tol)", ga_se3_check(id, NAN), GA_ENOTRIGID);
+        expect("se3_log(R off by 1e-8)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
+        expect("se3_check(I, NaN tol)", ga_se3_check(id, NAN), GA_ERR_NOTRIGID);
 
         m = id;
         for (int k = 0; k < 4; k++) m.m[5 * k] = 1000;
-        expect_fail("mat4_expm(1000 I) overflows", ga_mat4_expm, m, GA_EDOMAIN);
+        expect_fail("mat4_expm(1000 I) overflows", ga_mat4_expm, m, GA_ERR_DOMAIN);
         for (int k = 0; k < 4; k++) m.m[5 * k] = -1000;
         ga_mat4 r;
         expect("mat4_expm(-1000 I) underflows to 0", ga_mat4_expm(m, &r) == GA_OK && ga_mat4_norm1(r) == 0, 1);
         m = id; m.m[0] = DBL_MAX; m.m[4] = DBL_MAX;
-        expect_fail("mat4_expm(entries DBL_MAX)", ga_mat4_expm, m, GA_EDOMAIN);
+        expect_fail("mat4_expm(entries DBL_MAX)", ga_mat4_expm, m, GA_ERR_DOMAIN);
 
         expect_fail("mat4_logm(half turn diag(1,-1,-1,1))", ga_mat4_logm,
-                    mat((double[16]){1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1}), GA_EDOMAIN);
+                    mat((double[16]){1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1}), GA_ERR_DOMAIN);
         expect_fail("mat4_logm(diag(-2,-3,1,1)), det > 0", ga_mat4_logm,
-                    mat((double[16]){-2, 0, 0, 0, 0, -3, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}), GA_EDOMAIN);
+                    mat((double[16]){-2, 0, 0, 0, 0, -3, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}), GA_ERR_DOMAIN);
         expect_fail("mat4_logm(-I)", ga_mat4_logm,
-                    mat((double[16]){-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1}), GA_EDOMAIN);
+                    mat((double[16]){-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1}), GA_ERR_DOMAIN);
         expect_fail("mat4_logm(Jordan block at -1)", ga_mat4_logm,
-                    mat((double[16]){-1, 1, 0, 0, 0, -1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1}), GA_EDOMAIN);
+                    mat((double[16]){-1, 1, 0, 0, 0, -1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1}), GA_ERR_DOMAIN);
         expect_fail("mat4_logm(det < 0: a negative eigenvalue)", ga_mat4_logm,
-                    mat((double[16]){2, 1, 0, 3, 1, -0.5, 1, 0, 0, 0.2, 1, 0, 0, 0, 0, 1}), GA_EDOMAIN);
+                    mat((double[16]){2, 1, 0, 3, 1, -0.5, 1, 0, 0, 0.2, 1, 0, 0, 0, 0, 1}), GA_ERR_DOMAIN);
         ga_mat4 sing = mat((double[16]){1, 2, 3, 0, 2, 4, 6, 0, 1, 1, 1, 0, 0, 0, 0, 1});
-        expect_fail("mat4_logm(rank 3)", ga_mat4_logm, sing, GA_ESINGULAR);
-        expect_fail("mat4_inverse(rank 3)", ga_mat4_inverse, sing, GA_ESINGULAR);
+        expect_fail("mat4_logm(rank 3)", ga_mat4_logm, sing, GA_ERR_SINGULAR);
+        expect_fail("mat4_inverse(rank 3)", ga_mat4_inverse, sing, GA_ERR_SINGULAR);
         m = id; m.m[10] = 0;
-        expect_fail("mat4_logm(diag(1,1,0,1))", ga_mat4_logm, m, GA_ESINGULAR);
-        expect_fail("mat4_inverse(0)", ga_mat4_inverse, mat((double[16]){0}), GA_ESINGULAR);
+        expect_fail("mat4_logm(diag(1,1,0,1))", ga_mat4_logm, m, GA_ERR_SINGULAR);
+        expect_fail("mat4_inverse(0)", ga_mat4_inverse, mat((double[16]){0}), GA_ERR_SINGULAR);
 
         ga_mat4 g = sentinel();
-        expect("se3_geodesic(t = NaN)", ga_se3_geodesic(id, id, NAN, &g), GA_ENOTFINITE);
+        expect("se3_geodesic(t = NaN)", ga_se3_geodesic(id, id, NAN, &g), GA_ERR_NOTFINITE);
         m = id; m.m[0] = 2;
-        expect("se3_geodesic(h1 not rigid)", ga_se3_geodesic(id, m, 0.5, &g), GA_ENOTRIGID);
+        expect("se3_geodesic(h1 not rigid)", ga_se3_geodesic(id, m, 0.5, &g), GA_ERR_NOTRIGID);
         m = id; m.m[7] = NAN;
-        expect("se3_geodesic(h0 NaN)", ga_se3_geodesic(m, id, 0.5, &g), GA_ENOTFINITE);
+        expect("se3_geodesic(h0 NaN)", ga_se3_geodesic(m, id, 0.5, &g), GA_ERR_NOTFINITE);
         expect("... output untouched", is_sentinel(g), 1);
     }
 

@@ -1,7 +1,7 @@
 /* tests/test_rotor.c: the compact rotor, exp and l(R), screws and the bridge,
  * checked against the full algebra (mv.h, conformal.h) and independent
  * references computed here (Taylor series with scaling and squaring, in double
- * through ga_gp and in long double for 4x4 matrices; quaternion SLERP; the
+ * through ga_mv_gp and in long double for 4x4 matrices; quaternion SLERP; the
  * helix of Wareham-Lasenby §4.1).
  *
  *   test_rotor [M]   runs M times the default counts (M = 100: 1e6 per family).
@@ -11,9 +11,9 @@
  * steps the formula takes, times the size of what is compared. Exits nonzero
  * on any failure.
  */
-#include "rotor.h"
-#include "conformal.h"
-#include "mat4.h"
+#include <garotor/rotor.h>
+#include <garotor/conformal.h>
+#include <garotor/mat4.h>
 
 #include <float.h>
 #include <math.h>
@@ -109,14 +109,14 @@ static double gdiff(ga_generator a, ga_generator b)
 static ga_mv gen_mv(ga_generator g)
 {
     ga_mv m = ga_mv_zero();
-    m.c[GA_E12] = g.e12, m.c[GA_E13] = g.e13, m.c[GA_E23] = g.e23;
-    m.c[GA_E14] = m.c[GA_E15] = g.e1n;
-    m.c[GA_E24] = m.c[GA_E25] = g.e2n;
-    m.c[GA_E34] = m.c[GA_E35] = g.e3n;
+    m.c[GA_BLADE_E12] = g.e12, m.c[GA_BLADE_E13] = g.e13, m.c[GA_BLADE_E23] = g.e23;
+    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = g.e1n;
+    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = g.e2n;
+    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = g.e3n;
     return m;
 }
 static ga_twist twist(ga_vec3 w, ga_vec3 v) { ga_twist t = {w, v}; return t; }
-static ga_generator gen(ga_vec3 w, ga_vec3 v) { return ga_generator_from_twist(twist(w, v)); }
+static ga_generator gen(ga_vec3 w, ga_vec3 v) { return ga_twist_to_generator(twist(w, v)); }
 
 /* ---- reporting ----------------------------------------------------------- */
 static void track(double *worst, double e)
@@ -141,11 +141,11 @@ static void expect(int cond, const char *what)
 
 /* ---- references ------------------------------------------------------------ */
 
-/* exp(B) in the full algebra: Taylor series of ga_gp with scaling and squaring.
+/* exp(B) in the full algebra: Taylor series of ga_mv_gp with scaling and squaring.
  * Powers of B = beta I3 + c n grow like |beta|^k + k |beta|^(k-1) |c| (c n is
  * nilpotent), so the scaling is chosen by |beta| alone: |beta| / 2^k <= 1/8,
  * where 14 terms leave < 1e-20. *k_out = k (each squaring doubles the error).
- * The c n c n terms cancel inside ga_gp's sums, which costs EPS |c|^2 in the
+ * The c n c n terms cancel inside ga_mv_gp's sums, which costs EPS |c|^2 in the
  * scalar part; so the series is summed for c / |c| and the n part scaled by |c|
  * afterwards (exp is affine in c: (c n) X (c n) = 0 for every even X). */
 static ga_rotor mv_exp(ga_generator g, int *k_out)
@@ -156,18 +156,18 @@ static ga_rotor mv_exp(ga_generator g, int *k_out)
     int k = 0;
     while (nb > 0.125)
         nb *= 0.5, k++;
-    ga_mv X = ga_scale(gen_mv(gu), ldexp(1.0, -k)), E = ga_mv_scalar(1.0), T = E;
+    ga_mv X = ga_mv_scale(gen_mv(gu), ldexp(1.0, -k)), E = ga_mv_scalar(1.0), T = E;
     for (int j = 1; j <= 14; j++) {
-        T = ga_scale(ga_gp(T, X), 1.0 / j);
-        E = ga_add(E, T);
+        T = ga_mv_scale(ga_mv_gp(T, X), 1.0 / j);
+        E = ga_mv_add(E, T);
     }
     for (int i = 0; i < k; i++)
-        E = ga_gp(E, E);
+        E = ga_mv_gp(E, E);
     *k_out = k;
     ga_rotor r;
     expect(ga_rotor_from_mv(E, 1e-6, &r) == GA_OK, "full-algebra exp lies in the 8-component form");
-    ga_rotor raw = {E.c[GA_S], E.c[GA_E12], E.c[GA_E13], E.c[GA_E23],
-                    nc * E.c[GA_E14], nc * E.c[GA_E24], nc * E.c[GA_E34], nc * E.c[GA_E1234]};
+    ga_rotor raw = {E.c[GA_BLADE_SCALAR], E.c[GA_BLADE_E12], E.c[GA_BLADE_E13], E.c[GA_BLADE_E23],
+                    nc * E.c[GA_BLADE_E14], nc * E.c[GA_BLADE_E24], nc * E.c[GA_BLADE_E34], nc * E.c[GA_BLADE_E1234]};
     return raw;
 }
 
@@ -269,28 +269,28 @@ static void check_product(long n)
     double w_mul = 0, w_rev = 0, w_out = 0, w_conv = 0;
     for (long i = 0; i < n; i++) {
         ga_rotor a = rnd_rotor8(rnd_logu(1e-3, 1e3)), b = rnd_rotor8(rnd_logu(1e-3, 1e3));
-        ga_mv full = ga_gp(ga_rotor_to_mv(a), ga_rotor_to_mv(b));
+        ga_mv full = ga_mv_gp(ga_rotor_to_mv(a), ga_rotor_to_mv(b));
         ga_rotor c = ga_rotor_mul(a, b);
         double scale = rmaxabs(a) * rmaxabs(b);
         /* each coefficient: 8 products summed (compact) vs up to 16 (full) */
-        track(&w_mul, ga_mv_maxabs(ga_sub(full, ga_rotor_to_mv(c))) / scale);
+        track(&w_mul, ga_mv_maxabs(ga_mv_sub(full, ga_rotor_to_mv(c))) / scale);
         ga_mv rest = full; /* closure: nothing outside the 8-component form */
-        rest.c[GA_E14] -= rest.c[GA_E15], rest.c[GA_E24] -= rest.c[GA_E25];
-        rest.c[GA_E34] -= rest.c[GA_E35], rest.c[GA_E1234] -= rest.c[GA_E1235];
-        const int in[8] = {GA_S, GA_E12, GA_E13, GA_E23, GA_E15, GA_E25, GA_E35, GA_E1235};
+        rest.c[GA_BLADE_E14] -= rest.c[GA_BLADE_E15], rest.c[GA_BLADE_E24] -= rest.c[GA_BLADE_E25];
+        rest.c[GA_BLADE_E34] -= rest.c[GA_BLADE_E35], rest.c[GA_BLADE_E1234] -= rest.c[GA_BLADE_E1235];
+        const int in[8] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E15, GA_BLADE_E25, GA_BLADE_E35, GA_BLADE_E1235};
         for (int k = 0; k < 8; k++)
             rest.c[in[k]] = 0;
         track(&w_out, ga_mv_maxabs(rest) / scale);
-        track(&w_rev, ga_mv_maxabs(ga_sub(ga_reverse(ga_rotor_to_mv(a)),
+        track(&w_rev, ga_mv_maxabs(ga_mv_sub(ga_mv_reverse(ga_rotor_to_mv(a)),
                                           ga_rotor_to_mv(ga_rotor_reverse(a)))));
         ga_generator g = gen(vscale(rnd_unit(), 3 * rnd_u()), vscale(rnd_unit(), rnd_logu(1e-3, 1e3)));
         ga_rotor r = ga_rotor_exp(g), back;
         int st = ga_rotor_from_mv(ga_rotor_to_mv(r), 1e-9, &back);
         track(&w_conv, st == GA_OK ? rdiff(back, r) / fmax(1, rmaxabs(r)) : INFINITY);
     }
-    report("ga_rotor_mul vs ga_gp, / (max|a| max|b|)", w_mul, 32 * EPS);
-    report("ga_gp of two rotor forms: outside the 8 components", w_out, 32 * EPS);
-    report("ga_rotor_reverse vs ga_reverse (exact)", w_rev, 0.0);
+    report("ga_rotor_mul vs ga_mv_gp, / (max|a| max|b|)", w_mul, 32 * EPS);
+    report("ga_mv_gp of two rotor forms: outside the 8 components", w_out, 32 * EPS);
+    report("ga_rotor_reverse vs ga_mv_reverse (exact)", w_rev, 0.0);
     report("to_mv -> from_mv round trip (with projection)", w_conv, 8 * EPS);
 }
 
@@ -303,16 +303,16 @@ static void check_action(long n)
         ga_generator g = gen(vscale(rnd_unit(), 4 * rnd_u()), vscale(rnd_unit(), tl));
         ga_rotor r = ga_rotor_exp(g);
         ga_vec3 x = vscale(rnd_unit(), xl), y = ga_rotor_apply(r, x), yf;
-        ga_mv X = ga_rotor_apply_mv(r, ga_point(x));
-        int st = ga_down(X, &yf);
+        ga_mv X = ga_rotor_apply_mv(r, ga_point_up(x));
+        int st = ga_point_down(X, &yf);
         /* the sandwich multiplies coefficients of size (1 + |t|)^2 (1 + |x|^2):
            its rounding, relative to that, is a few dozen EPS */
         double scale = (1 + tl) * (1 + tl) * (1 + xl * xl);
         track(&w_pt, st == GA_OK ? vmaxabs(vsub(y, yf)) / scale : INFINITY);
-        track(&w_null, ga_mv_maxabs(ga_sub(X, ga_point(y))) / scale);
+        track(&w_null, ga_mv_maxabs(ga_mv_sub(X, ga_point_up(y))) / scale);
         ga_mv Rm = ga_rotor_to_mv(r);
-        track(&w_n, ga_mv_maxabs(ga_sub(ga_rotor_apply_mv(r, ga_n()), ga_n())) / ((1 + tl) * (1 + tl)));
-        track(&w_rr, ga_mv_maxabs(ga_sub(ga_gp(Rm, ga_reverse(Rm)), ga_mv_scalar(1))) / ((1 + tl) * (1 + tl)));
+        track(&w_n, ga_mv_maxabs(ga_mv_sub(ga_rotor_apply_mv(r, ga_mv_n()), ga_mv_n())) / ((1 + tl) * (1 + tl)));
+        track(&w_rr, ga_mv_maxabs(ga_mv_sub(ga_mv_gp(Rm, ga_mv_reverse(Rm)), ga_mv_scalar(1))) / ((1 + tl) * (1 + tl)));
         /* R2 R1 means R1 first */
         ga_rotor r2 = ga_rotor_exp(gen(vscale(rnd_unit(), 3 * rnd_u()), vscale(rnd_unit(), 10 * rnd_u())));
         ga_vec3 z1 = ga_rotor_apply(ga_rotor_mul(r2, r), x), z2 = ga_rotor_apply(r2, y);
@@ -330,7 +330,7 @@ static void check_action(long n)
     ga_vec3 tr = ga_rotor_apply(ga_rotor_exp(gen(v3(0, 0, 0), v3(1, 2, 3))), v3(1, 1, 1));
     expect(tr.x == 2 && tr.y == 3 && tr.z == 4, "v = (1,2,3) translates by (1,2,3)");
     ga_vec3 ta = ga_rotor_apply(ga_rotor_translation(v3(1, -2, 5)), v3(0, 0, 0)), tf;
-    ga_down(ga_rotor_apply_mv(ga_rotor_translation(v3(1, -2, 5)), ga_point(v3(0, 0, 0))), &tf);
+    ga_point_down(ga_rotor_apply_mv(ga_rotor_translation(v3(1, -2, 5)), ga_point_up(v3(0, 0, 0))), &tf);
     expect(ta.x == 1 && ta.y == -2 && ta.z == 5 && fabs(tf.x - 1) + fabs(tf.y + 2) + fabs(tf.z - 5) < 16 * EPS,
            "T_a = 1 + n a/2 translates by +a (W-L §2.2)");
     ga_vec3 rr = ga_rotor_apply(ga_rotor_rotation(v3(0, 0, 2), PI / 2), v3(1, 0, 0));
@@ -340,7 +340,7 @@ static void check_action(long n)
 /* exp of the closed form vs the full-algebra Taylor series. */
 static void check_exp_series(long n)
 {
-    printf("closed-form exp (Thm 3) vs Taylor series of ga_gp with scaling and squaring\n");
+    printf("closed-form exp (Thm 3) vs Taylor series of ga_mv_gp with scaling and squaring\n");
     double worst = 0, wr = 0;
     for (long i = 0; i < n; i++) {
         double tl = rnd_logu(1e-6, 1e3);
@@ -408,7 +408,7 @@ static void check_exp_log(long n)
             make(fam[f].kind, fam[f].angle, &w, &v);
             ga_generator B = gen(w, v), L;
             ga_rotor R = ga_rotor_exp(B), Rin = R;
-            ga_rotor_quat(R, &t);
+            t = ga_rotor_to_translation(R);
             double scale = fmax(1, fmax(vnorm(v), vnorm(t)));
             if (fam[f].kind == 5) { /* drift every coefficient by ~1e-12 relative */
                 for (int k = 0; k < 8; k++) {
@@ -441,7 +441,7 @@ static void check_exp_log(long n)
             track(&w_litneg, st == GA_OK ? rdiff(ga_rotor_exp(L), Rn) / scale * sphi : INFINITY);
             if (fam[f].kind == 3) { /* the rotation itself, relative to its own size */
                 ga_rotor_log(R, &L);
-                ga_twist xi = ga_twist_from_generator(L);
+                ga_twist xi = ga_generator_to_twist(L);
                 track(&w_rot, vnorm(vsub(xi.w, w)) / vnorm(w));
             }
         }
@@ -487,7 +487,7 @@ static void check_matrix(long n)
                   : kind == 2 ? PI : 3 * PI * rnd_u();
         double tl = rnd_logu(1e-6, 1e3);
         ga_twist xi = twist(vscale(rnd_unit(), th), vscale(rnd_unit(), tl));
-        ga_rotor r = ga_rotor_exp(ga_generator_from_twist(xi)), back;
+        ga_rotor r = ga_rotor_exp(ga_twist_to_generator(xi)), back;
         ga_mat4 M = ga_rotor_to_mat4(r), E = expm_ref(xi);
         /* near a turn of 2 pi the motion's translation can be far below |v|, but
            sinc(theta/2) c_perp still carries the rounding of theta/2, EPS |v|:
@@ -529,7 +529,7 @@ static void check_quat(long n)
         ga_vec3 u = rnd_unit();
         double th = 2 * PI * rnd_u();
         ga_rotor rot = ga_rotor_rotation(u, th);
-        ga_quat q = ga_rotor_quat(rot, NULL);
+        ga_quat q = ga_rotor_to_quat(rot);
         ga_quat qe = {cos(th / 2), sin(th / 2) * u.x, sin(th / 2) * u.y, sin(th / 2) * u.z};
         track(&w_q, qdiff(q, qe));
         /* its matrix vs Rodrigues: I + sin [u]x + (1 - cos) [u]x^2 */
@@ -543,8 +543,8 @@ static void check_quat(long n)
                 track(&w_rod, fabs(M.m[4 * a + b] - ((a == b) + s * K[3 * a + b] + (1 - c) * k2)));
             }
         ga_rotor r = ga_rotor_exp(gen(vscale(rnd_unit(), 3 * rnd_u()), vscale(rnd_unit(), rnd_logu(1e-3, 1e3))));
-        ga_vec3 t;
-        ga_quat rq = ga_rotor_quat(r, &t);
+        ga_vec3 t = ga_rotor_to_translation(r);
+        ga_quat rq = ga_rotor_to_quat(r);
         double scale = fmax(1, vnorm(t));
         track(&w_rq, rdiff(ga_rotor_from_quat(rq, t), r) / scale);
         ga_dualquat d = ga_rotor_to_dualquat(r);
@@ -574,7 +574,7 @@ static void check_slerp(long n)
     for (long i = 0; i < n; i++) {
         ga_rotor r1 = ga_rotor_rotation(rnd_unit(), 2 * PI * rnd_u());
         ga_rotor r2 = ga_rotor_mul(ga_rotor_rotation(rnd_unit(), 0.01 + 3 * rnd_u()), r1);
-        ga_quat q0 = ga_rotor_quat(r1, NULL), q1 = ga_rotor_quat(r2, NULL);
+        ga_quat q0 = ga_rotor_to_quat(r1), q1 = ga_rotor_to_quat(r2);
         double d = q0.w * q1.w + q0.x * q1.x + q0.y * q1.y + q0.z * q1.z;
         if (d < 0)
             q1.w = -q1.w, q1.x = -q1.x, q1.y = -q1.y, q1.z = -q1.z, d = -d;
@@ -591,7 +591,7 @@ static void check_slerp(long n)
             ga_generator Ll = {lam * L.e12, lam * L.e13, lam * L.e23, 0, 0, 0};
             ga_rotor rl = ga_rotor_mul(ga_rotor_exp(Ll), r1);
             /* slerp's weights lose ~EPS / sin(om) */
-            track(&worst, qdiff_pm(ga_rotor_quat(rl, NULL), qs) * sin(om));
+            track(&worst, qdiff_pm(ga_rotor_to_quat(rl), qs) * sin(om));
         }
     }
     report("|exp(lam l(R2 ~R1)) R1 - slerp(q0, q1, lam)| sin(om)", worst, 16 * EPS);
@@ -625,7 +625,7 @@ static void check_helix(void)
             track(&w_fix, vnorm(vsub(r, vsub(circ, vscale(tperp, lam)))));
             ga_screw s;
             if (fmod(lam * psi, 2 * PI) > 0.1 && fmod(lam * psi, 2 * PI) < 2 * PI - 0.1 &&
-                ga_screw_from_rotor(R, &s) == GA_OK) /* the screw axis passes through the centre */
+                ga_rotor_to_screw(R, &s) == GA_OK) /* the screw axis passes through the centre */
                 track(&w_axis, vnorm(vcross(vsub(centre, s.point), s.axis)));
         }
     }
@@ -640,7 +640,7 @@ static void check_paper_forms(long n)
 {
     printf("W-L Def. 4, Lemmas 5-6, Thm 9 as printed, in the full algebra\n");
     double w_l5 = 0, w_l6 = 0, w_t9 = 0, w_tau = 0;
-    ga_mv nn = ga_n(), e4 = ga_e4();
+    ga_mv nn = ga_mv_n(), e4 = ga_mv_e4();
     for (long i = 0; i < n / 10; i++) {
         ga_vec3 u = rnd_unit(), a = rnd_perp(u), b = vcross(u, a); /* P = ab, axis u */
         double psi = 0.5 + (2 * PI - 1) * rnd_u(), h = psi / 2;
@@ -651,34 +651,34 @@ static void check_paper_forms(long n)
         ga_mv R = ga_rotor_to_mv(ga_rotor_exp(B));
         ga_mv P = gen_mv(plane);
         /* Def. 4: tau = [cos + sin P][1 + n a/2], built here in the full algebra */
-        ga_mv rot = ga_add(ga_mv_scalar(cos(h)), ga_scale(P, sin(h)));
-        ga_mv tau = ga_gp(rot, ga_add(ga_mv_scalar(1), ga_scale(ga_gp(nn, ga_vec3_mv(vscale(tperp, -1))), 0.5)));
-        track(&w_tau, ga_mv_maxabs(ga_sub(ga_rotor_to_mv(ga_rotor_twist(psi, plane, vscale(tperp, -1))), tau)) / 10);
+        ga_mv rot = ga_mv_add(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)));
+        ga_mv tau = ga_mv_gp(rot, ga_mv_add(ga_mv_scalar(1), ga_mv_scale(ga_mv_gp(nn, ga_vec3_to_mv(vscale(tperp, -1))), 0.5)));
+        track(&w_tau, ga_mv_maxabs(ga_mv_sub(ga_rotor_to_mv(ga_rotor_twist(psi, plane, vscale(tperp, -1))), tau)) / 10);
         /* Lemma 5: exp(B) = [1 + sinc(psi/2) t_par n/2 ~tau] tau */
         double sinc = sin(h) / h;
-        ga_mv tpn = ga_gp(ga_vec3_mv(tpar), nn);
-        ga_mv L = ga_add(ga_mv_scalar(1), ga_scale(ga_gp(tpn, ga_reverse(tau)), sinc / 2));
-        track(&w_l5, ga_mv_maxabs(ga_sub(ga_gp(L, tau), R)) / 100);
+        ga_mv tpn = ga_mv_gp(ga_vec3_to_mv(tpar), nn);
+        ga_mv L = ga_mv_add(ga_mv_scalar(1), ga_mv_scale(ga_mv_gp(tpn, ga_mv_reverse(tau)), sinc / 2));
+        track(&w_l5, ga_mv_maxabs(ga_mv_sub(ga_mv_gp(L, tau), R)) / 100);
         /* Lemma 6: L translates by t'_par = -sinc t_par (cos - sin P) */
-        ga_mv tp = ga_scale(ga_gp(ga_vec3_mv(tpar), ga_sub(ga_mv_scalar(cos(h)), ga_scale(P, sin(h)))), -sinc);
+        ga_mv tp = ga_mv_scale(ga_mv_gp(ga_vec3_to_mv(tpar), ga_mv_sub(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)))), -sinc);
         ga_rotor Lr;
         ga_vec3 moved = {NAN, NAN, NAN};
         if (ga_rotor_from_mv(L, 1e-12, &Lr) == GA_OK) /* a rotor, and a pure translation */
             moved = ga_rotor_apply(Lr, v3(0, 0, 0));
         track(&w_l6, fmax(fabs(Lr.s - 1), fmax(fabs(Lr.e12), fmax(fabs(Lr.e13), fabs(Lr.e23)))));
-        track(&w_l6, vmaxabs(vsub(moved, v3(tp.c[GA_E1], tp.c[GA_E2], tp.c[GA_E3]))) / 10);
+        track(&w_l6, vmaxabs(vsub(moved, v3(tp.c[GA_BLADE_E1], tp.c[GA_BLADE_E2], tp.c[GA_BLADE_E3]))) / 10);
         /* Thm 9 (literal, |ab| = acos <R>_0 in (0, pi)): ab = (<R>_2 n).e / sinc,
            c_perp n = -ab <R>_4 / (|ab|^2 sinc), c_par n = -ab <ab <R>_2>_2 / (|ab|^2 sinc) */
-        double nab = acos(R.c[GA_S]), sn = sin(nab) / nab;
-        ga_mv R2 = ga_grade(R, 2), R4 = ga_grade(R, 4);
-        ga_mv ab = ga_scale(ga_grade(ga_gp(ga_gp(R2, nn), e4), 2), 1 / sn);
-        ga_mv cperp = ga_scale(ga_gp(ab, R4), -1 / (nab * nab * sn));
-        ga_mv cpar = ga_scale(ga_gp(ab, ga_grade(ga_gp(ab, R2), 2)), -1 / (nab * nab * sn));
-        ga_mv ell = ga_add(ab, ga_add(cperp, cpar));
+        double nab = acos(R.c[GA_BLADE_SCALAR]), sn = sin(nab) / nab;
+        ga_mv R2 = ga_mv_grade(R, 2), R4 = ga_mv_grade(R, 4);
+        ga_mv ab = ga_mv_scale(ga_mv_grade(ga_mv_gp(ga_mv_gp(R2, nn), e4), 2), 1 / sn);
+        ga_mv cperp = ga_mv_scale(ga_mv_gp(ab, R4), -1 / (nab * nab * sn));
+        ga_mv cpar = ga_mv_scale(ga_mv_gp(ab, ga_mv_grade(ga_mv_gp(ab, R2), 2)), -1 / (nab * nab * sn));
+        ga_mv ell = ga_mv_add(ab, ga_mv_add(cperp, cpar));
         ga_generator lit;
         ga_rotor_log_literal(ga_rotor_exp(B), &lit);
         /* acos near its ends loses ~EPS/sin: compare relative to 1/sin(nab) */
-        track(&w_t9, ga_mv_maxabs(ga_sub(ell, gen_mv(lit))) / 10 * sin(nab));
+        track(&w_t9, ga_mv_maxabs(ga_mv_sub(ell, gen_mv(lit))) / 10 * sin(nab));
     }
     report("ga_rotor_twist = tau(psi, P, a) of Def. 4", w_tau, 8 * EPS);
     report("Lemma 5: exp(B) = [1 + sinc t_par n/2 ~tau] tau", w_l5, 16 * EPS);
@@ -703,7 +703,7 @@ static void check_screws(long n)
         }
         ga_rotor r = ga_rotor_from_screw(s);
         double scale = fmax(1, fmax(vnorm(s.point), fabs(s.shift)));
-        if (ga_screw_from_rotor(r, &o) != GA_OK) {
+        if (ga_rotor_to_screw(r, &o) != GA_OK) {
             track(&w_rt, INFINITY);
             continue;
         }
@@ -726,7 +726,7 @@ static void check_screws(long n)
     report("screw round trip (angle, axis, point, shift, pitch)", w_rt, 64 * EPS);
     report("R moves axis points by shift along the axis", w_mean, 64 * EPS);
     ga_screw id;
-    int st = ga_screw_from_rotor(ga_rotor_identity(), &id);
+    int st = ga_rotor_to_screw(ga_rotor_identity(), &id);
     expect(st == GA_OK && id.angle == 0 && id.axis.z == 1 && id.axis.x == 0 && id.shift == 0 &&
                id.pitch == 0 && id.point.x == 0,
            "identity screw: all zero, axis (0, 0, 1)");
@@ -741,16 +741,16 @@ static void check_bad_input(void)
     for (int k = 0; k < 8; k++) {
         ga_rotor bad = good;
         (&bad.s)[k] = (k & 1) ? NAN : -INFINITY;
-        expect(ga_rotor_log(bad, &g) == GA_ENOTFINITE, "log of NaN/Inf: GA_ENOTFINITE");
-        expect(ga_rotor_log_literal(bad, &g) == GA_ENOTFINITE, "literal log of NaN/Inf");
-        expect(ga_rotor_check(bad, 1) == GA_ENOTFINITE, "check of NaN/Inf");
-        expect(ga_rotor_normalize(bad, &out) == GA_ENOTFINITE, "normalize of NaN/Inf");
+        expect(ga_rotor_log(bad, &g) == GA_ERR_NOTFINITE, "log of NaN/Inf: GA_ERR_NOTFINITE");
+        expect(ga_rotor_log_literal(bad, &g) == GA_ERR_NOTFINITE, "literal log of NaN/Inf");
+        expect(ga_rotor_check(bad, 1) == GA_ERR_NOTFINITE, "check of NaN/Inf");
+        expect(ga_rotor_normalize(bad, &out) == GA_ERR_NOTFINITE, "normalize of NaN/Inf");
         ga_screw s;
-        expect(ga_screw_from_rotor(bad, &s) == GA_ENOTFINITE, "screw of NaN/Inf");
+        expect(ga_rotor_to_screw(bad, &s) == GA_ERR_NOTFINITE, "screw of NaN/Inf");
         bad = good; /* far off: 1e-5 > GA_ROTOR_DRIFT_MAX */
         (&bad.s)[k] += 1e-5 * (k < 4 ? 1 : 12);
-        expect(ga_rotor_log(bad, &g) == GA_ENOTRIGID, "log of a rotor 1e-5 off: GA_ENOTRIGID");
-        expect(ga_rotor_check(bad, GA_ROTOR_DRIFT_MAX) == GA_ENOTRIGID, "check of a far-off rotor");
+        expect(ga_rotor_log(bad, &g) == GA_ERR_NOTRIGID, "log of a rotor 1e-5 off: GA_ERR_NOTRIGID");
+        expect(ga_rotor_check(bad, GA_ROTOR_DRIFT_MAX) == GA_ERR_NOTRIGID, "check of a far-off rotor");
         bad = good; /* 1e-12 off: accepted */
         (&bad.s)[k] += 1e-12 * (k < 4 ? 1 : 12);
         expect(ga_rotor_log(bad, &g) == GA_OK, "log of a rotor 1e-12 off: accepted");
@@ -759,9 +759,9 @@ static void check_bad_input(void)
     ga_generator g2 = {9, 9, 9, 9, 9, 9};
     ga_rotor far = good;
     far.s *= 2;
-    expect(ga_rotor_log(far, &g2) == GA_ENOTRIGID && g2.e12 == 9 && g2.e3n == 9, "failed log leaves output untouched");
+    expect(ga_rotor_log(far, &g2) == GA_ERR_NOTRIGID && g2.e12 == 9 && g2.e3n == 9, "failed log leaves output untouched");
     ga_rotor zero = {0, 0, 0, 0, 1, 2, 3, 4};
-    expect(ga_rotor_normalize(zero, &out) == GA_ENOTRIGID && out.s == 9, "normalize of q = 0: GA_ENOTRIGID");
+    expect(ga_rotor_normalize(zero, &out) == GA_ERR_NOTRIGID && out.s == 9, "normalize of q = 0: GA_ERR_NOTRIGID");
     ga_rotor scaled = {3 * good.s, 3 * good.e12, 3 * good.e13, 3 * good.e23,
                        3 * good.e1n, 3 * good.e2n, 3 * good.e3n, 3 * good.e123n};
     expect(ga_rotor_normalize(scaled, &out) == GA_OK && rdiff(out, good) < 16 * EPS * 10,
@@ -769,43 +769,43 @@ static void check_bad_input(void)
     /* multivectors that are not rotors */
     ga_rotor r;
     ga_mv m = ga_rotor_to_mv(good);
-    m.c[GA_E1] = 1e-3;
-    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ENOTRIGID, "from_mv with a vector part");
+    m.c[GA_BLADE_E1] = 1e-3;
+    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ERR_NOTRIGID, "from_mv with a vector part");
     m = ga_rotor_to_mv(good);
-    m.c[GA_E14] += 1e-3;
-    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ENOTRIGID, "from_mv with e14 != e15");
+    m.c[GA_BLADE_E14] += 1e-3;
+    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ERR_NOTRIGID, "from_mv with e14 != e15");
     m = ga_rotor_to_mv(good);
-    m.c[GA_E45] = 0.5;
-    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ENOTRIGID, "from_mv of a dilation-like part");
+    m.c[GA_BLADE_E45] = 0.5;
+    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ERR_NOTRIGID, "from_mv of a dilation-like part");
     m = ga_rotor_to_mv(good);
-    m.c[GA_E1234] += 1e-3, m.c[GA_E1235] += 1e-3;
-    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ENOTRIGID, "from_mv off the group (<P~q>_3 != 0)");
-    m.c[GA_E12345] = NAN;
-    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ENOTFINITE, "from_mv of NaN");
+    m.c[GA_BLADE_E1234] += 1e-3, m.c[GA_BLADE_E1235] += 1e-3;
+    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ERR_NOTRIGID, "from_mv off the group (<P~q>_3 != 0)");
+    m.c[GA_BLADE_E12345] = NAN;
+    expect(ga_rotor_from_mv(m, 1e-9, &r) == GA_ERR_NOTFINITE, "from_mv of NaN");
     /* matrices */
     ga_mat4 M = ga_rotor_to_mat4(good), B;
     expect(ga_rotor_from_mat4(M, &r) == GA_OK && rdiff_pm(r, good) < 64 * EPS, "from_mat4 of a rigid motion");
     B = M, B.m[0] *= 1 + 1e-8;
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTRIGID, "from_mat4: not orthonormal (1e-8)");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID, "from_mat4: not orthonormal (1e-8)");
     B = M, B.m[0] += 1e-11;
     expect(ga_rotor_from_mat4(B, &r) == GA_OK, "from_mat4: orthonormal to 1e-11 accepted");
     B = M, B.m[1] += 0.1;
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTRIGID, "from_mat4: shear");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID, "from_mat4: shear");
     B = M;
     for (int j = 0; j < 3; j++)
         B.m[j] = -B.m[j];
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTRIGID, "from_mat4: a reflection (det -1)");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID, "from_mat4: a reflection (det -1)");
     B = M, B.m[12] = 0.1;
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTRIGID, "from_mat4: last row not 0 0 0 1");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID, "from_mat4: last row not 0 0 0 1");
     B = M, B.m[15] = 2;
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTRIGID, "from_mat4: last row 0 0 0 2");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID, "from_mat4: last row 0 0 0 2");
     B = M, B.m[7] = NAN;
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTFINITE, "from_mat4: NaN");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTFINITE, "from_mat4: NaN");
     B = M, B.m[5] = INFINITY;
-    expect(ga_rotor_from_mat4(B, &r) == GA_ENOTFINITE, "from_mat4: Inf");
+    expect(ga_rotor_from_mat4(B, &r) == GA_ERR_NOTFINITE, "from_mat4: Inf");
     ga_screw s;
     ga_rotor nearlyflat = ga_rotor_exp(gen(v3(1e-300, 0, 0), v3(0, 1e10, 0)));
-    expect(ga_screw_from_rotor(nearlyflat, &s) == GA_EDOMAIN, "screw with its axis beyond DBL_MAX: GA_EDOMAIN");
+    expect(ga_rotor_to_screw(nearlyflat, &s) == GA_ERR_DOMAIN, "screw with its axis beyond DBL_MAX: GA_ERR_DOMAIN");
 }
 
 /* Cross-representation: the SE(3) closed forms of mat4.h (Eberly) agree. */
@@ -819,14 +819,14 @@ static void check_se3(long n)
                   : kind == 2 ? rnd_logu(1e-3, PI - 1e-3) : 0;
         double tl = rnd_logu(1e-6, 1e3);
         ga_twist xi = twist(vscale(rnd_unit(), th), vscale(rnd_unit(), tl)), xl;
-        ga_rotor r = ga_rotor_exp(ga_generator_from_twist(xi));
+        ga_rotor r = ga_rotor_exp(ga_twist_to_generator(xi));
         ga_mat4 M = ga_rotor_to_mat4(r), S = ga_se3_exp(xi);
         double scale = fmax(1, tl);
         track(&w_exp, mdiff(M, S) / scale);
         track(&w_ref, mdiff(S, expm_ref(xi)) / scale);
         ga_generator L;
         int st = ga_rotor_log(r, &L), sm = ga_se3_log(M, &xl);
-        ga_twist xr = ga_twist_from_generator(L);
+        ga_twist xr = ga_generator_to_twist(L);
         track(&w_log, st == GA_OK && sm == GA_OK
                           ? fmax(vmaxabs(vsub(xr.w, xl.w)), vmaxabs(vsub(xr.v, xl.v))) / scale : INFINITY);
     }

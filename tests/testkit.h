@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "garotor.h"
+#include <garotor/garotor.h>
 
 #define TK_PI 3.14159265358979323846
 

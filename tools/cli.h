@@ -22,7 +22,7 @@ typedef struct {
 
 #include <stddef.h>
 
-#include "garotor.h"
+#include <garotor/garotor.h>
 #include "textio.h"
 
 /** The group named by --group (default cga), or NULL after a message. */

@@ -36,7 +36,7 @@ static int mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
     int st = ga_rotor_from_mat4(m, &r);
     if (st != GA_OK)
         return st;
-    ga_quat q = ga_rotor_quat(r, NULL);
+    ga_quat q = ga_rotor_to_quat(r);
     if (q.w * prev->w + q.x * prev->x + q.y * prev->y + q.z * prev->z < 0.0)
         q = (ga_quat){-q.w, -q.x, -q.y, -q.z};
     *prev = q;
@@ -270,7 +270,7 @@ int cmd_interp(const cli_opts *o)
     int st = ga_path_init_mat4(&path, g, scheme, (int)n, times, keys, vel, work, wbytes);
     if (st != GA_OK) {
         fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name,
-                ga_scheme_name(scheme), ga_strerror(st));
+                ga_scheme_name(scheme), ga_status_string(st));
         goto done;
     }
 
@@ -284,7 +284,7 @@ int cmd_interp(const cli_opts *o)
     st = nat ? ga_path_sample(&path, ev, step, ns, at, samples)
              : ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples);
     if (st != GA_OK) {
-        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", in.name, ga_strerror(st));
+        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", in.name, ga_status_string(st));
         goto done;
     }
     ga_quat prev = {1, 0, 0, 0};
@@ -295,7 +295,7 @@ int cmd_interp(const cli_opts *o)
         ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
         if (pose && (st = mat4_to_pose(m, &prev, row + 1)) != GA_OK) {
             fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name,
-                    k + 1, ga_strerror(st));
+                    k + 1, ga_status_string(st));
             goto done;
         }
         if (!pose)

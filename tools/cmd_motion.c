@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "garotor.h"
+#include <garotor/garotor.h>
 
 const ga_group *cli_group(const char *cmd, const cli_opts *o)
 {
@@ -106,7 +106,7 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
                 r[12] = r[13] = r[14] = r[15] = 0.0;
         }
         if (st != GA_OK)
-            ok = !tio_error(&in, i, "%s", ga_strerror(st));
+            ok = !tio_error(&in, i, "%s", ga_status_string(st));
     }
     tio_out out;
     if (ok && tio_out_open(&out, o->out) == 0) {

@@ -50,7 +50,7 @@ static double rotation_of(ga_mat4 m, ga_vec3 *axis)
     if (ga_rotor_from_mat4(m, &r) != GA_OK)
         return NAN;
     ga_rotor q = {r.s, r.e12, r.e13, r.e23, 0, 0, 0, 0}; /* the rotation alone */
-    if (ga_screw_from_rotor(q, &s) != GA_OK)
+    if (ga_rotor_to_screw(q, &s) != GA_OK)
         return NAN;
     *axis = s.axis;
     return s.angle * 180.0 / pi;
@@ -64,7 +64,7 @@ static int sample(const ga_group *g, ga_scheme scheme, const double *t, const ga
     static double elem[DEMO_SAMPLES * GA_GROUP_MAX_ELEM]; /* elem_size bytes each */
     ga_path p;
     if (ga_path_workspace_size(g, scheme, DEMO_KEYS) > sizeof work)
-        return GA_EARG;
+        return GA_ERR_ARG;
     int st = ga_path_init_mat4(&p, g, scheme, DEMO_KEYS, t, key, NULL, work, sizeof work);
     if (st == GA_OK)
         st = ga_path_sample_uniform(&p, GA_EVAL_DIRECT, 1.0, DEMO_SAMPLES, t[0], t[DEMO_KEYS - 1],
@@ -92,9 +92,9 @@ int cmd_demo(const cli_opts *o)
     }
     ga_screw screw[DEMO_KEYS - 1];
     for (int i = 0; i + 1 < DEMO_KEYS; i++) {
-        int st = ga_screw_from_rotor(ga_rotor_mul(R[i + 1], ga_rotor_reverse(R[i])), &screw[i]);
+        int st = ga_rotor_to_screw(ga_rotor_mul(R[i + 1], ga_rotor_reverse(R[i])), &screw[i]);
         if (st != GA_OK) {
-            fprintf(stderr, "garotor demo: screw: %s\n", ga_strerror(st));
+            fprintf(stderr, "garotor demo: screw: %s\n", ga_status_string(st));
             return 2;
         }
     }
@@ -106,7 +106,7 @@ int cmd_demo(const cli_opts *o)
             int st = sample(group[gi], scheme[s], t, M, path[s][gi]);
             if (st != GA_OK) {
                 fprintf(stderr, "garotor demo: %s path on %s: %s\n", ga_scheme_name(scheme[s]),
-                        group[gi]->name, ga_strerror(st));
+                        group[gi]->name, ga_status_string(st));
                 return 2;
             }
         }
@@ -121,14 +121,14 @@ int cmd_demo(const cli_opts *o)
             return 2;
     }
 
-    printf("garotor %s: rigid motions in conformal geometric algebra G(4,1)\n\n", GAROTOR_VERSION);
+    printf("garotor %s: rigid motions in conformal geometric algebra G(4,1)\n\n", GAROTOR_VERSION_STRING);
 
     /* 1. the conformal model: points are null vectors, inner products distances */
     ga_vec3 x = {1, 2, 3}, y = {4, 6, 3};
-    ga_mv X = ga_point(x), Y = ga_point(y);
+    ga_mv X = ga_point_up(x), Y = ga_point_up(y);
     printf("Points are null vectors F(x) = x + (x^2/2) n - nbar/2 (Wareham-Lasenby §1):\n"
            "  x = (1, 2, 3), y = (4, 6, 3):  F(x).F(x) = %.3g,  -2 F(x).F(y) = %.6g = |x - y|^2\n\n",
-           ga_sp(X, X), -2.0 * ga_sp(X, Y));
+           ga_mv_sp(X, X), -2.0 * ga_mv_sp(X, Y));
 
     /* 2. the keys */
     printf("Three key poses: the rotor R_i = T_p q moves the frame to position p, turned by q:\n");
@@ -139,7 +139,7 @@ int cmd_demo(const cli_opts *o)
     }
 
     /* 3. every rigid motion is a screw (Chasles): the one from key to key */
-    printf("\nFrom key to key, R_{i+1} ~R_i is a screw motion (Chasles; ga_screw_from_rotor):\n");
+    printf("\nFrom key to key, R_{i+1} ~R_i is a screw motion (Chasles; ga_rotor_to_screw):\n");
     for (int i = 0; i + 1 < DEMO_KEYS; i++) {
         const ga_screw *s = &screw[i];
         printf("  t = %g to %g:  %.4g deg about (%.4f, %.4f, %.4f) through (%.4f, %.4f, %.4f),\n"

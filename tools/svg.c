@@ -81,7 +81,7 @@ int svg_screw_axis(const ga_mat4 *key, size_t n, ga_vec3 *point, ga_vec3 *dir)
         ga_rotor a, b;
         ga_screw s;
         if (ga_rotor_from_mat4(key[i], &a) != GA_OK || ga_rotor_from_mat4(key[i + 1], &b) != GA_OK ||
-            ga_screw_from_rotor(ga_rotor_mul(b, ga_rotor_reverse(a)), &s) != GA_OK ||
+            ga_rotor_to_screw(ga_rotor_mul(b, ga_rotor_reverse(a)), &s) != GA_OK ||
             !(s.angle > 0.0))
             return 0;
         if (i == 0) {

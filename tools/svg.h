@@ -19,7 +19,7 @@
 
 #include <stddef.h>
 
-#include "garotor.h"
+#include <garotor/garotor.h>
 
 /** The view: orthographic, looking from (1, 1, 1) towards the origin with z up
  *  (iso), or down an axis: xy (from +z, x right, y up), xz (from -y, x right,
@@ -54,7 +54,7 @@ int svg_view_by_name(const char *name, svg_view *out);
 const char *svg_view_name(svg_view v);
 
 /** If the n >= 2 keys (rigid motions) lie on one screw motion, i.e. every
- *  relative motion M_{i+1} M_i^-1 has its principal screw (ga_screw_from_rotor)
+ *  relative motion M_{i+1} M_i^-1 has its principal screw (ga_rotor_to_screw)
  *  about the same axis line, in the same sense, with the same pitch and a
  *  nonzero angle (to 1e-9), write a point of that axis and its unit direction
  *  and return 1; else (pure translations included) return 0. */

@@ -27,18 +27,18 @@ typedef struct { ga_vec3 w, v; } ga_twist;
 /** Status codes. GA_OK is 0; every error is negative. */
 enum {
     GA_OK = 0,
-    GA_ENOTFINITE = -1, /**< an input holds NaN or an infinity */
-    GA_ESINGULAR = -2,  /**< no inverse: a zero or non-invertible input */
-    GA_ENOTPOINT = -3,  /**< not a finite conformal point (X.n = 0 or X not null) */
-    GA_ENOTRIGID = -4,  /**< not a rigid motion (rotor or matrix) within tolerance */
-    GA_EDOMAIN = -5,    /**< outside the function's domain (e.g. log of a matrix
+    GA_ERR_NOTFINITE = -1, /**< an input holds NaN or an infinity */
+    GA_ERR_SINGULAR = -2,  /**< no inverse: a zero or non-invertible input */
+    GA_ERR_NOTPOINT = -3,  /**< not a finite conformal point (X.n = 0 or X not null) */
+    GA_ERR_NOTRIGID = -4,  /**< not a rigid motion (rotor or matrix) within tolerance */
+    GA_ERR_DOMAIN = -5,    /**< outside the function's domain (e.g. log of a matrix
                              with an eigenvalue on the closed negative real axis) */
-    GA_EARG = -6,       /**< an invalid argument (bad count, times not increasing, ...) */
-    GA_ENOTBLADE = -7   /**< not an object of the expected kind (sphere, plane, line...) */
+    GA_ERR_ARG = -6,       /**< an invalid argument (bad count, times not increasing, ...) */
+    GA_ERR_NOTBLADE = -7   /**< not an object of the expected kind (sphere, plane, line...) */
 };
 
 /** A short English description of a status code ("ok", "not a rigid motion", ...). */
-const char *ga_strerror(int status);
+const char *ga_status_string(int status);
 
 #ifdef __cplusplus
 }

@@ -27,12 +27,12 @@ typedef struct { double c[32]; } ga_mv;
 
 /** Index of each blade in ga_mv.c (canonical order). */
 enum {
-    GA_S = 0,
-    GA_E1, GA_E2, GA_E3, GA_E4, GA_E5,
-    GA_E12, GA_E13, GA_E14, GA_E15, GA_E23, GA_E24, GA_E25, GA_E34, GA_E35, GA_E45,
-    GA_E123, GA_E124, GA_E125, GA_E134, GA_E135, GA_E145, GA_E234, GA_E235, GA_E245, GA_E345,
-    GA_E1234, GA_E1235, GA_E1245, GA_E1345, GA_E2345,
-    GA_E12345
+    GA_BLADE_SCALAR = 0,
+    GA_BLADE_E1, GA_BLADE_E2, GA_BLADE_E3, GA_BLADE_E4, GA_BLADE_E5,
+    GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E14, GA_BLADE_E15, GA_BLADE_E23, GA_BLADE_E24, GA_BLADE_E25, GA_BLADE_E34, GA_BLADE_E35, GA_BLADE_E45,
+    GA_BLADE_E123, GA_BLADE_E124, GA_BLADE_E125, GA_BLADE_E134, GA_BLADE_E135, GA_BLADE_E145, GA_BLADE_E234, GA_BLADE_E235, GA_BLADE_E245, GA_BLADE_E345,
+    GA_BLADE_E1234, GA_BLADE_E1235, GA_BLADE_E1245, GA_BLADE_E1345, GA_BLADE_E2345,
+    GA_BLADE_E12345
 };
 
 /** The grade (0..5) of blade index i. */
@@ -49,9 +49,9 @@ ga_mv ga_mv_scalar(double s);
 ga_mv ga_mv_blade(int i);
 /** The vector x1 e1 + ... + x5 e5. */
 ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5);
-ga_mv ga_add(ga_mv a, ga_mv b);
-ga_mv ga_sub(ga_mv a, ga_mv b);
-ga_mv ga_scale(ga_mv a, double s);
+ga_mv ga_mv_add(ga_mv a, ga_mv b);
+ga_mv ga_mv_sub(ga_mv a, ga_mv b);
+ga_mv ga_mv_scale(ga_mv a, double s);
 /** 1 if every coefficient is finite, 0 otherwise. */
 int ga_mv_isfinite(ga_mv a);
 /** Largest absolute coefficient (the max norm, used for tolerances). */
@@ -59,38 +59,38 @@ double ga_mv_maxabs(ga_mv a);
 
 /* ---- products ---------------------------------------------------------- */
 /** Geometric product a b. */
-ga_mv ga_gp(ga_mv a, ga_mv b);
+ga_mv ga_mv_gp(ga_mv a, ga_mv b);
 /** Outer (wedge) product a ^ b. */
-ga_mv ga_op(ga_mv a, ga_mv b);
+ga_mv ga_mv_op(ga_mv a, ga_mv b);
 /** Left contraction a _| b: for blades, grade(b) - grade(a) part of a b when >= 0. */
-ga_mv ga_lc(ga_mv a, ga_mv b);
+ga_mv ga_mv_lc(ga_mv a, ga_mv b);
 /** Scalar product <a b>_0. For vectors it is the inner product a.b. */
-double ga_sp(ga_mv a, ga_mv b);
+double ga_mv_sp(ga_mv a, ga_mv b);
 
 /* ---- involutions and grades ------------------------------------------- */
 /** Reverse ~a: a grade-k part is multiplied by (-1)^(k(k-1)/2). */
-ga_mv ga_reverse(ga_mv a);
+ga_mv ga_mv_reverse(ga_mv a);
 /** Grade involution: a grade-k part is multiplied by (-1)^k. */
-ga_mv ga_involute(ga_mv a);
+ga_mv ga_mv_involute(ga_mv a);
 /** Clifford conjugate: reverse of the grade involution. */
-ga_mv ga_conjugate(ga_mv a);
+ga_mv ga_mv_conjugate(ga_mv a);
 /** The grade-k part <a>_k (zero for k outside 0..5). */
-ga_mv ga_grade(ga_mv a, int k);
+ga_mv ga_mv_grade(ga_mv a, int k);
 
 /* ---- dual ---------------------------------------------------------------- */
 /** Dual a* = a I^-1 with I = e12345 (I^2 = -1, so I^-1 = -I). */
-ga_mv ga_dual(ga_mv a);
-/** Undual a I, the inverse of ga_dual. */
-ga_mv ga_undual(ga_mv a);
+ga_mv ga_mv_dual(ga_mv a);
+/** Undual a I, the inverse of ga_mv_dual. */
+ga_mv ga_mv_undual(ga_mv a);
 
 /* ---- norm and inverse ------------------------------------------------- */
 /** The signed squared norm <a ~a>_0 (negative for some blades of G(4,1)). */
-double ga_norm2(ga_mv a);
+double ga_mv_norm2(ga_mv a);
 /** sqrt(|<a ~a>_0|). */
-double ga_norm(ga_mv a);
-/** Inverse of a versor or blade: ~a / (a ~a). Fails with GA_ESINGULAR when a ~a is
+double ga_mv_norm(ga_mv a);
+/** Inverse of a versor or blade: ~a / (a ~a). Fails with GA_ERR_SINGULAR when a ~a is
  *  not a nonzero scalar (then a is not a versor, or is null) or the inverse
- *  overflows, GA_ENOTFINITE on NaN/Inf input. */
+ *  overflows, GA_ERR_NOTFINITE on NaN/Inf input. */
 int ga_mv_inverse(ga_mv a, ga_mv *out);
 
 #ifdef __cplusplus

@@ -39,7 +39,7 @@ ga_mat4 ga_mat4_identity(void);
 ga_mat4 ga_mat4_mul(ga_mat4 a, ga_mat4 b);
 
 /** The inverse of a general 4x4, by Gaussian elimination with partial pivoting.
- *  GA_ENOTFINITE if a holds NaN or Inf. GA_ESINGULAR if a is numerically
+ *  GA_ERR_NOTFINITE if a holds NaN or Inf. GA_ERR_SINGULAR if a is numerically
  *  singular: a pivot is at most 4*DBL_EPSILON times the largest entry both for
  *  a as given and after exact power-of-2 row and column equilibration (so an
  *  affine [R, t; 0 1] with |t| = 1e16 or diag(1e-20, 1, 1, 1) is invertible
@@ -62,8 +62,8 @@ ga_twist ga_twist_vee(ga_mat4 a);
 
 /* ---- the group SE(3) ---------------------------------------------------- */
 
-/** Is m a rigid motion [[R, t]; [0 0 0 1]] (Eberly eq. 17)? GA_ENOTFINITE if m
- *  holds NaN or Inf; GA_ENOTRIGID unless max |R^T R - I|_ij <= tol, det R > 0
+/** Is m a rigid motion [[R, t]; [0 0 0 1]] (Eberly eq. 17)? GA_ERR_NOTFINITE if m
+ *  holds NaN or Inf; GA_ERR_NOTRIGID unless max |R^T R - I|_ij <= tol, det R > 0
  *  and the last row is 0 0 0 1 to within tol (entrywise); else GA_OK. */
 int ga_se3_check(ga_mat4 m, double tol);
 
@@ -92,14 +92,14 @@ ga_mat4 ga_se3_exp(ga_twist xi);
  *  whose last coefficient comes from its series for th < 1/2. A matrix that is
  *  rigid only to GA_SE3_TOL is accepted as it is: the angle from atan2 and the
  *  normalised axis are those of a rotation within that tolerance of R.
- *  GA_EDOMAIN if v overflows (a translation near DBL_MAX). */
+ *  GA_ERR_DOMAIN if v overflows (a translation near DBL_MAX). */
 int ga_se3_log(ga_mat4 m, ga_twist *out);
 
 /** The geodesic F(t) = exp(t log(h1 h0^{-1})) h0 (Eberly eq. 21): F(0) = h0,
  *  F(1) = h1, constant speed. Any finite t is accepted (extrapolation). When
  *  h1 h0^{-1} is a half turn the shortest path is not unique; the principal
- *  log's choice is taken. GA_ENOTFINITE (NaN/Inf in h0, h1 or t),
- *  GA_ENOTRIGID (h0 or h1 fails ga_se3_check(., GA_SE3_TOL)) or GA_EDOMAIN
+ *  log's choice is taken. GA_ERR_NOTFINITE (NaN/Inf in h0, h1 or t),
+ *  GA_ERR_NOTRIGID (h0 or h1 fails ga_se3_check(., GA_SE3_TOL)) or GA_ERR_DOMAIN
  *  (the result overflows: a far extrapolation, or translations near DBL_MAX). */
 int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out);
 
@@ -117,7 +117,7 @@ ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi);
  *  X <- 2X + X^2, which keeps relative accuracy for results near I (tiny
  *  rotations under large translations), until a diagonal entry of I + X falls
  *  below 3/4, after which plain squaring is the more accurate form.
- *  GA_ENOTFINITE if a holds NaN/Inf; GA_EDOMAIN if the result overflows (it
+ *  GA_ERR_NOTFINITE if a holds NaN/Inf; GA_ERR_DOMAIN if the result overflows (it
  *  is not representable in double). */
 int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
 
@@ -134,18 +134,18 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
  *  partial fractions (8-point Gauss-Legendre; Higham 2001). A_k - I is carried
  *  along as (A_{k+1} + I)^{-1} (A_k - I) rather than formed by subtraction, so
  *  small parts under large ones keep relative accuracy (Al-Mohy & Higham
- *  2012). GA_ENOTFINITE for NaN/Inf; GA_ESINGULAR for a numerically singular
- *  a (as ga_mat4_inverse); GA_EDOMAIN when there is no real principal log:
+ *  2012). GA_ERR_NOTFINITE for NaN/Inf; GA_ERR_SINGULAR for a numerically singular
+ *  a (as ga_mat4_inverse); GA_ERR_DOMAIN when there is no real principal log:
  *  an eigenvalue on the closed negative real axis (or within rounding of
  *  it), detected as a square-root iteration that meets a numerically
  *  singular matrix or does not converge. An exact half turn (eigenvalue -1)
- *  is therefore GA_EDOMAIN here, while ga_se3_log handles it; near a half
+ *  is therefore GA_ERR_DOMAIN here, while ga_se3_log handles it; near a half
  *  turn by th the error grows like eps th / sin th, the conditioning of the
  *  log of a general matrix there. Every result is verified: unless
  *  ||expm(L) - a||_1 <= GA_LOGM_BACKWARD_TOL ||a||_1 the answer is
- *  GA_EDOMAIN, never a wrong log. In practice (tests/test_cross.c,
+ *  GA_ERR_DOMAIN, never a wrong log. In practice (tests/test_cross.c,
  *  tests/test_mat4.c) a rotation part within about 1e-11 rad of a half turn
- *  may be GA_EDOMAIN here, and never one farther than 1e-10 rad; use
+ *  may be GA_ERR_DOMAIN here, and never one farther than 1e-10 rad; use
  *  ga_se3_log for rigid motions, which has no such limit. */
 int ga_mat4_logm(ga_mat4 a, ga_mat4 *out);
 

@@ -65,8 +65,8 @@ typedef struct { double w, x, y, z; } ga_quat;
 typedef struct { ga_quat real, dual; } ga_dualquat;
 
 /** Largest distance from the group, max(| |q|^2 - 1 |, 2 |<P ~q>_3| / max(1, |P|)),
- *  that ga_rotor_log, ga_rotor_log_literal and ga_screw_from_rotor accept (and
- *  project away, as R (R ~R)^(-1/2)); farther is GA_ENOTRIGID. */
+ *  that ga_rotor_log, ga_rotor_log_literal and ga_rotor_to_screw accept (and
+ *  project away, as R (R ~R)^(-1/2)); farther is GA_ERR_NOTRIGID. */
 #define GA_ROTOR_DRIFT_MAX 1e-6
 
 /* ---- the group ---------------------------------------------------------- */
@@ -84,7 +84,7 @@ ga_rotor ga_rotor_reverse(ga_rotor r);
 /** The full 32-component multivector of r (e_i n = e_i4 + e_i5, e123 n = e1234 + e1235). */
 ga_mv ga_rotor_to_mv(ga_rotor r);
 
-/** The compact rotor of a multivector m. GA_ENOTFINITE on NaN/Inf; GA_ENOTRIGID if a
+/** The compact rotor of a multivector m. GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_NOTRIGID if a
  *  coefficient outside the 8-component form exceeds tol * max(1, max|m|), if
  *  e_i4 and e_i5 (or e1234 and e1235) differ by more than that, or if the
  *  rotor is farther than tol from the group (see ga_rotor_check). On success
@@ -94,12 +94,12 @@ int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out);
 /** r's distance from the group: max(| |q|^2 - 1 |, 2 |<P ~q>_3| / max(1, |P|)), i.e.
  *  the largest coefficient of R ~R - 1 (Thm 7), the second one relative to the
  *  size of the translation; R n ~R = n then follows (Thm 8). GA_OK if it is <= tol,
- *  GA_ENOTRIGID if not, GA_ENOTFINITE on NaN/Inf. */
+ *  GA_ERR_NOTRIGID if not, GA_ERR_NOTFINITE on NaN/Inf. */
 int ga_rotor_check(ga_rotor r, double tol);
 
 /** The rotor R (R ~R)^(-1/2) on the group: q /= |q|, P /= |q|, then the e123 part of
- *  P ~q is dropped (P = <P ~q>_1 q). GA_ENOTFINITE on NaN/Inf, GA_ENOTRIGID if
- *  q = 0 (no rotor is near), GA_EDOMAIN if the result overflows (P near
+ *  P ~q is dropped (P = <P ~q>_1 q). GA_ERR_NOTFINITE on NaN/Inf, GA_ERR_NOTRIGID if
+ *  q = 0 (no rotor is near), GA_ERR_DOMAIN if the result overflows (P near
  *  DBL_MAX). Works for any distance from the group. */
 int ga_rotor_normalize(ga_rotor r, ga_rotor *out);
 
@@ -131,10 +131,10 @@ ga_rotor ga_rotor_translation(ga_vec3 a);
 ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a);
 
 /** The generator B(xi) = -(w I3 + v n)/2 of a twist (CONTRACT.md). */
-ga_generator ga_generator_from_twist(ga_twist xi);
+ga_generator ga_twist_to_generator(ga_twist xi);
 
-/** The twist of a generator: the inverse of ga_generator_from_twist. */
-ga_twist ga_twist_from_generator(ga_generator b);
+/** The twist of a generator: the inverse of ga_twist_to_generator. */
+ga_twist ga_generator_to_twist(ga_generator b);
 
 /* ---- exp and log ------------------------------------------------------- */
 
@@ -155,24 +155,24 @@ ga_rotor ga_rotor_exp(ga_generator b);
  *  c.u = cos(phi)(p.u) + sin(phi) p123 and the perpendicular one
  *  p_perp / sinc(phi), so no branch or series is needed: exact at 0, near and
  *  at pi, and for pure translations. A rotor that has drifted from the group
- *  by at most GA_ROTOR_DRIFT_MAX is projected first; farther is GA_ENOTRIGID;
- *  NaN/Inf is GA_ENOTFINITE; a generator that overflows (a translation near
- *  DBL_MAX) is GA_EDOMAIN. exp(l(R)) = +-R. */
+ *  by at most GA_ROTOR_DRIFT_MAX is projected first; farther is GA_ERR_NOTRIGID;
+ *  NaN/Inf is GA_ERR_NOTFINITE; a generator that overflows (a translation near
+ *  DBL_MAX) is GA_ERR_DOMAIN. exp(l(R)) = +-R. */
 int ga_rotor_log(ga_rotor r, ga_generator *out);
 
 /** The literal logarithm: exp(l(R)) = R exactly, no sign flip, rotation angle in
  *  [0, 2 pi]. At exactly q = -1 (a turn of 2 pi) the axis is taken along the
  *  translation (or e3 if there is none); near 2 pi the perpendicular
- *  translation is ill-conditioned (divided by sinc(phi) -> 0; GA_EDOMAIN when that
+ *  translation is ill-conditioned (divided by sinc(phi) -> 0; GA_ERR_DOMAIN when that
  *  overflows). Statuses as ga_rotor_log. */
 int ga_rotor_log_literal(ga_rotor r, ga_generator *out);
 
 /* ---- screws (Chasles; W-L §4.1) ------------------------------------------- */
 
-/** The screw of r (through its principal log; see ga_screw). GA_ENOTFINITE,
- *  GA_ENOTRIGID as ga_rotor_log; GA_EDOMAIN if the axis point overflows (a
+/** The screw of r (through its principal log; see ga_screw). GA_ERR_NOTFINITE,
+ *  GA_ERR_NOTRIGID as ga_rotor_log; GA_ERR_DOMAIN if the axis point overflows (a
  *  rotation of ~1e-300 rad under a finite translation). */
-int ga_screw_from_rotor(ga_rotor r, ga_screw *out);
+int ga_rotor_to_screw(ga_rotor r, ga_screw *out);
 
 /** The rotor of a screw: rotate by angle about the axis through point, translating
  *  by shift along it (pitch is not used; shift is). The axis is normalised; for
@@ -186,15 +186,18 @@ ga_mat4 ga_rotor_to_mat4(ga_rotor r);
 
 /** The rotor of a rigid-motion matrix (Shepperd's method: the quaternion from the
  *  largest of trace, m00, m11, m22, robust at half turns), with the sign chosen
- *  so that the scalar part is >= 0. GA_ENOTFINITE on NaN/Inf; GA_ENOTRIGID if the
+ *  so that the scalar part is >= 0. GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_NOTRIGID if the
  *  3x3 block is not orthonormal to 1e-9 (max |M^T M - 1|), has det <= 0, or the
- *  last row is not 0 0 0 1 to 1e-9; GA_EDOMAIN if the rotor overflows (a
+ *  last row is not 0 0 0 1 to 1e-9; GA_ERR_DOMAIN if the rotor overflows (a
  *  translation near DBL_MAX). */
 int ga_rotor_from_mat4(ga_mat4 m, ga_rotor *out);
 
-/** The rotation quaternion of r; the translation t = -2 <P ~q>_1 is written to
- *  *translation unless it is NULL. */
-ga_quat ga_rotor_quat(ga_rotor r, ga_vec3 *translation);
+/** The rotation of r as a quaternion: q = s + a12 e12 + a13 e13 + a23 e23 is
+ *  (s, -a23, a13, -a12). With ga_rotor_to_translation, r = T_t q. */
+ga_quat ga_rotor_to_quat(ga_rotor r);
+
+/** The translation t = -2 <P ~q>_1 of r (r = T_t q: rotate by q, then translate by t). */
+ga_vec3 ga_rotor_to_translation(ga_rotor r);
 
 /** The rotor "rotate by the unit quaternion q, then translate by t": T_t q.
  *  q is used as given (normalise it first if it may not be unit). */

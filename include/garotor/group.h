@@ -43,19 +43,19 @@ struct ga_group {
     void (*identity)(void *out);
     /** out = a b (b first, then a, as matrices act on column vectors) */
     void (*compose)(const void *a, const void *b, void *out);
-    /** out = a^-1 (for affine: GA_ESINGULAR if not invertible) */
+    /** out = a^-1 (for affine: GA_ERR_SINGULAR if not invertible) */
     int (*inverse)(const void *a, void *out);
-    /** out = exp(x); GA_ENOTFINITE for NaN/Inf in x, GA_EDOMAIN when the
+    /** out = exp(x); GA_ERR_NOTFINITE for NaN/Inf in x, GA_ERR_DOMAIN when the
      *  result is not representable (overflows: docs/errors.md) */
     int (*exp)(const double *x, void *out);
     /** x = the principal log of g: rotation angle in [0, pi] for cga/se3;
-     *  GA_EDOMAIN where the group element has no principal log (affine) or
+     *  GA_ERR_DOMAIN where the group element has no principal log (affine) or
      *  the log overflows */
     int (*log)(const void *g, double *x);
     /** out = Ad_g x = log-free conjugation g x g^-1, in algebra coordinates */
     void (*adjoint)(const void *g, const double *x, double *out);
     /** Read a 4x4 homogeneous matrix into a group element, checking it
-     *  (GA_ENOTRIGID for cga/se3 if not a rigid motion to 1e-9; for affine
+     *  (GA_ERR_NOTRIGID for cga/se3 if not a rigid motion to 1e-9; for affine
      *  the last row must be 0 0 0 1 and the determinant positive). */
     int (*from_mat4)(ga_mat4 m, void *out);
     /** The 4x4 homogeneous matrix of a group element. */

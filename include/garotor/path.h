@@ -121,10 +121,10 @@
  * Memory: nothing is allocated. ga_path_init copies the times and keys into a
  * caller's workspace of ga_path_workspace_size() bytes (aligned for double),
  * which must outlive the path. Functions returning int give GA_OK or a GA_E*
- * code (types.h): GA_EARG for too few keys, times not strictly increasing, a
+ * code (types.h): GA_ERR_ARG for too few keys, times not strictly increasing, a
  * bad count, a t outside [t_0, t_{n-1}], a small or misaligned workspace;
- * GA_ENOTFINITE for NaN/Inf input; a failing log (GA_EDOMAIN for an affine key
- * with no real principal log) is passed on; GA_EDOMAIN when finite input
+ * GA_ERR_NOTFINITE for NaN/Inf input; a failing log (GA_ERR_DOMAIN for an affine key
+ * with no real principal log) is passed on; GA_ERR_DOMAIN when finite input
  * overflows (a coefficient, sample or velocity would be Inf or NaN: keys near
  * DBL_MAX, a segment of subnormal length, spacings whose ratio overflows).
  * GA_OK always comes with finite output. On an error a velocity is left
@@ -179,11 +179,11 @@ typedef struct {
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3". */
 const char *ga_scheme_name(ga_scheme s);
-/** The scheme called name; GA_EARG if there is none. */
+/** The scheme called name; GA_ERR_ARG if there is none. */
 int ga_scheme_by_name(const char *name, ga_scheme *out);
 /** "direct", "euler", "exact". */
 const char *ga_eval_name(ga_eval e);
-/** The evaluator called name; GA_EARG if there is none. */
+/** The evaluator called name; GA_ERR_ARG if there is none. */
 int ga_eval_by_name(const char *name, ga_eval *out);
 /** Fewest keys the scheme takes (2, or 3 for QUADRATIC and SMOOTH). QUADRATIC
  *  takes exactly 3. */
@@ -201,13 +201,13 @@ int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n,
                  void *work, size_t work_bytes);
 
 /** The same from 4x4 matrices, each read by g->from_mat4 (its status is
- *  returned: GA_ENOTRIGID for a non-rigid matrix on cga/se3, ...). */
+ *  returned: GA_ERR_NOTRIGID for a non-rigid matrix on cga/se3, ...). */
 int ga_path_init_mat4(ga_path *p, const ga_group *g, ga_scheme s, int n,
                       const double *times, const ga_mat4 *keys,
                       const double *velocities, void *work, size_t work_bytes);
 
 /** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
- *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_EARG outside. */
+ *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_ERR_ARG outside. */
 int ga_path_locate(const ga_path *p, double t, int *seg, double *u);
 
 /** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
@@ -244,7 +244,7 @@ typedef struct {
  *  step: the Euler step in u units (> 0), ignored by the other evaluators. */
 int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev,
                          double step, size_t n, double t0, double t1);
-/** Write the next sample to out. GA_EARG after the last. */
+/** Write the next sample to out. GA_ERR_ARG after the last. */
 int ga_path_stepper_next(ga_path_stepper *s, void *out);
 
 /** n evenly spaced samples t0..t1 (both included) into out (n elements of

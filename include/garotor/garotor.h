@@ -1,8 +1,9 @@
-/* garotor.h: the whole public interface of garotor, one include.
+/* garotor/garotor.h: the whole public interface of garotor, one include.
  *
- *   #include <garotor.h>      (compile with $(pkg-config --cflags --libs garotor))
+ *   #include <garotor/garotor.h>   (compile with $(pkg-config --cflags --libs garotor))
  *
- * Modules, from the bottom up:
+ * or one module, e.g. <garotor/rotor.h>. Modules, from the bottom up:
+ *   version.h    GAROTOR_VERSION_MAJOR, _MINOR, _PATCH and _STRING
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
  *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
@@ -15,6 +16,7 @@
 #ifndef GAROTOR_H
 #define GAROTOR_H
 
+#include <garotor/version.h>
 #include "types.h"
 #include "mv.h"
 #include "conformal.h"
