@@ -6,8 +6,8 @@
  * rotation, linear interpolation for the translation). Built only where
  * Eigen 3 is found (bench/meson.build defines GAROTOR_BENCH_EIGEN then).
  *
- * Matrices are 16 doubles, row-major (CONTRACT.md). A pose is 7 doubles,
- * x y z qx qy qz qw (CONTRACT.md's pose text order).
+ * Matrices are 16 doubles, row-major (docs/conventions.md). A pose is 7 doubles,
+ * x y z qx qy qz qw (the pose text order of docs/conventions.md).
  */
 #ifndef GAROTOR_BENCH_EIGEN_PEER_H
 #define GAROTOR_BENCH_EIGEN_PEER_H

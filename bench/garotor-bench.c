@@ -20,7 +20,7 @@
  * library's objects), and the bench's own reference functions are kept out of
  * line with the same by-value signatures, so each side pays the same call.
  *
- * The keys under "ns" and "err" are CONTRACT.md's ("The benchmark
+ * The keys under "ns" and "err" are those of docs/conventions.md ("The benchmark
  * garotor-bench"); everything else is extra. docs/benchmarks.md explains each
  * figure and ratio.
  */
@@ -441,7 +441,7 @@ static const sample_ctx ctx_se3_lihao3_exact = {PG_SE3_LIHAO3, GA_EVAL_EXACT};
 static const sample_ctx ctx_se3_lihao3_euler = {PG_SE3_LIHAO3, GA_EVAL_EULER};
 
 static bench benches[] = {
-    /* CONTRACT.md's keys */
+    /* the keys of docs/conventions.md */
     {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full,
      NULL, 0, NULL, 0, 0, 0},
     {"motor_mul", "ga_rotor_mul: product of two compact rotors (8 doubles)", run_motor_mul,

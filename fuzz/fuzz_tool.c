@@ -19,7 +19,7 @@
  * 4096 and an Euler --step below 1e-3 is raised to 1e-3 (both are legal and
  * merely slow); "demo" and --help (anywhere) are skipped.
  *
- * Invariants (CONTRACT.md, docs/errors.md), besides "no crash, no sanitizer
+ * Invariants (docs/tool.md, docs/errors.md), besides "no crash, no sanitizer
  * report, no leak":
  *   - the exit status is 0 or 2;
  *   - status 2 leaves no output file, no picture and no temporary file;

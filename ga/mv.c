@@ -10,7 +10,7 @@
 
 #include <math.h>
 
-/* The canonical order of CONTRACT.md, as bit masks (grade first, then lexicographic). */
+/* The canonical order of docs/conventions.md, as bit masks (grade first, then lexicographic). */
 static const unsigned char blade_mask[32] = {
     0x00,
     0x01, 0x02, 0x04, 0x08, 0x10,

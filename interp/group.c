@@ -2,7 +2,7 @@
  *
  *   ga_group_cga     ga_rotor, Wareham-Lasenby's closed forms (rotor.h); the
  *                    algebra element is a twist, carried to the generator
- *                    B(xi) = -(w I3 + v n)/2 and back (CONTRACT.md).
+ *                    B(xi) = -(w I3 + v n)/2 and back (docs/conventions.md).
  *   ga_group_se3     ga_mat4 rigid motions, Eberly's closed forms (mat4.h).
  *   ga_group_affine  ga_mat4 homogeneous matrices with det > 0, the general
  *                    expm/logm (mat4.h); algebra = top three rows of a 4x4

@@ -10,7 +10,7 @@
  *   log three ways, of the same matrix: l(R) through the bridge
  *   (ga_rotor_from_mat4, ga_rotor_log), ga_se3_log and ga_mat4_logm agree
  *   with the twist we started from to 1e-13 relative to max(1, |v|) for
- *   angles below pi. At exactly pi the axis sign is free (CONTRACT.md), so
+ *   angles below pi. At exactly pi the axis sign is free (docs/conventions.md), so
  *   there each log is checked by its backward error |exp(log M) - M|.
  *
  * The general logm near a half turn: its forward error is bounded by its

@@ -92,7 +92,7 @@ for s in screw bivector quadratic smooth lihao2 lihao3; do
             --out "$d/s.$s.$group" || fail "interp $s $group"
     done
     [ "$(wc -l <"$d/s.$s.cga")" -eq 7 ] || fail "interp $s writes 7 samples"
-    # CONTRACT.md: cga and matrix must agree (the quaternion's sign is free)
+    # docs/tool.md: cga and matrix must agree (the quaternion's sign is free)
     paste -d ' ' "$d/s.$s.cga" "$d/s.$s.matrix" | awk -v s="$s" '
         { e = 0; for (i = 1; i <= 4; i++) { x = $i - $(i + 8); if (x < 0) x = -x; if (x > e) e = x }
           p = 0; m = 0; for (i = 5; i <= 8; i++) { x = $i - $(i + 8); y = $i + $(i + 8)

@@ -1,6 +1,6 @@
 /* tools/textio.h: reading numbers and writing results for the garotor tool.
  *
- * Input (CONTRACT.md): one item a line, numbers separated by whitespace or
+ * Input (docs/tool.md): one item a line, numbers separated by whitespace or
  * commas; blank lines and lines starting with '#' are skipped; with --header
  * the first line is skipped too. Every number must be finite. The whole input
  * is read and checked before anything is written, so an error leaves neither

@@ -10,7 +10,7 @@
  * ga_mat4). Algebra elements are arrays of `dim` doubles:
  *   - ga_group_cga and ga_group_se3: dim 6, a twist (wx, wy, wz, vx, vy, vz);
  *     the rotor side maps it to the generator B(xi) = -1/2 (w I3 + v n)
- *     (CONTRACT.md), the matrix side to xi^ = [[w]x, v; 0, 0];
+ *     (docs/conventions.md), the matrix side to xi^ = [[w]x, v; 0, 0];
  *   - ga_group_affine: dim 12, the top three rows of a 4x4 matrix whose last
  *     row is zero (row-major), i.e. any real 3x4 [A | b].
  * Vector-space operations on algebra elements (sums, scaling) are plain

@@ -26,7 +26,7 @@
 extern "C" {
 #endif
 
-/** The rigidity tolerance of CONTRACT.md: ga_se3_log and ga_se3_geodesic accept
+/** The rigidity tolerance of docs/conventions.md: ga_se3_log and ga_se3_geodesic accept
  *  a matrix m when ga_se3_check(m, GA_SE3_TOL) is GA_OK. */
 #define GA_SE3_TOL 1e-9
 

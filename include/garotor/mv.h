@@ -2,7 +2,7 @@
  *
  * G(4,1) has basis vectors e1, e2, e3, e4 squaring to +1 and e5 squaring to -1
  * (Wareham-Lasenby §2.2: e4 = e, e5 = ebar). A multivector holds 32 doubles in
- * the canonical order of CONTRACT.md: grade first, then lexicographic,
+ * the canonical order of docs/conventions.md: grade first, then lexicographic,
  *
  *   1; e1 e2 e3 e4 e5; e12 e13 e14 e15 e23 e24 e25 e34 e35 e45;
  *   e123 e124 e125 e134 e135 e145 e234 e235 e245 e345;

@@ -7,7 +7,7 @@
  * for cga/se3), per unit of t; on segment i the velocity per unit of u is
  * h_i times it. "plog" below is the group's principal log.
  *
- * Schemes (CONTRACT.md, `garotor interp --scheme`):
+ * Schemes (docs/schemes.md, `garotor interp --scheme`):
  *   SCREW      A(t) = A_i exp(u B_i), B_i = plog(A_i^-1 A_{i+1})  (Li-Hao eqs.
  *              8-10). By Ad-invariance, A exp(u log(A^-1 B)) A^-1 =
  *              exp(u Ad_A log(A^-1 B)) = exp(u log(B A^-1)), this is W-L §3.1's
@@ -78,7 +78,7 @@
  * inherent limit of generator-space interpolation. On affine: principal logm.
  *
  * Half turns. At a relative rotation of exactly pi the principal log's axis
- * sign is arbitrary (CONTRACT.md), so two representations may pick opposite
+ * sign is arbitrary (docs/conventions.md), so two representations may pick opposite
  * screws. Every log this module takes on cga/se3 is made deterministic: when
  * th >= pi - GA_PATH_HALF_TURN_BAND, the twist is replaced by its other branch
  * if the first component of w/th (x, y, z order) larger than 0.3 in magnitude

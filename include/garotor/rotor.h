@@ -19,7 +19,7 @@
  *
  * Generators: B = beta I3 + c n with beta, c vectors of G(3) (I3 = e123), i.e.
  * the bivector span{e_ij, e_i n}. A twist xi = (w, v) has the generator
- * B(xi) = -(w I3 + v n)/2 (CONTRACT.md), so beta = -w/2, c = -v/2, and
+ * B(xi) = -(w I3 + v n)/2 (docs/conventions.md), so beta = -w/2, c = -v/2, and
  * exp(B(xi)) moves points as expm(xi^) does. With phi = |beta| (half the
  * rotation angle) and sinc(x) = sin(x)/x,
  *
@@ -130,7 +130,7 @@ ga_rotor ga_rotor_translation(ga_vec3 a);
  *  axis); any a is accepted and the formula applied as written. */
 ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a);
 
-/** The generator B(xi) = -(w I3 + v n)/2 of a twist (CONTRACT.md). */
+/** The generator B(xi) = -(w I3 + v n)/2 of a twist (docs/conventions.md). */
 ga_generator ga_twist_to_generator(ga_twist xi);
 
 /** The twist of a generator: the inverse of ga_twist_to_generator. */

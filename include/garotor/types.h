@@ -1,6 +1,6 @@
 /* garotor/types.h: the small value types and status codes every module shares.
  *
- * Conventions (see docs/conventions.md and CONTRACT.md):
+ * Conventions (docs/conventions.md):
  *   - a 4x4 matrix is homogeneous, row-major, acting on column vectors (x,y,z,1);
  *   - a twist xi = (w, v) = (wx, wy, wz, vx, vy, vz) names the motion expm(xi^),
  *     xi^ = [[w]x, v; 0, 0];
