@@ -253,8 +253,8 @@ static int build_paths(void)
             void *work = malloc(bytes);
             if (!work)
                 return GA_ERR_ARG;
-            int st = ga_path_init_mat4(&paths[k][p], g, path_kind[k].scheme, N_KEYS, times,
-                                       keys, NULL, work, bytes);
+            int st = ga_path_init_mat4(g, path_kind[k].scheme, N_KEYS, times,
+                                       keys, NULL, work, bytes, &paths[k][p]);
             if (st != GA_OK)
                 return st;
         }

@@ -222,10 +222,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!work)
         return 0;
     ga_path p;
-    int st = via_mat ? ga_path_init_mat4(&p, g, scheme, n, times, mkeys, velp, work, wbytes)
-                     : ga_path_init(&p, g, scheme, n, times, keybuf, velp, work, wbytes);
+    int st = via_mat ? ga_path_init_mat4(g, scheme, n, times, mkeys, velp, work, wbytes, &p)
+                     : ga_path_init(g, scheme, n, times, keybuf, velp, work, wbytes, &p);
     FZ_CHECK(is_status(st), "init status %d", st);
-    int count_ok = n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3);
+    int count_ok = (size_t)n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3);
     if (!count_ok)
         FZ_CHECK(st == GA_ERR_ARG, "%s with %d keys: status %d", ga_scheme_name(scheme), n, st);
     if (count_ok && !times_finite)

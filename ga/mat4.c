@@ -201,8 +201,10 @@ ga_mat4 ga_twist_hat(ga_twist xi)
 ga_twist ga_twist_vee(ga_mat4 a)
 {
     ga_twist xi;
-    xi.w = v3(0.5 * (M(a, 2, 1) - M(a, 1, 2)), 0.5 * (M(a, 0, 2) - M(a, 2, 0)),
-              0.5 * (M(a, 1, 0) - M(a, 0, 1)));
+    /* halves first: the same result as (a21 - a12)/2 (scaling by 2 commutes
+       with rounding), but no overflow for entries beyond DBL_MAX/2 */
+    xi.w = v3(0.5 * M(a, 2, 1) - 0.5 * M(a, 1, 2), 0.5 * M(a, 0, 2) - 0.5 * M(a, 2, 0),
+              0.5 * M(a, 1, 0) - 0.5 * M(a, 0, 1));
     xi.v = v3(M(a, 0, 3), M(a, 1, 3), M(a, 2, 3));
     return xi;
 }

@@ -32,6 +32,84 @@ static void twist_put(ga_twist t, double *x)
     x[3] = t.v.x; x[4] = t.v.y; x[5] = t.v.z;
 }
 
+/* xi^ = [[w]x, v; 0 0 0 0] and back, for cga and se3 alike. vee reads the
+ * skew part of the 3x3 block (ga_twist_vee) after checking that a is in the
+ * algebra: last row zero, symmetric part within 1e-9 of the largest entry. */
+static ga_mat4 twist_hat(const double *x) { return ga_twist_hat(twist_of(x)); }
+static int twist_vee(ga_mat4 a, double *x)
+{
+    double big = 0.0, sym = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        if (!isfinite(a.m[i])) return GA_ERR_NOTFINITE;
+        big = fmax(big, fabs(a.m[i]));
+    }
+    for (int r = 0; r < 3; ++r)
+        for (int c = r; c < 3; ++c) sym = fmax(sym, fabs(a.m[4 * r + c] + a.m[4 * c + r]));
+    if (a.m[12] != 0.0 || a.m[13] != 0.0 || a.m[14] != 0.0 || a.m[15] != 0.0 || sym > 1e-9 * big)
+        return GA_ERR_ARG;
+    twist_put(ga_twist_vee(a), x);
+    return GA_OK;
+}
+
+/* ---- the half-turn and branch rules of twists (group.h) ------------------- */
+
+#define PI 3.14159265358979323846
+
+static double twist_angle(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+
+/* The other branch of a twist of angle th > 0: angle th - 2 pi about the same
+ * axis, w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th. Same motion:
+ * Eberly's V of eq. 20 acts as 1 along w and as i(1 - e^{i th})/th across it,
+ * so V(w')^-1 V(w) = k across, 1 along. */
+static void twist_other_branch(double *x)
+{
+    double th = twist_angle(x);
+    if (th == 0.0) return;
+    double k = (th - 2.0 * PI) / th;
+    double vp = (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th);
+    for (int i = 0; i < 3; ++i) {
+        double par = vp * x[i];
+        x[3 + i] = k * (x[3 + i] - par) + par;
+        x[i] *= k;
+    }
+}
+
+/* The rotation quaternion (cos(th/2), sin(th/2) w/th) of a twist. */
+static void twist_quat(const double *x, double q[4])
+{
+    double th = twist_angle(x), h = 0.5 * th;
+    double f = h > 0 ? 0.5 * sin(h) / h : 0.5; /* sin(th/2)/th */
+    q[0] = cos(h);
+    q[1] = f * x[0]; q[2] = f * x[1]; q[3] = f * x[2];
+}
+
+/* Deterministic axis at a half turn (group.h half_turn): within
+ * GA_GROUP_HALF_TURN_BAND of pi, the first axis component larger than 0.3 in
+ * magnitude is made positive. */
+static void twist_half_turn(double *x)
+{
+    double th = twist_angle(x);
+    if (!(th >= PI - GA_GROUP_HALF_TURN_BAND)) return;
+    for (int i = 0; i < 3; ++i)
+        if (fabs(x[i]) > 0.3 * th) {
+            if (x[i] < 0) twist_other_branch(x);
+            return;
+        }
+}
+
+/* The branch of x that continues prev (group.h branch): W-L's rotor rule
+ * <R_i ~R_{i-1}>_0 >= 0 in twist coordinates. A relative half turn
+ * (dot = cos(relative angle/2) ~ 0) is a tie that rounding would break at
+ * random: inside the half-turn band x is kept. */
+static void twist_branch(const double *prev, double *x)
+{
+    double q0[4], q1[4];
+    twist_quat(prev, q0);
+    twist_quat(x, q1);
+    if (q0[0] * q1[0] + q0[1] * q1[1] + q0[2] * q1[2] + q0[3] * q1[3] < -0.5 * GA_GROUP_HALF_TURN_BAND)
+        twist_other_branch(x);
+}
+
 static ga_vec3 v3(double x, double y, double z) { ga_vec3 r = { x, y, z }; return r; }
 static ga_vec3 cross(ga_vec3 a, ga_vec3 b)
 {
@@ -169,9 +247,23 @@ static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (g
 static ga_mat4 cga_to_mat4(const void *g) { return ga_rotor_to_mat4(*(const ga_rotor *)g); }
 
 const ga_group ga_group_cga = {
-    "cga", sizeof(ga_rotor), 6,
-    cga_identity, cga_compose, cga_inverse, cga_exp, cga_log, cga_adjoint,
-    cga_from_mat4, cga_to_mat4, se3_dexp
+    .name = "cga",
+    .elem_size = sizeof(ga_rotor),
+    .dim = 6,
+    .rigid = 1,
+    .identity = cga_identity,
+    .compose = cga_compose,
+    .inverse = cga_inverse,
+    .exp = cga_exp,
+    .log = cga_log,
+    .adjoint = cga_adjoint,
+    .dexp = se3_dexp,
+    .from_mat4 = cga_from_mat4,
+    .to_mat4 = cga_to_mat4,
+    .hat = twist_hat,
+    .vee = twist_vee,
+    .half_turn = twist_half_turn,
+    .branch = twist_branch,
 };
 
 /* ---- se3: rigid-motion matrices ----------------------------------------- */
@@ -213,9 +305,23 @@ static int se3_from_mat4(ga_mat4 m, void *out)
 static ga_mat4 m4_to_mat4(const void *g) { return *(const ga_mat4 *)g; }
 
 const ga_group ga_group_se3 = {
-    "matrix", sizeof(ga_mat4), 6,
-    m4_identity, m4_compose, se3_inverse, se3_exp, se3_log, se3_adjoint,
-    se3_from_mat4, m4_to_mat4, se3_dexp
+    .name = "matrix",
+    .elem_size = sizeof(ga_mat4),
+    .dim = 6,
+    .rigid = 1,
+    .identity = m4_identity,
+    .compose = m4_compose,
+    .inverse = se3_inverse,
+    .exp = se3_exp,
+    .log = se3_log,
+    .adjoint = se3_adjoint,
+    .dexp = se3_dexp,
+    .from_mat4 = se3_from_mat4,
+    .to_mat4 = m4_to_mat4,
+    .hat = twist_hat,
+    .vee = twist_vee,
+    .half_turn = twist_half_turn,
+    .branch = twist_branch,
 };
 
 /* ---- affine: homogeneous matrices, general expm/logm ------------------------ */
@@ -229,6 +335,14 @@ static ga_mat4 aff_hat(const double *x)
     return a;
 }
 static void aff_vee(ga_mat4 a, double *x) { memcpy(x, a.m, 12 * sizeof(double)); }
+static int aff_vee_checked(ga_mat4 a, double *x)
+{
+    for (int i = 0; i < 16; ++i)
+        if (!isfinite(a.m[i])) return GA_ERR_NOTFINITE;
+    if (a.m[12] != 0.0 || a.m[13] != 0.0 || a.m[14] != 0.0 || a.m[15] != 0.0) return GA_ERR_ARG;
+    aff_vee(a, x);
+    return GA_OK;
+}
 
 static int aff_inverse(const void *a, void *out)
 {
@@ -328,16 +442,35 @@ static void aff_dexp(const double *x, const double *y, double *out)
 }
 
 const ga_group ga_group_affine = {
-    "affine", sizeof(ga_mat4), 12,
-    m4_identity, m4_compose, aff_inverse, aff_exp, aff_log, aff_adjoint,
-    aff_from_mat4, m4_to_mat4, aff_dexp
+    .name = "affine",
+    .elem_size = sizeof(ga_mat4),
+    .dim = 12,
+    .rigid = 0,
+    .identity = m4_identity,
+    .compose = m4_compose,
+    .inverse = aff_inverse,
+    .exp = aff_exp,
+    .log = aff_log,
+    .adjoint = aff_adjoint,
+    .dexp = aff_dexp,
+    .from_mat4 = aff_from_mat4,
+    .to_mat4 = m4_to_mat4,
+    .hat = aff_hat,
+    .vee = aff_vee_checked,
+    .half_turn = NULL,
+    .branch = NULL,
 };
+
+static const ga_group *const groups[] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
+
+const ga_group *ga_group_nth(size_t i)
+{
+    return i < sizeof groups / sizeof groups[0] ? groups[i] : NULL;
+}
 
 const ga_group *ga_group_by_name(const char *name)
 {
-    if (!name) return NULL;
-    if (strcmp(name, "cga") == 0) return &ga_group_cga;
-    if (strcmp(name, "matrix") == 0) return &ga_group_se3;
-    if (strcmp(name, "affine") == 0) return &ga_group_affine;
+    for (size_t i = 0; name && i < sizeof groups / sizeof groups[0]; ++i)
+        if (strcmp(name, groups[i]->name) == 0) return groups[i];
     return NULL;
 }

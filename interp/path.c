@@ -7,9 +7,6 @@
 #include <string.h>
 
 #include <garotor/path.h>
-#include <garotor/rotor.h>
-
-#define PI 3.14159265358979323846
 #define MAXD GA_GROUP_MAX_DIM
 #define MAXE GA_GROUP_MAX_ELEM
 
@@ -27,7 +24,7 @@ const char *ga_scheme_name(ga_scheme s)
 
 int ga_scheme_by_name(const char *name, ga_scheme *out)
 {
-    for (int i = 0; name && i < 6; ++i)
+    for (unsigned i = 0; name && i < 6; ++i)
         if (strcmp(name, scheme_names[i]) == 0) { *out = (ga_scheme)i; return GA_OK; }
     return GA_ERR_ARG;
 }
@@ -39,12 +36,12 @@ const char *ga_eval_name(ga_eval e)
 
 int ga_eval_by_name(const char *name, ga_eval *out)
 {
-    for (int i = 0; name && i < 3; ++i)
+    for (unsigned i = 0; name && i < 3; ++i)
         if (strcmp(name, eval_names[i]) == 0) { *out = (ga_eval)i; return GA_OK; }
     return GA_ERR_ARG;
 }
 
-int ga_scheme_min_keys(ga_scheme s)
+size_t ga_scheme_min_keys(ga_scheme s)
 {
     return (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2;
 }
@@ -56,14 +53,14 @@ int ga_scheme_min_keys(ga_scheme s)
  * degree j + 1. */
 static const double fac_poly[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 1 } };
 
-static int nfac(ga_scheme s)
+static size_t nfac(ga_scheme s)
 {
     return s == GA_SCHEME_SCREW ? 1 : s == GA_SCHEME_LIHAO2 ? 2 : s == GA_SCHEME_LIHAO3 ? 3 : 0;
 }
 
 /* The order-m forward difference of p with step d at u (m = 0: p(u) itself),
  * expanded so that no difference of nearby values is formed. */
-static double poly_diff(const double *c, int m, double u, double d)
+static double poly_diff(const double *c, size_t m, double u, double d)
 {
     switch (m) {
     case 0: return u * (c[0] + u * (c[1] + u * c[2]));
@@ -78,25 +75,25 @@ static double poly_deriv(const double *c, double u)
     return c[0] + u * (2 * c[1] + 3 * u * c[2]);
 }
 
-static double *key_of(const ga_path *p, int i) { return p->key + (size_t)i * p->key_stride; }
-static double seg_len(const ga_path *p, int i) { return p->t[i + 1] - p->t[i]; }
+static double *key_of(const ga_path *p, size_t i) { return p->key + i * p->key_stride; }
+static double seg_len(const ga_path *p, size_t i) { return p->t[i + 1] - p->t[i]; }
 
-/* The two element sizes there are get a memcpy of constant size, which the
- * compiler turns into a few moves (a call to memcpy per copy was a tenth of
- * the time of sampling a screw path on rotors). */
+/* Element sizes of 8 and 16 doubles (a rotor, a 4x4 matrix) get a memcpy of
+ * constant size, which the compiler turns into a few moves (a call to memcpy
+ * per copy was a tenth of the time of sampling a screw path on rotors). */
 static void copy_elem(const ga_group *g, void *dst, const void *src)
 {
-    if (g->elem_size == sizeof(ga_rotor))
-        memcpy(dst, src, sizeof(ga_rotor));
-    else if (g->elem_size == sizeof(ga_mat4))
-        memcpy(dst, src, sizeof(ga_mat4));
+    if (g->elem_size == 8 * sizeof(double))
+        memcpy(dst, src, 8 * sizeof(double));
+    else if (g->elem_size == 16 * sizeof(double))
+        memcpy(dst, src, 16 * sizeof(double));
     else
         memcpy(dst, src, g->elem_size);
 }
 
-static void lin(int d, double *out, double s, const double *a, double r, const double *b)
+static void lin(size_t d, double *out, double s, const double *a, double r, const double *b)
 {
-    for (int k = 0; k < d; ++k) out[k] = s * a[k] + r * b[k];
+    for (size_t k = 0; k < d; ++k) out[k] = s * a[k] + r * b[k];
 }
 
 static int allfinite(const double *x, size_t n)
@@ -118,54 +115,11 @@ static int finite_elem(const ga_group *g, const void *x)
     return allfinite(x, g->elem_size / sizeof(double)) ? GA_OK : GA_ERR_DOMAIN;
 }
 
-/* ---- twist branches (cga and se3: dim 6) ------------------------------------ */
-
-static double twist_angle(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
-
-/* The other branch of a twist of angle th > 0: angle th - 2 pi about the same
- * axis, w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th. Same motion:
- * Eberly's V of eq. 20 acts as 1 along w and as i(1 - e^{i th})/th across it,
- * so V(w')^-1 V(w) = k across, 1 along. */
-static void twist_other_branch(double *x)
-{
-    double th = twist_angle(x);
-    if (th == 0.0) return;
-    double k = (th - 2.0 * PI) / th;
-    double vp = (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th);
-    for (int i = 0; i < 3; ++i) {
-        double par = vp * x[i];
-        x[3 + i] = k * (x[3 + i] - par) + par;
-        x[i] *= k;
-    }
-}
-
-/* The rotation quaternion (cos(th/2), sin(th/2) w/th) of a twist. */
-static void twist_quat(const double *x, double q[4])
-{
-    double th = twist_angle(x), h = 0.5 * th;
-    double f = h > 0 ? 0.5 * sin(h) / h : 0.5; /* sin(th/2)/th */
-    q[0] = cos(h);
-    q[1] = f * x[0]; q[2] = f * x[1]; q[3] = f * x[2];
-}
-
-/* Deterministic axis at a half turn (path.h): within GA_PATH_HALF_TURN_BAND of
- * pi, the first axis component larger than 0.3 in magnitude is made positive. */
-static void twist_canon_half_turn(double *x)
-{
-    double th = twist_angle(x);
-    if (!(th >= PI - GA_PATH_HALF_TURN_BAND)) return;
-    for (int i = 0; i < 3; ++i)
-        if (fabs(x[i]) > 0.3 * th) {
-            if (x[i] < 0) twist_other_branch(x);
-            return;
-        }
-}
-
-/* The principal log, made deterministic at half turns on cga/se3. */
+/* The principal log, made deterministic at half turns (group.h half_turn). */
 static int plog(const ga_group *g, const void *a, double *x)
 {
     int st = g->log(a, x);
-    if (st == GA_OK && g->dim == 6) twist_canon_half_turn(x);
+    if (st == GA_OK && g->half_turn) g->half_turn(x);
     return st;
 }
 
@@ -181,9 +135,9 @@ static int rel_log(const ga_group *g, const void *a, const void *b, double *x, d
 
 /* ---- workspace ---------------------------------------------------------------- */
 
-static size_t scheme_doubles(ga_scheme s, int n, int d)
+static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
 {
-    size_t N = (size_t)n, D = (size_t)d, S = N - 1;
+    size_t S = N - 1;
     switch (s) {
     case GA_SCHEME_SCREW: return S * D;
     case GA_SCHEME_LIHAO2: return 2 * S * D + N * D;
@@ -195,15 +149,15 @@ static size_t scheme_doubles(ga_scheme s, int n, int d)
     return 0;
 }
 
-size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, int n)
+size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n)
 {
     if (!g || n < 1 || (unsigned)s > GA_SCHEME_LIHAO3) return 0;
     size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
-    return sizeof(double) * ((size_t)n + (size_t)n * stride + scheme_doubles(s, n, g->dim));
+    return sizeof(double) * (n + n * stride + scheme_doubles(s, n, g->dim));
 }
 
 /* Check the arguments and lay the arrays out in the workspace. */
-static int layout(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
+static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const double *times,
                   const void *keys, void *work, size_t bytes)
 {
     if (!p || !g || !times || !keys || !work || (unsigned)s > GA_SCHEME_LIHAO3)
@@ -211,24 +165,24 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, int n, const doubl
     if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)) return GA_ERR_ARG;
     if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
         return GA_ERR_ARG;
-    if (!allfinite(times, (size_t)n)) return GA_ERR_NOTFINITE;
-    for (int i = 0; i + 1 < n; ++i)
+    if (!allfinite(times, n)) return GA_ERR_NOTFINITE;
+    for (size_t i = 0; i + 1 < n; ++i)
         if (!(times[i] < times[i + 1])) return GA_ERR_ARG;
-    int d = g->dim;
+    size_t d = g->dim;
     double *w = work;
     memset(p, 0, sizeof *p);
     p->group = g; p->scheme = s; p->n = n;
-    p->key_stride = (int)((g->elem_size + sizeof(double) - 1) / sizeof(double));
+    p->key_stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
     p->t = w; w += n;
-    p->key = w; w += (size_t)n * p->key_stride;
-    memcpy(p->t, times, (size_t)n * sizeof(double));
+    p->key = w; w += n * p->key_stride;
+    memcpy(p->t, times, n * sizeof(double));
     switch (s) {
     case GA_SCHEME_SCREW: p->coef = w; break;
-    case GA_SCHEME_LIHAO2: p->coef = w; p->vel = w + 2 * (size_t)(n - 1) * d; break;
-    case GA_SCHEME_LIHAO3: p->coef = w; p->vel = w + 3 * (size_t)(n - 1) * d; break;
+    case GA_SCHEME_LIHAO2: p->coef = w; p->vel = w + 2 * (n - 1) * d; break;
+    case GA_SCHEME_LIHAO3: p->coef = w; p->vel = w + 3 * (n - 1) * d; break;
     case GA_SCHEME_BIVECTOR: p->gen = w; break;
     case GA_SCHEME_QUADRATIC:
-    case GA_SCHEME_SMOOTH: p->gen = w; p->slope = w + (size_t)n * d; break;
+    case GA_SCHEME_SMOOTH: p->gen = w; p->slope = w + n * d; break;
     }
     return GA_OK;
 }
@@ -240,30 +194,30 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, int n, const doubl
 static int build_lihao(ga_path *p, const double *vel)
 {
     const ga_group *g = p->group;
-    int n = p->n, d = g->dim, nf = nfac(p->scheme);
+    size_t n = p->n, d = g->dim, nf = nfac(p->scheme);
     double rel[MAXE], reli[MAXE], e[MAXE], m[MAXE], x[MAXD], ad[MAXD];
     int st;
     if (p->scheme == GA_SCHEME_SCREW) {
-        for (int i = 0; i + 1 < n; ++i)
-            if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + (size_t)i * d, rel)))
+        for (size_t i = 0; i + 1 < n; ++i)
+            if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + i * d, rel)))
                 return st;
         return GA_OK;
     }
     if (p->scheme == GA_SCHEME_LIHAO3) {
         if (vel) {
-            if (!allfinite(vel, (size_t)n * d)) return GA_ERR_NOTFINITE;
-            memcpy(p->vel, vel, (size_t)n * d * sizeof(double));
+            if (!allfinite(vel, n * d)) return GA_ERR_NOTFINITE;
+            memcpy(p->vel, vel, n * d * sizeof(double));
         } else {
             /* default rule (path.h): s_i = plog(A_i^-1 A_{i+1})/h_i, parked in D_i */
-            for (int i = 0; i + 1 < n; ++i) {
-                double *s = p->coef + ((size_t)i * 3 + 2) * d;
+            for (size_t i = 0; i + 1 < n; ++i) {
+                double *s = p->coef + (i * 3 + 2) * d;
                 if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), s, rel))) return st;
                 lin(d, s, 1.0 / seg_len(p, i), s, 0.0, s);
             }
-            for (int i = 0; i < n; ++i) {
-                double *v = p->vel + (size_t)i * d;
-                const double *sl = i > 0 ? p->coef + ((size_t)(i - 1) * 3 + 2) * d : NULL;
-                const double *sr = i + 1 < n ? p->coef + ((size_t)i * 3 + 2) * d : NULL;
+            for (size_t i = 0; i < n; ++i) {
+                double *v = p->vel + i * d;
+                const double *sl = i > 0 ? p->coef + ((i - 1) * 3 + 2) * d : NULL;
+                const double *sr = i + 1 < n ? p->coef + (i * 3 + 2) * d : NULL;
                 if (!sl) memcpy(v, sr, d * sizeof(double));
                 else if (!sr) memcpy(v, sl, d * sizeof(double));
                 else {
@@ -274,7 +228,7 @@ static int build_lihao(ga_path *p, const double *vel)
         }
     } else { /* LIHAO2: the first key's velocity */
         if (vel) {
-            if (!allfinite(vel, (size_t)d)) return GA_ERR_NOTFINITE;
+            if (!allfinite(vel, d)) return GA_ERR_NOTFINITE;
             memcpy(p->vel, vel, d * sizeof(double));
         } else {
             if ((st = rel_log(g, key_of(p, 0), key_of(p, 1), p->vel, rel))) return st;
@@ -284,15 +238,15 @@ static int build_lihao(ga_path *p, const double *vel)
     /* finite input, but a default velocity plog/h or B = h V can overflow (a
        subnormal segment): GA_ERR_DOMAIN, not the GA_ERR_NOTFINITE exp would give
        (fuzz/regress/path/lihao3-default-velocity-overflow-status) */
-    if (!allfinite(p->vel, (size_t)(p->scheme == GA_SCHEME_LIHAO3 ? n : 1) * d))
+    if (!allfinite(p->vel, (p->scheme == GA_SCHEME_LIHAO3 ? n : 1) * d))
         return GA_ERR_DOMAIN;
-    for (int i = 0; i + 1 < n; ++i) {
+    for (size_t i = 0; i + 1 < n; ++i) {
         double h = seg_len(p, i);
-        double *B = p->coef + (size_t)i * nf * d, *C = B + d, *D = C + d;
-        const double *vi = p->vel + (size_t)i * d;
+        double *B = p->coef + i * nf * d, *C = B + d, *D = C + d;
+        const double *vi = p->vel + i * d;
         /* eq. 26: B_i = velocity at the key, per unit u */
         lin(d, B, h, vi, 0.0, vi);
-        if (!allfinite(B, (size_t)d)) return GA_ERR_DOMAIN;
+        if (!allfinite(B, d)) return GA_ERR_DOMAIN;
         /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
         double ai[MAXE];
         if ((st = g->inverse(key_of(p, i), ai))) return st;
@@ -306,44 +260,35 @@ static int build_lihao(ga_path *p, const double *vel)
         g->adjoint(reli, B, ad);
         if (p->scheme == GA_SCHEME_LIHAO2) {
             /* eq. 17, per unit t: the next key's velocity */
-            double *vn = p->vel + (size_t)(i + 1) * d;
+            double *vn = p->vel + (i + 1) * d;
             lin(d, vn, 1.0 / h, ad, 2.0 / h, C);
         } else {
             /* eq. 28: D_i = h V_{i+1} - Ad_{rel^-1} B_i - 2 C_i */
-            const double *vn = p->vel + (size_t)(i + 1) * d;
-            for (int k = 0; k < d; ++k) D[k] = h * vn[k] - ad[k] - 2.0 * C[k];
+            const double *vn = p->vel + (i + 1) * d;
+            for (size_t k = 0; k < d; ++k) D[k] = h * vn[k] - ad[k] - 2.0 * C[k];
         }
     }
     return GA_OK;
 }
 
-/* Key generators with the branch rule of path.h (W-L §3; the rotor rule
- * <R_i ~R_{i-1}>_0 >= 0 in twist coordinates). */
+/* Key generators with the branch rule of path.h (W-L §3: the group's branch
+ * rule, group.h). */
 static int build_generators(ga_path *p)
 {
     const ga_group *g = p->group;
-    int d = g->dim, st;
-    for (int i = 0; i < p->n; ++i) {
-        double *x = p->gen + (size_t)i * d;
+    size_t d = g->dim;
+    int st;
+    for (size_t i = 0; i < p->n; ++i) {
+        double *x = p->gen + i * d;
         if ((st = plog(g, key_of(p, i), x))) return st;
-        if (d == 6 && i > 0) {
-            double q0[4], q1[4];
-            twist_quat(x - d, q0);
-            twist_quat(x, q1);
-            /* a relative half turn (dot = cos(relative angle/2) ~ 0) is a tie
-             * that rounding would break at random: inside the half-turn band
-             * the principal twist is kept */
-            if (q0[0] * q1[0] + q0[1] * q1[1] + q0[2] * q1[2] + q0[3] * q1[3]
-                < -0.5 * GA_PATH_HALF_TURN_BAND)
-                twist_other_branch(x);
-        }
+        if (g->branch && i > 0) g->branch(x - d, x);
     }
     return GA_OK;
 }
 
 /* Breakpoints of the SMOOTH spline: xi_0 = t_0, xi_k = (t_k + t_{k+1})/2 for
  * 1 <= k <= n-3, xi_{n-2} = t_{n-1}. */
-static double brk(const ga_path *p, int k)
+static double brk(const ga_path *p, size_t k)
 {
     if (k == 0) return p->t[0];
     if (k == p->n - 2) return p->t[p->n - 1];
@@ -361,9 +306,9 @@ static double brk(const ga_path *p, int k)
  * Each row is strictly diagonally dominant, so the Thomas algorithm is stable. */
 static void build_smooth(ga_path *p)
 {
-    int n = p->n, d = p->group->dim, m = n - 1;
-    double *cp = p->slope + (size_t)m * d; /* scratch: the modified upper diagonal */
-    for (int j = 0; j < m; ++j) {
+    size_t n = p->n, d = p->group->dim, m = n - 1;
+    double *cp = p->slope + m * d; /* scratch: the modified upper diagonal */
+    for (size_t j = 0; j < m; ++j) {
         double h = seg_len(p, j), lo, di, up;
         if (j == 0) {
             double gam = h / (brk(p, 1) - brk(p, 0));
@@ -376,19 +321,19 @@ static void build_smooth(ga_path *p)
             double be = (p->t[j + 1] - brk(p, j)) / (brk(p, j + 1) - brk(p, j));
             lo = 0.5 * (1.0 - al); di = 0.5 * (3.0 + al - be); up = 0.5 * be;
         }
-        double *r = p->slope + (size_t)j * d;
-        const double *x0 = p->gen + (size_t)j * d, *x1 = x0 + d;
-        for (int k = 0; k < d; ++k) r[k] = 2.0 * (x1[k] - x0[k]) / h;
+        double *r = p->slope + j * d;
+        const double *x0 = p->gen + j * d, *x1 = x0 + d;
+        for (size_t k = 0; k < d; ++k) r[k] = 2.0 * (x1[k] - x0[k]) / h;
         if (j > 0) {
             di -= lo * cp[j - 1];
-            for (int k = 0; k < d; ++k) r[k] -= lo * r[k - d];
+            for (size_t k = 0; k < d; ++k) r[k] -= lo * r[k - d];
         }
         cp[j] = up / di;
-        for (int k = 0; k < d; ++k) r[k] /= di;
+        for (size_t k = 0; k < d; ++k) r[k] /= di;
     }
-    for (int j = m - 2; j >= 0; --j) {
-        double *r = p->slope + (size_t)j * d;
-        for (int k = 0; k < d; ++k) r[k] -= cp[j] * r[k + d];
+    for (size_t j = m - 1; j-- > 0;) {
+        double *r = p->slope + j * d;
+        for (size_t k = 0; k < d; ++k) r[k] -= cp[j] * r[k + d];
     }
 }
 
@@ -418,46 +363,55 @@ static int build(ga_path *p, const double *vel)
 {
     const ga_group *g = p->group;
     size_t ed = g->elem_size / sizeof(double);
-    for (int i = 0; i < p->n; ++i)
+    for (size_t i = 0; i < p->n; ++i)
         if (!allfinite(key_of(p, i), ed)) return GA_ERR_NOTFINITE;
-    int nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
-    if (vel && !allfinite(vel, (size_t)nv * g->dim)) return GA_ERR_NOTFINITE;
+    size_t nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
+    if (vel && !allfinite(vel, nv * g->dim)) return GA_ERR_NOTFINITE;
     int st = build_scheme(p, vel);
     if (st == GA_ERR_NOTFINITE) return GA_ERR_DOMAIN;
     if (st != GA_OK) return st;
-    const double *c = p->key + (size_t)p->n * p->key_stride;
+    const double *c = p->key + p->n * p->key_stride;
     return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_ERR_DOMAIN;
 }
 
-int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
-                 const void *keys, const double *velocities, void *work, size_t work_bytes)
+/* Both build into a local path and hand it out only on success: on an error
+ * *out is untouched (the workspace is not). */
+int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
+                 const double *velocities, void *work, size_t work_bytes, ga_path *out)
 {
-    int st = layout(p, g, s, n, times, keys, work, work_bytes);
+    ga_path p;
+    if (!out) return GA_ERR_ARG;
+    int st = layout(&p, g, s, n, times, keys, work, work_bytes);
     if (st != GA_OK) return st;
-    for (int i = 0; i < n; ++i)
-        copy_elem(g, key_of(p, i), (const unsigned char *)keys + (size_t)i * g->elem_size);
-    return build(p, velocities);
+    for (size_t i = 0; i < n; ++i)
+        copy_elem(g, key_of(&p, i), (const unsigned char *)keys + i * g->elem_size);
+    if ((st = build(&p, velocities)) == GA_OK) *out = p;
+    return st;
 }
 
-int ga_path_init_mat4(ga_path *p, const ga_group *g, ga_scheme s, int n, const double *times,
-                      const ga_mat4 *keys, const double *velocities, void *work, size_t work_bytes)
+int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times,
+                      const ga_mat4 *keys, const double *velocities, void *work,
+                      size_t work_bytes, ga_path *out)
 {
-    int st = layout(p, g, s, n, times, keys, work, work_bytes);
+    ga_path p;
+    if (!out) return GA_ERR_ARG;
+    int st = layout(&p, g, s, n, times, keys, work, work_bytes);
     if (st != GA_OK) return st;
-    for (int i = 0; i < n; ++i)
-        if ((st = g->from_mat4(keys[i], key_of(p, i)))) return st;
-    return build(p, velocities);
+    for (size_t i = 0; i < n; ++i)
+        if ((st = g->from_mat4(keys[i], key_of(&p, i)))) return st;
+    if ((st = build(&p, velocities)) == GA_OK) *out = p;
+    return st;
 }
 
 /* ---- evaluation ---------------------------------------------------------------- */
 
-int ga_path_locate(const ga_path *p, double t, int *seg, double *u)
+int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
 {
-    int n = p->n;
+    size_t n = p->n;
     if (!(t >= p->t[0] && t <= p->t[n - 1])) return GA_ERR_ARG; /* also NaN */
-    int lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
+    size_t lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
     while (lo < hi) {
-        int mid = (lo + hi + 1) / 2;
+        size_t mid = (lo + hi + 1) / 2;
         if (p->t[mid] <= t) lo = mid; else hi = mid - 1;
     }
     *seg = lo;
@@ -466,11 +420,11 @@ int ga_path_locate(const ga_path *p, double t, int *seg, double *u)
 }
 
 /* X(t) and X'(t) (per unit t) of the generator-space schemes on segment j. */
-static void gen_curve(const ga_path *p, int j, double u, double *x, double *xd)
+static void gen_curve(const ga_path *p, size_t j, double u, double *x, double *xd)
 {
-    int d = p->group->dim, n = p->n;
+    size_t d = p->group->dim, n = p->n;
     double h = seg_len(p, j);
-    const double *x0 = p->gen + (size_t)j * d, *x1 = x0 + d;
+    const double *x0 = p->gen + j * d, *x1 = x0 + d;
     if (p->scheme == GA_SCHEME_BIVECTOR) { /* W-L §3: linear in the generators */
         lin(d, x, 1.0 - u, x0, u, x1);
         lin(d, xd, 1.0 / h, x1, -1.0 / h, x0);
@@ -479,24 +433,25 @@ static void gen_curve(const ga_path *p, int j, double u, double *x, double *xd)
     /* SMOOTH / QUADRATIC: from the nearer key a of the segment, inside one
      * piece k where X' is linear: X(t) = X_a + (t - t_a)(X'(t_a) + X'(t))/2. */
     int left = u <= 0.5;
-    int k = j == 0 ? 0 : j == n - 2 ? n - 3 : left ? j - 1 : j;
-    int a = left ? j : j + 1;
+    size_t k = j == 0 ? 0 : j == n - 2 ? n - 3 : left ? j - 1 : j;
+    size_t a = left ? j : j + 1;
     double tau = left ? u * h : (u - 1.0) * h;
     double xk = brk(p, k), L = brk(p, k + 1) - xk;
     double fa = (p->t[a] - xk) / L, ft = (p->t[a] + tau - xk) / L;
-    const double *dk = p->slope + (size_t)k * d, *dk1 = dk + d, *xa = p->gen + (size_t)a * d;
-    for (int i = 0; i < d; ++i) {
+    const double *dk = p->slope + k * d, *dk1 = dk + d, *xa = p->gen + a * d;
+    for (size_t i = 0; i < d; ++i) {
         double sa = dk[i] + (dk1[i] - dk[i]) * fa, st = dk[i] + (dk1[i] - dk[i]) * ft;
         x[i] = xa[i] + tau * 0.5 * (sa + st);
         xd[i] = st;
     }
 }
 
-int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
+int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
 {
-    if (!p || !out || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_ERR_ARG;
+    if (!p || !out || seg + 2 > p->n || !isfinite(u)) return GA_ERR_ARG;
     const ga_group *g = p->group;
-    int d = g->dim, nf = nfac(p->scheme), st;
+    size_t d = g->dim, nf = nfac(p->scheme);
+    int st;
     double x[MAXD], xd[MAXD];
     if (nf == 0) { /* exp(X(t)) */
         gen_curve(p, seg, u, x, xd);
@@ -506,8 +461,8 @@ int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
      * the partial products alternating between two buffers, the last one
      * composed straight into out */
     double acc[2][MAXE], e[MAXE];
-    const double *left = key_of(p, seg), *X = p->coef + (size_t)seg * nf * d;
-    for (int j = 0; j < nf; ++j, X += d) {
+    const double *left = key_of(p, seg), *X = p->coef + seg * nf * d;
+    for (size_t j = 0; j < nf; ++j, X += d) {
         lin(d, x, poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
         if ((st = g->exp(x, e))) return st;
         double *dst = j + 1 == nf ? out : acc[j & 1];
@@ -519,7 +474,7 @@ int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out)
 }
 
 /* DIRECT at (seg, u): at a key time the key itself, not its rounding. */
-static int eval_direct(const ga_path *p, int seg, double u, void *out)
+static int eval_direct(const ga_path *p, size_t seg, double u, void *out)
 {
     if (u == 0.0 || u == 1.0) {
         copy_elem(p->group, out, key_of(p, seg + (u == 1.0)));
@@ -530,7 +485,7 @@ static int eval_direct(const ga_path *p, int seg, double u, void *out)
 
 int ga_path_eval(const ga_path *p, double t, void *out)
 {
-    int seg;
+    size_t seg;
     double u;
     if (!p || !out) return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
@@ -538,10 +493,11 @@ int ga_path_eval(const ga_path *p, double t, void *out)
 }
 
 /* Body velocity per unit u on segment seg. */
-static int velocity_u(const ga_path *p, int seg, double u, double *v)
+static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
 {
     const ga_group *g = p->group;
-    int d = g->dim, nf = nfac(p->scheme), st;
+    size_t d = g->dim, nf = nfac(p->scheme);
+    int st;
     double x[MAXD], xd[MAXD], w[MAXD];
     if (nf == 0) { /* J_r(X) X' (group.h dexp), X' per unit t, times h */
         gen_curve(p, seg, u, x, xd);
@@ -551,37 +507,37 @@ static int velocity_u(const ga_path *p, int seg, double u, double *v)
     }
     /* M = F_1 F_2 F_3, F_j = exp(p_j X_j): M^-1 M' = Ad_{F_3^-1}(Ad_{F_2^-1}(p_1' X_1)
      * + p_2' X_2) + p_3' X_3 (product rule; Li-Hao eqs. 15, 25, 34) */
-    const double *X = p->coef + (size_t)seg * nf * d;
-    for (int j = 0; j < nf; ++j, X += d) {
+    const double *X = p->coef + seg * nf * d;
+    for (size_t j = 0; j < nf; ++j, X += d) {
         if (j > 0) {
             double fi[MAXE];
             lin(d, x, -poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
             if ((st = g->exp(x, fi))) return st;
             g->adjoint(fi, v, w);
         } else {
-            for (int k = 0; k < d; ++k) w[k] = 0.0;
+            for (size_t k = 0; k < d; ++k) w[k] = 0.0;
         }
         lin(d, v, 1.0, w, poly_deriv(fac_poly[j], u), X);
     }
     return GA_OK;
 }
 
-int ga_path_velocity_segment(const ga_path *p, int seg, double u, double *v)
+int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v)
 {
-    if (!p || !v || seg < 0 || seg > p->n - 2 || !isfinite(u)) return GA_ERR_ARG;
-    int d = p->group->dim;
+    if (!p || !v || seg + 2 > p->n || !isfinite(u)) return GA_ERR_ARG;
+    size_t d = p->group->dim;
     double w[MAXD];
     int st = velocity_u(p, seg, u, w);
     if (st != GA_OK) return st;
     lin(d, w, 1.0 / seg_len(p, seg), w, 0.0, w);
-    if (!allfinite(w, (size_t)d)) return GA_ERR_DOMAIN; /* see finite_elem */
-    memcpy(v, w, (size_t)d * sizeof(double));
+    if (!allfinite(w, d)) return GA_ERR_DOMAIN; /* see finite_elem */
+    memcpy(v, w, d * sizeof(double));
     return GA_OK;
 }
 
 int ga_path_velocity(const ga_path *p, double t, double *v)
 {
-    int seg;
+    size_t seg;
     double u;
     if (!p || !v) return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
@@ -595,11 +551,12 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
 
 /* One Euler sample at (seg, u): continue the running state (*cur, *grid, A)
  * when it is on this segment at or below u, else restart at the key. */
-static int euler_sample(const ga_path *p, double h, int *cur, long *grid, double *A,
-                        int seg, double u, void *out)
+static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, double *A,
+                        size_t seg, double u, void *out)
 {
     const ga_group *g = p->group;
-    int d = g->dim, st;
+    size_t d = g->dim;
+    int st;
     double v[MAXD], e[MAXE], tmp[MAXE];
     if (*cur != seg || (double)*grid * h > u) {
         copy_elem(g, A, key_of(p, seg));
@@ -633,17 +590,18 @@ static int euler_sample(const ga_path *p, double h, int *cur, long *grid, double
  * for 0 < m < deg, then E = exp(D^deg p X), constant on a segment. Degrees 1,
  * 2, 3 use 2, 3, 4 slots. The key is folded into the first factor's G_0
  * (A_i exp(u B)), so SCREW costs one product per sample. */
-static int slot_base(int j) { return j * (j + 3) / 2; }
+static size_t slot_base(size_t j) { return j * (j + 3) / 2; }
 
-static int exact_anchor(ga_path_stepper *s, int seg, double u)
+static int exact_anchor(ga_path_stepper *s, size_t seg, double u)
 {
     const ga_path *p = s->path;
     const ga_group *g = p->group;
-    int d = g->dim, nf = nfac(p->scheme), st, newseg = seg != s->seg;
+    size_t d = g->dim, nf = nfac(p->scheme);
+    int st, newseg = seg != s->seg;
     double delta = s->dt / seg_len(p, seg), x[MAXD], e[MAXE];
-    const double *X = p->coef + (size_t)seg * nf * d;
-    for (int j = 0; j < nf; ++j, X += d)
-        for (int m = 0; m <= j + 1; ++m) {
+    const double *X = p->coef + seg * nf * d;
+    for (size_t j = 0; j < nf; ++j, X += d)
+        for (size_t m = 0; m <= j + 1; ++m) {
             if (m == j + 1 && !newseg) break; /* E is kept for the segment */
             lin(d, x, poly_diff(fac_poly[j], m, u, delta), X, 0.0, X);
             if ((st = g->exp(x, m == 0 && j == 0 ? e : s->slot[slot_base(j) + m]))) return st;
@@ -657,10 +615,10 @@ static int exact_anchor(ga_path_stepper *s, int seg, double u)
 static void exact_advance(ga_path_stepper *s)
 {
     const ga_group *g = s->path->group;
-    int nf = nfac(s->path->scheme);
+    size_t nf = nfac(s->path->scheme);
     double tmp[MAXE];
-    for (int j = 0; j < nf; ++j)
-        for (int m = 0; m <= j; ++m) {
+    for (size_t j = 0; j < nf; ++j)
+        for (size_t m = 0; m <= j; ++m) {
             double *a = s->slot[slot_base(j) + m];
             g->compose(a, s->slot[slot_base(j) + m + 1], tmp);
             copy_elem(g, a, tmp);
@@ -671,7 +629,7 @@ static void exact_advance(ga_path_stepper *s)
 static void exact_output(const ga_path_stepper *s, void *out)
 {
     const ga_group *g = s->path->group;
-    int nf = nfac(s->path->scheme);
+    size_t nf = nfac(s->path->scheme);
     double acc[MAXE], tmp[MAXE];
     if (nf == 1) { copy_elem(g, out, s->slot[0]); return; }
     g->compose(s->slot[0], s->slot[slot_base(1)], acc);
@@ -684,8 +642,8 @@ static void exact_output(const ga_path_stepper *s, void *out)
 
 /* ---- samplers --------------------------------------------------------------------- */
 
-int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev, double step,
-                         size_t n, double t0, double t1)
+int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0,
+                         double t1, ga_path_stepper *s)
 {
     if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT) return GA_ERR_ARG;
     if (!isfinite(t0) || !isfinite(t1)) return GA_ERR_NOTFINITE;
@@ -695,7 +653,7 @@ int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev, doubl
     s->n = n; s->k = 0;
     s->t0 = t0; s->t1 = t1;
     s->dt = n > 1 ? (t1 - t0) / (double)(n - 1) : 0.0;
-    s->seg = -1; s->since = 0; s->grid = 0;
+    s->seg = SIZE_MAX; s->since = 0; s->grid = 0;
     return GA_OK;
 }
 
@@ -704,8 +662,9 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
     if (!s || !out || s->k >= s->n) return GA_ERR_ARG;
     const ga_path *p = s->path;
     double t = s->k + 1 == s->n ? s->t1 : s->t0 + (double)s->k * s->dt, u;
-    int seg = s->seg, st;
-    if (seg >= 0 && p->t[seg] <= t && (t < p->t[seg + 1] || (seg == p->n - 2 && t == p->t[seg + 1]))) {
+    size_t seg = s->seg;
+    int st;
+    if (seg != SIZE_MAX && p->t[seg] <= t && (t < p->t[seg + 1] || (seg == p->n - 2 && t == p->t[seg + 1]))) {
         /* the running segment again (t is inside [t_0, t_{n-1}] by the init):
            what ga_path_locate would find, without its search */
         u = (t - p->t[seg]) / seg_len(p, seg);
@@ -740,7 +699,7 @@ int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
                            double t0, double t1, void *out)
 {
     ga_path_stepper s;
-    int st = ga_path_stepper_init(&s, p, ev, step, n, t0, t1);
+    int st = ga_path_stepper_init(p, ev, step, n, t0, t1, &s);
     if (!out && st == GA_OK) st = GA_ERR_ARG;
     for (size_t k = 0; st == GA_OK && k < n; ++k)
         st = ga_path_stepper_next(&s, (unsigned char *)out + k * p->group->elem_size);
@@ -752,12 +711,11 @@ int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const do
 {
     if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT) return GA_ERR_ARG;
     if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_ERR_ARG;
-    int cur = -1;
-    long grid = 0;
+    size_t cur = SIZE_MAX, grid = 0;
     double A[MAXE];
     for (size_t k = 0; k < n; ++k) {
         void *o = (unsigned char *)out + k * p->group->elem_size;
-        int seg;
+        size_t seg;
         double u;
         int st = ga_path_locate(p, times[k], &seg, &u);
         if (st == GA_OK)

@@ -192,7 +192,7 @@ typedef struct { ga_path p; double work[WORK]; } pathbuf;
 
 static int mkpath(pathbuf *b, const ga_group *g, ga_scheme s, const keyset *k, const double *vel)
 {
-    return ga_path_init_mat4(&b->p, g, s, k->n, k->t, k->m, vel, b->work, sizeof b->work);
+    return ga_path_init_mat4(g, s, k->n, k->t, k->m, vel, b->work, sizeof b->work, &b->p);
 }
 
 static ga_mat4 at(const ga_path *p, double t)
@@ -214,7 +214,7 @@ static ga_mat4 at_seg(const ga_path *p, int seg, double u)
 static void vel_at(const ga_path *p, double t, double *v)
 {
     if (ga_path_velocity(p, t, v) != GA_OK)
-        for (int i = 0; i < p->group->dim; ++i) v[i] = NAN;
+        for (size_t i = 0; i < p->group->dim; ++i) v[i] = NAN;
 }
 
 /* y = log(a^-1 b) through the group (the body displacement from a to b). */
@@ -224,7 +224,7 @@ static void body_log(const ga_group *g, const void *a, const void *b, double *y)
     g->inverse(a, ai);
     g->compose(ai, b, r);
     if (g->log(r, y) != GA_OK)
-        for (int i = 0; i < g->dim; ++i) y[i] = NAN;
+        for (size_t i = 0; i < g->dim; ++i) y[i] = NAN;
 }
 
 /* One-sided body velocity at (seg, u) from side sgn (+1 right, -1 left), by the
@@ -239,7 +239,7 @@ static void fd_velocity(const ga_path *p, int seg, double u, int sgn, double eps
     ga_path_eval_segment(p, seg, u + sgn * 2 * eps / h, b2);
     body_log(g, a, b1, y1);
     body_log(g, a, b2, y2);
-    for (int i = 0; i < g->dim; ++i) v[i] = sgn * (4 * y1[i] - y2[i]) / (2 * eps);
+    for (size_t i = 0; i < g->dim; ++i) v[i] = sgn * (4 * y1[i] - y2[i]) / (2 * eps);
 }
 
 /* Central difference body velocity at (seg, u). */
@@ -253,7 +253,7 @@ static void fd_central(const ga_path *p, int seg, double u, double eps, double *
     ga_path_eval_segment(p, seg, u - eps / h, b2);
     body_log(g, a, b1, y1);
     body_log(g, a, b2, y2);
-    for (int i = 0; i < g->dim; ++i) v[i] = (y1[i] - y2[i]) / (2 * eps);
+    for (size_t i = 0; i < g->dim; ++i) v[i] = (y1[i] - y2[i]) / (2 * eps);
 }
 
 static const ga_scheme all_schemes[6] = {
@@ -271,9 +271,9 @@ static int is_c1(ga_scheme s)
 static double path_scale(const ga_path *p, const keyset *k)
 {
     double s = k->scale;
-    int m = p->gen ? p->n : (p->n - 1) * (p->scheme == GA_SCHEME_SCREW ? 1 : p->scheme == GA_SCHEME_LIHAO2 ? 2 : 3);
+    size_t m = p->gen ? p->n : (p->n - 1) * (p->scheme == GA_SCHEME_SCREW ? 1 : p->scheme == GA_SCHEME_LIHAO2 ? 2 : 3);
     const double *x = p->gen ? p->gen : p->coef;
-    for (int i = 0; i < m * p->group->dim; ++i) s = fmax(s, fabs(x[i]));
+    for (size_t i = 0; i < m * p->group->dim; ++i) s = fmax(s, fabs(x[i]));
     return s;
 }
 
@@ -887,8 +887,8 @@ static double euler_error(const ga_path *p, double h, int nsamp)
 {
     ga_path_stepper se, sd;
     double a[16], b[16], e = 0;
-    ga_path_stepper_init(&se, p, GA_EVAL_EULER, h, nsamp, p->t[0], p->t[p->n - 1]);
-    ga_path_stepper_init(&sd, p, GA_EVAL_DIRECT, 0, nsamp, p->t[0], p->t[p->n - 1]);
+    ga_path_stepper_init(p, GA_EVAL_EULER, h, nsamp, p->t[0], p->t[p->n - 1], &se);
+    ga_path_stepper_init(p, GA_EVAL_DIRECT, 0, nsamp, p->t[0], p->t[p->n - 1], &sd);
     for (int k = 0; k < nsamp; ++k) {
         if (ga_path_stepper_next(&se, a) || ga_path_stepper_next(&sd, b)) return NAN;
         e = fmax(e, mdiff(p->group->to_mat4(a), p->group->to_mat4(b)));
@@ -953,8 +953,8 @@ static void test_exact(tk_rng *r)
         }
         if (mkpath(&b, runs[q].g, runs[q].s, &kk, NULL)) { check(0, "exact init", 0, 0); continue; }
         ga_path_stepper sx, sd;
-        ga_path_stepper_init(&sx, &b.p, GA_EVAL_EXACT, 0, runs[q].n, kk.t[0], kk.t[3]);
-        ga_path_stepper_init(&sd, &b.p, GA_EVAL_DIRECT, 0, runs[q].n, kk.t[0], kk.t[3]);
+        ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, runs[q].n, kk.t[0], kk.t[3], &sx);
+        ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, runs[q].n, kk.t[0], kk.t[3], &sd);
         double e = 0, a[16], c[16];
         clock_t c0 = clock();
         for (long j = 0; j < runs[q].n; ++j) {
@@ -992,49 +992,49 @@ static void test_errors(void)
     for (int i = 0; i < 4; ++i) { k.t[i] = i; k.m[i] = ga_mat4_identity(); k.m[i].m[3] = i; }
     pathbuf b;
     int st;
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_SCREW, 1, k.t, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, 1, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_ARG, "screw with 1 key -> GA_ERR_ARG", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_SMOOTH, 2, k.t, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_SMOOTH, 2, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_ARG, "smooth with 2 keys -> GA_ERR_ARG", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_ARG, "quadratic with 4 keys -> GA_ERR_ARG", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_LIHAO3, 0, k.t, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_LIHAO3, 0, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_ARG, "lihao3 with 0 keys -> GA_ERR_ARG", st, 0);
     double t2[4] = { 0, 1, 1, 2 }, t3[4] = { 0, 2, 1, 3 }, t4[4] = { 0, NAN, 1, 3 };
-    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_LIHAO2, 4, t2, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_LIHAO2, 4, t2, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_ARG, "equal times -> GA_ERR_ARG", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_BIVECTOR, 4, t3, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_BIVECTOR, 4, t3, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_ARG, "decreasing times -> GA_ERR_ARG", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_BIVECTOR, 4, t4, k.m, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_BIVECTOR, 4, t4, k.m, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_NOTFINITE, "NaN time -> GA_ERR_NOTFINITE", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
-                           ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4) - 8);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
+                           ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4) - 8, &b.p);
     check(st == GA_ERR_ARG, "small workspace -> GA_ERR_ARG", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
-                           ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4));
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, NULL, b.work,
+                           ga_path_workspace_size(&ga_group_se3, GA_SCHEME_LIHAO3, 4), &b.p);
     check(st == GA_OK, "exact workspace size suffices", st, 0);
     double out[16];
     check(ga_path_eval(&b.p, 3.5, out) == GA_ERR_ARG, "t after the last key -> GA_ERR_ARG", 0, 0);
     check(ga_path_eval(&b.p, NAN, out) == GA_ERR_ARG, "t NaN -> GA_ERR_ARG", 0, 0);
     ga_path_stepper s;
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EULER, 0.0, 10, 0, 3) == GA_ERR_ARG, "Euler step 0 -> GA_ERR_ARG", 0, 0);
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_EXACT, 0, 1, 1.5, 1.5) == GA_OK
+    check(ga_path_stepper_init(&b.p, GA_EVAL_EULER, 0.0, 10, 0, 3, &s) == GA_ERR_ARG, "Euler step 0 -> GA_ERR_ARG", 0, 0);
+    check(ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, 1, 1.5, 1.5, &s) == GA_OK
           && ga_path_stepper_next(&s, out) == GA_OK && ga_path_stepper_next(&s, out) == GA_ERR_ARG,
           "one-sample stepper, then GA_ERR_ARG", 0, 0);
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, 2, 1) == GA_ERR_ARG, "t0 > t1 -> GA_ERR_ARG", 0, 0);
-    check(ga_path_stepper_init(&s, &b.p, GA_EVAL_DIRECT, 0, 5, -1, 1) == GA_ERR_ARG, "t0 before keys -> GA_ERR_ARG", 0, 0);
+    check(ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, 5, 2, 1, &s) == GA_ERR_ARG, "t0 > t1 -> GA_ERR_ARG", 0, 0);
+    check(ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, 5, -1, 1, &s) == GA_ERR_ARG, "t0 before keys -> GA_ERR_ARG", 0, 0);
     double nanv[4 * 6];
     for (int i = 0; i < 24; ++i) nanv[i] = NAN;
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, nanv, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, nanv, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_NOTFINITE, "NaN velocity -> GA_ERR_NOTFINITE", st, 0);
     ga_mat4 nr[4];
     memcpy(nr, k.m, sizeof nr);
     nr[2].m[0] = 1.1;
-    st = ga_path_init_mat4(&b.p, &ga_group_cga, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_NOTRIGID, "non-rigid key on cga -> GA_ERR_NOTRIGID", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_se3, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_ERR_NOTRIGID, "non-rigid key on se3 -> GA_ERR_NOTRIGID", st, 0);
-    st = ga_path_init_mat4(&b.p, &ga_group_affine, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work);
+    st = ga_path_init_mat4(&ga_group_affine, GA_SCHEME_SCREW, 4, k.t, nr, NULL, b.work, sizeof b.work, &b.p);
     check(st == GA_OK, "scaled key on affine -> ok", st, 0);
     ga_scheme sc;
     check(ga_scheme_by_name("smooth", &sc) == GA_OK && sc == GA_SCHEME_SMOOTH, "scheme by name", 0, 0);

@@ -74,24 +74,19 @@ static int parse_times(const char *s, double **out, size_t *n)
     return 0;
 }
 
-/* A velocity as the tool reads it: 6 numbers (a twist; on affine, its hat) or,
- * on affine, 16 (a 4x4 with last row zero). Writes g->dim doubles. */
+/* A velocity as the tool reads it: 6 numbers, a twist (on every group: its
+ * hat read by the group's vee), or on a group that is not rigid 16, a 4x4
+ * with last row zero. Writes g->dim doubles. */
 static int read_velocity(const ga_group *g, const double *v, int count, double *x)
 {
-    if (count == 6) {
-        if (g->dim == 6) {
-            memcpy(x, v, 6 * sizeof *x);
-        } else {
-            ga_mat4 h = ga_twist_hat((ga_twist){{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
-            memcpy(x, h.m, 12 * sizeof *x);
-        }
-        return 0;
-    }
-    if (count == 16 && g->dim == 12 && v[12] == 0 && v[13] == 0 && v[14] == 0 && v[15] == 0) {
-        memcpy(x, v, 12 * sizeof *x);
-        return 0;
-    }
-    return -1;
+    ga_mat4 a;
+    if (count == 6)
+        a = ga_twist_hat((ga_twist){{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+    else if (count == 16 && !g->rigid)
+        memcpy(a.m, v, sizeof a.m);
+    else
+        return -1;
+    return g->vee(a, x) == GA_OK ? 0 : -1;
 }
 
 /* The picture of the path: the keys, the samples (in the order sampled) and,
@@ -116,8 +111,7 @@ static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval 
     int frames = 4 * (int)(n - 1) < 12 ? 12 : 4 * (int)(n - 1) > 48 ? 48 : 4 * (int)(n - 1);
     svg_path path = {ga_scheme_name(scheme), "#333333", m, ns, frames};
     svg_picture pic = {title, view, keys, times, n, &path, 1, 0, {0, 0, 0}, {0, 0, 0}};
-    pic.has_axis = scheme == GA_SCHEME_SCREW && g->dim == 6 &&
-                   svg_screw_axis(keys, n, &pic.axis_point, &pic.axis_dir);
+    pic.has_axis = scheme == GA_SCHEME_SCREW && svg_screw_axis(keys, n, &pic.axis_point, &pic.axis_dir);
     int st = svg_write(o->svg, &pic);
     free(m);
     return st;
@@ -155,8 +149,8 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: --format must be mat or pose, not '%s'\n", o->format);
         return 2;
     }
-    if (pose && g->dim != 6) {
-        fprintf(stderr, "garotor interp: --group affine takes keys as matrices (--format mat)\n");
+    if (pose && !g->rigid) {
+        fprintf(stderr, "garotor interp: --group %s takes keys as matrices (--format mat)\n", g->name);
         return 2;
     }
     if (!!(o->given & OPT_SAMPLES) == !!(o->given & OPT_AT)) {
@@ -256,7 +250,7 @@ int cmd_interp(const cli_opts *o)
                               vin.item[i].count,
                               vel + i * (size_t)g->dim)) {
                 tio_error(&vin, i, "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
-                                   "found %d", g->dim == 12 ? " or 16 (a 4x4, last row zero)" : "",
+                                   "found %d", g->rigid ? "" : " or 16 (a 4x4, last row zero)",
                           vin.item[i].count);
                 goto done;
             }
@@ -267,7 +261,7 @@ int cmd_interp(const cli_opts *o)
     work = malloc(wbytes);
     if (!work)
         goto oom;
-    int st = ga_path_init_mat4(&path, g, scheme, (int)n, times, keys, vel, work, wbytes);
+    int st = ga_path_init_mat4(g, scheme, (int)n, times, keys, vel, work, wbytes, &path);
     if (st != GA_OK) {
         fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name,
                 ga_scheme_name(scheme), ga_status_string(st));

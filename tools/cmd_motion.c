@@ -30,7 +30,7 @@ int cli_check_motion(const ga_group *g, ga_mat4 m, const tio_items *in, size_t i
         return tio_error(in, i, "not a homogeneous matrix: the last row is not 0 0 0 1");
     double det = a[0] * (a[5] * a[10] - a[6] * a[9]) - a[1] * (a[4] * a[10] - a[6] * a[8]) +
                  a[2] * (a[4] * a[9] - a[5] * a[8]);
-    if (g->dim == 12) {
+    if (!g->rigid) {
         if (!(det > 0.0))
             return tio_error(in, i, "the determinant is %g; the affine group needs it positive", det);
         return 0;
@@ -49,9 +49,10 @@ int cli_check_motion(const ga_group *g, ga_mat4 m, const tio_items *in, size_t i
     return 0;
 }
 
-/* An algebra element as the tool writes it: a twist (6 numbers) for cga and
- * matrix, a 4x4 matrix with zero last row (16 numbers) for affine. */
-static int algebra_count(const ga_group *g) { return g->dim == 6 ? 6 : 16; }
+/* An algebra element as the tool writes it: a twist (6 numbers) on a rigid
+ * group (cga, matrix), else its hat, a 4x4 matrix with zero last row (16
+ * numbers; affine). */
+static int algebra_count(const ga_group *g) { return g->rigid ? 6 : 16; }
 
 static int run(const char *cmd, const cli_opts *o, int is_exp)
 {
@@ -83,11 +84,18 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
         double *r = res + i * (size_t)nout;
         int st;
         if (is_exp) {
-            if (g->dim == 12 && (v[12] != 0 || v[13] != 0 || v[14] != 0 || v[15] != 0)) {
-                ok = !tio_error(&in, i, "the last row of an affine generator must be 0 0 0 0");
-                break;
+            double x[GA_GROUP_MAX_DIM];
+            if (g->rigid) {
+                memcpy(x, v, 6 * sizeof *x);
+            } else {
+                ga_mat4 a;
+                memcpy(a.m, v, sizeof a.m);
+                if (g->vee(a, x) != GA_OK) {
+                    ok = !tio_error(&in, i, "the last row of an affine generator must be 0 0 0 0");
+                    break;
+                }
             }
-            st = g->exp(v, elem);
+            st = g->exp(x, elem);
             if (st == GA_OK) {
                 ga_mat4 m = g->to_mat4(elem);
                 memcpy(r, m.m, sizeof m.m);
@@ -99,11 +107,14 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
                 ok = 0;
                 break;
             }
+            double x[GA_GROUP_MAX_DIM];
             st = g->from_mat4(m, elem);
             if (st == GA_OK)
-                st = g->log(elem, r);
-            if (g->dim == 12)
-                r[12] = r[13] = r[14] = r[15] = 0.0;
+                st = g->log(elem, x);
+            if (st == GA_OK && g->rigid)
+                memcpy(r, x, 6 * sizeof *x);
+            else if (st == GA_OK)
+                memcpy(r, g->hat(x).m, 16 * sizeof *x);
         }
         if (st != GA_OK)
             ok = !tio_error(&in, i, "%s", ga_status_string(st));

@@ -65,7 +65,7 @@ static int sample(const ga_group *g, ga_scheme scheme, const double *t, const ga
     ga_path p;
     if (ga_path_workspace_size(g, scheme, DEMO_KEYS) > sizeof work)
         return GA_ERR_ARG;
-    int st = ga_path_init_mat4(&p, g, scheme, DEMO_KEYS, t, key, NULL, work, sizeof work);
+    int st = ga_path_init_mat4(g, scheme, DEMO_KEYS, t, key, NULL, work, sizeof work, &p);
     if (st == GA_OK)
         st = ga_path_sample_uniform(&p, GA_EVAL_DIRECT, 1.0, DEMO_SAMPLES, t[0], t[DEMO_KEYS - 1],
                                     elem);

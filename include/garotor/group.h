@@ -31,14 +31,25 @@ extern "C" {
 #define GA_GROUP_MAX_DIM 12
 /** The largest element size of any group here, in doubles (a 4x4 matrix). */
 #define GA_GROUP_MAX_ELEM 16
+/** Half-turn band (rad) of the twist groups' half-turn and branch rules
+ *  (ga_group.half_turn, ga_group.branch). */
+#define GA_GROUP_HALF_TURN_BAND 1e-9
 
 typedef struct ga_group ga_group;
 
-/** A Lie group as the schemes see it. Every function is pure (no state). */
+/** A Lie group as the schemes see it. Every function is pure (no state). The
+ *  tables below are the only place that knows what a group element is: the
+ *  schemes (path.h) and the tool ask these operations, never which group
+ *  they run on. */
 struct ga_group {
-    const char *name;   /**< "cga", "matrix" (SE(3)) or "affine" */
-    size_t elem_size;   /**< bytes of one group element */
-    int dim;            /**< doubles in one algebra element */
+    const char *name; /**< "cga", "matrix" (SE(3)) or "affine" */
+    size_t elem_size; /**< bytes of one group element */
+    size_t dim;       /**< doubles in one algebra element */
+    /** 1 when every element is a rigid motion and an algebra element is a
+     *  twist (wx, wy, wz, vx, vy, vz) (cga, se3); 0 when elements may scale
+     *  and shear and an algebra element is only meaningful as its hat, a 4x4
+     *  (affine). The tool reads and writes algebra elements accordingly. */
+    int rigid;
     /** out = identity */
     void (*identity)(void *out);
     /** out = a b (b first, then a, as matrices act on column vectors) */
@@ -52,21 +63,54 @@ struct ga_group {
      *  GA_ERR_DOMAIN where the group element has no principal log (affine) or
      *  the log overflows */
     int (*log)(const void *g, double *x);
-    /** out = Ad_g x = log-free conjugation g x g^-1, in algebra coordinates */
+    /** out = Ad_g x = g x g^-1, in algebra coordinates (exp(Ad_g x) = g exp(x) g^-1) */
     void (*adjoint)(const void *g, const double *x, double *out);
+    /** out = J_r(x) y, the right Jacobian (dexp) of exp at x applied to y:
+     *  the body velocity g^-1 dg/ds of g(s) = exp(x + s y) at s = 0, i.e.
+     *  sum_k (-ad_x)^k y / (k+1)!. The generator-space schemes of path.h need
+     *  it for the velocity of exp(X(t)): g^-1 g' = J_r(X) X'. cga and se3:
+     *  the closed form of the SE(3) right Jacobian; affine: the series by
+     *  scaling and doubling. */
+    void (*dexp)(const double *x, const double *y, double *out);
     /** Read a 4x4 homogeneous matrix into a group element, checking it
      *  (GA_ERR_NOTRIGID for cga/se3 if not a rigid motion to 1e-9; for affine
      *  the last row must be 0 0 0 1 and the determinant positive). */
     int (*from_mat4)(ga_mat4 m, void *out);
     /** The 4x4 homogeneous matrix of a group element. */
     ga_mat4 (*to_mat4)(const void *g);
-    /** out = J_r(x) y, the right Jacobian (dexp) of exp at x applied to y:
-     *  the body velocity g^-1 dg/ds of g(s) = exp(x + s y) at s = 0, i.e.
-     *  sum_k (-ad_x)^k y / (k+1)!. The generator-space schemes of path.h need
-     *  it for the velocity of exp(X(t)): g^-1 g' = J_r(X) X'. cga and se3:
-     *  the closed form of the SE(3) right Jacobian; affine: the series by
-     *  scaling and doubling. (Added by the interpolation module.) */
-    void (*dexp)(const double *x, const double *y, double *out);
+    /** The algebra element x as a 4x4 matrix (last row zero): the matrix whose
+     *  expm is to_mat4(exp(x)). cga/se3: xi^ = [[w]x, v; 0 0 0 0]. */
+    ga_mat4 (*hat)(const double *x);
+    /** The inverse of hat. GA_ERR_ARG when a is not in the algebra: a last row
+     *  other than 0 0 0 0 (any group), or for cga/se3 a 3x3 block that is not
+     *  skew to 1e-9 relative to its largest entry (the skew part is read). */
+    int (*vee)(ga_mat4 a, double *x);
+    /** The half-turn rule, or NULL where the principal log is unique. At a
+     *  rotation of exactly pi the principal log's axis sign is arbitrary, so
+     *  two representations may pick opposite screws; the schemes apply this
+     *  to every log they take, making it deterministic: for cga/se3, when the
+     *  angle th >= pi - GA_GROUP_HALF_TURN_BAND, x is replaced by its other
+     *  branch (below) if the first component of w/th (x, y, z order) larger
+     *  than 0.3 in magnitude is negative (one always is, as 3 * 0.3^2 < 1).
+     *  Inside the band a motion may thus go the long way round by at most
+     *  2 GA_GROUP_HALF_TURN_BAND rad. */
+    void (*half_turn)(double *x);
+    /** The branch rule of generator-space interpolation, or NULL where the log
+     *  has one branch to offer (affine: the principal logm). x holds a log of
+     *  a key; it is replaced, where the group has another log of the same
+     *  element, by the one that continues prev, the previous key's
+     *  generator. cga/se3: the other branch of a twist (w, v) of angle
+     *  th = |w| > 0 is the angle th - 2 pi about the same axis,
+     *  w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th (v_par the part of
+     *  v along w; exp(w', v') = exp(w, v) because V(w')^-1 V(w) = k across w
+     *  and 1 along it, Eberly eq. 20); it is taken when the rotation
+     *  quaternions q(x) = (cos(|w|/2), sin(|w|/2) w/|w|) of prev and x have a
+     *  dot product below -GA_GROUP_HALF_TURN_BAND/2: W-L's rotor rule
+     *  <R_i ~R_{i-1}>_0 >= 0 (consecutive keys take the shortest motion) in
+     *  twist coordinates, so that cga and se3 choose alike. Within the band
+     *  (keys a half turn apart, where rounding would decide) and for a pure
+     *  translation (th = 0, no other branch) x is kept. */
+    void (*branch)(const double *prev, double *x);
 };
 
 /** CGA rotors (ga_rotor, rotor.h): the closed forms of Wareham-Lasenby. */
@@ -80,6 +124,10 @@ extern const ga_group ga_group_affine;
 
 /** The group called `name` ("cga", "matrix", "affine"), or NULL. */
 const ga_group *ga_group_by_name(const char *name);
+
+/** The i-th group of the library (0, 1, 2, ...: cga, matrix, affine), NULL
+ *  past the last: for tests and tools that run over every group. */
+const ga_group *ga_group_nth(size_t i);
 
 #ifdef __cplusplus
 }

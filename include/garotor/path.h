@@ -60,30 +60,17 @@
  *              A_i's frame. A path whose keys lie on one screw motion is then
  *              reproduced exactly (every s_i equal, so C_i = D_i = 0).
  *
- * Branch rule (BIVECTOR, QUADRATIC, SMOOTH on cga and se3): X_0 is the principal
- * twist of A_0; for i >= 1, X_i is either the principal twist (w, v) of A_i,
- * angle th = |w| in [0, pi], or the other branch with angle th - 2 pi about the
- * same axis, w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th (v_par the
- * part of v along w; exp(w', v') = exp(w, v) because V(w')^-1 V(w) = k on the
- * plane across w and 1 along it, Eberly eq. 20), whichever makes the rotation
- * quaternions q(X) = (cos(|w|/2), sin(|w|/2) w/|w|) of X_{i-1} and X_i have a
- * nonnegative dot product. That is W-L's rotor rule <R_i ~R_{i-1}>_0 >= 0
- * (consecutive keys take the shortest motion), computed in twist coordinates
- * so that cga and se3 choose alike. A dot product within
- * GA_PATH_HALF_TURN_BAND/2 of 0 (consecutive keys a half turn apart, where
- * both motions are equally short and rounding would decide) keeps the
- * principal twist. A pure translation (th = 0) has no other
- * branch and keeps its principal twist. Near th = 0 the other branch is
- * ill-conditioned (|k| ~ 2 pi/th): generators approach the full turn, an
- * inherent limit of generator-space interpolation. On affine: principal logm.
+ * Branch rule (BIVECTOR, QUADRATIC, SMOOTH): X_0 is the principal log of A_0;
+ * for i >= 1, X_i is the principal log of A_i passed through the group's
+ * branch rule with X_{i-1} (group.h: on cga/se3, W-L's rule that consecutive
+ * keys take the shortest motion, in twist coordinates; affine has none). Near
+ * a rotation of 0 the other branch of a twist is ill-conditioned
+ * (|k| ~ 2 pi/th): generators approach the full turn, an inherent limit of
+ * generator-space interpolation.
  *
- * Half turns. At a relative rotation of exactly pi the principal log's axis
- * sign is arbitrary (docs/conventions.md), so two representations may pick opposite
- * screws. Every log this module takes on cga/se3 is made deterministic: when
- * th >= pi - GA_PATH_HALF_TURN_BAND, the twist is replaced by its other branch
- * if the first component of w/th (x, y, z order) larger than 0.3 in magnitude
- * is negative (one always is, as 3 * 0.3^2 < 1). Inside the band the motion
- * may thus go the long way round by at most 2 * GA_PATH_HALF_TURN_BAND rad.
+ * Half turns. Every log this module takes passes through the group's
+ * half-turn rule (group.h), so that cga and se3 choose the same screw where
+ * the principal log's axis sign is arbitrary.
  *
  * Evaluators:
  *   DIRECT  each sample in closed form.
@@ -155,22 +142,19 @@ typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
  *  (10^6 lihao3 steps on se3 and cga, lihao2, screw, lihao3 on affine keys)
  *  was 6e-16 at K = 1, 2e-14 at 8, 7e-14 at 16, 5e-13 at 32, 4e-12 at 64,
  *  1e-6 at 4096. K = 16 keeps a margin of 10 below 1e-12 at the cost of 6
- *  exps per 16 samples (lihao3; 1 for screw). */
-#ifndef GA_PATH_EXACT_REANCHOR
-#define GA_PATH_EXACT_REANCHOR 16
-#endif
-/** Half-turn band (rad) of the deterministic axis rule (see above). */
-#define GA_PATH_HALF_TURN_BAND 1e-9
+ *  exps per 16 samples (lihao3; 1 for screw). The compiled library fixes
+ *  it: this constant states its value, it does not set it. */
+enum { GA_PATH_EXACT_REANCHOR = 16 };
 
 /** A path. Its fields are read-only after ga_path_init; the arrays live in the
  *  caller's workspace. */
 typedef struct {
     const ga_group *group;
     ga_scheme scheme;
-    int n;            /**< number of keys */
-    double *t;        /**< the n key times */
-    double *key;      /**< the n keys, each group->elem_size bytes, padded to doubles */
-    int key_stride;   /**< doubles from one key to the next */
+    size_t n;          /**< number of keys */
+    double *t;         /**< the n key times */
+    double *key;       /**< the n keys, each group->elem_size bytes, padded to doubles */
+    size_t key_stride; /**< doubles from one key to the next */
     double *coef;     /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units) */
     double *gen;      /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
     double *slope;    /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
@@ -187,28 +171,29 @@ const char *ga_eval_name(ga_eval e);
 int ga_eval_by_name(const char *name, ga_eval *out);
 /** Fewest keys the scheme takes (2, or 3 for QUADRATIC and SMOOTH). QUADRATIC
  *  takes exactly 3. */
-int ga_scheme_min_keys(ga_scheme s);
+size_t ga_scheme_min_keys(ga_scheme s);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1). */
-size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, int n);
+size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
 
-/** Build a path through n keys (n group elements, each g->elem_size bytes, in
- *  a contiguous array) at the given times. velocities: LIHAO2: NULL or the
- *  first key's velocity (g->dim doubles); LIHAO3: NULL or one velocity per
- *  key (n * g->dim doubles); other schemes ignore it. */
-int ga_path_init(ga_path *p, const ga_group *g, ga_scheme s, int n,
-                 const double *times, const void *keys, const double *velocities,
-                 void *work, size_t work_bytes);
+/** Build into *out a path through n keys (n group elements, each
+ *  g->elem_size bytes, in a contiguous array) at the given times.
+ *  velocities: LIHAO2: NULL or the first key's velocity (g->dim doubles);
+ *  LIHAO3: NULL or one velocity per key (n * g->dim doubles); other schemes
+ *  ignore it. */
+int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times,
+                 const void *keys, const double *velocities, void *work, size_t work_bytes,
+                 ga_path *out);
 
 /** The same from 4x4 matrices, each read by g->from_mat4 (its status is
  *  returned: GA_ERR_NOTRIGID for a non-rigid matrix on cga/se3, ...). */
-int ga_path_init_mat4(ga_path *p, const ga_group *g, ga_scheme s, int n,
-                      const double *times, const ga_mat4 *keys,
-                      const double *velocities, void *work, size_t work_bytes);
+int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times,
+                      const ga_mat4 *keys, const double *velocities, void *work,
+                      size_t work_bytes, ga_path *out);
 
 /** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
  *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_ERR_ARG outside. */
-int ga_path_locate(const ga_path *p, double t, int *seg, double *u);
+int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u);
 
 /** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
  *  (the formulas give it up to rounding, which ga_path_eval_segment shows and
@@ -216,13 +201,13 @@ int ga_path_locate(const ga_path *p, double t, int *seg, double *u);
 int ga_path_eval(const ga_path *p, double t, void *out);
 /** The formula of segment seg (0..n-2) at any finite u (outside [0, 1] it
  *  extrapolates); no special case at the keys. */
-int ga_path_eval_segment(const ga_path *p, int seg, double u, void *out);
+int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out);
 
 /** The body velocity A(t)^-1 dA/dt at t (g->dim doubles, per unit t); at a key
  *  time the velocity of the segment starting there (the last key: ending). */
 int ga_path_velocity(const ga_path *p, double t, double *v);
 /** The body velocity per unit t on segment seg at u. */
-int ga_path_velocity_segment(const ga_path *p, int seg, double u, double *v);
+int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v);
 
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 9
@@ -232,9 +217,9 @@ typedef struct {
     double step;         /**< Euler step in u units */
     size_t n, k;         /**< samples in all, index of the next one */
     double t0, t1, dt;
-    int seg;             /**< segment of the running state, -1 for none */
-    int since;           /**< EXACT: samples since the last anchor */
-    long grid;           /**< EULER: grid index of the running state */
+    size_t seg;          /**< segment of the running state, SIZE_MAX for none */
+    size_t since;        /**< EXACT: samples since the last anchor */
+    size_t grid;         /**< EULER: grid index of the running state */
     double slot[GA_PATH_STEP_SLOTS][GA_GROUP_MAX_ELEM];
 } ga_path_stepper;
 
@@ -242,9 +227,9 @@ typedef struct {
  *  t1, t_0 <= t0 <= t1 <= t_{n-1} (n = 1: t0 alone), each rounded to a double
  *  (EXACT: only at its anchors, whole steps from there; see EXACT above).
  *  step: the Euler step in u units (> 0), ignored by the other evaluators. */
-int ga_path_stepper_init(ga_path_stepper *s, const ga_path *p, ga_eval ev,
-                         double step, size_t n, double t0, double t1);
-/** Write the next sample to out. GA_ERR_ARG after the last. */
+int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0,
+                         double t1, ga_path_stepper *out);
+/** Write the next sample to out, advancing s. GA_ERR_ARG after the last. */
 int ga_path_stepper_next(ga_path_stepper *s, void *out);
 
 /** n evenly spaced samples t0..t1 (both included) into out (n elements of
