@@ -1,0 +1,53 @@
+#!/bin/sh
+# The naming scheme of docs/conventions.md, checked on the built library and
+# the public headers:
+#   - every symbol the shared library exports starts with ga_;
+#   - enumerator families cannot collide: for each enum of the public headers,
+#     its family prefix (the longest common prefix of its members, the first
+#     member left out as it may be the family's zero, GA_OK) begins no member
+#     of any other enum.
+# Usage: api_check.sh BUILD_DIR SOURCE_DIR
+set -eu
+build=$1
+src=$2
+fail=0
+so=$(find "$build" -maxdepth 1 -name 'libgarotor.so*' -type f | head -n 1)
+if [ -n "$so" ] && command -v nm >/dev/null 2>&1; then
+    # names with two leading underscores are the compiler's (a sanitizer's
+    # instrumentation defines some), not the library's
+    bad=$(nm -D --defined-only "$so" | awk '{print $3}' | grep -v '^ga_' | grep -v '^__' || true)
+    if [ -n "$bad" ]; then
+        echo "FAIL exported symbols without the ga_ prefix: $bad"
+        fail=1
+    else
+        echo "ok   all $(nm -D --defined-only "$so" | awk '{print $3}' | grep -c '^ga_') exported symbols start with ga_"
+    fi
+else
+    echo "skip no shared library or nm: exported symbols not checked"
+fi
+
+# one line per enum: its members, space-separated
+cat "$src"/include/garotor/*.h | tr '\n' ' ' | sed 's/\/\*[^*]*\*\+\([^/*][^*]*\*\+\)*\///g' |
+    grep -o 'enum[^{;]*{[^}]*}' | sed 's/.*{//; s/}//; s/=[^,]*//g; s/,/ /g' >"${TMPDIR:-/tmp}/garotor-enums.$$"
+out=$(awk '
+    function lcp(a, b,   n) { n = 0; while (n < length(a) && n < length(b) && substr(a, n + 1, 1) == substr(b, n + 1, 1)) n++; return substr(a, 1, n) }
+    {
+        n = split($0, m, " "); k++; cnt[k] = n
+        for (i = 1; i <= n; i++) mem[k, i] = m[i]
+        p = n > 1 ? m[2] : m[1]
+        for (i = 3; i <= n; i++) p = lcp(p, m[i])
+        pre[k] = p
+    }
+    END {
+        for (a = 1; a <= k; a++) {
+            printf "ok   enum of %d members (%s ...): family prefix %s\n", cnt[a], mem[a, 1], pre[a]
+            for (b = 1; b <= k; b++) if (a != b)
+                for (i = 1; i <= cnt[b]; i++)
+                    if (index(mem[b, i], pre[a]) == 1) printf "FAIL %s (another enum) starts with the family prefix %s\n", mem[b, i], pre[a]
+        }
+    }' "${TMPDIR:-/tmp}/garotor-enums.$$")
+rm -f "${TMPDIR:-/tmp}/garotor-enums.$$"
+echo "$out"
+case "$out" in *FAIL*) fail=1 ;; esac
+[ "$(echo "$out" | grep -c '^ok   enum')" -ge 4 ] || { echo "FAIL fewer enums found than the headers have"; fail=1; }
+exit $fail
