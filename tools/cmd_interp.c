@@ -210,9 +210,9 @@ int cmd_interp(const cli_opts *o)
                 goto done;
         }
     }
-    int min = ga_scheme_min_keys(scheme);
-    if ((long)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
-        fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %d keys, found %zu\n", in.name,
+    size_t min = ga_scheme_min_keys(scheme);
+    if (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
+        fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %zu keys, found %zu\n", in.name,
                 ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least",
                 min, n);
         goto done;
@@ -257,11 +257,11 @@ int cmd_interp(const cli_opts *o)
     }
 
     ga_path path;
-    size_t wbytes = ga_path_workspace_size(g, scheme, (int)n);
+    size_t wbytes = ga_path_workspace_size(g, scheme, n);
     work = malloc(wbytes);
     if (!work)
         goto oom;
-    int st = ga_path_init_mat4(g, scheme, (int)n, times, keys, vel, work, wbytes, &path);
+    int st = ga_path_init_mat4(g, scheme, n, times, keys, vel, work, wbytes, &path);
     if (st != GA_OK) {
         fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name,
                 ga_scheme_name(scheme), ga_status_string(st));
