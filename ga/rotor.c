@@ -68,20 +68,9 @@ ga_rotor ga_rotor_identity(void)
 ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b)
 {
     ga_rotor r;
-    /* q = qa qb */
-    r.s = a.s * b.s - a.e12 * b.e12 - a.e13 * b.e13 - a.e23 * b.e23;
-    r.e12 = a.s * b.e12 + a.e12 * b.s + a.e23 * b.e13 - a.e13 * b.e23;
-    r.e13 = a.s * b.e13 + a.e13 * b.s + a.e12 * b.e23 - a.e23 * b.e12;
-    r.e23 = a.s * b.e23 + a.e23 * b.s + a.e13 * b.e12 - a.e12 * b.e13;
-    /* P = qa Pb + Pa qb */
-    r.e1n = a.s * b.e1n + a.e1n * b.s - a.e23 * b.e123n - a.e123n * b.e23
-          + a.e12 * b.e2n + a.e13 * b.e3n - a.e2n * b.e12 - a.e3n * b.e13;
-    r.e2n = a.s * b.e2n + a.e2n * b.s + a.e13 * b.e123n + a.e123n * b.e13
-          - a.e12 * b.e1n + a.e23 * b.e3n + a.e1n * b.e12 - a.e3n * b.e23;
-    r.e3n = a.s * b.e3n + a.e3n * b.s - a.e12 * b.e123n - a.e123n * b.e12
-          - a.e13 * b.e1n - a.e23 * b.e2n + a.e1n * b.e13 + a.e2n * b.e23;
-    r.e123n = a.s * b.e123n + a.e123n * b.s + a.e23 * b.e1n - a.e13 * b.e2n + a.e12 * b.e3n
-            + a.e1n * b.e23 - a.e2n * b.e13 + a.e3n * b.e12;
+    /* q = qa qb, P = qa Pb + Pa qb, term by term: written by gen/generate.py
+     * from the blade products of G(4,1) (`python3 gen/generate.py` rewrites it) */
+#include "rotor_mul.inc"
     return r;
 }
 

@@ -111,14 +111,6 @@ static void twist_branch(const double *prev, double *x)
 }
 
 static ga_vec3 v3(double x, double y, double z) { ga_vec3 r = { x, y, z }; return r; }
-static ga_vec3 cross(ga_vec3 a, ga_vec3 b)
-{
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static ga_vec3 axpy(double s, ga_vec3 a, ga_vec3 b) /* s a + b */
-{
-    return v3(s * a.x + b.x, s * a.y + b.y, s * a.z + b.z);
-}
 
 /* sum_{k=0}^{11} (-1)^k m_k th^2k/(2k+d)!, m_k = k+1 if weighted else 1: the
  * Taylor series of the Jacobian coefficients below, used for th < 1 where the
@@ -159,26 +151,9 @@ static void se3_dexp(const double *x, const double *y, double *out)
         b = (t2 + 2.0 * co - 2.0) / (2.0 * t2 * t2);
         c = (2.0 * th - 3.0 * s + th * co) / (2.0 * t2 * t2 * th);
     }
-    /* Jr(w) u = u - a1 w x u + a w x (w x u) */
-    ga_vec3 wdw = cross(w, dw), wwdw = cross(w, wdw);
-    ga_vec3 jw = axpy(a, wwdw, axpy(-a1, wdw, dw));
-    ga_vec3 wdv = cross(w, dv), wwdv = cross(w, wdv);
-    ga_vec3 jv = axpy(a, wwdv, axpy(-a1, wdv, dv));
-    /* Q dw */
-    ga_vec3 Vu = cross(v, dw);                  /* V u */
-    ga_vec3 WVu = cross(w, Vu);                 /* W V u */
-    ga_vec3 VWu = cross(v, wdw);                /* V W u */
-    ga_vec3 WVWu = cross(w, VWu);               /* W V W u */
-    ga_vec3 WWVu = cross(w, WVu);               /* W W V u */
-    ga_vec3 VWWu = cross(v, wwdw);              /* V W W u */
-    ga_vec3 WVWWu = cross(w, cross(v, wwdw));   /* W V W W u */
-    ga_vec3 WWVWu = cross(w, WVWu);             /* W W V W u */
-    ga_vec3 q = axpy(-0.5, Vu, v3(0, 0, 0));
-    q = axpy(a, WVu, q); q = axpy(a, VWu, q); q = axpy(-a, WVWu, q);
-    q = axpy(-b, WWVu, q); q = axpy(-b, VWWu, q); q = axpy(3.0 * b, WVWu, q);
-    q = axpy(c, WVWWu, q); q = axpy(c, WWVWu, q);
-    out[0] = jw.x; out[1] = jw.y; out[2] = jw.z;
-    out[3] = q.x + jv.x; out[4] = q.y + jv.y; out[5] = q.z + jv.z;
+    /* Jr(w) dw, Q dw + Jr(w) dv as chains of cross products: written by
+     * gen/generate.py from the formula above (`python3 gen/generate.py` rewrites it) */
+#include "se3_dexp.inc"
 }
 
 /* ---- cga: rotors ---------------------------------------------------------- */
