@@ -29,7 +29,7 @@ static double gen_dist(ga_generator a, ga_generator b)
     const double *x = &a.e12, *y = &b.e12;
     double d = 0.0;
     for (int i = 0; i < 6; i++)
-        d = fmax(d, fabs(x[i] - y[i]));
+        d = tk_max(d, fabs(x[i] - y[i]));
     return d;
 }
 
@@ -39,8 +39,8 @@ static double rotor_dist_pm(ga_rotor a, ga_rotor b)
     const double *x = &a.s, *y = &b.s;
     double dp = 0.0, dm = 0.0;
     for (int i = 0; i < 8; i++) {
-        dp = fmax(dp, fabs(x[i] - y[i]));
-        dm = fmax(dm, fabs(x[i] + y[i]));
+        dp = tk_max(dp, fabs(x[i] - y[i]));
+        dm = tk_max(dm, fabs(x[i] + y[i]));
     }
     return fmin(dp, dm);
 }

@@ -41,7 +41,7 @@ static ga_vec3 rand_vec3(tk_rng *t, double s)
 }
 
 /* ---- small helpers --------------------------------------------------------- */
-static double maxdiff(ga_mv a, ga_mv b) { return ga_mv_maxabs(ga_mv_sub(a, b)); }
+static double maxdiff(ga_mv a, ga_mv b) { return tk_mv_maxabs(ga_mv_sub(a, b)); }
 static double sumabs(ga_mv a)
 {
     double s = 0;
@@ -59,7 +59,7 @@ static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
     return (ga_vec3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 static double dist3(ga_vec3 a, ga_vec3 b) { return norm3(sub3(a, b)); }
-static double vmax3(ga_vec3 a) { return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))); }
+static double vmax3(ga_vec3 a) { return tk_max(fabs(a.x), tk_max(fabs(a.y), fabs(a.z))); }
 
 static int popcount(unsigned m)
 {
@@ -83,7 +83,7 @@ static void test_table(void)
             if (i == j)
                 continue;
             ga_mv ij = ga_mv_gp(ga_mv_blade(i), ga_mv_blade(j)), ji = ga_mv_gp(ga_mv_blade(j), ga_mv_blade(i));
-            check("anticommute e_i e_j = -e_j e_i", ga_mv_maxabs(ga_mv_add(ij, ji)), 0);
+            check("anticommute e_i e_j = -e_j e_i", tk_mv_maxabs(ga_mv_add(ij, ji)), 0);
         }
     /* every blade is the product of its vectors in increasing order: with
        associativity below, this pins every entry of the 32 x 32 table */
@@ -191,9 +191,9 @@ static void test_versors(tk_rng *t)
     }
     /* what has no inverse: zero divisors (x y = 0 with y != 0 rules out x^-1) */
     ga_mv n = ga_mv_n(), one_e45 = ga_mv_add(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E45)), out = ga_mv_scalar(42);
-    check("n n = 0 (n is a zero divisor)", ga_mv_maxabs(ga_mv_gp(n, n)), 0);
+    check("n n = 0 (n is a zero divisor)", tk_mv_maxabs(ga_mv_gp(n, n)), 0);
     check("(1+e45)(1-e45) = 0 (a zero divisor)",
-          ga_mv_maxabs(ga_mv_gp(one_e45, ga_mv_sub(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E45)))), 0);
+          tk_mv_maxabs(ga_mv_gp(one_e45, ga_mv_sub(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E45)))), 0);
     check_status("inverse of n: singular", ga_mv_inverse(n, &out), GA_ERR_SINGULAR);
     check_status("inverse of nbar: singular", ga_mv_inverse(ga_mv_nbar(), &out), GA_ERR_SINGULAR);
     check_status("inverse of 1+e45: singular", ga_mv_inverse(one_e45, &out), GA_ERR_SINGULAR);
@@ -212,8 +212,8 @@ static void test_versors(tk_rng *t)
 static void test_model(tk_rng *t)
 {
     ga_mv n = ga_mv_n(), nb = ga_mv_nbar();
-    check("n^2 = 0", ga_mv_maxabs(ga_mv_gp(n, n)), 0);
-    check("nbar^2 = 0", ga_mv_maxabs(ga_mv_gp(nb, nb)), 0);
+    check("n^2 = 0", tk_mv_maxabs(ga_mv_gp(n, n)), 0);
+    check("nbar^2 = 0", tk_mv_maxabs(ga_mv_gp(nb, nb)), 0);
     check("n.nbar = 2", fabs(ga_mv_sp(n, nb) - 2), 0);
     check("n nbar = 2 - 2 e45", maxdiff(ga_mv_gp(n, nb), ga_mv_sub(ga_mv_scalar(2), ga_mv_scale(ga_mv_blade(GA_BLADE_E45), 2))), 0);
     check("e4^2 = 1, e5^2 = -1",
@@ -317,9 +317,9 @@ static void test_objects(tk_rng *t)
         double psize = fmax(norm3(a), norm3(b));
         int st = ga_pointpair_points(ga_pointpair_from_points(a, b), &oa, &ob);
         check_status("point pair read back: status", st, GA_OK);
-        check("point pair read back: a, b", fmax(dist3(oa, a), dist3(ob, b)) / psize, tol);
+        check("point pair read back: a, b", tk_max(dist3(oa, a), dist3(ob, b)) / psize, tol);
         st = ga_pointpair_points(ga_pointpair_from_points(b, a), &oa, &ob);
-        check("point pair F(b)^F(a) reads b, a", fmax(dist3(oa, b), dist3(ob, a)) / psize, tol);
+        check("point pair F(b)^F(a) reads b, a", tk_max(dist3(oa, b), dist3(ob, a)) / psize, tol);
 
         /* line: through c with direction m, from two points on it (parameters
            s/10 to s apart); the closest point to the origin is c - (c.m) m */
@@ -333,11 +333,11 @@ static void test_objects(tk_rng *t)
 
         st = ga_line_params(ga_mv_scale(ga_line_from_points(la, lb), -pow(10, tk_range(t, -6, 6))), &om, &oc);
         check("line -w L reads -direction, same point",
-              st ? 1 : fmax(dist3(om, mul3(m, -1)), dist3(oc, closest) / fmax(norm3(la), norm3(lb))), tol);
+              st ? 1 : tk_max(dist3(om, mul3(m, -1)), dist3(oc, closest) / fmax(norm3(la), norm3(lb))), tol);
         /* the same line as F(p) ^ m ^ n: a point, a direction and infinity */
         st = ga_line_params(ga_mv_op(ga_mv_op(ga_point_up(c), ga_vec3_to_mv(m)), ga_mv_n()), &om, &oc);
         check("line F(c)^m^n reads m and the closest point",
-              st ? 1 : fmax(dist3(om, m), dist3(oc, closest) / size), tol);
+              st ? 1 : tk_max(dist3(om, m), dist3(oc, closest) / size), tol);
 
         /* circle: centre c, radius r, normal m, three points at angles 2 pi k / 3
            + U(-0.5, 0.5) (no two closer than 1.1 rad), in the order that makes
@@ -372,9 +372,9 @@ static void test_objects(tk_rng *t)
         double w = pow(10, tk_range(t, -6, 6));
         st = ga_plane_params(ga_mv_scale(ga_plane_dual(m, d), w), &om, &od);
         check_status("plane (dual) read back: status", st, GA_OK);
-        check("plane (dual) read back: normal, distance", fmax(dist3(om, m), fabs(od - d) / (fabs(d) + 1)), 8 * U);
+        check("plane (dual) read back: normal, distance", tk_max(dist3(om, m), fabs(od - d) / (fabs(d) + 1)), 8 * U);
         st = ga_plane_params(ga_mv_scale(ga_plane_dual(m, d), -w), &om, &od);
-        check("plane -(m + d n) reads -m, -d", fmax(dist3(om, mul3(m, -1)), fabs(od + d) / (fabs(d) + 1)), 8 * U);
+        check("plane -(m + d n) reads -m, -d", tk_max(dist3(om, mul3(m, -1)), fabs(od + d) / (fabs(d) + 1)), 8 * U);
 
         /* sphere: centre c, radius r, four points c + r v_k with v_k the vertices
            of a randomly turned regular tetrahedron, each moved by up to 0.3 */
@@ -392,7 +392,7 @@ static void test_objects(tk_rng *t)
         w = (trial % 2 ? 1 : -1) * pow(10, tk_range(t, -6, 6));
         st = ga_sphere_params(ga_mv_scale(ga_sphere_dual(c, r), w), &oc, &orad);
         check_status("sphere (dual) read back: status", st, GA_OK);
-        check("sphere (dual) read back: centre, radius", fmax(dist3(oc, c), fabs(orad - r)) / size, tol);
+        check("sphere (dual) read back: centre, radius", tk_max(dist3(oc, c), fabs(orad - r)) / size, tol);
         /* a point is a sphere of radius 0: r^2 = |c|^2 - (s4 + s5) / w cancels terms
            of size |c|^2 and 1 known to ~u each (4 u (|c|^2 + 1) in all), and w =
            s5 - s4 = 1 only up to u (|c|^2 + 1), which multiplies |c|^2: so

@@ -38,15 +38,15 @@ static double mat_err(ga_mat4 a, ga_mat4 b, ga_mat4 ref)
 {
     double e = 0.0;
     for (int i = 0; i < 16; i++)
-        e = fmax(e, fabs(a.m[i] - b.m[i]));
+        e = tk_max(e, fabs(a.m[i] - b.m[i]));
     double t = sqrt(ref.m[3] * ref.m[3] + ref.m[7] * ref.m[7] + ref.m[11] * ref.m[11]);
     return e / fmax(1.0, t);
 }
 
 static double twist_err(ga_twist a, ga_twist b)
 {
-    double e = fmax(fmax(fabs(a.w.x - b.w.x), fabs(a.w.y - b.w.y)), fabs(a.w.z - b.w.z));
-    e = fmax(e, fmax(fmax(fabs(a.v.x - b.v.x), fabs(a.v.y - b.v.y)), fabs(a.v.z - b.v.z)));
+    double e = tk_max(tk_max(fabs(a.w.x - b.w.x), fabs(a.w.y - b.w.y)), fabs(a.w.z - b.w.z));
+    e = tk_max(e, tk_max(tk_max(fabs(a.v.x - b.v.x), fabs(a.v.y - b.v.y)), fabs(a.v.z - b.v.z)));
     return e / fmax(1.0, tk_norm(b.v));
 }
 

@@ -96,7 +96,7 @@ static double mmax(ga_mat4 a)
 {
     double e = 0;
     for (int i = 0; i < 16; i++)
-        e = fmax(e, fabs(a.m[i]));
+        e = tk_max(e, fabs(a.m[i]));
     return e;
 }
 /* N(G) of (R): each entry replaced by the largest magnitude in its column. */
@@ -482,7 +482,7 @@ static void check_assoc_identity(void)
         ga_mat4 lm = G->to_mat4(l), rm = G->to_mat4(r);
         double z = 0;
         for (int k = 0; k < 16; k++)
-            z = fmax(z, fmax(fabs(lm.m[k] - a->m.m[k]), fabs(rm.m[k] - a->m.m[k])));
+            z = tk_max(z, tk_max(fabs(lm.m[k] - a->m.m[k]), fabs(rm.m[k] - a->m.m[k])));
         tk_add(&id, isnan(mmax(lm)) || isnan(mmax(rm)) ? NAN : z);
     }
     tk_end(&as);
@@ -633,7 +633,7 @@ static void check_hat_vee(void)
         int st = G->vee(h, x);
         double e = st == GA_OK ? 0 : INFINITY;
         for (int k = 0; st == GA_OK && k < D; k++)
-            e = fmax(e, fabs(x[k] - s->x[k]));
+            e = tk_max(e, fabs(x[k] - s->x[k]));
         tk_add(&rt, e);
         for (int k = 12; k < 16; k++) {
             ga_mat4 b = h;
@@ -736,7 +736,7 @@ static void check_half_turn_branch(void)
             G->half_turn(x2);
             double e = 0;
             for (int k = 0; k < D; k++)
-                e = fmax(e, fabs(x2[k] - x[k]));
+                e = tk_max(e, fabs(x2[k] - x[k]));
             tk_add(&idem, e);
         }
         tk_end(&same);
@@ -769,7 +769,7 @@ static void check_half_turn_branch(void)
             G->branch(S[i].x, x);
             double e = 0;
             for (int k = 0; k < D; k++)
-                e = fmax(e, fabs(x[k] - S[i].x[k]));
+                e = tk_max(e, fabs(x[k] - S[i].x[k]));
             tk_add(&self, e);
         }
         tk_end(&same);

@@ -29,7 +29,7 @@ static ga_vec3 vsub(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z 
 static ga_vec3 vscale(ga_vec3 a, double k) { return v3(k * a.x, k * a.y, k * a.z); }
 static double vdot(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static double vnorm(ga_vec3 a) { return sqrt(vdot(a, a)); }
-static double vmaxabs(ga_vec3 a) { return fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z))); }
+static double vmaxabs(ga_vec3 a) { return tk_max(fabs(a.x), tk_max(fabs(a.y), fabs(a.z))); }
 static ga_vec3 vcross(ga_vec3 a, ga_vec3 b)
 {
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
@@ -70,7 +70,7 @@ static double rdiff(ga_rotor a, ga_rotor b)
 {
     double d = 0.0;
     for (int i = 0; i < 8; i++)
-        d = fmax(d, fabs(r_comp(a, i) - r_comp(b, i)));
+        d = tk_max(d, fabs(r_comp(a, i) - r_comp(b, i)));
     return d;
 }
 static ga_rotor rneg(ga_rotor r)
@@ -91,8 +91,8 @@ static ga_rotor rnd_rotor8(double scale)
 }
 static double gdiff(ga_generator a, ga_generator b)
 {
-    return fmax(fmax(fabs(a.e12 - b.e12), fmax(fabs(a.e13 - b.e13), fabs(a.e23 - b.e23))),
-                fmax(fabs(a.e1n - b.e1n), fmax(fabs(a.e2n - b.e2n), fabs(a.e3n - b.e3n))));
+    return tk_max(tk_max(fabs(a.e12 - b.e12), tk_max(fabs(a.e13 - b.e13), fabs(a.e23 - b.e23))),
+                tk_max(fabs(a.e1n - b.e1n), tk_max(fabs(a.e2n - b.e2n), fabs(a.e3n - b.e3n))));
 }
 static ga_mv gen_mv(ga_generator g)
 {
@@ -184,7 +184,7 @@ static double mdiff(ga_mat4 a, ga_mat4 b)
 {
     double d = 0.0;
     for (int i = 0; i < 16; i++)
-        d = fmax(d, fabs(a.m[i] - b.m[i]));
+        d = tk_max(d, fabs(a.m[i] - b.m[i]));
     return d;
 }
 static ga_mat4 mmul(ga_mat4 a, ga_mat4 b)
@@ -216,7 +216,7 @@ static ga_quat qadd(ga_quat a, ga_quat b)
 }
 static double qdiff(ga_quat a, ga_quat b)
 {
-    return fmax(fmax(fabs(a.w - b.w), fabs(a.x - b.x)), fmax(fabs(a.y - b.y), fabs(a.z - b.z)));
+    return tk_max(tk_max(fabs(a.w - b.w), fabs(a.x - b.x)), tk_max(fabs(a.y - b.y), fabs(a.z - b.z)));
 }
 static double qdiff_pm(ga_quat a, ga_quat b)
 {
@@ -244,15 +244,15 @@ static void check_product(long n)
         ga_rotor c = ga_rotor_mul(a, b);
         double scale = rmaxabs(a) * rmaxabs(b);
         /* each coefficient: 8 products summed (compact) vs up to 16 (full) */
-        tk_add(&w_mul, ga_mv_maxabs(ga_mv_sub(full, ga_rotor_to_mv(c))) / scale);
+        tk_add(&w_mul, tk_mv_maxabs(ga_mv_sub(full, ga_rotor_to_mv(c))) / scale);
         ga_mv rest = full; /* closure: nothing outside the 8-component form */
         rest.c[GA_BLADE_E14] -= rest.c[GA_BLADE_E15], rest.c[GA_BLADE_E24] -= rest.c[GA_BLADE_E25];
         rest.c[GA_BLADE_E34] -= rest.c[GA_BLADE_E35], rest.c[GA_BLADE_E1234] -= rest.c[GA_BLADE_E1235];
         const int in[8] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E15, GA_BLADE_E25, GA_BLADE_E35, GA_BLADE_E1235};
         for (int k = 0; k < 8; k++)
             rest.c[in[k]] = 0;
-        tk_add(&w_out, ga_mv_maxabs(rest) / scale);
-        tk_add(&w_rev, ga_mv_maxabs(ga_mv_sub(ga_mv_reverse(ga_rotor_to_mv(a)),
+        tk_add(&w_out, tk_mv_maxabs(rest) / scale);
+        tk_add(&w_rev, tk_mv_maxabs(ga_mv_sub(ga_mv_reverse(ga_rotor_to_mv(a)),
                                           ga_rotor_to_mv(ga_rotor_reverse(a)))));
         ga_vec3 gw = rnd_vec_u(3), gv = rnd_vec_logu(1e-3, 1e3);
         ga_generator g = gen(gw, gv);
@@ -286,10 +286,10 @@ static void check_action(long n)
            its rounding, relative to that, is a few dozen EPS */
         double scale = (1 + tl) * (1 + tl) * (1 + xl * xl);
         tk_add(&w_pt, st == GA_OK ? vmaxabs(vsub(y, yf)) / scale : INFINITY);
-        tk_add(&w_null, ga_mv_maxabs(ga_mv_sub(X, ga_point_up(y))) / scale);
+        tk_add(&w_null, tk_mv_maxabs(ga_mv_sub(X, ga_point_up(y))) / scale);
         ga_mv Rm = ga_rotor_to_mv(r);
-        tk_add(&w_n, ga_mv_maxabs(ga_mv_sub(ga_rotor_apply_mv(r, ga_mv_n()), ga_mv_n())) / ((1 + tl) * (1 + tl)));
-        tk_add(&w_rr, ga_mv_maxabs(ga_mv_sub(ga_mv_gp(Rm, ga_mv_reverse(Rm)), ga_mv_scalar(1))) / ((1 + tl) * (1 + tl)));
+        tk_add(&w_n, tk_mv_maxabs(ga_mv_sub(ga_rotor_apply_mv(r, ga_mv_n()), ga_mv_n())) / ((1 + tl) * (1 + tl)));
+        tk_add(&w_rr, tk_mv_maxabs(ga_mv_sub(ga_mv_gp(Rm, ga_mv_reverse(Rm)), ga_mv_scalar(1))) / ((1 + tl) * (1 + tl)));
         /* R2 R1 means R1 first */
         ga_vec3 w2 = rnd_vec_u(3), v2 = rnd_vec_u(10);
         ga_rotor r2 = ga_rotor_exp(gen(w2, v2));
@@ -530,12 +530,12 @@ static void check_quat(long n)
         ga_dualquat d = ga_rotor_to_dualquat(r);
         ga_quat tq = {0, t.x, t.y, t.z}, half = qmul(tq, rq);
         ga_quat dual = {half.w / 2, half.x / 2, half.y / 2, half.z / 2};
-        tk_add(&w_dq, fmax(qdiff(d.real, rq), qdiff(d.dual, dual)) / scale);
+        tk_add(&w_dq, tk_max(qdiff(d.real, rq), qdiff(d.dual, dual)) / scale);
         tk_add(&w_dqr, rdiff(ga_rotor_from_dualquat(d), r));
         ga_vec3 w2 = rnd_vec_u(3), v2 = rnd_vec_logu(1e-3, 1e3);
         ga_rotor r2 = ga_rotor_exp(gen(w2, v2));
         ga_dualquat p = dqmul(ga_rotor_to_dualquat(r2), d), pr = ga_rotor_to_dualquat(ga_rotor_mul(r2, r));
-        tk_add(&w_dqm, fmax(qdiff(p.real, pr.real), qdiff(p.dual, pr.dual)) / (rmaxabs(r) * rmaxabs(r2)));
+        tk_add(&w_dqm, tk_max(qdiff(p.real, pr.real), qdiff(p.dual, pr.dual)) / (rmaxabs(r) * rmaxabs(r2)));
     }
     /* 4 roundings in the rotor, 2 in the reference; 1 - 2 (y^2 + z^2) and
        Rodrigues' 1 + (1 - c) k2 each round ~6 times quantities of size <= 2 */
@@ -651,19 +651,19 @@ static void check_paper_forms(long n)
         /* Def. 4: tau = [cos + sin P][1 + n a/2], built here in the full algebra */
         ga_mv rot = ga_mv_add(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)));
         ga_mv tau = ga_mv_gp(rot, ga_mv_add(ga_mv_scalar(1), ga_mv_scale(ga_mv_gp(nn, ga_vec3_to_mv(vscale(tperp, -1))), 0.5)));
-        tk_add(&w_tau, ga_mv_maxabs(ga_mv_sub(ga_rotor_to_mv(ga_rotor_twist(psi, plane, vscale(tperp, -1))), tau)) / 10);
+        tk_add(&w_tau, tk_mv_maxabs(ga_mv_sub(ga_rotor_to_mv(ga_rotor_twist(psi, plane, vscale(tperp, -1))), tau)) / 10);
         /* Lemma 5: exp(B) = [1 + sinc(psi/2) t_par n/2 ~tau] tau */
         double sinc = sin(h) / h;
         ga_mv tpn = ga_mv_gp(ga_vec3_to_mv(tpar), nn);
         ga_mv L = ga_mv_add(ga_mv_scalar(1), ga_mv_scale(ga_mv_gp(tpn, ga_mv_reverse(tau)), sinc / 2));
-        tk_add(&w_l5, ga_mv_maxabs(ga_mv_sub(ga_mv_gp(L, tau), R)) / 100);
+        tk_add(&w_l5, tk_mv_maxabs(ga_mv_sub(ga_mv_gp(L, tau), R)) / 100);
         /* Lemma 6: L translates by t'_par = -sinc t_par (cos - sin P) */
         ga_mv tp = ga_mv_scale(ga_mv_gp(ga_vec3_to_mv(tpar), ga_mv_sub(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)))), -sinc);
         ga_rotor Lr;
         ga_vec3 moved = {NAN, NAN, NAN};
         if (ga_rotor_from_mv(L, 1e-12, &Lr) == GA_OK) /* a rotor, and a pure translation */
             moved = ga_rotor_apply(Lr, v3(0, 0, 0));
-        tk_add(&w_l6, fmax(fabs(Lr.s - 1), fmax(fabs(Lr.e12), fmax(fabs(Lr.e13), fabs(Lr.e23)))));
+        tk_add(&w_l6, tk_max(fabs(Lr.s - 1), tk_max(fabs(Lr.e12), tk_max(fabs(Lr.e13), fabs(Lr.e23)))));
         tk_add(&w_l6, vmaxabs(vsub(moved, v3(tp.c[GA_BLADE_E1], tp.c[GA_BLADE_E2], tp.c[GA_BLADE_E3]))) / 10);
         /* Thm 9 (literal, |ab| = acos <R>_0 in (0, pi)): ab = (<R>_2 n).e / sinc,
            c_perp n = -ab <R>_4 / (|ab|^2 sinc), c_par n = -ab <ab <R>_2>_2 / (|ab|^2 sinc) */
@@ -676,7 +676,7 @@ static void check_paper_forms(long n)
         ga_generator lit;
         ga_rotor_log_literal(ga_rotor_exp(B), &lit);
         /* acos near its ends loses ~EPS/sin: compare relative to 1/sin(nab) */
-        tk_add(&w_t9, ga_mv_maxabs(ga_mv_sub(ell, gen_mv(lit))) / 10 * sin(nab));
+        tk_add(&w_t9, tk_mv_maxabs(ga_mv_sub(ell, gen_mv(lit))) / 10 * sin(nab));
     }
     tk_end(&w_tau);
     tk_end(&w_l5);
@@ -711,14 +711,14 @@ static void check_screws(long n)
         }
         /* the axis point is (u x v) / angle with v = point x w + shift u: the
            rotor's rounding EPS |v| becomes EPS (|point| + |shift| / angle) there */
-        double e = fmax(fabs(o.angle - s.angle), vmaxabs(vsub(o.axis, s.axis)));
-        e = fmax(e, fabs(o.shift - s.shift) / scale);
+        double e = tk_max(fabs(o.angle - s.angle), vmaxabs(vsub(o.axis, s.axis)));
+        e = tk_max(e, fabs(o.shift - s.shift) / scale);
         if (kind != 0)
-            e = fmax(e, vmaxabs(vsub(o.point, s.point)) / (1 + vnorm(s.point) + fabs(s.shift) / s.angle));
+            e = tk_max(e, vmaxabs(vsub(o.point, s.point)) / (1 + vnorm(s.point) + fabs(s.shift) / s.angle));
         if (kind == 0)
-            e = fmax(e, isinf(o.pitch) && o.pitch > 0 ? 0 : 1);
+            e = tk_max(e, isinf(o.pitch) && o.pitch > 0 ? 0 : 1);
         else
-            e = fmax(e, fabs(o.pitch - s.pitch) / fmax(1, fabs(s.pitch)) * s.angle / scale);
+            e = tk_max(e, fabs(o.pitch - s.pitch) / fmax(1, fabs(s.pitch)) * s.angle / scale);
         tk_add(&w_rt, e);
         /* meaning: points on the axis move along it by shift; the angle is the rotation's */
         ga_vec3 p = vadd(o.point, vscale(o.axis, 3 * tk_range(&rng, -1, 1)));
@@ -843,7 +843,7 @@ static void check_se3(long n)
         int st = ga_rotor_log(r, &L), sm = ga_se3_log(M, &xl);
         ga_twist xr = ga_generator_to_twist(L);
         tk_add(&w_log, st == GA_OK && sm == GA_OK
-                          ? fmax(vmaxabs(vsub(xr.w, xl.w)), vmaxabs(vsub(xr.v, xl.v))) / scale : INFINITY);
+                          ? tk_max(vmaxabs(vsub(xr.w, xl.w)), vmaxabs(vsub(xr.v, xl.v))) / scale : INFINITY);
     }
     /* each side is a closed form of a few dozen roundings of size max(1, |v|);
        against the long-double series (exact to ~1e-19 here, then rounded to

@@ -71,6 +71,18 @@ static inline ga_vec3 tk_unit(tk_rng *r)
     }
 }
 static inline ga_vec3 tk_scale(ga_vec3 u, double k) { return (ga_vec3){k * u.x, k * u.y, k * u.z}; }
+/** max(a, b) keeping a NaN, where fmax drops it: for error measures, so that
+ *  a NaN anywhere fails its check. */
+static inline double tk_max(double a, double b) { return a > b || isnan(a) ? a : b; }
+/** The largest |coefficient| of a multivector, NaN if one is NaN
+ *  (ga_mv_maxabs skips NaN, being built on fmax). */
+static inline double tk_mv_maxabs(ga_mv a)
+{
+    double m = 0.0;
+    for (int i = 0; i < 32; i++)
+        m = tk_max(m, fabs(a.c[i]));
+    return m;
+}
 static inline double tk_norm(ga_vec3 u) { return sqrt(u.x * u.x + u.y * u.y + u.z * u.z); }
 
 /* ---- the input families -------------------------------------------------------
