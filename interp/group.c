@@ -55,7 +55,17 @@ static int twist_vee(ga_mat4 a, double *x)
 
 #define PI 3.14159265358979323846
 
-static double twist_angle(const double *x) { return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+/* |w|, also where the squares would underflow or overflow (|w| below ~1e-154
+ * or above ~1e154): the other branch scales w by (th - 2 pi)/th, so th keeps
+ * its relative accuracy at any size (bit for bit the plain formula between). */
+static double twist_angle(const double *x)
+{
+    double s = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    double m = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
+    if ((s >= 0x1p-1000 && s <= 0x1p1000) || !(m > 0) || isinf(m)) return sqrt(s);
+    double a = x[0] / m, b = x[1] / m, c = x[2] / m;
+    return m * sqrt(a * a + b * b + c * c);
+}
 
 /* The other branch of a twist of angle th > 0: angle th - 2 pi about the same
  * axis, w' = k w, v' = k v_perp + v_par, k = (th - 2 pi)/th. Same motion:
@@ -66,7 +76,9 @@ static void twist_other_branch(double *x)
     double th = twist_angle(x);
     if (th == 0.0) return;
     double k = (th - 2.0 * PI) / th;
-    double vp = (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th);
+    /* v_par = (w.v / th^2) w; where th^2 would underflow, through the unit axis */
+    double vp = th >= 0x1p-500 ? (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th)
+              : ((x[0] / th) * x[3] + (x[1] / th) * x[4] + (x[2] / th) * x[5]) / th;
     for (int i = 0; i < 3; ++i) {
         double par = vp * x[i];
         x[3 + i] = k * (x[3 + i] - par) + par;

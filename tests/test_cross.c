@@ -1,8 +1,9 @@
-/* tests/test_cross.c: the rotor side against the matrix side (issue 4).
+/* tests/test_cross.c: the rotor side against the matrix side.
  *
- * For 1e5 random and adversarial twists (testkit.h's families: identity, pure
- * translations, rotations from 1e-12 rad to exactly pi, tiny rotations under
- * large translations, general screws):
+ * For 1e5 random and adversarial twists (nine families of testkit.h:
+ * identity, pure translations, rotations of 1e-12, 1e-8, 1e-4 rad, pi/2,
+ * pi - 1e-9 and exactly pi, tiny rotations under large translations, general
+ * screws):
  *   exp three ways: the CGA rotor path xi -> B(xi) -> exp -> matrix
  *   (rotor.h), Eberly's closed form (ga_se3_exp) and the general Pade
  *   scaling-and-squaring exp of hat(xi) (ga_mat4_expm) agree to 1e-13
@@ -20,7 +21,9 @@
  * rad of a half turn it grows (measured ~3e-12 there), and at a rounded
  * half turn a square root can take a non-principal branch. There the
  * contract is: GA_ERR_DOMAIN, or a result whose exp reproduces M to
- * GA_LOGM_BACKWARD_TOL; never a confident wrong log.
+ * GA_LOGM_BACKWARD_TOL; never a confident wrong log. (GA_ERR_DOMAIN is
+ * accepted at pi - 1e-9 too, and counted: mat4.h states a narrower band, 1e-10
+ * rad, which a few of these rotations fall outside.)
  */
 #include "testkit.h"
 
@@ -28,19 +31,22 @@
 
 #define N_PER_FAMILY 11112 /* x 9 families: 1e5 twists */
 
+static const int families[] = {TK_IDENTITY, TK_TRANSLATION, TK_ROT_TINY, TK_ROT_SMALL, TK_ROT_QUARTER,
+                               TK_ROT_NEAR_PI, TK_ROT_PI, TK_TINY_UNDER_LARGE, TK_SCREW};
+
 static double mat_err(ga_mat4 a, ga_mat4 b, ga_mat4 ref)
 {
     double e = 0.0;
     for (int i = 0; i < 16; i++)
-        e = fmax(e, fabs(a.m[i] - b.m[i]));
+        e = tk_max(e, fabs(a.m[i] - b.m[i]));
     double t = sqrt(ref.m[3] * ref.m[3] + ref.m[7] * ref.m[7] + ref.m[11] * ref.m[11]);
     return e / fmax(1.0, t);
 }
 
 static double twist_err(ga_twist a, ga_twist b)
 {
-    double e = fmax(fmax(fabs(a.w.x - b.w.x), fabs(a.w.y - b.w.y)), fabs(a.w.z - b.w.z));
-    e = fmax(e, fmax(fmax(fabs(a.v.x - b.v.x), fabs(a.v.y - b.v.y)), fabs(a.v.z - b.v.z)));
+    double e = tk_max(tk_max(fabs(a.w.x - b.w.x), fabs(a.w.y - b.w.y)), fabs(a.w.z - b.w.z));
+    e = tk_max(e, tk_max(tk_max(fabs(a.v.x - b.v.x), fabs(a.v.y - b.v.y)), fabs(a.v.z - b.v.z)));
     return e / fmax(1.0, tk_norm(b.v));
 }
 
@@ -58,9 +64,10 @@ int main(void)
     tk_check back_g = tk_begin("log: backward error of the general logm, all but the half turns", 1e-13);
     tk_check back_near = tk_begin("logm within 1e-9 of pi: backward error when not GA_ERR_DOMAIN",
                                   GA_LOGM_BACKWARD_TOL);
-    long pi_domain = 0, pi_cases = 0, status_fail = 0;
+    long pi_domain = 0, pi_cases = 0, near_domain = 0, near_cases = 0, status_fail = 0;
 
-    for (int f = 0; f < TK_FAMILIES; f++) {
+    for (size_t fi = 0; fi < sizeof families / sizeof families[0]; fi++) {
+        int f = families[fi];
         for (int k = 0; k < N_PER_FAMILY; k++) {
             ga_twist xi = tk_twist(&rng, f);
             ga_mat4 rotor_m = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(xi)));
@@ -99,8 +106,10 @@ int main(void)
             tk_add(&log_s, twist_err(by_se3, xi));
             tk_add(&log_rs, twist_err(by_rotor, by_se3));
             tk_add(&log_rs, twist_err(by_se3, by_rotor));
+            near_cases += f == TK_ROT_NEAR_PI;
             if (st != GA_OK) {
-                /* GA_ERR_DOMAIN is the contract within rounding of a half turn */
+                /* GA_ERR_DOMAIN: accepted 1e-9 from a half turn, and counted */
+                near_domain += st == GA_ERR_DOMAIN && f == TK_ROT_NEAR_PI;
                 status_fail += !(st == GA_ERR_DOMAIN && f == TK_ROT_NEAR_PI);
                 continue;
             }
@@ -127,6 +136,8 @@ int main(void)
     char what[128];
     printf("     logm at exactly pi: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n",
            pi_domain, pi_cases);
+    printf("     logm at pi - 1e-9: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n",
+           near_domain, near_cases);
     snprintf(what, sizeof what, "no unexpected failure status (%ld)", status_fail);
     tk_expect(status_fail == 0, what);
     return tk_finish("test_cross");

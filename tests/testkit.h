@@ -1,13 +1,37 @@
-/* tests/testkit.h: what the tests share: a seeded PRNG, the adversarial
- * families of twists, and one-line reporting of measured worst errors.
+/* tests/testkit.h: what every test shares: the seeded PRNG, the input
+ * families, and the reporting of checks.
  *
- * Header-only (static functions), so each test stays one file plus this. */
+ * Header-only (static functions), so each test stays one file plus this.
+ *
+ * Reporting: every check prints one line,
+ *   ok   name                                     n=12345   worst 1.234e-15  tol 7.1e-15
+ *   FAIL ...
+ * and counts a failure if its measured worst is above its tolerance (a NaN
+ * counts as infinite). The kinds of check:
+ *   - errors against one tolerance: tk_begin(name, tol), tk_add(&c, err);
+ *   - errors against a tolerance of their own (derived per case from what is
+ *     computed): tk_add_tol(&c, err, tol); the line shows the case nearest its
+ *     tolerance (its error and its tolerance) and the ratio err/tol;
+ *   - a lower bound, for an error that must be there (a formula of a paper
+ *     known to be wrong): tk_begin_least(name, bound), tk_add(&c, value); the
+ *     line shows the least value;
+ *   - statuses (tk_add_status(&c, got, want)) and conditions
+ *     (tk_add_bool(&c, cond)), counted; tk_expect and tk_expect_status are the
+ *     one-case forms.
+ * tk_end(&c) prints the line. A check met in many places can be named
+ * instead: tk_get(name) opens it at its first use and tk_end_named() ends
+ * every named check opened since the last call, in order of first use.
+ * tk_finish(test) prints the summary and gives the exit status.
+ */
 #ifndef GAROTOR_TESTKIT_H
 #define GAROTOR_TESTKIT_H
 
+#include <float.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include <garotor/garotor.h>
 
@@ -33,7 +57,7 @@ static inline double tk_loguni(tk_rng *r, double lo, double hi)
     return exp(tk_range(r, log(lo), log(hi)));
 }
 /** A uniformly distributed unit vector (one draw per statement: C leaves the
- *  order of evaluation of arguments unspecified). */
+ *  order of evaluation of arguments and initializers unspecified). */
 static inline ga_vec3 tk_unit(tk_rng *r)
 {
     for (;;) {
@@ -47,67 +71,319 @@ static inline ga_vec3 tk_unit(tk_rng *r)
     }
 }
 static inline ga_vec3 tk_scale(ga_vec3 u, double k) { return (ga_vec3){k * u.x, k * u.y, k * u.z}; }
+/** max(a, b) keeping a NaN, where fmax drops it: for error measures, so that
+ *  a NaN anywhere fails its check. */
+static inline double tk_max(double a, double b) { return a > b || isnan(a) ? a : b; }
+/** The largest |coefficient| of a multivector, NaN if one is NaN
+ *  (ga_mv_maxabs skips NaN, being built on fmax). */
+static inline double tk_mv_maxabs(ga_mv a)
+{
+    double m = 0.0;
+    for (int i = 0; i < 32; i++)
+        m = tk_max(m, fabs(a.c[i]));
+    return m;
+}
 static inline double tk_norm(ga_vec3 u) { return sqrt(u.x * u.x + u.y * u.y + u.z * u.z); }
 
-/* ---- the adversarial families of twists (issues 3 and 4) ---------------- */
+/* ---- the input families -------------------------------------------------------
+ * One list. The twist families (below TK_TWIST_FAMILIES) give twists
+ * xi = (w, v), rotation angle |w|, through tk_twist; the matrix families give
+ * 4x4 algebra elements (last row zero) that are not twists: scalings and
+ * shears, for groups whose algebra holds them (the affine group). tk_algebra
+ * gives any family as a 4x4 (a twist as its hat). Where a family draws "v 0 or
+ * U(0,2)" half of its twists are pure rotations.
+ *
+ * Rotors have one family more, built on a twist family: TK_SCREW's rotors with
+ * every coefficient moved by ~1e-12 (tk_drift), rotors just off the group. */
 enum {
-    TK_IDENTITY, TK_TRANSLATION, TK_ROT_TINY, TK_ROT_SMALL, TK_ROT_QUARTER,
-    TK_ROT_NEAR_PI, TK_ROT_PI, TK_TINY_UNDER_LARGE, TK_SCREW, TK_FAMILIES
+    TK_IDENTITY,           /* the zero twist */
+    TK_NEAR_IDENTITY,      /* |w| and |v| each 0 or 1e-300..1e-12 */
+    TK_TRANSLATION,        /* w = 0, |v| 1e-12..1e6 */
+    TK_ROT_TINY,           /* |w| 1e-12 or 1e-8, v 0 or U(0,2) */
+    TK_ROT_SMALL,          /* |w| 1e-4, v 0 or U(0,2) */
+    TK_ROT_SPREAD,         /* |w| 1e-6..1, |v| 1e-3..1e6 */
+    TK_ROT_QUARTER,        /* |w| pi/2, v 0 or U(0,2) */
+    TK_ROT_NEAR_PI,        /* |w| pi - 1e-9, v 0 or U(0,2) */
+    TK_ROT_NEAR_PI_SPREAD, /* |w| pi - 1e-12..1e-1 (a fifth: pi - 1e-9), |v| 1e-3..1e6 */
+    TK_ROT_PI,             /* |w| pi; 3 in 10 about a coordinate axis; v 0, U(0,2) or 1e-3..1e6 */
+    TK_TINY_UNDER_LARGE,   /* |w| 1e-12..1e-6, |v| 1..1e6 */
+    TK_SCREW,              /* |w| U(0, pi), |v| 1e-3..1e3 */
+    TK_BEYOND_PI,          /* |w| U(pi, 3 pi), |v| 1e-3..1e6 */
+    TK_TWIST_FAMILIES,
+    TK_SCALING = TK_TWIST_FAMILIES, /* [diag(d), b], d U(-3,3), |b| 1e-3..1e3 */
+    TK_SHEAR,              /* [N, b], N strictly upper U(-2,2), |b| 1e-3..1e3 */
+    TK_AFFINE,             /* [A, b], A U(-1,1) entrywise, b U(-10,10) */
+    TK_FAMILIES
 };
 static const char *const tk_family_name[TK_FAMILIES] = {
-    "identity", "pure translations 1e-12..1e6", "rotations 1e-12 and 1e-8 rad",
-    "rotations 1e-4 rad", "rotations pi/2", "rotations pi - 1e-9", "rotations pi (half turns)",
-    "tiny rotations 1e-12..1e-6 under translations 1..1e6", "general screws"};
+    "identity",
+    "near identity: |w|, |v| 0 or 1e-300..1e-12",
+    "pure translations 1e-12..1e6",
+    "rotations 1e-12 and 1e-8 rad",
+    "rotations 1e-4 rad",
+    "rotations 1e-6..1 rad, translations 1e-3..1e6",
+    "rotations pi/2",
+    "rotations pi - 1e-9",
+    "rotations pi - 1e-12..1e-1, translations 1e-3..1e6",
+    "rotations pi (half turns)",
+    "tiny rotations 1e-12..1e-6 under translations 1..1e6",
+    "general screws (angle < pi, |v| 1e-3..1e3)",
+    "rotations pi..3pi (beyond a half turn)",
+    "scalings e^-3..e^3 with translations",
+    "shears (nilpotent) with translations",
+    "general 3x4: entries U(-1,1), translations U(-10,10)"};
 
-/** A random twist of family f; its rotation angle is |w|. */
+/** A random twist of twist family f (f < TK_TWIST_FAMILIES); its rotation
+ *  angle is |w|. */
 static inline ga_twist tk_twist(tk_rng *r, int f)
 {
     ga_vec3 u = tk_unit(r), d = tk_unit(r);
     double angle = 0, v = 0;
     switch (f) {
     case TK_IDENTITY: break;
+    case TK_NEAR_IDENTITY:
+        if (tk_uni(r) < 0.5) v = tk_loguni(r, 1e-300, 1e-12);
+        if (tk_uni(r) < 0.5) angle = tk_loguni(r, 1e-300, 1e-12);
+        break;
     case TK_TRANSLATION: v = tk_loguni(r, 1e-12, 1e6); break;
     case TK_ROT_TINY: angle = tk_uni(r) < 0.5 ? 1e-12 : 1e-8; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
     case TK_ROT_SMALL: angle = 1e-4; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
+    case TK_ROT_SPREAD: angle = tk_loguni(r, 1e-6, 1.0); v = tk_loguni(r, 1e-3, 1e6); break;
     case TK_ROT_QUARTER: angle = TK_PI / 2; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
     case TK_ROT_NEAR_PI: angle = TK_PI - 1e-9; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
-    case TK_ROT_PI: angle = TK_PI; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
+    case TK_ROT_NEAR_PI_SPREAD:
+        angle = TK_PI - (tk_uni(r) < 0.2 ? 1e-9 : tk_loguni(r, 1e-12, 1e-1));
+        v = tk_loguni(r, 1e-3, 1e6);
+        break;
+    case TK_ROT_PI: {
+        angle = TK_PI;
+        if (tk_uni(r) < 0.3) { /* about a coordinate axis */
+            uint64_t k = tk_next(r) % 3;
+            u = (ga_vec3){k == 0, k == 1, k == 2};
+        }
+        double c = tk_uni(r);
+        v = c < 1.0 / 3 ? 0 : c < 2.0 / 3 ? tk_range(r, 0, 2) : tk_loguni(r, 1e-3, 1e6);
+        break;
+    }
     case TK_TINY_UNDER_LARGE: angle = tk_loguni(r, 1e-12, 1e-6); v = tk_loguni(r, 1, 1e6); break;
-    default: angle = tk_range(r, 0, TK_PI); v = tk_loguni(r, 1e-3, 1e3); break;
+    case TK_SCREW: angle = tk_range(r, 0, TK_PI); v = tk_loguni(r, 1e-3, 1e3); break;
+    case TK_BEYOND_PI: angle = tk_range(r, TK_PI, 3 * TK_PI); v = tk_loguni(r, 1e-3, 1e6); break;
+    default: break; /* not a twist family: the zero twist */
     }
     return (ga_twist){tk_scale(u, angle), tk_scale(d, v)};
 }
 
+/** A random algebra element of family f as a 4x4 with a zero last row: the
+ *  hat of a twist for the twist families, else a scaling, a shear or a
+ *  general 3x4. */
+static inline ga_mat4 tk_algebra(tk_rng *r, int f)
+{
+    if (f < TK_TWIST_FAMILIES)
+        return ga_twist_hat(tk_twist(r, f));
+    ga_mat4 x;
+    memset(&x, 0, sizeof x);
+    if (f == TK_AFFINE) {
+        for (int i = 0; i < 12; i++)
+            x.m[i] = i % 4 == 3 ? tk_range(r, -10, 10) : tk_range(r, -1, 1);
+        return x;
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            if (f == TK_SCALING && i == j)
+                x.m[4 * i + j] = tk_range(r, -3, 3);
+            else if (f == TK_SHEAR && j > i)
+                x.m[4 * i + j] = tk_range(r, -2, 2);
+        }
+    ga_vec3 b = tk_scale(tk_unit(r), tk_loguni(r, 1e-3, 1e3));
+    x.m[3] = b.x;
+    x.m[7] = b.y;
+    x.m[11] = b.z;
+    return x;
+}
+
+/** Rotors just off the group: every coefficient of R moved by ~1e-12
+ *  relative (the bivector part absolutely, the n part relative to
+ *  max(1, |coefficient|)). */
+static inline ga_rotor tk_drift(tk_rng *r, ga_rotor R)
+{
+    double *c = &R.s;
+    for (int k = 0; k < 8; k++)
+        c[k] += 1e-12 * tk_range(r, -1, 1) * (k < 4 ? 1 : fmax(1, fabs(c[k])));
+    return R;
+}
+
 /* ---- reporting --------------------------------------------------------------- */
-typedef struct { const char *name; long n; double worst, tol; } tk_check;
+enum { TK_MAX, TK_PER_CASE, TK_LEAST, TK_STATUS, TK_BOOL };
+
+typedef struct {
+    char name[128];
+    int kind;
+    long n, bad;    /* cases; cases that failed (statuses, conditions, per-case) */
+    double worst;   /* TK_MAX: largest error; TK_PER_CASE: the error of the case
+                       nearest its tolerance; TK_LEAST: smallest value */
+    double tol;     /* the tolerance (TK_PER_CASE: that case's); TK_LEAST: the bound */
+    double ratio;   /* TK_PER_CASE: largest err/tol */
+    int got, want;  /* TK_STATUS: the first wrong status (or the last right one) */
+} tk_check;
 
 static int tk_failures;
 
-static inline tk_check tk_begin(const char *name, double tol) { return (tk_check){name, 0, 0.0, tol}; }
-/** Record one measured error (NaN counts as a failure). */
+static inline tk_check tk_begin(const char *name, double tol)
+{
+    tk_check c;
+    memset(&c, 0, sizeof c);
+    snprintf(c.name, sizeof c.name, "%s", name);
+    c.kind = TK_MAX;
+    c.tol = tol;
+    return c;
+}
+/** tk_begin with a name formatted as by printf. */
+static inline tk_check tk_beginf(double tol, const char *fmt, ...)
+{
+    tk_check c = tk_begin("", tol);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c.name, sizeof c.name, fmt, ap);
+    va_end(ap);
+    return c;
+}
+/** A check that values stay at or above bound (an error that must be there). */
+static inline tk_check tk_begin_least(const char *name, double bound)
+{
+    tk_check c = tk_begin(name, bound);
+    c.kind = TK_LEAST;
+    c.worst = INFINITY;
+    return c;
+}
+/** Record one measured error (TK_LEAST: one value). NaN counts as a failure. */
 static inline void tk_add(tk_check *c, double err)
 {
     c->n++;
+    if (c->kind == TK_LEAST) {
+        if (!(err >= c->worst))
+            c->worst = isnan(err) ? -INFINITY : err;
+        return;
+    }
     if (!(err <= c->worst))
         c->worst = isnan(err) ? INFINITY : fmax(c->worst, err);
 }
-/** Print "ok|FAIL name n worst tol" and count a failure if worst > tol. */
+/** Record one error against its own tolerance (derived for this case). */
+static inline void tk_add_tol(tk_check *c, double err, double tol)
+{
+    c->kind = TK_PER_CASE;
+    c->n++;
+    double ratio = err == 0 ? 0.0 : err / tol; /* tol 0 demands exact; NaN fails */
+    if (!(err <= tol)) {
+        c->bad++;
+        ratio = isnan(ratio) || isnan(err) ? INFINITY : ratio;
+    }
+    /* the case nearest its tolerance; among equals (all exact, say) the
+       largest error, then the tightest tolerance */
+    if (c->n == 1 || ratio > c->ratio || (ratio == c->ratio && err > c->worst) ||
+        (ratio == c->ratio && err == c->worst && tol < c->tol)) {
+        c->ratio = ratio;
+        c->worst = isnan(err) ? INFINITY : err;
+        c->tol = tol;
+    }
+}
+static inline void tk_add_status(tk_check *c, int got, int want)
+{
+    c->kind = TK_STATUS;
+    c->n++;
+    if (got != want && c->bad++ == 0)
+        c->got = got, c->want = want;
+    if (c->bad == 0)
+        c->got = got, c->want = want;
+}
+static inline void tk_add_bool(tk_check *c, int cond)
+{
+    c->kind = TK_BOOL;
+    c->n++;
+    c->bad += !cond;
+}
+/** Print the check's line and count a failure if it failed. */
 static inline void tk_end(const tk_check *c)
 {
-    int ok = c->worst <= c->tol;
-    printf("%-4s %-62s n=%-7ld worst %.3e  tol %.1e\n", ok ? "ok" : "FAIL", c->name, c->n, c->worst,
-           c->tol);
+    int ok;
+    char tail[160];
+    switch (c->kind) {
+    case TK_LEAST:
+        ok = c->worst >= c->tol;
+        snprintf(tail, sizeof tail, "least %.3e  >= %.1e", c->worst, c->tol);
+        break;
+    case TK_PER_CASE:
+        ok = c->bad == 0;
+        snprintf(tail, sizeof tail, "worst %.3e  tol %.1e  (tol per case; worst err/tol %.3g)", c->worst,
+                 c->tol, c->ratio);
+        break;
+    case TK_STATUS:
+        ok = c->bad == 0;
+        if (ok)
+            snprintf(tail, sizeof tail, "status %s", ga_status_string(c->want));
+        else
+            snprintf(tail, sizeof tail, "%ld wrong; first: %s (%d), wanted %s (%d)", c->bad,
+                     ga_status_string(c->got), c->got, ga_status_string(c->want), c->want);
+        break;
+    case TK_BOOL:
+        ok = c->bad == 0;
+        snprintf(tail, sizeof tail, ok ? "held" : "failed %ld times", c->bad);
+        break;
+    default:
+        ok = c->worst <= c->tol;
+        snprintf(tail, sizeof tail, "worst %.3e  tol %.1e", c->worst, c->tol);
+        break;
+    }
+    printf("%-4s %-62s n=%-7ld %s\n", ok ? "ok" : "FAIL", c->name, c->n, tail);
     if (!ok)
         tk_failures++;
 }
+/** One condition, one line. */
 static inline void tk_expect(int cond, const char *what)
 {
-    printf("%-4s %s\n", cond ? "ok" : "FAIL", what);
-    if (!cond)
-        tk_failures++;
+    tk_check c = tk_begin(what, 0);
+    tk_add_bool(&c, cond);
+    tk_end(&c);
 }
+/** One status, one line. */
+static inline void tk_expect_status(const char *what, int got, int want)
+{
+    tk_check c = tk_begin(what, 0);
+    tk_add_status(&c, got, want);
+    tk_end(&c);
+}
+
+/* ---- named checks: met in many places, ended together -------------------------- */
+enum { TK_MAX_NAMED = 256 };
+static tk_check tk_named[TK_MAX_NAMED];
+static int tk_named_n;
+
+/** The named check `name`, opened (kind and tolerance set by what is added)
+ *  at its first use since the last tk_end_named. */
+static inline tk_check *tk_get(const char *name)
+{
+    for (int i = 0; i < tk_named_n; i++)
+        if (strcmp(tk_named[i].name, name) == 0)
+            return &tk_named[i];
+    if (tk_named_n == TK_MAX_NAMED) { /* reuse the last slot and count a failure */
+        printf("FAIL testkit: more than %d named checks\n", TK_MAX_NAMED);
+        tk_failures++;
+        tk_named_n--;
+    }
+    tk_named[tk_named_n] = tk_begin(name, 0);
+    return &tk_named[tk_named_n++];
+}
+/** End every named check opened since the last call, in order of first use. */
+static inline void tk_end_named(void)
+{
+    for (int i = 0; i < tk_named_n; i++)
+        tk_end(&tk_named[i]);
+    tk_named_n = 0;
+}
+
+/** The summary line; the exit status (0: every check passed). */
 static inline int tk_finish(const char *test)
 {
+    tk_end_named();
     if (tk_failures)
         printf("%s: %d check(s) FAILED\n", test, tk_failures);
     else
