@@ -28,8 +28,7 @@ extern "C" void garotor_eigen_logm(const double a[16], double out[16])
     res = m.log();
 }
 
-extern "C" void garotor_eigen_slerp_lerp(const double k0[7], const double k1[7], double u,
-                                         double out[7])
+extern "C" void garotor_eigen_slerp_lerp(const double k0[7], const double k1[7], double u, double out[7])
 {
     // Quaterniond(w, x, y, z); the pose stores x y z qx qy qz qw
     const Eigen::Quaterniond q0(k0[6], k0[3], k0[4], k0[5]);

@@ -93,8 +93,7 @@ static uint64_t splitmix64(uint64_t *x)
 
 static void rng_seed(uint64_t seed)
 {
-    for (int i = 0; i < 4; i++)
-        rng_s[i] = splitmix64(&seed);
+    for (int i = 0; i < 4; i++) rng_s[i] = splitmix64(&seed);
 }
 
 static uint64_t rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
@@ -136,8 +135,7 @@ static ga_twist random_twist(void)
 {
     ga_vec3 u = random_unit();
     double th = uniform(0.05, 3.0);
-    ga_twist xi = {{th * u.x, th * u.y, th * u.z},
-                   {uniform(-2, 2), uniform(-2, 2), uniform(-2, 2)}};
+    ga_twist xi = {{th * u.x, th * u.y, th * u.z}, {uniform(-2, 2), uniform(-2, 2), uniform(-2, 2)}};
     return xi;
 }
 
@@ -177,8 +175,7 @@ ga_vec3 bench_mat4_apply(const ga_mat4 *m, ga_vec3 x);
 BENCH_OUT_OF_LINE ga_vec3 bench_mat4_apply(const ga_mat4 *m, ga_vec3 x)
 {
     const double *a = m->m;
-    ga_vec3 r = {a[0] * x.x + a[1] * x.y + a[2] * x.z + a[3],
-                 a[4] * x.x + a[5] * x.y + a[6] * x.z + a[7],
+    ga_vec3 r = {a[0] * x.x + a[1] * x.y + a[2] * x.z + a[3], a[4] * x.x + a[5] * x.y + a[6] * x.z + a[7],
                  a[8] * x.x + a[9] * x.y + a[10] * x.z + a[11]};
     return r;
 }
@@ -192,9 +189,9 @@ static ga_vec3 pts[RING];
 static ga_twist twists[RING];
 static ga_generator gens[RING];
 static ga_mat4 rigid_a[RING], rigid_b[RING]; /* the matrices of rot_a, rot_b */
-static ga_mat4 hats[RING];                    /* twist^ of twists */
-static ga_mat4 gen_x[RING];                   /* general 4x4, last row zero */
-static ga_mat4 gen_m[RING];                   /* expm(gen_x): general invertible */
+static ga_mat4 hats[RING];                   /* twist^ of twists */
+static ga_mat4 gen_x[RING];                  /* general 4x4, last row zero */
+static ga_mat4 gen_m[RING];                  /* expm(gen_x): general invertible */
 
 static ga_mv out_mv[RING];
 static ga_rotor out_rot[RING];
@@ -235,8 +232,7 @@ static int build_paths(void)
 {
     double times[N_KEYS];
     ga_mat4 keys[N_KEYS];
-    for (int i = 0; i < N_KEYS; i++)
-        times[i] = i;
+    for (int i = 0; i < N_KEYS; i++) times[i] = i;
     for (int p = 0; p < N_PATHS; p++) {
         for (int i = 0; i < N_KEYS; i++) {
             ga_rotor r = rotor_of_twist(random_twist());
@@ -253,8 +249,8 @@ static int build_paths(void)
             void *work = malloc(bytes);
             if (!work)
                 return GA_ERR_ARG;
-            int st = ga_path_init_mat4(g, path_kind[k].scheme, N_KEYS, times,
-                                       keys, NULL, work, bytes, &paths[k][p]);
+            int st = ga_path_init_mat4(g, path_kind[k].scheme, N_KEYS, times, keys, NULL, work, bytes,
+                                       &paths[k][p]);
             if (st != GA_OK)
                 return st;
         }
@@ -269,8 +265,7 @@ static double samples_maxdiff(const ga_group *g, const double *a, const double *
     for (size_t k = 0; k < n; k++) {
         ga_mat4 ma = g->to_mat4((const unsigned char *)a + k * g->elem_size);
         ga_mat4 mb = g->to_mat4((const unsigned char *)b + k * g->elem_size);
-        for (int i = 0; i < 16; i++)
-            worst = fmax(worst, fabs(ma.m[i] - mb.m[i]));
+        for (int i = 0; i < 16; i++) worst = fmax(worst, fabs(ma.m[i] - mb.m[i]));
     }
     return worst;
 }
@@ -293,13 +288,10 @@ static void path_errors(int kind, double *euler_max, double *exact_max)
     int st = 0;
     for (int p = 0; p < N_PATHS; p++) {
         const ga_path *path = &paths[kind][p];
-        st |= ga_path_sample_uniform(path, GA_EVAL_DIRECT, EULER_STEP, N_SAMPLES, 0.0,
-                                     N_KEYS - 1.0, direct);
-        st |= ga_path_sample_uniform(path, GA_EVAL_EULER, EULER_STEP, N_SAMPLES, 0.0,
-                                     N_KEYS - 1.0, other);
+        st |= ga_path_sample_uniform(path, GA_EVAL_DIRECT, EULER_STEP, N_SAMPLES, 0.0, N_KEYS - 1.0, direct);
+        st |= ga_path_sample_uniform(path, GA_EVAL_EULER, EULER_STEP, N_SAMPLES, 0.0, N_KEYS - 1.0, other);
         eu = fmax(eu, samples_maxdiff(g, direct, other, N_SAMPLES));
-        st |= ga_path_sample_uniform(path, GA_EVAL_EXACT, EULER_STEP, N_SAMPLES, 0.0,
-                                     N_KEYS - 1.0, other);
+        st |= ga_path_sample_uniform(path, GA_EVAL_EXACT, EULER_STEP, N_SAMPLES, 0.0, N_KEYS - 1.0, other);
         ex = fmax(ex, samples_maxdiff(g, direct, other, N_SAMPLES));
     }
     if (st == GA_OK) {
@@ -322,22 +314,22 @@ typedef size_t (*run_fn)(const void *ctx, size_t n);
  * choice), and the last output, LAST (at slot `last`), goes to the sink so
  * that nothing can be optimised away. A macro, so that each loop is compiled
  * with its call inlined, as a loop written out by hand would be. */
-#define RING_LOOP(name, BODY, LAST)                                                                \
-    static size_t name(const void *ctx, size_t n)                                                  \
-    {                                                                                              \
-        const ga_mat4 *in = ctx;                                                                   \
-        (void)in;                                                                                  \
-        size_t k = cursor;                                                                         \
-        int st = 0;                                                                                \
-        for (size_t i = 0; i < n; i++, k++) {                                                      \
-            size_t j = k & MASK;                                                                   \
-            BODY;                                                                                  \
-        }                                                                                          \
-        cursor = k;                                                                                \
-        status_or |= st;                                                                           \
-        size_t last = (k - 1) & MASK;                                                              \
-        sink = (LAST);                                                                             \
-        return n;                                                                                  \
+#define RING_LOOP(name, BODY, LAST)                                                                          \
+    static size_t name(const void *ctx, size_t n)                                                            \
+    {                                                                                                        \
+        const ga_mat4 *in = ctx;                                                                             \
+        (void)in;                                                                                            \
+        size_t k = cursor;                                                                                   \
+        int st = 0;                                                                                          \
+        for (size_t i = 0; i < n; i++, k++) {                                                                \
+            size_t j = k & MASK;                                                                             \
+            BODY;                                                                                            \
+        }                                                                                                    \
+        cursor = k;                                                                                          \
+        status_or |= st;                                                                                     \
+        size_t last = (k - 1) & MASK;                                                                        \
+        sink = (LAST);                                                                                       \
+        return n;                                                                                            \
     }
 
 RING_LOOP(run_gp_full, out_mv[j] = ga_mv_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
@@ -346,22 +338,19 @@ RING_LOOP(run_dualquat_mul, out_dq[j] = bench_dualquat_mul(dq_a[j], dq_b[j]), ou
 RING_LOOP(run_mat4_mul, out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]), out_mat[last].m[11])
 RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
 /* the same point moved through the full algebra: F(x), R F(x) ~R, down */
-RING_LOOP(run_apply_sandwich, st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]),
-          out_v3[last].z)
+RING_LOOP(run_apply_sandwich,
+          st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]), out_v3[last].z)
 RING_LOOP(run_mat4_apply, out_v3[j] = bench_mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
 RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
 RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
 RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
 RING_LOOP(run_se3_log, st |= ga_se3_log(rigid_a[j], &out_tw[j]), out_tw[last].v.z)
 /* twist -> 4x4 matrix through the rotor: exp, then the rotor's matrix */
-RING_LOOP(run_exp_to_mat4,
-          out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
+RING_LOOP(run_exp_to_mat4, out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
           out_mat[last].m[11])
 /* 4x4 rigid matrix -> twist through the rotor: checked Shepperd, then the log */
-RING_LOOP(run_log_from_mat4,
-          ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4(rigid_a[j], &r);
-          st |= ga_rotor_log(r, &g); out_tw[j] = ga_generator_to_twist(g),
-          out_tw[last].v.z)
+RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4(rigid_a[j], &r);
+          st |= ga_rotor_log(r, &g); out_tw[j] = ga_generator_to_twist(g), out_tw[last].v.z)
 /* ga_mat4_expm / ga_mat4_logm (and Eigen's) of the ring selected by ctx */
 RING_LOOP(run_mat4_expm, st |= ga_mat4_expm(in[j], &out_mat[j]), out_mat[last].m[11])
 RING_LOOP(run_mat4_logm, st |= ga_mat4_logm(in[j], &out_mat[j]), out_mat[last].m[11])
@@ -406,8 +395,7 @@ static size_t run_sample(const void *ctx, size_t n)
     int st = 0;
     while (done < n) {
         const ga_path *p = &paths[c->kind][path_cursor++ % N_PATHS];
-        st |= ga_path_sample_uniform(p, c->eval, EULER_STEP, N_SAMPLES, 0.0, N_KEYS - 1.0,
-                                     sample_buf);
+        st |= ga_path_sample_uniform(p, c->eval, EULER_STEP, N_SAMPLES, 0.0, N_KEYS - 1.0, sample_buf);
         done += N_SAMPLES;
     }
     status_or |= st;
@@ -442,56 +430,47 @@ static const sample_ctx ctx_se3_lihao3_euler = {PG_SE3_LIHAO3, GA_EVAL_EULER};
 
 static bench benches[] = {
     /* the keys of docs/conventions.md */
-    {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full,
-     NULL, 0, NULL, 0, 0, 0},
-    {"motor_mul", "ga_rotor_mul: product of two compact rotors (8 doubles)", run_motor_mul,
-     NULL, 0, NULL, 0, 0, 0},
-    {"dualquat_mul", "textbook unit dual-quaternion product (in the bench, 48 mul)",
-     run_dualquat_mul, NULL, 0, NULL, 0, 0, 0},
-    {"motor_apply", "ga_rotor_apply: one 3D point moved by a rotor", run_motor_apply, NULL, 0,
-     NULL, 0, 0, 0},
+    {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full, NULL, 0, NULL,
+     0, 0, 0},
+    {"motor_mul", "ga_rotor_mul: product of two compact rotors (8 doubles)", run_motor_mul, NULL, 0, NULL, 0,
+     0, 0},
+    {"dualquat_mul", "textbook unit dual-quaternion product (in the bench, 48 mul)", run_dualquat_mul, NULL,
+     0, NULL, 0, 0, 0},
+    {"motor_apply", "ga_rotor_apply: one 3D point moved by a rotor", run_motor_apply, NULL, 0, NULL, 0, 0, 0},
     {"exp", "ga_rotor_exp: generator -> rotor, closed form", run_exp, NULL, 0, NULL, 0, 0, 0},
     {"log", "ga_rotor_log: rotor -> generator, principal", run_log, NULL, 0, NULL, 0, 0, 0},
-    {"se3_exp", "ga_se3_exp: twist -> 4x4, Eberly's closed form", run_se3_exp, NULL, 0, NULL,
-     0, 0, 0},
-    {"se3_log", "ga_se3_log: 4x4 rigid -> twist (checked), Eberly", run_se3_log, NULL, 0, NULL,
-     0, 0, 0},
-    {"sample_direct", "screw path on rotors, per pose: closed form", run_sample,
-     &ctx_cga_screw_direct, 0, NULL, 0, 0, 0},
+    {"se3_exp", "ga_se3_exp: twist -> 4x4, Eberly's closed form", run_se3_exp, NULL, 0, NULL, 0, 0, 0},
+    {"se3_log", "ga_se3_log: 4x4 rigid -> twist (checked), Eberly", run_se3_log, NULL, 0, NULL, 0, 0, 0},
+    {"sample_direct", "screw path on rotors, per pose: closed form", run_sample, &ctx_cga_screw_direct, 0,
+     NULL, 0, 0, 0},
     {"sample_exact", "screw path on rotors, per pose: exact incremental stepping", run_sample,
      &ctx_cga_screw_exact, 0, NULL, 0, 0, 0},
-    {"sample_euler", "screw path on rotors, per pose: Li-Hao Euler, 1 step", run_sample,
-     &ctx_cga_screw_euler, 0, NULL, 0, 0, 0},
+    {"sample_euler", "screw path on rotors, per pose: Li-Hao Euler, 1 step", run_sample, &ctx_cga_screw_euler,
+     0, NULL, 0, 0, 0},
     /* extras */
-    {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL,
-     0, 0, 0},
-    {"mat4_apply", "4x4 rigid motion times a point (in the bench)", run_mat4_apply, NULL, 0,
-     NULL, 0, 0, 0},
+    {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
+    {"mat4_apply", "4x4 rigid motion times a point (in the bench)", run_mat4_apply, NULL, 0, NULL, 0, 0, 0},
     {"apply_sandwich", "ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x))): full sandwich",
      run_apply_sandwich, NULL, 0, NULL, 0, 0, 0},
-    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4", run_exp_to_mat4,
-     NULL, 0, NULL, 0, 0, 0},
-    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4, log",
-     run_log_from_mat4, NULL, 0, NULL, 0, 0, 0},
-    {"mat4_expm_se3", "ga_mat4_expm (Pade) of the se3_exp inputs' twist^", run_mat4_expm, hats,
-     0, NULL, 0, 0, 0},
-    {"mat4_logm_se3", "ga_mat4_logm (inverse scaling and squaring) of the se3_log inputs",
-     run_mat4_logm, rigid_a, 0, NULL, 0, 0, 0},
-    {"mat4_expm", "ga_mat4_expm of general 4x4 (last row 0)", run_mat4_expm, gen_x, 0, NULL, 0,
-     0, 0},
-    {"mat4_logm", "ga_mat4_logm of general invertible 4x4", run_mat4_logm, gen_m, 0, NULL, 0, 0,
+    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4", run_exp_to_mat4, NULL, 0, NULL,
+     0, 0, 0},
+    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4, log", run_log_from_mat4, NULL, 0,
+     NULL, 0, 0, 0},
+    {"mat4_expm_se3", "ga_mat4_expm (Pade) of the se3_exp inputs' twist^", run_mat4_expm, hats, 0, NULL, 0, 0,
      0},
-#ifdef GAROTOR_BENCH_EIGEN
-    {"eigen_expm", "Eigen MatrixFunctions .exp() of the se3_exp inputs' twist^", run_eigen_expm,
-     hats, 0, NULL, 0, 0, 0},
-    {"eigen_logm", "Eigen MatrixFunctions .log() of the se3_log inputs", run_eigen_logm,
+    {"mat4_logm_se3", "ga_mat4_logm (inverse scaling and squaring) of the se3_log inputs", run_mat4_logm,
      rigid_a, 0, NULL, 0, 0, 0},
-    {"eigen_expm_general", "Eigen .exp() of the mat4_expm inputs", run_eigen_expm, gen_x, 0,
+    {"mat4_expm", "ga_mat4_expm of general 4x4 (last row 0)", run_mat4_expm, gen_x, 0, NULL, 0, 0, 0},
+    {"mat4_logm", "ga_mat4_logm of general invertible 4x4", run_mat4_logm, gen_m, 0, NULL, 0, 0, 0},
+#ifdef GAROTOR_BENCH_EIGEN
+    {"eigen_expm", "Eigen MatrixFunctions .exp() of the se3_exp inputs' twist^", run_eigen_expm, hats, 0,
      NULL, 0, 0, 0},
-    {"eigen_logm_general", "Eigen .log() of the mat4_logm inputs", run_eigen_logm, gen_m, 0,
-     NULL, 0, 0, 0},
-    {"eigen_slerp_lerp", "Eigen Quaterniond slerp + lerp, per pose, same sample times",
-     run_eigen_slerp_lerp, NULL, 0, NULL, 0, 0, 0},
+    {"eigen_logm", "Eigen MatrixFunctions .log() of the se3_log inputs", run_eigen_logm, rigid_a, 0, NULL, 0,
+     0, 0},
+    {"eigen_expm_general", "Eigen .exp() of the mat4_expm inputs", run_eigen_expm, gen_x, 0, NULL, 0, 0, 0},
+    {"eigen_logm_general", "Eigen .log() of the mat4_logm inputs", run_eigen_logm, gen_m, 0, NULL, 0, 0, 0},
+    {"eigen_slerp_lerp", "Eigen Quaterniond slerp + lerp, per pose, same sample times", run_eigen_slerp_lerp,
+     NULL, 0, NULL, 0, 0, 0},
 #endif
     {"sample_direct_se3", "screw path on 4x4 matrices, per pose: closed form", run_sample,
      &ctx_se3_screw_direct, 0, NULL, 0, 0, 0},
@@ -505,12 +484,12 @@ static bench benches[] = {
      &ctx_cga_lihao3_exact, 0, NULL, 0, 0, 0},
     {"sample_euler_lihao3", "lihao3 path on rotors, per pose: Euler, 1 step", run_sample,
      &ctx_cga_lihao3_euler, 0, NULL, 0, 0, 0},
-    {"sample_direct_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: closed form",
-     run_sample, &ctx_se3_lihao3_direct, 0, NULL, 0, 0, 0},
-    {"sample_exact_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: exact stepping",
-     run_sample, &ctx_se3_lihao3_exact, 0, NULL, 0, 0, 0},
-    {"sample_euler_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: Euler, 1 step",
-     run_sample, &ctx_se3_lihao3_euler, 0, NULL, 0, 0, 0},
+    {"sample_direct_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: closed form", run_sample,
+     &ctx_se3_lihao3_direct, 0, NULL, 0, 0, 0},
+    {"sample_exact_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: exact stepping", run_sample,
+     &ctx_se3_lihao3_exact, 0, NULL, 0, 0, 0},
+    {"sample_euler_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: Euler, 1 step", run_sample,
+     &ctx_se3_lihao3_euler, 0, NULL, 0, 0, 0},
 };
 #define N_BENCH (sizeof benches / sizeof benches[0])
 
@@ -602,8 +581,7 @@ static int selected(const char *only, const char *key)
 static double maxdiff(const double *a, const double *b, int n)
 {
     double w = 0.0;
-    for (int i = 0; i < n; i++)
-        w = fmax(w, fabs(a[i] - b[i]));
+    for (int i = 0; i < n; i++) w = fmax(w, fabs(a[i] - b[i]));
     return w;
 }
 
@@ -631,11 +609,9 @@ static int setup_inputs(void)
            strip |Im| < pi) */
         for (;;) {
             ga_mat4 a;
-            for (int i = 0; i < 16; i++)
-                a.m[i] = i < 12 ? uniform(-0.7, 0.7) : 0.0;
+            for (int i = 0; i < 16; i++) a.m[i] = i < 12 ? uniform(-0.7, 0.7) : 0.0;
             ga_mat4 e, l;
-            if (ga_mat4_expm(a, &e) != GA_OK || ga_mat4_logm(e, &l) != GA_OK ||
-                maxdiff(l.m, a.m, 16) > 1e-9)
+            if (ga_mat4_expm(a, &e) != GA_OK || ga_mat4_logm(e, &l) != GA_OK || maxdiff(l.m, a.m, 16) > 1e-9)
                 continue;
             gen_x[j] = a;
             gen_m[j] = e;
@@ -721,8 +697,8 @@ static double batch_poses_per_s(ga_eval ev, int reps, void *buf)
     int st = 0;
     for (int r = 0; r <= reps; r++) { /* r = 0 warms up */
         double t0 = now_ns();
-        st |= ga_path_sample_uniform(&paths[PG_CGA_SCREW][r % N_PATHS], ev, EULER_STEP,
-                                     BATCH_POSES, 0.0, N_KEYS - 1.0, buf);
+        st |= ga_path_sample_uniform(&paths[PG_CGA_SCREW][r % N_PATHS], ev, EULER_STEP, BATCH_POSES, 0.0,
+                                     N_KEYS - 1.0, buf);
         double el = now_ns() - t0;
         if (r > 0)
             best[r - 1] = el;
@@ -747,8 +723,7 @@ static void cpu_model(char *buf, size_t len)
             char *p = strchr(line, ':');
             if (p) {
                 p++;
-                while (*p == ' ' || *p == '\t')
-                    p++;
+                while (*p == ' ' || *p == '\t') p++;
                 p[strcspn(p, "\n")] = 0;
                 snprintf(buf, len, "%s", p);
             }
@@ -821,12 +796,9 @@ static const ratio_def ratios[] = {
      "point action: rotor against a 4x4 matrix"},
     {"apply_sandwich/motor_apply", "apply_sandwich", "motor_apply", NAN, 0,
      "full sandwich against the fast point action"},
-    {"motor_mul/mat4_mul", "motor_mul", "mat4_mul", NAN, 0,
-     "composition: rotor against 4x4 matrix"},
-    {"exp_to_mat4/se3_exp", "exp_to_mat4", "se3_exp", NAN, 0,
-     "a 4x4 exp computed through the rotor"},
-    {"log_from_mat4/se3_log", "log_from_mat4", "se3_log", NAN, 0,
-     "a 4x4 log computed through the rotor"},
+    {"motor_mul/mat4_mul", "motor_mul", "mat4_mul", NAN, 0, "composition: rotor against 4x4 matrix"},
+    {"exp_to_mat4/se3_exp", "exp_to_mat4", "se3_exp", NAN, 0, "a 4x4 exp computed through the rotor"},
+    {"log_from_mat4/se3_log", "log_from_mat4", "se3_log", NAN, 0, "a 4x4 log computed through the rotor"},
     {"mat4_expm_se3/se3_exp", "mat4_expm_se3", "se3_exp", NAN, 0,
      "general Pade expm against the closed form, same inputs"},
     {"mat4_logm_se3/se3_log", "mat4_logm_se3", "se3_log", NAN, 0,
@@ -843,8 +815,8 @@ static const ratio_def ratios[] = {
      "exact stepping against closed-form sampling"},
     {"sample_direct/sample_direct_se3", "sample_direct", "sample_direct_se3", NAN, 0,
      "screw sampling: rotors against 4x4 matrices"},
-    {"sample_exact_lihao3/sample_euler_lihao3", "sample_exact_lihao3", "sample_euler_lihao3",
-     NAN, 0, "exact against Euler on the cubic Li-Hao form"},
+    {"sample_exact_lihao3/sample_euler_lihao3", "sample_exact_lihao3", "sample_euler_lihao3", NAN, 0,
+     "exact against Euler on the cubic Li-Hao form"},
 };
 #define N_RATIOS (sizeof ratios / sizeof ratios[0])
 
@@ -1024,8 +996,7 @@ int main(int argc, char **argv)
         }
         printf("%s\n    \"exact_max\": {\"value\": ", first ? "" : ",");
         json_num("%.3e", exact_max);
-        printf(", \"op\": \"<=\", \"bound\": 1e-12, \"pass\": %s}",
-               exact_max <= 1e-12 ? "true" : "false");
+        printf(", \"op\": \"<=\", \"bound\": 1e-12, \"pass\": %s}", exact_max <= 1e-12 ? "true" : "false");
         printf("\n  },\n  \"spread\": {");
         for (size_t i = 0; i < N_BENCH; i++) {
             printf("%s\n    ", i ? "," : "");
@@ -1061,8 +1032,8 @@ int main(int argc, char **argv)
                "\"quick\": %s, \"path_keys\": %d, \"path_samples\": %d, \"paths\": %d, "
                "\"sample_scheme\": \"screw\", \"sample_group\": \"cga\", \"euler_step\": %.17g, "
                "\"exact_reanchor\": %d},\n",
-               n_batches, batch_ns * 1e-6, RING, seed, quick ? "true" : "false", N_KEYS,
-               N_SAMPLES, N_PATHS, EULER_STEP, GA_PATH_EXACT_REANCHOR);
+               n_batches, batch_ns * 1e-6, RING, seed, quick ? "true" : "false", N_KEYS, N_SAMPLES, N_PATHS,
+               EULER_STEP, GA_PATH_EXACT_REANCHOR);
         printf("  \"machine\": {\"cpu\": ");
         json_str(cpu);
         printf(", \"nproc\": %ld, \"compiler\": ", ncpu);
@@ -1104,14 +1075,16 @@ int main(int argc, char **argv)
             printf("%-40s %9s %8s  %s (not measured)\n", r->name, "-", target, r->meaning);
         else
             printf("%-40s %9.3f %8s  %s%s\n", r->name, v, target, r->meaning,
-                   pass < 0 ? "" : pass ? "  [pass]" : "  [FAIL]");
+                   pass < 0 ? ""
+                   : pass   ? "  [pass]"
+                            : "  [FAIL]");
     }
     printf("\nerrors against the closed form (max |entry difference| of the 4x4 matrices,\n"
            "%d paths of %d random keys at t = 0..%d, %d samples each, Euler step h = 1/%d in u):\n",
            N_PATHS, N_KEYS, N_KEYS - 1, N_SAMPLES, SAMPLES_PER_SEG);
     printf("  err.euler_max  %.3e   screw, rotors (cga), h = 1/%d\n", euler_max, SAMPLES_PER_SEG);
-    printf("  err.exact_max  %.3e   screw, rotors (cga), re-anchored every %d samples  [%s]\n",
-           exact_max, GA_PATH_EXACT_REANCHOR, exact_max <= 1e-12 ? "pass: <= 1e-12" : "FAIL: > 1e-12");
+    printf("  err.exact_max  %.3e   screw, rotors (cga), re-anchored every %d samples  [%s]\n", exact_max,
+           GA_PATH_EXACT_REANCHOR, exact_max <= 1e-12 ? "pass: <= 1e-12" : "FAIL: > 1e-12");
     printf("  euler_max_se3  %.3e   screw, 4x4 matrices\n", euler_max_se3);
     printf("  exact_max_se3  %.3e   screw, 4x4 matrices\n", exact_max_se3);
     printf("  euler_max_lihao3      %.3e   lihao3, rotors\n", euler_max_l3);
@@ -1127,9 +1100,9 @@ int main(int argc, char **argv)
            "mat4_logm vs se3_log %.1e,\n"
            "  eigen: expm vs se3_exp %.1e, logm vs se3_log %.1e, general expm %.1e, "
            "general logm %.1e; status %d\n",
-           chk.dualquat_vs_motor, chk.apply_vs_matrix, chk.apply_vs_sandwich, chk.exp_vs_se3,
-           chk.log_vs_se3, chk.expm_vs_se3, chk.logm_vs_se3, chk.eigen_expm_vs_se3,
-           chk.eigen_logm_vs_se3, chk.eigen_expm_general, chk.eigen_logm_general, status_or);
+           chk.dualquat_vs_motor, chk.apply_vs_matrix, chk.apply_vs_sandwich, chk.exp_vs_se3, chk.log_vs_se3,
+           chk.expm_vs_se3, chk.logm_vs_se3, chk.eigen_expm_vs_se3, chk.eigen_logm_vs_se3,
+           chk.eigen_expm_general, chk.eigen_logm_general, status_or);
     printf("\nmachine: %s, %ld online CPUs; %s; build %s; Eigen %s\n", cpu, ncpu, compiler(),
            GAROTOR_BENCH_BUILD, eigen_version ? eigen_version : "absent");
     printf("checksum %.17g\n", (double)sink);

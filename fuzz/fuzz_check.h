@@ -28,18 +28,17 @@
 #define FZ_REPORT(msg) fprintf(stderr, "%s\n", msg)
 #endif
 
-#define FZ_CHECK(cond, ...)                                                              \
-    do {                                                                                 \
-        if (!(cond)) {                                                                   \
-            char fz_msg_[1024];                                                          \
-            int fz_k_ = snprintf(fz_msg_, sizeof fz_msg_,                                \
-                                 "fuzz invariant broken at %s:%d: %s: ", __FILE__,       \
-                                 __LINE__, #cond);                                       \
-            if (fz_k_ > 0 && (size_t)fz_k_ < sizeof fz_msg_)                             \
-                snprintf(fz_msg_ + fz_k_, sizeof fz_msg_ - (size_t)fz_k_, __VA_ARGS__);  \
-            FZ_REPORT(fz_msg_);                                                          \
-            abort();                                                                     \
-        }                                                                                \
+#define FZ_CHECK(cond, ...)                                                                                  \
+    do {                                                                                                     \
+        if (!(cond)) {                                                                                       \
+            char fz_msg_[1024];                                                                              \
+            int fz_k_ = snprintf(fz_msg_, sizeof fz_msg_, "fuzz invariant broken at %s:%d: %s: ", __FILE__,  \
+                                 __LINE__, #cond);                                                           \
+            if (fz_k_ > 0 && (size_t)fz_k_ < sizeof fz_msg_)                                                 \
+                snprintf(fz_msg_ + fz_k_, sizeof fz_msg_ - (size_t)fz_k_, __VA_ARGS__);                      \
+            FZ_REPORT(fz_msg_);                                                                              \
+            abort();                                                                                         \
+        }                                                                                                    \
     } while (0)
 
 #endif

@@ -64,8 +64,7 @@ static double rotor_dist_pm(ga_rotor a, ga_rotor b, double scale)
     for (int sg = -1; sg <= 1; sg += 2) {
         const double *x = &a.s, *y = &b.s;
         double d = 0.0;
-        for (int i = 0; i < 8; i++)
-            d = fmax(d, fabs(x[i] - sg * y[i]) / (i < 4 ? 1.0 : scale));
+        for (int i = 0; i < 8; i++) d = fmax(d, fabs(x[i] - sg * y[i]) / (i < 4 ? 1.0 : scale));
         best = fmin(best, d);
     }
     return best;
@@ -74,8 +73,7 @@ static double rotor_dist_pm(ga_rotor a, ga_rotor b, double scale)
 static double mat_dist(ga_mat4 a, ga_mat4 b, double tscale)
 {
     double d = 0.0;
-    for (int i = 0; i < 16; i++)
-        d = fmax(d, fabs(a.m[i] - b.m[i]) / ((i % 4 == 3 && i < 12) ? tscale : 1.0));
+    for (int i = 0; i < 16; i++) d = fmax(d, fabs(a.m[i] - b.m[i]) / ((i % 4 == 3 && i < 12) ? tscale : 1.0));
     return d;
 }
 
@@ -102,8 +100,8 @@ static void rotor_any(ga_rotor r)
     if (!fin) {
         FZ_CHECK(chk == GA_ERR_NOTFINITE && nst == GA_ERR_NOTFINITE && lst == GA_ERR_NOTFINITE &&
                      llst == GA_ERR_NOTFINITE && sst == GA_ERR_NOTFINITE,
-                 "non-finite rotor: check %d normalize %d log %d literal %d screw %d", chk, nst,
-                 lst, llst, sst);
+                 "non-finite rotor: check %d normalize %d log %d literal %d screw %d", chk, nst, lst, llst,
+                 sst);
         return;
     }
     FZ_CHECK(chk == GA_OK || chk == GA_ERR_NOTRIGID, "check status %d", chk);
@@ -114,8 +112,7 @@ static void rotor_any(ga_rotor r)
     FZ_CHECK(sst == GA_OK || sst == GA_ERR_NOTRIGID || sst == GA_ERR_DOMAIN, "screw status %d", sst);
     /* log accepts exactly what the check at GA_ROTOR_DRIFT_MAX accepts */
     FZ_CHECK((lst == GA_ERR_NOTRIGID) == (chk == GA_ERR_NOTRIGID), "log %d but check %d", lst, chk);
-    FZ_CHECK((llst == GA_ERR_NOTRIGID) == (chk == GA_ERR_NOTRIGID), "literal log %d but check %d", llst,
-             chk);
+    FZ_CHECK((llst == GA_ERR_NOTRIGID) == (chk == GA_ERR_NOTRIGID), "literal log %d but check %d", llst, chk);
     if (nst == GA_OK) {
         FZ_CHECK(rotor_finite(nr), "normalize: GA_OK with a non-finite rotor");
         FZ_CHECK(ga_rotor_check(nr, 1e-12) == GA_OK, "normalize: result off the group");
@@ -123,8 +120,7 @@ static void rotor_any(ga_rotor r)
     if (lst == GA_OK) {
         FZ_CHECK(fz_all_finite(&L.e12, 6), "log: GA_OK with a non-finite generator");
         ga_twist xi = ga_generator_to_twist(L);
-        FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "log: angle %.17g > pi",
-                 vnorm(xi.w));
+        FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "log: angle %.17g > pi", vnorm(xi.w));
         FZ_CHECK(nst == GA_OK || nst == GA_ERR_DOMAIN, "log ok but normalize %d", nst);
         if (nst == GA_OK && fz_maxabs(&r.s, 8) <= VALID_MAX) {
             ga_rotor e = ga_rotor_exp(L);
@@ -135,16 +131,14 @@ static void rotor_any(ga_rotor r)
     if (llst == GA_OK)
         FZ_CHECK(fz_all_finite(&Ll.e12, 6), "literal log: GA_OK with a non-finite generator");
     if (sst == GA_OK) {
-        FZ_CHECK(isfinite(sc.angle) && vfinite(sc.axis) && vfinite(sc.point) &&
-                     isfinite(sc.shift) && !isnan(sc.pitch),
+        FZ_CHECK(isfinite(sc.angle) && vfinite(sc.axis) && vfinite(sc.point) && isfinite(sc.shift) &&
+                     !isnan(sc.pitch),
                  "screw: GA_OK with a non-finite field");
-        FZ_CHECK(sc.angle >= 0 && sc.angle <= 3.141592653589793 * (1 + 1e-15), "screw angle %.17g",
-                 sc.angle);
+        FZ_CHECK(sc.angle >= 0 && sc.angle <= 3.141592653589793 * (1 + 1e-15), "screw angle %.17g", sc.angle);
         /* a rotation (or pure translation) below the normal range carries its
            axis in subnormal coefficients with only a few significant bits */
         if (sc.angle >= 1e-300 || (sc.angle == 0.0 && (sc.shift == 0.0 || sc.shift >= 1e-300)))
-            FZ_CHECK(fabs(vnorm(sc.axis) - 1.0) <= 1e-14, "screw axis not unit: %.17g",
-                     vnorm(sc.axis));
+            FZ_CHECK(fabs(vnorm(sc.axis) - 1.0) <= 1e-14, "screw axis not unit: %.17g", vnorm(sc.axis));
     }
     if (ga_rotor_check(r, 1e-12) == GA_OK) {
         ga_mat4 m = ga_rotor_to_mat4(r);
@@ -192,8 +186,7 @@ static void op_rotor_drift(fz_reader *rd)
         return;
     ga_rotor R = ga_rotor_exp((ga_generator){x[0], x[1], x[2], x[3], x[4], x[5]});
     double *c = &R.s;
-    for (int i = 0; i < 8; i++)
-        c[i] += d[i];
+    for (int i = 0; i < 8; i++) c[i] += d[i];
     rotor_any(R);
 }
 
@@ -237,8 +230,7 @@ static void mat_any(ga_mat4 m)
     }
     if (lst == GA_OK) {
         FZ_CHECK(fz_all_finite(&xi.w.x, 6), "se3_log: GA_OK with a non-finite twist");
-        FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "se3_log: angle %.17g > pi",
-                 vnorm(xi.w));
+        FZ_CHECK(vnorm(xi.w) <= 3.141592653589793 * (1 + 1e-15), "se3_log: angle %.17g > pi", vnorm(xi.w));
         double ts = fmax(1.0, vnorm((ga_vec3){m.m[3], m.m[7], m.m[11]}));
         if (ts <= VALID_MAX) {
             double d = mat_dist(ga_se3_exp(xi), m, ts);
@@ -279,8 +271,7 @@ static void op_mat_near(fz_reader *rd)
     if (!fz_all_finite(x, 6))
         return;
     ga_mat4 m = ga_se3_exp((ga_twist){{x[0], x[1], x[2]}, {x[3], x[4], x[5]}});
-    for (int i = 0; i < 16; i++)
-        m.m[i] += d[i];
+    for (int i = 0; i < 16; i++) m.m[i] += d[i];
     mat_any(m);
 }
 
@@ -326,8 +317,7 @@ static void op_expm_logm(fz_reader *rd)
     int fin = fz_all_finite(a.m, 16);
     int est = ga_mat4_expm(a, &e), lst = ga_mat4_logm(a, &l);
     if (!fin) {
-        FZ_CHECK(est == GA_ERR_NOTFINITE && lst == GA_ERR_NOTFINITE, "non-finite: expm %d logm %d", est,
-                 lst);
+        FZ_CHECK(est == GA_ERR_NOTFINITE && lst == GA_ERR_NOTFINITE, "non-finite: expm %d logm %d", est, lst);
         return;
     }
     FZ_CHECK(est == GA_OK || est == GA_ERR_DOMAIN, "expm status %d", est);
@@ -371,8 +361,7 @@ static void op_bridge(fz_reader *rd)
         return;
     int qe;
     frexp(qm, &qe);
-    for (int i = 0; i < 4; i++)
-        q4[i] = ldexp(q4[i], -qe);
+    for (int i = 0; i < 4; i++) q4[i] = ldexp(q4[i], -qe);
     double qn = hypot(hypot(q4[0], q4[1]), hypot(q4[2], q4[3]));
     if (!(qn > 0) || !isfinite(qn))
         return;
@@ -448,13 +437,11 @@ static void mv_any(const ga_mv *X, double lambda)
     st = ga_plane_params(*X, &a, &d);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "plane %d", st);
     if (st == GA_OK)
-        FZ_CHECK(vfinite(a) && isfinite(d) && fabs(vnorm(a) - 1) <= 1e-12,
-                 "plane: GA_OK with bad output");
+        FZ_CHECK(vfinite(a) && isfinite(d) && fabs(vnorm(a) - 1) <= 1e-12, "plane: GA_OK with bad output");
     st = ga_line_params(*X, &a, &b);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "line %d", st);
     if (st == GA_OK)
-        FZ_CHECK(vfinite(a) && vfinite(b) && fabs(vnorm(a) - 1) <= 1e-12,
-                 "line: GA_OK with bad output");
+        FZ_CHECK(vfinite(a) && vfinite(b) && fabs(vnorm(a) - 1) <= 1e-12, "line: GA_OK with bad output");
     st = ga_pointpair_points(*X, &a, &b);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "pair %d", st);
     if (st == GA_OK)
@@ -473,8 +460,7 @@ static void mv_any(const ga_mv *X, double lambda)
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE,
              "from_mv %d", st);
     if (st == GA_OK)
-        FZ_CHECK(rotor_finite(R) && ga_rotor_check(R, 1e-12) == GA_OK,
-                 "from_mv: GA_OK with a bad rotor");
+        FZ_CHECK(rotor_finite(R) && ga_rotor_check(R, 1e-12) == GA_OK, "from_mv: GA_OK with a bad rotor");
 }
 
 static void op_mv_any(fz_reader *rd)
@@ -510,10 +496,8 @@ static void op_points(fz_reader *rd)
             st = ga_point_up_scaled(p[i], lambda, &Xs);
             FZ_CHECK(st == GA_OK, "up_scaled(x), |x| = %.3g, lambda %.3g: %d", vnorm(p[i]), lambda, st);
             st = ga_point_down_scaled(Xs, lambda, &y);
-            FZ_CHECK(st == GA_OK, "down_scaled(F(x)), |x| = %.3g, lambda %.3g: %d", vnorm(p[i]),
-                     lambda, st);
-            double d = vnorm((ga_vec3){y.x - p[i].x, y.y - p[i].y, y.z - p[i].z}) /
-                       fmax(lambda, vnorm(p[i]));
+            FZ_CHECK(st == GA_OK, "down_scaled(F(x)), |x| = %.3g, lambda %.3g: %d", vnorm(p[i]), lambda, st);
+            double d = vnorm((ga_vec3){y.x - p[i].x, y.y - p[i].y, y.z - p[i].z}) / fmax(lambda, vnorm(p[i]));
             FZ_CHECK(d <= 1e-13, "down_scaled(F(x)) = x: off by %.3g", d);
         }
     }
@@ -527,19 +511,19 @@ static void op_points(fz_reader *rd)
     case 5: X = ga_sphere_dual(p[0], rad); break;
     case 6: X = ga_plane_dual(p[0], rad); break;
     default:
-        if (ga_point_up_scaled(p[0], lambda, &X) != GA_OK) X = ga_point_up(p[0]);
+        if (ga_point_up_scaled(p[0], lambda, &X) != GA_OK)
+            X = ga_point_up(p[0]);
         break;
     }
     mv_any(&X, lambda);
-    if (which % 8 == 5 && vfinite(p[0]) && isfinite(rad) && vnorm(p[0]) <= 1e3 &&
-        fabs(rad) >= 1e-3 && fabs(rad) <= 1e3) {
+    if (which % 8 == 5 && vfinite(p[0]) && isfinite(rad) && vnorm(p[0]) <= 1e3 && fabs(rad) >= 1e-3 &&
+        fabs(rad) <= 1e3) {
         ga_vec3 c;
         double r;
         int st = ga_sphere_params(X, &c, &r);
         FZ_CHECK(st == GA_OK, "sphere_params(dual_sphere(c, r)) fails: %d", st);
         double s = fmax(1.0, fmax(vnorm(p[0]), fabs(rad)));
-        double d = fmax(vnorm((ga_vec3){c.x - p[0].x, c.y - p[0].y, c.z - p[0].z}),
-                        fabs(r - fabs(rad)));
+        double d = fmax(vnorm((ga_vec3){c.x - p[0].x, c.y - p[0].y, c.z - p[0].z}), fabs(r - fabs(rad)));
         FZ_CHECK(d <= 1e-12 * s * s, "dual sphere read back off by %.3g (scene %.3g)", d, s);
     }
 }

@@ -71,8 +71,8 @@ static void check_elem(const ga_group *g, const void *e, int strict, const char 
         FZ_CHECK(st == GA_OK, "%s on matrix: not rigid to 1e-10", what);
     } else {
         const double *m = ((const ga_mat4 *)e)->m;
-        FZ_CHECK(m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1,
-                 "%s on affine: last row not 0 0 0 1", what);
+        FZ_CHECK(m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1, "%s on affine: last row not 0 0 0 1",
+                 what);
     }
 }
 
@@ -81,10 +81,8 @@ static double elem_dist(const ga_group *g, const void *a, const void *b)
 {
     ga_mat4 x = g->to_mat4(a), y = g->to_mat4(b);
     double s = 1.0, d = 0.0;
-    for (int i = 0; i < 3; i++)
-        s = fmax(s, fmax(fabs(x.m[4 * i + 3]), fabs(y.m[4 * i + 3])));
-    for (int i = 0; i < 16; i++)
-        d = fmax(d, fabs(x.m[i] - y.m[i]) / (i % 4 == 3 ? s : 1.0));
+    for (int i = 0; i < 3; i++) s = fmax(s, fmax(fabs(x.m[4 * i + 3]), fabs(y.m[4 * i + 3])));
+    for (int i = 0; i < 16; i++) d = fmax(d, fabs(x.m[i] - y.m[i]) / (i % 4 == 3 ? s : 1.0));
     return d;
 }
 
@@ -101,8 +99,7 @@ static double elem_dist(const ga_group *g, const void *a, const void *b)
 static double grid_gap(double t0, double t1)
 {
     double T = fmax(fmax(fabs(t0), fabs(t1)), t1 - t0);
-    return 4 * (nextafter(T, INFINITY) - T) +
-           2 * (GA_PATH_EXACT_REANCHOR + 1) * DBL_EPSILON * (t1 - t0);
+    return 4 * (nextafter(T, INFINITY) - T) + 2 * (GA_PATH_EXACT_REANCHOR + 1) * DBL_EPSILON * (t1 - t0);
 }
 
 /* A bound on |dA/dt| in elem_dist's measure at the element a with body
@@ -112,8 +109,7 @@ static double grid_gap(double t0, double t1)
 static double speed(const ga_group *g, const void *a, const double *v)
 {
     if (g != &ga_group_affine)
-        return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
-               sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+        return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
     ga_mat4 m = g->to_mat4(a);
     double row = 0.0;
     for (int i = 0; i < 3; i++)
@@ -165,7 +161,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* the keys contiguous, elem_size bytes each, as ga_path_init reads them */
     double keybuf[MAXK * GA_GROUP_MAX_ELEM];
     size_t estride = g->elem_size / sizeof(double);
-#define KEY(i) (keybuf + (size_t)(i) * estride)
+#define KEY(i) (keybuf + (size_t)(i)*estride)
     ga_mat4 mkeys[MAXK];
     int via_mat = (flags & 2) != 0, keys_finite = 1;
     for (int i = 0; i < n; i++) {
@@ -213,8 +209,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         velp = vel;
     }
     int uses_vel = scheme == GA_SCHEME_LIHAO2 || scheme == GA_SCHEME_LIHAO3;
-    int vel_finite = !velp || !uses_vel ||
-                     fz_all_finite(vel, scheme == GA_SCHEME_LIHAO3 ? n * dim : dim);
+    int vel_finite = !velp || !uses_vel || fz_all_finite(vel, scheme == GA_SCHEME_LIHAO3 ? n * dim : dim);
 
     /* build */
     size_t wbytes = ga_path_workspace_size(g, scheme, n);
@@ -239,8 +234,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_CHECK(st != GA_ERR_NOTFINITE, "finite input, GA_ERR_NOTFINITE from init");
     valid = valid && count_ok && times_finite && increasing;
     if (valid)
-        FZ_CHECK(st == GA_OK, "valid %s path on %s fails to build: %d", ga_scheme_name(scheme),
-                 g->name, st);
+        FZ_CHECK(st == GA_OK, "valid %s path on %s fails to build: %d", ga_scheme_name(scheme), g->name, st);
     if (st != GA_OK) {
         free(work);
         return 0;
@@ -257,11 +251,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         int est = ga_path_eval(&p, t, A), vst = ga_path_velocity(&p, t, v);
         FZ_CHECK(is_status(est) && is_status(vst), "eval %d velocity %d", est, vst);
         if (!inside)
-            FZ_CHECK(est != GA_OK && vst != GA_OK, "t = %.17g outside [%.17g, %.17g] accepted", t,
-                     t0, t1);
+            FZ_CHECK(est != GA_OK && vst != GA_OK, "t = %.17g outside [%.17g, %.17g] accepted", t, t0, t1);
         if (valid && inside)
-            FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: eval %d velocity %d at t %.17g",
-                     est, vst, t);
+            FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: eval %d velocity %d at t %.17g", est, vst, t);
         if (est == GA_OK)
             check_elem(g, A, valid, "eval");
         if (vst == GA_OK)
@@ -278,8 +270,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FZ_CHECK(est != GA_OK, "eval_segment seg %d u %.17g accepted", seg, u);
         int u_ok = valid && seg < n - 1 && fabs(u) <= 4;
         if (u_ok)
-            FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: segment %d u %.17g: %d %d", seg, u,
-                     est, vst);
+            FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: segment %d u %.17g: %d %d", seg, u, est, vst);
         if (est == GA_OK)
             check_elem(g, A, u_ok, "eval_segment");
         if (vst == GA_OK)
@@ -301,8 +292,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 FZ_CHECK(sst == GA_ERR_ARG, "Euler step %.17g accepted: %d", step, sst);
             if (valid)
                 FZ_CHECK(rst == GA_OK && (sst == GA_OK || (ev == GA_EVAL_EULER && !step_ok)),
-                         "valid path: sample_uniform (%s) %d, direct %d", ga_eval_name(ev), sst,
-                         rst);
+                         "valid path: sample_uniform (%s) %d, direct %d", ga_eval_name(ev), sst, rst);
             for (size_t k = 0; k < ns; k++) {
                 const char *e = (const char *)out + k * g->elem_size;
                 const char *r = (const char *)ref + k * g->elem_size;
@@ -315,8 +305,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                     double tk = k + 1 == ns ? t1 : t0 + (double)k * ((t1 - t0) / (double)(ns - 1));
                     FZ_CHECK(ga_path_velocity(&p, tk, v) == GA_OK, "velocity at sample %zu", k);
                     double bound = 1e-9 + speed(g, r, v) * grid_gap(t0, t1);
-                    FZ_CHECK(d <= bound,
-                             "exact stepping differs from direct by %.3g > %.3g (sample %zu)", d,
+                    FZ_CHECK(d <= bound, "exact stepping differs from direct by %.3g > %.3g (sample %zu)", d,
                              bound, k);
                 }
             }
@@ -335,8 +324,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             int sst = ga_path_sample(&p, ev, step, nt, at, out);
             FZ_CHECK(is_status(sst), "sample %d", sst);
             int all_inside = 1;
-            for (size_t k = 0; k < nt; k++)
-                all_inside &= at[k] >= t0 && at[k] <= t1;
+            for (size_t k = 0; k < nt; k++) all_inside &= at[k] >= t0 && at[k] <= t1;
             if (!all_inside)
                 FZ_CHECK(sst != GA_OK, "sample at a time outside the keys accepted");
             if (valid && all_inside && (ev != GA_EVAL_EULER || step_ok))

@@ -70,8 +70,7 @@ static inline double fz_double_(fz_reader *r)
     switch (tag & 15) {
     case 0: {
         uint8_t b[8];
-        for (int i = 0; i < 8; i++)
-            b[i] = fz_byte(r);
+        for (int i = 0; i < 8; i++) b[i] = fz_byte(r);
         double x;
         memcpy(&x, b, sizeof x);
         return x;
@@ -96,8 +95,7 @@ static inline double fz_double_(fz_reader *r)
 
 static inline void fz_doubles(fz_reader *r, double *x, int n)
 {
-    for (int i = 0; i < n; i++)
-        x[i] = fz_double(r);
+    for (int i = 0; i < n; i++) x[i] = fz_double(r);
 }
 
 static inline int fz_all_finite(const double *x, int n)

@@ -120,8 +120,7 @@ static void check_output(int kind, int affine, int pose)
         int k = 0;
         char *s = line, *end;
         for (;;) {
-            while (*s == ' ' || *s == '\n')
-                s++;
+            while (*s == ' ' || *s == '\n') s++;
             if (!*s)
                 break;
             double x = strtod(s, &end);
@@ -131,8 +130,7 @@ static void check_output(int kind, int affine, int pose)
             v[k++] = x;
             s = end;
         }
-        FZ_CHECK(k == 6 || k == 16 || k == 8 || k == 17, "output line %ld has %d numbers", lineno,
-                 k);
+        FZ_CHECK(k == 6 || k == 16 || k == 8 || k == 17, "output line %ld has %d numbers", lineno, k);
         FZ_CHECK(width < 0 || k == width, "output line %ld: %d numbers after %d", lineno, k, width);
         width = k;
         const double *m = NULL;
@@ -146,9 +144,8 @@ static void check_output(int kind, int affine, int pose)
             for (int r = 0; r < 3; r++)
                 for (int c = 0; c < 3; c++) {
                     double d = m[r] * m[c] + m[4 + r] * m[4 + c] + m[8 + r] * m[8 + c];
-                    FZ_CHECK(fabs(d - (r == c)) <= 1e-9,
-                             "output line %ld: rotation not orthonormal (%.3g)", lineno,
-                             fabs(d - (r == c)));
+                    FZ_CHECK(fabs(d - (r == c)) <= 1e-9, "output line %ld: rotation not orthonormal (%.3g)",
+                             lineno, fabs(d - (r == c)));
                 }
         }
         if (kind == K_INTERP && affine && k == 17)
@@ -156,8 +153,7 @@ static void check_output(int kind, int affine, int pose)
                      "output line %ld: affine sample's last row not 0 0 0 1", lineno);
         if (kind == K_LOG && !affine && k == 6) {
             double th = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-            FZ_CHECK(th <= 3.141592653589793 * (1 + 1e-15), "output line %ld: angle %.17g > pi",
-                     lineno, th);
+            FZ_CHECK(th <= 3.141592653589793 * (1 + 1e-15), "output line %ld: angle %.17g > pi", lineno, th);
         }
         if (kind == K_INTERP && pose && k == 8) {
             double qn = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
@@ -297,8 +293,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     FZ_CHECK(write_file(in_path, rest, nin) == 0, "cannot write %s", in_path);
     if (want_vel)
-        FZ_CHECK(write_file(vel_path, vel ? vel : rest, vel ? nvel : 0) == 0, "cannot write %s",
-                 vel_path);
+        FZ_CHECK(write_file(vel_path, vel ? vel : rest, vel ? nvel : 0) == 0, "cannot write %s", vel_path);
 
     int rc = garotor_main(argc, argv);
     FZ_CHECK(rc == 0 || rc == 2, "exit status %d", rc);

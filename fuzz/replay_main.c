@@ -64,10 +64,7 @@ static int run_file(const char *path)
     return 0;
 }
 
-static int cmp(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
+static int cmp(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 static int run_path(const char *path)
 {
@@ -113,8 +110,7 @@ int main(int argc, char **argv)
     if (LLVMFuzzerInitialize)
         LLVMFuzzerInitialize(&argc, &argv);
     int rc = 0;
-    for (int i = 1; i < argc; i++)
-        rc |= run_path(argv[i]);
+    for (int i = 1; i < argc; i++) rc |= run_path(argv[i]);
     printf("replay: %ld inputs, %s\n", ran, rc ? "some could not be read" : "all passed");
     return rc ? 1 : 0;
 }

@@ -40,8 +40,7 @@ static ga_mv unit_scaled(ga_mv X)
         return X;
     int e;
     frexp(s, &e);
-    for (int i = 0; i < 32; i++)
-        X.c[i] = ldexp(X.c[i], -e);
+    for (int i = 0; i < 32; i++) X.c[i] = ldexp(X.c[i], -e);
     return X;
 }
 
@@ -124,10 +123,22 @@ int ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 1.0, o
 /* ---- objects ---------------------------------------------------------------- */
 
 ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b) { return ga_mv_op(ga_point_up(a), ga_point_up(b)); }
-ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c) { return ga_mv_op(ga_pointpair_from_points(a, b), ga_point_up(c)); }
-ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b) { return ga_mv_op(ga_pointpair_from_points(a, b), ga_mv_n()); }
-ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d) { return ga_mv_op(ga_circle_from_points(a, b, c), ga_point_up(d)); }
-ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c) { return ga_mv_op(ga_circle_from_points(a, b, c), ga_mv_n()); }
+ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
+{
+    return ga_mv_op(ga_pointpair_from_points(a, b), ga_point_up(c));
+}
+ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b)
+{
+    return ga_mv_op(ga_pointpair_from_points(a, b), ga_mv_n());
+}
+ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d)
+{
+    return ga_mv_op(ga_circle_from_points(a, b, c), ga_point_up(d));
+}
+ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
+{
+    return ga_mv_op(ga_circle_from_points(a, b, c), ga_mv_n());
+}
 
 ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
 {

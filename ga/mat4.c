@@ -10,7 +10,11 @@
 
 /* ---- small helpers --------------------------------------------------- */
 
-static ga_vec3 v3(double x, double y, double z) { ga_vec3 r = {x, y, z}; return r; }
+static ga_vec3 v3(double x, double y, double z)
+{
+    ga_vec3 r = {x, y, z};
+    return r;
+}
 static double dot3(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
 {
@@ -34,7 +38,12 @@ static int mat4_isfinite(const ga_mat4 *a)
     return (z[0] + z[1]) + (z[2] + z[3]) == 0.0;
 }
 
-static ga_mat4 mat4_zero(void) { ga_mat4 z; memset(&z, 0, sizeof z); return z; }
+static ga_mat4 mat4_zero(void)
+{
+    ga_mat4 z;
+    memset(&z, 0, sizeof z);
+    return z;
+}
 
 /* y += c x */
 static void mat4_acc(ga_mat4 *y, double c, const ga_mat4 *x)
@@ -56,8 +65,8 @@ ga_mat4 ga_mat4_mul(ga_mat4 a, ga_mat4 b)
     ga_mat4 c;
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++)
-            M(c, i, j) = M(a, i, 0) * M(b, 0, j) + M(a, i, 1) * M(b, 1, j)
-                       + M(a, i, 2) * M(b, 2, j) + M(a, i, 3) * M(b, 3, j);
+            M(c, i, j) = M(a, i, 0) * M(b, 0, j) + M(a, i, 1) * M(b, 1, j) + M(a, i, 2) * M(b, 2, j) +
+                         M(a, i, 3) * M(b, 3, j);
     return c;
 }
 
@@ -66,7 +75,8 @@ double ga_mat4_norm1(ga_mat4 a)
     double best = 0.0;
     for (int j = 0; j < 4; j++) {
         double s = fabs(M(a, 0, j)) + fabs(M(a, 1, j)) + fabs(M(a, 2, j)) + fabs(M(a, 3, j));
-        if (s > best || isnan(s)) best = s; /* NaN in, NaN out */
+        if (s > best || isnan(s))
+            best = s; /* NaN in, NaN out */
     }
     return best;
 }
@@ -75,7 +85,8 @@ double ga_mat4_norm1(ga_mat4 a)
  * rounds exactly as ldexp does, without a call per entry. */
 static void mat4_scale2(ga_mat4 *a, int e)
 {
-    if (e == 0) return;
+    if (e == 0)
+        return;
     if (e >= -1000 && e <= 1000) {
         double f = ldexp(1.0, e);
         for (int i = 0; i < 16; i++) a->m[i] *= f;
@@ -89,7 +100,10 @@ static void mat4_scale2(ga_mat4 *a, int e)
  * and above it; piv[k] is the row swapped with row k at step k; re, ce hold
  * the exponents of the power-of-2 (exact) scalings Dr, Dc. Used by the
  * inverse, the Pade solve of expm, and the roots and Pade solves of logm. */
-typedef struct { ga_mat4 lu; int piv[4], re[4], ce[4]; } lu4;
+typedef struct {
+    ga_mat4 lu;
+    int piv[4], re[4], ce[4];
+} lu4;
 
 /* Elimination with the pivot test |u_kk| > 4 eps max|A^_ij| (otherwise A^ is
  * within a few ulps, relative, of a singular matrix). With equilibrate, rows
@@ -102,7 +116,8 @@ static int lu4_try(ga_mat4 a, lu4 *f, int equilibrate)
         for (int i = 0; i < 4; i++) {
             double mx = 0.0;
             for (int j = 0; j < 4; j++) mx = fmax(mx, fabs(pass ? M(a, j, i) : M(a, i, j)));
-            if (!(mx > 0.0)) return GA_ERR_SINGULAR;
+            if (!(mx > 0.0))
+                return GA_ERR_SINGULAR;
             int e = ilogb(mx);
             for (int j = 0; j < 4; j++) {
                 double *x = pass ? &M(a, j, i) : &M(a, i, j);
@@ -115,12 +130,16 @@ static int lu4_try(ga_mat4 a, lu4 *f, int equilibrate)
     for (int k = 0; k < 4; k++) {
         int p = k;
         for (int i = k + 1; i < 4; i++)
-            if (fabs(M(a, i, k)) > fabs(M(a, p, k))) p = i;
+            if (fabs(M(a, i, k)) > fabs(M(a, p, k)))
+                p = i;
         f->piv[k] = p;
         for (int j = 0; j < 4; j++) {
-            double t = M(a, k, j); M(a, k, j) = M(a, p, j); M(a, p, j) = t;
+            double t = M(a, k, j);
+            M(a, k, j) = M(a, p, j);
+            M(a, p, j) = t;
         }
-        if (!(fabs(M(a, k, k)) > 4.0 * DBL_EPSILON * big)) return GA_ERR_SINGULAR;
+        if (!(fabs(M(a, k, k)) > 4.0 * DBL_EPSILON * big))
+            return GA_ERR_SINGULAR;
         for (int i = k + 1; i < 4; i++) {
             double l = M(a, i, k) /= M(a, k, k);
             for (int j = k + 1; j < 4; j++) M(a, i, j) -= l * M(a, k, j);
@@ -136,10 +155,7 @@ static int lu4_try(ga_mat4 a, lu4 *f, int equilibrate)
  * Only when A looks singular is the equilibrated A^ tried: [R, t; 0 1] with
  * |t| = 1e16 has normwise condition |t|^2 but A^ is well conditioned; a
  * rank-deficient A fails both. */
-static int lu4_factor(ga_mat4 a, lu4 *f)
-{
-    return lu4_try(a, f, 0) == GA_OK ? GA_OK : lu4_try(a, f, 1);
-}
+static int lu4_factor(ga_mat4 a, lu4 *f) { return lu4_try(a, f, 0) == GA_OK ? GA_OK : lu4_try(a, f, 1); }
 
 /* A^{-1} b = Dc A^^{-1} Dr b from the factors of A. */
 static ga_mat4 lu4_solve(const lu4 *f, ga_mat4 b)
@@ -151,7 +167,9 @@ static ga_mat4 lu4_solve(const lu4 *f, ga_mat4 b)
             for (int j = 0; j < 4; j++) M(b, i, j) = ldexp(M(b, i, j), -f->re[i]);
     for (int k = 0; k < 4; k++)
         for (int j = 0; j < 4; j++) {
-            double t = M(b, k, j); M(b, k, j) = M(b, f->piv[k], j); M(b, f->piv[k], j) = t;
+            double t = M(b, k, j);
+            M(b, k, j) = M(b, f->piv[k], j);
+            M(b, f->piv[k], j) = t;
         }
     for (int c = 0; c < 4; c++) {
         for (int i = 1; i < 4; i++)
@@ -179,10 +197,13 @@ static double lu4_logabsdet(const lu4 *f)
 int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
 {
     lu4 f;
-    if (!mat4_isfinite(&a)) return GA_ERR_NOTFINITE;
-    if (lu4_factor(a, &f) != GA_OK) return GA_ERR_SINGULAR;
+    if (!mat4_isfinite(&a))
+        return GA_ERR_NOTFINITE;
+    if (lu4_factor(a, &f) != GA_OK)
+        return GA_ERR_SINGULAR;
     ga_mat4 r = lu4_solve(&f, ga_mat4_identity());
-    if (!mat4_isfinite(&r)) return GA_ERR_SINGULAR; /* the inverse overflows */
+    if (!mat4_isfinite(&r))
+        return GA_ERR_SINGULAR; /* the inverse overflows */
     *out = r;
     return GA_OK;
 }
@@ -192,9 +213,15 @@ int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
 ga_mat4 ga_twist_hat(ga_twist xi)
 {
     ga_mat4 a = mat4_zero();
-    M(a, 0, 1) = -xi.w.z; M(a, 0, 2) =  xi.w.y; M(a, 0, 3) = xi.v.x;
-    M(a, 1, 0) =  xi.w.z; M(a, 1, 2) = -xi.w.x; M(a, 1, 3) = xi.v.y;
-    M(a, 2, 0) = -xi.w.y; M(a, 2, 1) =  xi.w.x; M(a, 2, 3) = xi.v.z;
+    M(a, 0, 1) = -xi.w.z;
+    M(a, 0, 2) = xi.w.y;
+    M(a, 0, 3) = xi.v.x;
+    M(a, 1, 0) = xi.w.z;
+    M(a, 1, 2) = -xi.w.x;
+    M(a, 1, 3) = xi.v.y;
+    M(a, 2, 0) = -xi.w.y;
+    M(a, 2, 1) = xi.w.x;
+    M(a, 2, 3) = xi.v.z;
     return a;
 }
 
@@ -215,19 +242,22 @@ ga_twist ga_twist_vee(ga_mat4 a)
  * matrix in place instead of copying its 128 bytes for each call. */
 static inline int se3_check(const ga_mat4 *m, double tol)
 {
-    if (!mat4_isfinite(m)) return GA_ERR_NOTFINITE;
+    if (!mat4_isfinite(m))
+        return GA_ERR_NOTFINITE;
     for (int i = 0; i < 3; i++)
         for (int j = i; j < 3; j++) { /* R^T R - I is symmetric */
-            double g = M(*m, 0, i) * M(*m, 0, j) + M(*m, 1, i) * M(*m, 1, j)
-                     + M(*m, 2, i) * M(*m, 2, j) - (i == j);
-            if (!(fabs(g) <= tol)) return GA_ERR_NOTRIGID; /* !(<=): a NaN tol rejects */
+            double g = M(*m, 0, i) * M(*m, 0, j) + M(*m, 1, i) * M(*m, 1, j) + M(*m, 2, i) * M(*m, 2, j) -
+                       (i == j);
+            if (!(fabs(g) <= tol))
+                return GA_ERR_NOTRIGID; /* !(<=): a NaN tol rejects */
         }
     ga_vec3 c0 = v3(M(*m, 0, 0), M(*m, 1, 0), M(*m, 2, 0));
     ga_vec3 c1 = v3(M(*m, 0, 1), M(*m, 1, 1), M(*m, 2, 1));
     ga_vec3 c2 = v3(M(*m, 0, 2), M(*m, 1, 2), M(*m, 2, 2));
-    if (!(dot3(c0, cross3(c1, c2)) > 0.0)) return GA_ERR_NOTRIGID; /* a reflection */
-    if (!(fabs(M(*m, 3, 0)) <= tol && fabs(M(*m, 3, 1)) <= tol && fabs(M(*m, 3, 2)) <= tol
-          && fabs(M(*m, 3, 3) - 1.0) <= tol))
+    if (!(dot3(c0, cross3(c1, c2)) > 0.0))
+        return GA_ERR_NOTRIGID; /* a reflection */
+    if (!(fabs(M(*m, 3, 0)) <= tol && fabs(M(*m, 3, 1)) <= tol && fabs(M(*m, 3, 2)) <= tol &&
+          fabs(M(*m, 3, 3) - 1.0) <= tol))
         return GA_ERR_NOTRIGID;
     return GA_OK;
 }
@@ -250,10 +280,10 @@ ga_mat4 ga_se3_inverse(ga_mat4 m)
  * series is summed to k = 8 (these tables): the first omitted term,
  * th^18/(18+j)!, is below 1/19! < 1e-17 of f_j(0) = 1/j!. */
 static const double sinc_series[3][9] = {
-    {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
-     1.0 / 6227020800.0, -1.0 / 1307674368000.0, 1.0 / 355687428096000.0},
-    {1.0 / 2, -1.0 / 24, 1.0 / 720, -1.0 / 40320, 1.0 / 3628800, -1.0 / 479001600,
-     1.0 / 87178291200.0, -1.0 / 20922789888000.0, 1.0 / 6402373705728000.0},
+    {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800, 1.0 / 6227020800.0,
+     -1.0 / 1307674368000.0, 1.0 / 355687428096000.0},
+    {1.0 / 2, -1.0 / 24, 1.0 / 720, -1.0 / 40320, 1.0 / 3628800, -1.0 / 479001600, 1.0 / 87178291200.0,
+     -1.0 / 20922789888000.0, 1.0 / 6402373705728000.0},
     {1.0 / 6, -1.0 / 120, 1.0 / 5040, -1.0 / 362880, 1.0 / 39916800, -1.0 / 6227020800.0,
      1.0 / 1307674368000.0, -1.0 / 355687428096000.0, 1.0 / 121645100408832000.0}};
 
@@ -290,10 +320,8 @@ ga_mat4 ga_se3_exp(ga_twist xi)
     double ax = a * w.x, ay = a * w.y, az = a * w.z;
     ga_vec3 u = cross3(w, v);
     ga_vec3 t = axpy3(c, cross3(w, u), axpy3(b, u, v));
-    ga_mat4 r = {{co + bx * w.x, bx * w.y - az, bx * w.z + ay, t.x,
-                  by * w.x + az, co + by * w.y, by * w.z - ax, t.y,
-                  bz * w.x - ay, bz * w.y + ax, co + bz * w.z, t.z,
-                  0.0, 0.0, 0.0, 1.0}};
+    ga_mat4 r = {{co + bx * w.x, bx * w.y - az, bx * w.z + ay, t.x, by * w.x + az, co + by * w.y,
+                  by * w.z - ax, t.y, bz * w.x - ay, bz * w.y + ax, co + bz * w.z, t.z, 0.0, 0.0, 0.0, 1.0}};
     return r;
 }
 
@@ -324,12 +352,14 @@ static inline ga_twist se3_log_core(const ga_mat4 *m)
          * (B_jj = (1 - c) n_j^2 >= (1 - c)/3), then take the sign of s. */
         int j = 0;
         for (int i = 1; i < 3; i++)
-            if (M(*m, i, i) > M(*m, j, j)) j = i;
+            if (M(*m, i, i) > M(*m, j, j))
+                j = i;
         double col[3];
         for (int i = 0; i < 3; i++) col[i] = 0.5 * (M(*m, i, j) + M(*m, j, i)) - (i == j ? c : 0.0);
         ga_vec3 n = v3(col[0], col[1], col[2]);
         double k = th / sqrt(dot3(n, n)); /* |n| in [0.57, 2]: no over- or underflow */
-        if (dot3(n, s) < 0.0) k = -k; /* at th = pi exactly s = 0 and either sign is right */
+        if (dot3(n, s) < 0.0)
+            k = -k; /* at th = pi exactly s = 0 and either sign is right */
         xi.w = axpy3(k, n, v3(0, 0, 0));
     }
     /* Eq. 20: v = V^{-1} t = t - w x t / 2 + c2 w x (w x t),
@@ -343,9 +373,14 @@ static inline ga_twist se3_log_core(const ga_mat4 *m)
      * at th = pi, sn = 0 and cot = 0). */
     double c2;
     if (th < 0.5) {
-        static const double cs[8] = {1.0 / 12, 1.0 / 720, 1.0 / 30240, 1.0 / 1209600,
-                                     1.0 / 47900160, 691.0 / 1307674368000.0,
-                                     1.0 / 74724249600.0, 3617.0 / 10670622842880000.0};
+        static const double cs[8] = {1.0 / 12,
+                                     1.0 / 720,
+                                     1.0 / 30240,
+                                     1.0 / 1209600,
+                                     1.0 / 47900160,
+                                     691.0 / 1307674368000.0,
+                                     1.0 / 74724249600.0,
+                                     3617.0 / 10670622842880000.0};
         double t2 = th * th;
         c2 = 0.0;
         for (int i = 7; i >= 0; i--) c2 = c2 * t2 + cs[i];
@@ -363,12 +398,14 @@ static inline ga_twist se3_log_core(const ga_mat4 *m)
 int ga_se3_log(ga_mat4 m, ga_twist *out)
 {
     int st = se3_check(&m, GA_SE3_TOL);
-    if (st != GA_OK) return st;
+    if (st != GA_OK)
+        return st;
     ga_twist xi = se3_log_core(&m);
     /* v = V^{-1} t overflows for a translation near DBL_MAX: report it, never
        return Inf or NaN (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/log-subnormal-rotation-translation replays it) */
-    if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z))) return GA_ERR_DOMAIN;
+    if (!(isfinite(xi.v.x) && isfinite(xi.v.y) && isfinite(xi.v.z)))
+        return GA_ERR_DOMAIN;
     *out = xi;
     return GA_OK;
 }
@@ -376,9 +413,12 @@ int ga_se3_log(ga_mat4 m, ga_twist *out)
 int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
 {
     int st = ga_se3_check(h0, GA_SE3_TOL);
-    if (st == GA_OK) st = ga_se3_check(h1, GA_SE3_TOL);
-    if (st == GA_OK && !isfinite(t)) st = GA_ERR_NOTFINITE;
-    if (st != GA_OK) return st;
+    if (st == GA_OK)
+        st = ga_se3_check(h1, GA_SE3_TOL);
+    if (st == GA_OK && !isfinite(t))
+        st = GA_ERR_NOTFINITE;
+    if (st != GA_OK)
+        return st;
     /* h1 h0^{-1} is rigid to about 2 GA_SE3_TOL, so it goes to the unchecked
      * log: re-checking it at GA_SE3_TOL could reject two valid inputs. */
     ga_mat4 rel = ga_mat4_mul(h1, ga_se3_inverse(h0));
@@ -389,7 +429,8 @@ int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
     /* a far extrapolation or a translation near DBL_MAX overflows: reported,
        never returned as Inf or NaN (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/geodesic-overflow replays it) */
-    if (!mat4_isfinite(&g)) return GA_ERR_DOMAIN;
+    if (!mat4_isfinite(&g))
+        return GA_ERR_DOMAIN;
     *out = g;
     return GA_OK;
 }
@@ -417,22 +458,32 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
      * series log(e^-x r_m(x)) in exact rational arithmetic). b: the
      * coefficients of the Pade numerator p_m(x) = sum b_j x^j, scaled to
      * integers, with q_m(x) = p_m(-x). */
-    static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1,
-                                    9.504178996162932e-1, 2.097847961257068e0,
-                                    5.371920351148152e0};
+    static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
+                                    2.097847961257068e0, 5.371920351148152e0};
     static const int degree[5] = {3, 5, 7, 9, 13};
     static const double b3[] = {120, 60, 12, 1};
     static const double b5[] = {30240, 15120, 3360, 420, 30, 1};
     static const double b7[] = {17297280, 8648640, 1995840, 277200, 25200, 1512, 56, 1};
-    static const double b9[] = {17643225600., 8821612800., 2075673600., 302702400.,
-                                30270240, 2162160, 110880, 3960, 90, 1};
-    static const double b13[] = {64764752532480000., 32382376266240000., 7771770303897600.,
-                                 1187353796428800., 129060195264000., 10559470521600.,
-                                 670442572800., 33522128640., 1323241920., 40840800.,
-                                 960960, 16380, 182, 1};
+    static const double b9[] = {17643225600., 8821612800., 2075673600., 302702400., 30270240,
+                                2162160,      110880,      3960,        90,         1};
+    static const double b13[] = {64764752532480000.,
+                                 32382376266240000.,
+                                 7771770303897600.,
+                                 1187353796428800.,
+                                 129060195264000.,
+                                 10559470521600.,
+                                 670442572800.,
+                                 33522128640.,
+                                 1323241920.,
+                                 40840800.,
+                                 960960,
+                                 16380,
+                                 182,
+                                 1};
     static const double *const coef[5] = {b3, b5, b7, b9, b13};
 
-    if (!mat4_isfinite(&a)) return GA_ERR_NOTFINITE;
+    if (!mat4_isfinite(&a))
+        return GA_ERR_NOTFINITE;
     /* The norm of a/4 cannot overflow (4 entries of at most DBL_MAX/4 each). */
     ga_mat4 q = a;
     for (int i = 0; i < 16; i++) q.m[i] *= 0.25;
@@ -453,18 +504,27 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
         for (int k = 0; 2 * k < m; k++) {
             mat4_acc(&u0, b[2 * k + 1], &p);
             mat4_acc(&v, b[2 * k], &p);
-            if (2 * k + 2 < m) p = ga_mat4_mul(p, a2);
+            if (2 * k + 2 < m)
+                p = ga_mat4_mul(p, a2);
         }
     } else { /* Higham's m = 13 scheme: 6 matrix products instead of 12 */
         ga_mat4 a4 = ga_mat4_mul(a2, a2), a6 = ga_mat4_mul(a4, a2), w = mat4_zero();
-        mat4_acc(&w, b[13], &a6); mat4_acc(&w, b[11], &a4); mat4_acc(&w, b[9], &a2);
+        mat4_acc(&w, b[13], &a6);
+        mat4_acc(&w, b[11], &a4);
+        mat4_acc(&w, b[9], &a2);
         u0 = ga_mat4_mul(a6, w);
-        mat4_acc(&u0, b[7], &a6); mat4_acc(&u0, b[5], &a4); mat4_acc(&u0, b[3], &a2);
+        mat4_acc(&u0, b[7], &a6);
+        mat4_acc(&u0, b[5], &a4);
+        mat4_acc(&u0, b[3], &a2);
         mat4_acc(&u0, b[1], &id);
         w = mat4_zero();
-        mat4_acc(&w, b[12], &a6); mat4_acc(&w, b[10], &a4); mat4_acc(&w, b[8], &a2);
+        mat4_acc(&w, b[12], &a6);
+        mat4_acc(&w, b[10], &a4);
+        mat4_acc(&w, b[8], &a2);
         v = ga_mat4_mul(a6, w);
-        mat4_acc(&v, b[6], &a6); mat4_acc(&v, b[4], &a4); mat4_acc(&v, b[2], &a2);
+        mat4_acc(&v, b[6], &a6);
+        mat4_acc(&v, b[4], &a4);
+        mat4_acc(&v, b[2], &a2);
         mat4_acc(&v, b[0], &id);
     }
     ga_mat4 u = ga_mat4_mul(a, u0), den = v;
@@ -472,7 +532,8 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
     lu4 f;
     /* q_m(A) is well conditioned for ||A||_1 <= theta_m (Higham 2005): this
      * failure is a guard, not an expected path. */
-    if (lu4_factor(den, &f) != GA_OK) return GA_ERR_DOMAIN;
+    if (lu4_factor(den, &f) != GA_OK)
+        return GA_ERR_DOMAIN;
     /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. */
     ga_mat4 x = lu4_solve(&f, u);
     for (int i = 0; i < 16; i++) x.m[i] *= 2.0;
@@ -487,18 +548,22 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
      * for x < -1/4; near 0 the plain form keeps relative accuracy. */
     int plain = 0;
     for (int k = 0; k < s; k++) {
-        if (!plain && (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25
-                       || M(x, 3, 3) < -0.25)) {
+        if (!plain &&
+            (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25)) {
             x = mat4_add_id(x, 1.0);
             plain = 1;
         }
         ga_mat4 x2 = ga_mat4_mul(x, x);
-        if (!plain) mat4_acc(&x2, 2.0, &x);
+        if (!plain)
+            mat4_acc(&x2, 2.0, &x);
         x = x2;
-        if (!mat4_isfinite(&x)) return GA_ERR_DOMAIN; /* overflow: stop before Inf - Inf */
+        if (!mat4_isfinite(&x))
+            return GA_ERR_DOMAIN; /* overflow: stop before Inf - Inf */
     }
-    if (!plain) x = mat4_add_id(x, 1.0);
-    if (!mat4_isfinite(&x)) return GA_ERR_DOMAIN;
+    if (!plain)
+        x = mat4_add_id(x, 1.0);
+    if (!mat4_isfinite(&x))
+        return GA_ERR_DOMAIN;
     *out = x;
     return GA_OK;
 }
@@ -527,9 +592,15 @@ static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
     for (int c = 0; c < 16; c++) {
         int p = c;
         for (int i = c + 1; i < 16; i++)
-            if (fabs(k[i][c]) > fabs(k[p][c])) p = i;
-        if (k[p][c] == 0.0) return; /* cannot happen for a principal root; keep X */
-        for (int j = c; j < 17; j++) { double t = k[c][j]; k[c][j] = k[p][j]; k[p][j] = t; }
+            if (fabs(k[i][c]) > fabs(k[p][c]))
+                p = i;
+        if (k[p][c] == 0.0)
+            return; /* cannot happen for a principal root; keep X */
+        for (int j = c; j < 17; j++) {
+            double t = k[c][j];
+            k[c][j] = k[p][j];
+            k[p][j] = t;
+        }
         for (int i = c + 1; i < 16; i++) {
             double l = k[i][c] / k[c][c];
             for (int j = c; j < 17; j++) k[i][j] -= l * k[c][j];
@@ -546,7 +617,8 @@ static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
     ga_mat4 r2 = ga_mat4_mul(r, r);
     mat4_acc(&d0, -1.0, &x2);
     mat4_acc(&d1, -1.0, &r2);
-    if (mat4_isfinite(&r) && ga_mat4_norm1(d1) < ga_mat4_norm1(d0)) *x = r;
+    if (mat4_isfinite(&r) && ga_mat4_norm1(d1) < ga_mat4_norm1(d0))
+        *x = r;
 }
 
 /* The principal square root of a by the Denman-Beavers iteration with
@@ -608,7 +680,8 @@ static double db_residual(const ga_mat4 *y, const ga_mat4 *z)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
             double s = fmax(fmax(d[i][j], 1e-6 * fmin(rowmax[i], colmax[j])), DBL_MIN);
-            if (fabs(r[i][j]) > worst * s) worst = fabs(r[i][j]) / s;
+            if (fabs(r[i][j]) > worst * s)
+                worst = fabs(r[i][j]) / s;
         }
     return worst;
 }
@@ -618,7 +691,8 @@ static int sqrtm_db(ga_mat4 a, ga_mat4 *root)
     ga_mat4 y = a, z = ga_mat4_identity(), id = ga_mat4_identity();
     for (int it = 0; it < 100; it++) {
         lu4 fy, fz;
-        if (lu4_factor(y, &fy) != GA_OK || lu4_factor(z, &fz) != GA_OK) return GA_ERR_DOMAIN;
+        if (lu4_factor(y, &fy) != GA_OK || lu4_factor(z, &fz) != GA_OK)
+            return GA_ERR_DOMAIN;
         ga_mat4 yinv = lu4_solve(&fy, id), zinv = lu4_solve(&fz, id);
         double res = db_residual(&y, &z), mu = 1.0;
         if (res > 1e-2) {
@@ -631,8 +705,13 @@ static int sqrtm_db(ga_mat4 a, ga_mat4 *root)
         mat4_acc(&zn, 0.5 / mu, &yinv);
         y = yn;
         z = zn;
-        if (!mat4_isfinite(&y) || !mat4_isfinite(&z)) return GA_ERR_DOMAIN;
-        if (res <= 1e-8) { sqrtm_newton(a, &y); *root = y; return GA_OK; }
+        if (!mat4_isfinite(&y) || !mat4_isfinite(&z))
+            return GA_ERR_DOMAIN;
+        if (res <= 1e-8) {
+            sqrtm_newton(a, &y);
+            *root = y;
+            return GA_OK;
+        }
     }
     return GA_ERR_DOMAIN;
 }
@@ -643,19 +722,19 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
      * Gauss-Legendre on log(I + X) = int_0^1 X (I + t X)^{-1} dt (Higham 2001).
      * For ||X||_1 <= 0.325 its error is below 2^-53 |log(1 - ||X||_1)|
      * (Kenney-Laub bound: the worst case is x = -||X||). */
-    static const double node[8] = {
-        1.98550717512318842e-02, 1.01666761293186636e-01, 2.37233795041835505e-01,
-        4.08282678752175110e-01, 5.91717321247824946e-01, 7.62766204958164495e-01,
-        8.98333238706813364e-01, 9.80144928248768088e-01};
+    static const double node[8] = {1.98550717512318842e-02, 1.01666761293186636e-01, 2.37233795041835505e-01,
+                                   4.08282678752175110e-01, 5.91717321247824946e-01, 7.62766204958164495e-01,
+                                   8.98333238706813364e-01, 9.80144928248768088e-01};
     static const double weight[8] = {
-        5.06142681451881293e-02, 1.11190517226687241e-01, 1.56853322938943635e-01,
-        1.81341891689180995e-01, 1.81341891689180995e-01, 1.56853322938943635e-01,
-        1.11190517226687241e-01, 5.06142681451881293e-02};
+        5.06142681451881293e-02, 1.11190517226687241e-01, 1.56853322938943635e-01, 1.81341891689180995e-01,
+        1.81341891689180995e-01, 1.56853322938943635e-01, 1.11190517226687241e-01, 5.06142681451881293e-02};
     const double theta8 = 0.325;
 
-    if (!mat4_isfinite(&a)) return GA_ERR_NOTFINITE;
+    if (!mat4_isfinite(&a))
+        return GA_ERR_NOTFINITE;
     lu4 f;
-    if (lu4_factor(a, &f) != GA_OK) return GA_ERR_SINGULAR; /* eigenvalue 0: no log */
+    if (lu4_factor(a, &f) != GA_OK)
+        return GA_ERR_SINGULAR; /* eigenvalue 0: no log */
 
     /* A_k = A^(1/2^k) and Z = A_k - I. Z is updated by the identity
      * A_k - I = (A_{k+1} + I)(A_{k+1} - I) (the factors commute) rather than
@@ -671,8 +750,10 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         /* Each root about halves ||Z||_1 <= 4 DBL_MAX < 2^1026 (a translation
          * t needs log2(|t|/theta8) roots, 23 for 1e6), so 1100 roots always
          * suffice; not getting there means no principal root is converging. */
-        if (k == 1100 || sqrtm_db(ak, &root) != GA_OK) return GA_ERR_DOMAIN;
-        if (lu4_factor(mat4_add_id(root, 1.0), &f) != GA_OK) return GA_ERR_DOMAIN;
+        if (k == 1100 || sqrtm_db(ak, &root) != GA_OK)
+            return GA_ERR_DOMAIN;
+        if (lu4_factor(mat4_add_id(root, 1.0), &f) != GA_OK)
+            return GA_ERR_DOMAIN;
         z = lu4_solve(&f, z);
         ak = root;
         k++;
@@ -682,12 +763,14 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         ga_mat4 d = z;
         for (int i = 0; i < 16; i++) d.m[i] *= node[j];
         /* I + t Z, ||t Z|| < 1/3: well conditioned, cannot be singular */
-        if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK) return GA_ERR_DOMAIN;
+        if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK)
+            return GA_ERR_DOMAIN;
         ga_mat4 term = lu4_solve(&f, z);
         mat4_acc(&l, weight[j], &term);
     }
     mat4_scale2(&l, k);
-    if (!mat4_isfinite(&l)) return GA_ERR_DOMAIN;
+    if (!mat4_isfinite(&l))
+        return GA_ERR_DOMAIN;
     /* A posteriori check. Within rounding of the negative real axis (a
      * rounded half turn has eigenvalues -1 +- 1e-16 i) a square root can
      * settle on a non-principal branch, and the backward error of the whole
@@ -695,11 +778,13 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
      * than ~1e-8 (tests/test_cross.c). Rather than return a confident wrong
      * answer, accept L only if exp(L) reproduces A to GA_LOGM_BACKWARD_TOL. */
     ga_mat4 back;
-    if (ga_mat4_expm(l, &back) != GA_OK) return GA_ERR_DOMAIN;
+    if (ga_mat4_expm(l, &back) != GA_OK)
+        return GA_ERR_DOMAIN;
     double err = 0.0;
     for (int i = 0; i < 16; i++) back.m[i] -= a.m[i];
     err = ga_mat4_norm1(back);
-    if (!(err <= GA_LOGM_BACKWARD_TOL * ga_mat4_norm1(a))) return GA_ERR_DOMAIN;
+    if (!(err <= GA_LOGM_BACKWARD_TOL * ga_mat4_norm1(a)))
+        return GA_ERR_DOMAIN;
     *out = l;
     return GA_OK;
 }

@@ -11,34 +11,28 @@
 #include <math.h>
 
 /* The canonical order of docs/conventions.md, as bit masks (grade first, then lexicographic). */
-static const unsigned char blade_mask[32] = {
-    0x00,
-    0x01, 0x02, 0x04, 0x08, 0x10,
-    0x03, 0x05, 0x09, 0x11, 0x06, 0x0a, 0x12, 0x0c, 0x14, 0x18,
-    0x07, 0x0b, 0x13, 0x0d, 0x15, 0x19, 0x0e, 0x16, 0x1a, 0x1c,
-    0x0f, 0x17, 0x1b, 0x1d, 0x1e,
-    0x1f};
+static const unsigned char blade_mask[32] = {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x03, 0x05, 0x09, 0x11, 0x06,
+                                             0x0a, 0x12, 0x0c, 0x14, 0x18, 0x07, 0x0b, 0x13, 0x0d, 0x15, 0x19,
+                                             0x0e, 0x16, 0x1a, 0x1c, 0x0f, 0x17, 0x1b, 0x1d, 0x1e, 0x1f};
 
 static const char *const blade_names[32] = {
-    "1",
-    "e1", "e2", "e3", "e4", "e5",
-    "e12", "e13", "e14", "e15", "e23", "e24", "e25", "e34", "e35", "e45",
-    "e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345",
-    "e1234", "e1235", "e1245", "e1345", "e2345",
-    "e12345"};
+    "1",    "e1",   "e2",   "e3",   "e4",    "e5",    "e12",   "e13",   "e14",   "e15",   "e23",
+    "e24",  "e25",  "e34",  "e35",  "e45",   "e123",  "e124",  "e125",  "e134",  "e135",  "e145",
+    "e234", "e235", "e245", "e345", "e1234", "e1235", "e1245", "e1345", "e2345", "e12345"};
 
 /* Inverse of blade_mask: canonical index of each mask. */
 static const signed char mask_index[32] = {
-    GA_BLADE_SCALAR, GA_BLADE_E1, GA_BLADE_E2, GA_BLADE_E12, GA_BLADE_E3, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E123,
-    GA_BLADE_E4, GA_BLADE_E14, GA_BLADE_E24, GA_BLADE_E124, GA_BLADE_E34, GA_BLADE_E134, GA_BLADE_E234, GA_BLADE_E1234,
-    GA_BLADE_E5, GA_BLADE_E15, GA_BLADE_E25, GA_BLADE_E125, GA_BLADE_E35, GA_BLADE_E135, GA_BLADE_E235, GA_BLADE_E1235,
-    GA_BLADE_E45, GA_BLADE_E145, GA_BLADE_E245, GA_BLADE_E1245, GA_BLADE_E345, GA_BLADE_E1345, GA_BLADE_E2345, GA_BLADE_E12345};
+    GA_BLADE_SCALAR, GA_BLADE_E1,    GA_BLADE_E2,   GA_BLADE_E12,   GA_BLADE_E3,   GA_BLADE_E13,
+    GA_BLADE_E23,    GA_BLADE_E123,  GA_BLADE_E4,   GA_BLADE_E14,   GA_BLADE_E24,  GA_BLADE_E124,
+    GA_BLADE_E34,    GA_BLADE_E134,  GA_BLADE_E234, GA_BLADE_E1234, GA_BLADE_E5,   GA_BLADE_E15,
+    GA_BLADE_E25,    GA_BLADE_E125,  GA_BLADE_E35,  GA_BLADE_E135,  GA_BLADE_E235, GA_BLADE_E1235,
+    GA_BLADE_E45,    GA_BLADE_E145,  GA_BLADE_E245, GA_BLADE_E1245, GA_BLADE_E345, GA_BLADE_E1345,
+    GA_BLADE_E2345,  GA_BLADE_E12345};
 
 static int popcount5(unsigned m)
 {
     int k = 0;
-    for (; m; m &= m - 1)
-        k++;
+    for (; m; m &= m - 1) k++;
     return k;
 }
 
@@ -47,8 +41,7 @@ static double blade_sign(unsigned a, unsigned b)
 {
     int swaps = 0;
     /* each vector of a must move past every vector of b with a lower index */
-    for (unsigned x = a >> 1; x; x >>= 1)
-        swaps += popcount5(x & b);
+    for (unsigned x = a >> 1; x; x >>= 1) swaps += popcount5(x & b);
     if ((a & b) & 0x10) /* e5 e5 = -1 */
         swaps++;
     return (swaps & 1) ? -1.0 : 1.0;
@@ -92,22 +85,19 @@ ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5)
 
 ga_mv ga_mv_add(ga_mv a, ga_mv b)
 {
-    for (int i = 0; i < 32; i++)
-        a.c[i] += b.c[i];
+    for (int i = 0; i < 32; i++) a.c[i] += b.c[i];
     return a;
 }
 
 ga_mv ga_mv_sub(ga_mv a, ga_mv b)
 {
-    for (int i = 0; i < 32; i++)
-        a.c[i] -= b.c[i];
+    for (int i = 0; i < 32; i++) a.c[i] -= b.c[i];
     return a;
 }
 
 ga_mv ga_mv_scale(ga_mv a, double s)
 {
-    for (int i = 0; i < 32; i++)
-        a.c[i] *= s;
+    for (int i = 0; i < 32; i++) a.c[i] *= s;
     return a;
 }
 
@@ -122,8 +112,7 @@ int ga_mv_isfinite(ga_mv a)
 double ga_mv_maxabs(ga_mv a)
 {
     double m = 0.0;
-    for (int i = 0; i < 32; i++)
-        m = fmax(m, fabs(a.c[i]));
+    for (int i = 0; i < 32; i++) m = fmax(m, fabs(a.c[i]));
     return m;
 }
 
@@ -157,16 +146,14 @@ double ga_mv_sp(ga_mv a, ga_mv b)
 {
     /* <ab>_0 pairs each blade with itself */
     double s = 0.0;
-    for (int i = 0; i < 32; i++)
-        s += blade_sign(blade_mask[i], blade_mask[i]) * a.c[i] * b.c[i];
+    for (int i = 0; i < 32; i++) s += blade_sign(blade_mask[i], blade_mask[i]) * a.c[i] * b.c[i];
     return s;
 }
 
 /* Multiply the grade-k part by sign[k]. */
 static ga_mv grade_signs(ga_mv a, const double sign[6])
 {
-    for (int i = 0; i < 32; i++)
-        a.c[i] *= sign[popcount5(blade_mask[i])];
+    for (int i = 0; i < 32; i++) a.c[i] *= sign[popcount5(blade_mask[i])];
     return a;
 }
 
@@ -220,8 +207,7 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
     int e = 0;
     if (ga_mv_maxabs(a) > 0.0)
         frexp(ga_mv_maxabs(a), &e);
-    for (int i = 0; i < 32; i++)
-        a.c[i] = ldexp(a.c[i], -e);
+    for (int i = 0; i < 32; i++) a.c[i] = ldexp(a.c[i], -e);
     ga_mv rev = ga_mv_reverse(a);
     ga_mv aa = ga_mv_gp(a, rev);
     double s = aa.c[GA_BLADE_SCALAR];
@@ -233,8 +219,7 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
     if (!(fabs(s) > tol) || ga_mv_maxabs(aa) > tol + 1e-12 * fabs(s))
         return GA_ERR_SINGULAR;
     ga_mv r = ga_mv_scale(rev, 1.0 / s);
-    for (int i = 0; i < 32; i++)
-        r.c[i] = ldexp(r.c[i], -e);
+    for (int i = 0; i < 32; i++) r.c[i] = ldexp(r.c[i], -e);
     if (!ga_mv_isfinite(r))
         return GA_ERR_SINGULAR; /* the inverse overflows, as ga_mat4_inverse */
     *out = r;

@@ -16,9 +16,15 @@
 
 #define GA_PI 3.14159265358979323846
 
-typedef struct { double x, y, z; } vec;
+typedef struct {
+    double x, y, z;
+} vec;
 
-static vec v_make(double x, double y, double z) { vec r = {x, y, z}; return r; }
+static vec v_make(double x, double y, double z)
+{
+    vec r = {x, y, z};
+    return r;
+}
 static vec v_add(vec a, vec b) { return v_make(a.x + b.x, a.y + b.y, a.z + b.z); }
 static vec v_sub(vec a, vec b) { return v_make(a.x - b.x, a.y - b.y, a.z - b.z); }
 static vec v_scale(vec a, double k) { return v_make(k * a.x, k * a.y, k * a.z); }
@@ -42,7 +48,11 @@ static double v_norm(vec a)
     return m * sqrt(v_dot(a, a));
 }
 static vec v_of(ga_vec3 a) { return v_make(a.x, a.y, a.z); }
-static ga_vec3 v_out(vec a) { ga_vec3 r = {a.x, a.y, a.z}; return r; }
+static ga_vec3 v_out(vec a)
+{
+    ga_vec3 r = {a.x, a.y, a.z};
+    return r;
+}
 
 static vec rotor_b(ga_rotor r) { return v_make(r.e23, -r.e13, r.e12); }
 static vec rotor_p(ga_rotor r) { return v_make(r.e1n, r.e2n, r.e3n); }
@@ -55,8 +65,8 @@ static ga_rotor rotor_make(double s, vec b, vec p, double p4)
 
 static int rotor_isfinite(ga_rotor r)
 {
-    return isfinite(r.s) && isfinite(r.e12) && isfinite(r.e13) && isfinite(r.e23) &&
-           isfinite(r.e1n) && isfinite(r.e2n) && isfinite(r.e3n) && isfinite(r.e123n);
+    return isfinite(r.s) && isfinite(r.e12) && isfinite(r.e13) && isfinite(r.e23) && isfinite(r.e1n) &&
+           isfinite(r.e2n) && isfinite(r.e3n) && isfinite(r.e123n);
 }
 
 ga_rotor ga_rotor_identity(void)
@@ -125,8 +135,7 @@ static int rotor_near_group(ga_rotor r)
     double q2 = r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23;
     double p2 = r.e1n * r.e1n + r.e2n * r.e2n + r.e3n * r.e3n + r.e123n * r.e123n;
     double pq3 = rotor_pq3(r);
-    return p2 <= 1e300 && fabs(q2 - 1.0) <= tol &&
-           4.0 * pq3 * pq3 <= tol * tol * (p2 > 1.0 ? p2 : 1.0);
+    return p2 <= 1e300 && fabs(q2 - 1.0) <= tol && 4.0 * pq3 * pq3 <= tol * tol * (p2 > 1.0 ? p2 : 1.0);
 }
 
 /* R (R ~R)^(-1/2) for a finite r with q != 0 (not overflowing), given
@@ -151,8 +160,7 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
     if (m == 0.0)
         return GA_ERR_NOTRIGID;
     /* scale to |q| ~ 1 first, so that neither |q|^2 nor P / |q| can overflow */
-    ga_rotor t = {r.s / m, r.e12 / m, r.e13 / m, r.e23 / m,
-                  r.e1n / m, r.e2n / m, r.e3n / m, r.e123n / m};
+    ga_rotor t = {r.s / m, r.e12 / m, r.e13 / m, r.e23 / m, r.e1n / m, r.e2n / m, r.e3n / m, r.e123n / m};
     /* P / |q| or the projection may overflow (P near DBL_MAX): that rotor is
        rigid but its projection is not representable, GA_ERR_DOMAIN, not
        GA_ERR_NOTRIGID (found by fuzz/fuzz_numeric;
@@ -174,24 +182,30 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
 
 int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
 {
-    static const int inside[12] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E14, GA_BLADE_E15, GA_BLADE_E24,
-                                   GA_BLADE_E25, GA_BLADE_E34, GA_BLADE_E35, GA_BLADE_E1234, GA_BLADE_E1235};
+    static const int inside[12] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13,   GA_BLADE_E23,
+                                   GA_BLADE_E14,    GA_BLADE_E15, GA_BLADE_E24,   GA_BLADE_E25,
+                                   GA_BLADE_E34,    GA_BLADE_E35, GA_BLADE_E1234, GA_BLADE_E1235};
     if (!ga_mv_isfinite(m))
         return GA_ERR_NOTFINITE;
     double lim = tol * fmax(1.0, ga_mv_maxabs(m));
     ga_mv rest = m;
-    for (int i = 0; i < 12; i++)
-        rest.c[inside[i]] = 0.0;
+    for (int i = 0; i < 12; i++) rest.c[inside[i]] = 0.0;
     if (!(ga_mv_maxabs(rest) <= lim) || !(fabs(m.c[GA_BLADE_E14] - m.c[GA_BLADE_E15]) <= lim) ||
-        !(fabs(m.c[GA_BLADE_E24] - m.c[GA_BLADE_E25]) <= lim) || !(fabs(m.c[GA_BLADE_E34] - m.c[GA_BLADE_E35]) <= lim) ||
+        !(fabs(m.c[GA_BLADE_E24] - m.c[GA_BLADE_E25]) <= lim) ||
+        !(fabs(m.c[GA_BLADE_E34] - m.c[GA_BLADE_E35]) <= lim) ||
         !(fabs(m.c[GA_BLADE_E1234] - m.c[GA_BLADE_E1235]) <= lim))
         return GA_ERR_NOTRIGID;
     /* the mean as 0.5 a + 0.5 b: (a + b) overflows for a, b near DBL_MAX and
        made a finite input GA_ERR_NOTFINITE (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/from-mv-mean-overflow replays it) */
-    ga_rotor r = {m.c[GA_BLADE_SCALAR], m.c[GA_BLADE_E12], m.c[GA_BLADE_E13], m.c[GA_BLADE_E23],
-                  0.5 * m.c[GA_BLADE_E14] + 0.5 * m.c[GA_BLADE_E15], 0.5 * m.c[GA_BLADE_E24] + 0.5 * m.c[GA_BLADE_E25],
-                  0.5 * m.c[GA_BLADE_E34] + 0.5 * m.c[GA_BLADE_E35], 0.5 * m.c[GA_BLADE_E1234] + 0.5 * m.c[GA_BLADE_E1235]};
+    ga_rotor r = {m.c[GA_BLADE_SCALAR],
+                  m.c[GA_BLADE_E12],
+                  m.c[GA_BLADE_E13],
+                  m.c[GA_BLADE_E23],
+                  0.5 * m.c[GA_BLADE_E14] + 0.5 * m.c[GA_BLADE_E15],
+                  0.5 * m.c[GA_BLADE_E24] + 0.5 * m.c[GA_BLADE_E25],
+                  0.5 * m.c[GA_BLADE_E34] + 0.5 * m.c[GA_BLADE_E35],
+                  0.5 * m.c[GA_BLADE_E1234] + 0.5 * m.c[GA_BLADE_E1235]};
     int st = ga_rotor_check(r, tol);
     if (st != GA_OK)
         return st;
@@ -254,15 +268,14 @@ ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a)
 ga_generator ga_twist_to_generator(ga_twist xi)
 {
     /* beta = -w/2, c = -v/2; (e12, e13, e23) = (beta_z, -beta_y, beta_x) */
-    ga_generator g = {-0.5 * xi.w.z, 0.5 * xi.w.y, -0.5 * xi.w.x,
+    ga_generator g = {-0.5 * xi.w.z, 0.5 * xi.w.y,  -0.5 * xi.w.x,
                       -0.5 * xi.v.x, -0.5 * xi.v.y, -0.5 * xi.v.z};
     return g;
 }
 
 ga_twist ga_generator_to_twist(ga_generator b)
 {
-    ga_twist xi = {{-2.0 * b.e23, 2.0 * b.e13, -2.0 * b.e12},
-                   {-2.0 * b.e1n, -2.0 * b.e2n, -2.0 * b.e3n}};
+    ga_twist xi = {{-2.0 * b.e23, 2.0 * b.e13, -2.0 * b.e12}, {-2.0 * b.e1n, -2.0 * b.e2n, -2.0 * b.e3n}};
     return xi;
 }
 
@@ -274,8 +287,8 @@ ga_twist ga_generator_to_twist(ga_generator b)
  * chain, not by its arithmetic. */
 static inline double estrin9(const double c[9], double y, double y2, double y4, double y8)
 {
-    return ((c[0] + c[1] * y) + y2 * (c[2] + c[3] * y))
-         + y4 * ((c[4] + c[5] * y) + y2 * (c[6] + c[7] * y)) + y8 * c[8];
+    return ((c[0] + c[1] * y) + y2 * (c[2] + c[3] * y)) + y4 * ((c[4] + c[5] * y) + y2 * (c[6] + c[7] * y)) +
+           y8 * c[8];
 }
 
 /* Taylor coefficients, in x^2, of cos x, sin(x)/x and
@@ -283,15 +296,33 @@ static inline double estrin9(const double c[9], double y, double y2, double y4, 
  * each to the term in x^16. For |x| <= pi/4 the first omitted term is below
  * 3e-18 of the sum (x^18/18! against cos x >= 0.7, x^18/19! against
  * sinc x >= 0.9, 20 x^18/21! against |k| >= 0.3). */
-static const double cos_taylor[9] = {
-    1.0, -1.0 / 2, 1.0 / 24, -1.0 / 720, 1.0 / 40320, -1.0 / 3628800, 1.0 / 479001600,
-    -1.0 / 87178291200.0, 1.0 / 20922789888000.0};
-static const double sinc_taylor[9] = {
-    1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800,
-    1.0 / 6227020800.0, -1.0 / 1307674368000.0, 1.0 / 355687428096000.0};
-static const double k_taylor[9] = {
-    -1.0 / 3, 1.0 / 30, -1.0 / 840, 1.0 / 45360, -1.0 / 3991680, 1.0 / 518918400,
-    -1.0 / 93405312000.0, 1.0 / 22230464256000.0, -1.0 / 6758061133824000.0};
+static const double cos_taylor[9] = {1.0,
+                                     -1.0 / 2,
+                                     1.0 / 24,
+                                     -1.0 / 720,
+                                     1.0 / 40320,
+                                     -1.0 / 3628800,
+                                     1.0 / 479001600,
+                                     -1.0 / 87178291200.0,
+                                     1.0 / 20922789888000.0};
+static const double sinc_taylor[9] = {1.0,
+                                      -1.0 / 6,
+                                      1.0 / 120,
+                                      -1.0 / 5040,
+                                      1.0 / 362880,
+                                      -1.0 / 39916800,
+                                      1.0 / 6227020800.0,
+                                      -1.0 / 1307674368000.0,
+                                      1.0 / 355687428096000.0};
+static const double k_taylor[9] = {-1.0 / 3,
+                                   1.0 / 30,
+                                   -1.0 / 840,
+                                   1.0 / 45360,
+                                   -1.0 / 3991680,
+                                   1.0 / 518918400,
+                                   -1.0 / 93405312000.0,
+                                   1.0 / 22230464256000.0,
+                                   -1.0 / 6758061133824000.0};
 
 /* pi/2 = PIO2_HI + PIO2_LO to about 2^-107 */
 #define PIO2_HI 1.5707963267948966    /* 0x1.921fb54442d18p+0 */
@@ -343,17 +374,14 @@ ga_rotor ga_rotor_exp(ga_generator g)
  * has an absolute error of a few 2^-53. */
 static inline double atan2_quadrant(double y, double x)
 {
-    static const double bound[4] = {0.19891236737965801, 0.66817863791929888,
-                                    1.4966057626654889, 5.0273394921258463};
-    static const double cos_a[5] = {1.0, 0.92387953251128674, 0.70710678118654757,
-                                    0.38268343236508984, 0.0};
-    static const double sin_a[5] = {0.0, 0.38268343236508978, 0.70710678118654746,
-                                    0.92387953251128674, 1.0};
-    static const double a[5] = {0.0, 0.39269908169872414, 0.78539816339744828,
-                                1.1780972450961724, 1.5707963267948966};
-    static const double atan_taylor[12] = {
-        1.0, -1.0 / 3, 1.0 / 5, -1.0 / 7, 1.0 / 9, -1.0 / 11,
-        1.0 / 13, -1.0 / 15, 1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23};
+    static const double bound[4] = {0.19891236737965801, 0.66817863791929888, 1.4966057626654889,
+                                    5.0273394921258463};
+    static const double cos_a[5] = {1.0, 0.92387953251128674, 0.70710678118654757, 0.38268343236508984, 0.0};
+    static const double sin_a[5] = {0.0, 0.38268343236508978, 0.70710678118654746, 0.92387953251128674, 1.0};
+    static const double a[5] = {0.0, 0.39269908169872414, 0.78539816339744828, 1.1780972450961724,
+                                1.5707963267948966};
+    static const double atan_taylor[12] = {1.0,      -1.0 / 3,  1.0 / 5,  -1.0 / 7,  1.0 / 9,  -1.0 / 11,
+                                           1.0 / 13, -1.0 / 15, 1.0 / 17, -1.0 / 19, 1.0 / 21, -1.0 / 23};
     int j = (y > bound[0] * x) + (y > bound[1] * x) + (y > bound[2] * x) + (y > bound[3] * x);
     double z = (y * cos_a[j] - x * sin_a[j]) / (x * cos_a[j] + y * sin_a[j]);
     double w = z * z, w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
@@ -386,8 +414,7 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         double s = sg * r.s, nb = sqrt(nb2), inv = 1.0 / nb;
         /* the angle in [0, pi/2] for the principal log; the literal log's
            s < 0 gives pi - atan2(nb, -s), with pi = 2 PIO2_HI + 2 PIO2_LO */
-        double phi = s >= 0.0 ? atan2_quadrant(nb, s)
-                              : (2 * PIO2_HI - atan2_quadrant(nb, -s)) + 2 * PIO2_LO;
+        double phi = s >= 0.0 ? atan2_quadrant(nb, s) : (2 * PIO2_HI - atan2_quadrant(nb, -s)) + 2 * PIO2_LO;
         vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
         double pu = v_dot(p, u);
         double cpar = (s * pu + nb * (sg * r.e123n)) / q2;
@@ -448,8 +475,7 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         beta = v_scale(u, phi);
         /* when f = phi / nb overflows (a literal log within 1e-308 of a full
            turn), (pperp phi) / nb: 0 for pperp = 0, else Inf, reported below */
-        c = v_add(isfinite(f) ? v_scale(pperp, f) : v_div(v_scale(pperp, phi), nb),
-                  v_scale(u, cpar));
+        c = v_add(isfinite(f) ? v_scale(pperp, f) : v_div(v_scale(pperp, phi), nb), v_scale(u, cpar));
     }
     /* A generator beyond the range of double (a translation near DBL_MAX, or
        the literal log's translation across the axis divided by sin(phi) -> 0
@@ -498,8 +524,8 @@ int ga_rotor_to_screw(ga_rotor r, ga_screw *out)
        did not (a translation beyond DBL_MAX / 2): report it, never return
        Inf or NaN (found by fuzz/fuzz_numeric;
        fuzz/regress/numeric/screw-translation-overflow replays it) */
-    if (!isfinite(s.shift) || !isfinite(s.point.x) || !isfinite(s.point.y) ||
-        !isfinite(s.point.z) || !isfinite(s.axis.x) || !isfinite(s.axis.y) || !isfinite(s.axis.z))
+    if (!isfinite(s.shift) || !isfinite(s.point.x) || !isfinite(s.point.y) || !isfinite(s.point.z) ||
+        !isfinite(s.axis.x) || !isfinite(s.axis.y) || !isfinite(s.axis.z))
         return GA_ERR_DOMAIN;
     *out = s;
     return GA_OK;
@@ -538,10 +564,9 @@ ga_mat4 ga_rotor_to_mat4(ga_rotor r)
 {
     double w = r.s, x = -r.e23, y = r.e13, z = -r.e12;
     vec t = rotor_translation(r);
-    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x,
-                  2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y,
-                  2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), t.z,
-                  0, 0, 0, 1}};
+    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x, 2 * (x * y + w * z),
+                  1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y, 2 * (x * z - w * y), 2 * (y * z + w * x),
+                  1 - 2 * (x * x + y * y), t.z, 0, 0, 0, 1}};
     return m;
 }
 
@@ -552,8 +577,7 @@ int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
     for (int i = 0; i < 16; i++)
         if (!isfinite(m[i]))
             return GA_ERR_NOTFINITE;
-    if (!(fabs(m[12]) <= tol && fabs(m[13]) <= tol && fabs(m[14]) <= tol &&
-          fabs(m[15] - 1.0) <= tol))
+    if (!(fabs(m[12]) <= tol && fabs(m[13]) <= tol && fabs(m[14]) <= tol && fabs(m[15] - 1.0) <= tol))
         return GA_ERR_NOTRIGID;
     for (int i = 0; i < 3; i++)
         for (int j = i; j < 3; j++) {
@@ -606,7 +630,6 @@ ga_dualquat ga_rotor_to_dualquat(ga_rotor r)
 
 ga_rotor ga_rotor_from_dualquat(ga_dualquat d)
 {
-    ga_rotor r = {d.real.w, -d.real.z, d.real.y, -d.real.x,
-                  -d.dual.x, -d.dual.y, -d.dual.z, -d.dual.w};
+    ga_rotor r = {d.real.w, -d.real.z, d.real.y, -d.real.x, -d.dual.x, -d.dual.y, -d.dual.z, -d.dual.w};
     return r;
 }

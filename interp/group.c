@@ -22,14 +22,18 @@
 
 static ga_twist twist_of(const double *x)
 {
-    ga_twist t = { { x[0], x[1], x[2] }, { x[3], x[4], x[5] } };
+    ga_twist t = {{x[0], x[1], x[2]}, {x[3], x[4], x[5]}};
     return t;
 }
 
 static void twist_put(ga_twist t, double *x)
 {
-    x[0] = t.w.x; x[1] = t.w.y; x[2] = t.w.z;
-    x[3] = t.v.x; x[4] = t.v.y; x[5] = t.v.z;
+    x[0] = t.w.x;
+    x[1] = t.w.y;
+    x[2] = t.w.z;
+    x[3] = t.v.x;
+    x[4] = t.v.y;
+    x[5] = t.v.z;
 }
 
 /* xi^ = [[w]x, v; 0 0 0 0] and back, for cga and se3 alike. vee reads the
@@ -40,7 +44,8 @@ static int twist_vee(ga_mat4 a, double *x)
 {
     double big = 0.0, sym = 0.0;
     for (int i = 0; i < 16; ++i) {
-        if (!isfinite(a.m[i])) return GA_ERR_NOTFINITE;
+        if (!isfinite(a.m[i]))
+            return GA_ERR_NOTFINITE;
         big = fmax(big, fabs(a.m[i]));
     }
     for (int r = 0; r < 3; ++r)
@@ -62,7 +67,8 @@ static double twist_angle(const double *x)
 {
     double s = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
     double m = fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2])));
-    if ((s >= 0x1p-1000 && s <= 0x1p1000) || !(m > 0) || isinf(m)) return sqrt(s);
+    if ((s >= 0x1p-1000 && s <= 0x1p1000) || !(m > 0) || isinf(m))
+        return sqrt(s);
     double a = x[0] / m, b = x[1] / m, c = x[2] / m;
     return m * sqrt(a * a + b * b + c * c);
 }
@@ -74,11 +80,12 @@ static double twist_angle(const double *x)
 static void twist_other_branch(double *x)
 {
     double th = twist_angle(x);
-    if (th == 0.0) return;
+    if (th == 0.0)
+        return;
     double k = (th - 2.0 * PI) / th;
     /* v_par = (w.v / th^2) w; where th^2 would underflow, through the unit axis */
     double vp = th >= 0x1p-500 ? (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th)
-              : ((x[0] / th) * x[3] + (x[1] / th) * x[4] + (x[2] / th) * x[5]) / th;
+                               : ((x[0] / th) * x[3] + (x[1] / th) * x[4] + (x[2] / th) * x[5]) / th;
     for (int i = 0; i < 3; ++i) {
         double par = vp * x[i];
         x[3 + i] = k * (x[3 + i] - par) + par;
@@ -92,7 +99,9 @@ static void twist_quat(const double *x, double q[4])
     double th = twist_angle(x), h = 0.5 * th;
     double f = h > 0 ? 0.5 * sin(h) / h : 0.5; /* sin(th/2)/th */
     q[0] = cos(h);
-    q[1] = f * x[0]; q[2] = f * x[1]; q[3] = f * x[2];
+    q[1] = f * x[0];
+    q[2] = f * x[1];
+    q[3] = f * x[2];
 }
 
 /* Deterministic axis at a half turn (group.h half_turn): within
@@ -101,10 +110,12 @@ static void twist_quat(const double *x, double q[4])
 static void twist_half_turn(double *x)
 {
     double th = twist_angle(x);
-    if (!(th >= PI - GA_GROUP_HALF_TURN_BAND)) return;
+    if (!(th >= PI - GA_GROUP_HALF_TURN_BAND))
+        return;
     for (int i = 0; i < 3; ++i)
         if (fabs(x[i]) > 0.3 * th) {
-            if (x[i] < 0) twist_other_branch(x);
+            if (x[i] < 0)
+                twist_other_branch(x);
             return;
         }
 }
@@ -122,7 +133,11 @@ static void twist_branch(const double *prev, double *x)
         twist_other_branch(x);
 }
 
-static ga_vec3 v3(double x, double y, double z) { ga_vec3 r = { x, y, z }; return r; }
+static ga_vec3 v3(double x, double y, double z)
+{
+    ga_vec3 r = {x, y, z};
+    return r;
+}
 
 /* sum_{k=0}^{11} (-1)^k m_k th^2k/(2k+d)!, m_k = k+1 if weighted else 1: the
  * Taylor series of the Jacobian coefficients below, used for th < 1 where the
@@ -156,7 +171,9 @@ static void se3_dexp(const double *x, const double *y, double *out)
     double a1 = 0.5 * sh * sh;                          /* (1 - cos th)/th^2 */
     double a, b, c;
     if (th < 1.0) {
-        a = jac_series(t2, 3, 0); b = jac_series(t2, 4, 0); c = jac_series(t2, 5, 1);
+        a = jac_series(t2, 3, 0);
+        b = jac_series(t2, 4, 0);
+        c = jac_series(t2, 5, 1);
     } else {
         double s = sin(th), co = cos(th);
         a = (th - s) / (t2 * th);
@@ -193,30 +210,35 @@ static int finite_status(const double *in, int n_in, const double *out, int n_ou
      * a tree, so the check adds little latency). A non-finite input makes
      * these exps' results non-finite too, so finite results need no look at
      * the input; the rest is sorted out only when the check fails. */
-    double z[4] = { 0.0, 0.0, 0.0, 0.0 };
+    double z[4] = {0.0, 0.0, 0.0, 0.0};
     for (int i = 0; i < n_out; ++i) z[i & 3] += out[i] - out[i];
-    if ((z[0] + z[1]) + (z[2] + z[3]) == 0.0) return GA_OK;
+    if ((z[0] + z[1]) + (z[2] + z[3]) == 0.0)
+        return GA_OK;
     for (int i = 0; i < n_in; ++i)
-        if (!isfinite(in[i])) return GA_ERR_NOTFINITE;
+        if (!isfinite(in[i]))
+            return GA_ERR_NOTFINITE;
     return GA_ERR_DOMAIN;
 }
 static int cga_exp(const double *x, void *out)
 {
     /* B(xi) = -(w I3 + v n)/2 (ga_twist_to_generator), read from x in place */
-    ga_generator b = { -0.5 * x[2], 0.5 * x[1], -0.5 * x[0], -0.5 * x[3], -0.5 * x[4], -0.5 * x[5] };
+    ga_generator b = {-0.5 * x[2], 0.5 * x[1], -0.5 * x[0], -0.5 * x[3], -0.5 * x[4], -0.5 * x[5]};
     ga_rotor r = ga_rotor_exp(b);
     int st = finite_status(x, 6, &r.s, 8);
-    if (st == GA_OK) *(ga_rotor *)out = r;
+    if (st == GA_OK)
+        *(ga_rotor *)out = r;
     return st;
 }
 static int cga_log(const void *g, double *x)
 {
     ga_generator b;
     int st = ga_rotor_log(*(const ga_rotor *)g, &b);
-    if (st != GA_OK) return st;
+    if (st != GA_OK)
+        return st;
     ga_twist t = ga_generator_to_twist(b);
     st = finite_status(NULL, 0, &t.w.x, 6);
-    if (st == GA_OK) twist_put(t, x);
+    if (st == GA_OK)
+        twist_put(t, x);
     return st;
 }
 /* Ad_R B = R B ~R, computed in the compact 8-component form, which is closed
@@ -225,9 +247,9 @@ static void cga_adjoint(const void *g, const double *x, double *out)
 {
     ga_rotor r = *(const ga_rotor *)g;
     ga_generator b = ga_twist_to_generator(twist_of(x));
-    ga_rotor bb = { 0.0, b.e12, b.e13, b.e23, b.e1n, b.e2n, b.e3n, 0.0 };
+    ga_rotor bb = {0.0, b.e12, b.e13, b.e23, b.e1n, b.e2n, b.e3n, 0.0};
     ga_rotor s = ga_rotor_mul(ga_rotor_mul(r, bb), ga_rotor_reverse(r));
-    ga_generator o = { s.e12, s.e13, s.e23, s.e1n, s.e2n, s.e3n };
+    ga_generator o = {s.e12, s.e13, s.e23, s.e1n, s.e2n, s.e3n};
     twist_put(ga_generator_to_twist(o), out);
 }
 static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (ga_rotor *)out); }
@@ -269,14 +291,16 @@ static int se3_exp(const double *x, void *out)
 {
     ga_mat4 m = ga_se3_exp(twist_of(x));
     int st = finite_status(x, 6, m.m, 16);
-    if (st == GA_OK) *(ga_mat4 *)out = m;
+    if (st == GA_OK)
+        *(ga_mat4 *)out = m;
     return st;
 }
 static int se3_log(const void *g, double *x)
 {
     ga_twist t;
     int st = ga_se3_log(*(const ga_mat4 *)g, &t);
-    if (st == GA_OK) twist_put(t, x);
+    if (st == GA_OK)
+        twist_put(t, x);
     return st;
 }
 static void se3_adjoint(const void *g, const double *x, double *out)
@@ -286,7 +310,8 @@ static void se3_adjoint(const void *g, const double *x, double *out)
 static int se3_from_mat4(ga_mat4 m, void *out)
 {
     int st = ga_se3_check(m, GA_SE3_TOL);
-    if (st == GA_OK) *(ga_mat4 *)out = m;
+    if (st == GA_OK)
+        *(ga_mat4 *)out = m;
     return st;
 }
 static ga_mat4 m4_to_mat4(const void *g) { return *(const ga_mat4 *)g; }
@@ -325,8 +350,10 @@ static void aff_vee(ga_mat4 a, double *x) { memcpy(x, a.m, 12 * sizeof(double));
 static int aff_vee_checked(ga_mat4 a, double *x)
 {
     for (int i = 0; i < 16; ++i)
-        if (!isfinite(a.m[i])) return GA_ERR_NOTFINITE;
-    if (a.m[12] != 0.0 || a.m[13] != 0.0 || a.m[14] != 0.0 || a.m[15] != 0.0) return GA_ERR_ARG;
+        if (!isfinite(a.m[i]))
+            return GA_ERR_NOTFINITE;
+    if (a.m[12] != 0.0 || a.m[13] != 0.0 || a.m[14] != 0.0 || a.m[15] != 0.0)
+        return GA_ERR_ARG;
     aff_vee(a, x);
     return GA_OK;
 }
@@ -335,8 +362,10 @@ static int aff_inverse(const void *a, void *out)
 {
     ga_mat4 r;
     int st = ga_mat4_inverse(*(const ga_mat4 *)a, &r);
-    if (st != GA_OK) return st;
-    r.m[12] = r.m[13] = r.m[14] = 0.0; r.m[15] = 1.0; /* exactly homogeneous */
+    if (st != GA_OK)
+        return st;
+    r.m[12] = r.m[13] = r.m[14] = 0.0;
+    r.m[15] = 1.0; /* exactly homogeneous */
     *(ga_mat4 *)out = r;
     return GA_OK;
 }
@@ -344,8 +373,10 @@ static int aff_exp(const double *x, void *out)
 {
     ga_mat4 r;
     int st = ga_mat4_expm(aff_hat(x), &r);
-    if (st != GA_OK) return st;
-    r.m[12] = r.m[13] = r.m[14] = 0.0; r.m[15] = 1.0; /* exp of a zero last row */
+    if (st != GA_OK)
+        return st;
+    r.m[12] = r.m[13] = r.m[14] = 0.0;
+    r.m[15] = 1.0; /* exp of a zero last row */
     *(ga_mat4 *)out = r;
     return GA_OK;
 }
@@ -353,7 +384,8 @@ static int aff_log(const void *g, double *x)
 {
     ga_mat4 l;
     int st = ga_mat4_logm(*(const ga_mat4 *)g, &l);
-    if (st == GA_OK) aff_vee(l, x);
+    if (st == GA_OK)
+        aff_vee(l, x);
     return st;
 }
 static void aff_adjoint(const void *g, const double *x, double *out)
@@ -370,15 +402,17 @@ static void aff_adjoint(const void *g, const double *x, double *out)
 static int aff_from_mat4(ga_mat4 m, void *out)
 {
     for (int i = 0; i < 16; ++i)
-        if (!isfinite(m.m[i])) return GA_ERR_NOTFINITE;
-    if (fabs(m.m[12]) > 1e-12 || fabs(m.m[13]) > 1e-12 || fabs(m.m[14]) > 1e-12
-        || fabs(m.m[15] - 1.0) > 1e-12)
+        if (!isfinite(m.m[i]))
+            return GA_ERR_NOTFINITE;
+    if (fabs(m.m[12]) > 1e-12 || fabs(m.m[13]) > 1e-12 || fabs(m.m[14]) > 1e-12 ||
+        fabs(m.m[15] - 1.0) > 1e-12)
         return GA_ERR_DOMAIN;
-    double det = m.m[0] * (m.m[5] * m.m[10] - m.m[6] * m.m[9])
-               - m.m[1] * (m.m[4] * m.m[10] - m.m[6] * m.m[8])
-               + m.m[2] * (m.m[4] * m.m[9] - m.m[5] * m.m[8]);
-    if (!(det > 0.0)) return det == 0.0 ? GA_ERR_SINGULAR : GA_ERR_DOMAIN;
-    m.m[12] = m.m[13] = m.m[14] = 0.0; m.m[15] = 1.0;
+    double det = m.m[0] * (m.m[5] * m.m[10] - m.m[6] * m.m[9]) -
+                 m.m[1] * (m.m[4] * m.m[10] - m.m[6] * m.m[8]) + m.m[2] * (m.m[4] * m.m[9] - m.m[5] * m.m[8]);
+    if (!(det > 0.0))
+        return det == 0.0 ? GA_ERR_SINGULAR : GA_ERR_DOMAIN;
+    m.m[12] = m.m[13] = m.m[14] = 0.0;
+    m.m[15] = 1.0;
     *(ga_mat4 *)out = m;
     return GA_OK;
 }
@@ -399,7 +433,10 @@ static void aff_dexp(const double *x, const double *y, double *out)
     ga_mat4 X = aff_hat(x), Y = aff_hat(y);
     double nx = ga_mat4_norm1(X);
     int s = 0;
-    while (nx > 0.5 && s < 1100) { nx *= 0.5; ++s; }
+    while (nx > 0.5 && s < 1100) {
+        nx *= 0.5;
+        ++s;
+    }
     double sc = ldexp(1.0, -s);
     X = m4_lin(sc, X, 0.0, X);
     Y = m4_lin(sc, Y, 0.0, Y);
@@ -448,16 +485,14 @@ const ga_group ga_group_affine = {
     .branch = NULL,
 };
 
-static const ga_group *const groups[] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
+static const ga_group *const groups[] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
 
-const ga_group *ga_group_nth(size_t i)
-{
-    return i < sizeof groups / sizeof groups[0] ? groups[i] : NULL;
-}
+const ga_group *ga_group_nth(size_t i) { return i < sizeof groups / sizeof groups[0] ? groups[i] : NULL; }
 
 const ga_group *ga_group_by_name(const char *name)
 {
     for (size_t i = 0; name && i < sizeof groups / sizeof groups[0]; ++i)
-        if (strcmp(name, groups[i]->name) == 0) return groups[i];
+        if (strcmp(name, groups[i]->name) == 0)
+            return groups[i];
     return NULL;
 }

@@ -12,46 +12,41 @@
 
 /* ---- names ---------------------------------------------------------------- */
 
-static const char *const scheme_names[] = {
-    "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3"
-};
-static const char *const eval_names[] = { "direct", "euler", "exact" };
+static const char *const scheme_names[] = {"screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3"};
+static const char *const eval_names[] = {"direct", "euler", "exact"};
 
-const char *ga_scheme_name(ga_scheme s)
-{
-    return (unsigned)s < 6 ? scheme_names[s] : "?";
-}
+const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < 6 ? scheme_names[s] : "?"; }
 
 int ga_scheme_by_name(const char *name, ga_scheme *out)
 {
     for (unsigned i = 0; name && i < 6; ++i)
-        if (strcmp(name, scheme_names[i]) == 0) { *out = (ga_scheme)i; return GA_OK; }
+        if (strcmp(name, scheme_names[i]) == 0) {
+            *out = (ga_scheme)i;
+            return GA_OK;
+        }
     return GA_ERR_ARG;
 }
 
-const char *ga_eval_name(ga_eval e)
-{
-    return (unsigned)e < 3 ? eval_names[e] : "?";
-}
+const char *ga_eval_name(ga_eval e) { return (unsigned)e < 3 ? eval_names[e] : "?"; }
 
 int ga_eval_by_name(const char *name, ga_eval *out)
 {
     for (unsigned i = 0; name && i < 3; ++i)
-        if (strcmp(name, eval_names[i]) == 0) { *out = (ga_eval)i; return GA_OK; }
+        if (strcmp(name, eval_names[i]) == 0) {
+            *out = (ga_eval)i;
+            return GA_OK;
+        }
     return GA_ERR_ARG;
 }
 
-size_t ga_scheme_min_keys(ga_scheme s)
-{
-    return (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2;
-}
+size_t ga_scheme_min_keys(ga_scheme s) { return (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2; }
 
 /* ---- small helpers ---------------------------------------------------------- */
 
 /* The exponent polynomials p_j(u) = a u + b u^2 + c u^3 of the Li-Hao factors
  * exp(p_j(u) X_j): u (eq. 9), u^2 (eq. 14), u^3 - u^2 (eq. 21). Factor j has
  * degree j + 1. */
-static const double fac_poly[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 1 } };
+static const double fac_poly[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, -1, 1}};
 
 static size_t nfac(ga_scheme s)
 {
@@ -70,10 +65,7 @@ static double poly_diff(const double *c, size_t m, double u, double d)
     }
 }
 
-static double poly_deriv(const double *c, double u)
-{
-    return c[0] + u * (2 * c[1] + 3 * u * c[2]);
-}
+static double poly_deriv(const double *c, double u) { return c[0] + u * (2 * c[1] + 3 * u * c[2]); }
 
 static double *key_of(const ga_path *p, size_t i) { return p->key + i * p->key_stride; }
 static double seg_len(const ga_path *p, size_t i) { return p->t[i + 1] - p->t[i]; }
@@ -99,7 +91,8 @@ static void lin(size_t d, double *out, double s, const double *a, double r, cons
 static int allfinite(const double *x, size_t n)
 {
     for (size_t i = 0; i < n; ++i)
-        if (!isfinite(x[i])) return 0;
+        if (!isfinite(x[i]))
+            return 0;
     return 1;
 }
 
@@ -119,7 +112,8 @@ static int finite_elem(const ga_group *g, const void *x)
 static int plog(const ga_group *g, const void *a, double *x)
 {
     int st = g->log(a, x);
-    if (st == GA_OK && g->half_turn) g->half_turn(x);
+    if (st == GA_OK && g->half_turn)
+        g->half_turn(x);
     return st;
 }
 
@@ -128,7 +122,8 @@ static int rel_log(const ga_group *g, const void *a, const void *b, double *x, d
 {
     double ai[MAXE];
     int st = g->inverse(a, ai);
-    if (st != GA_OK) return st;
+    if (st != GA_OK)
+        return st;
     g->compose(ai, b, rel);
     return plog(g, rel, x);
 }
@@ -151,38 +146,55 @@ static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
 
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n)
 {
-    if (!g || n < 1 || (unsigned)s > GA_SCHEME_LIHAO3) return 0;
+    if (!g || n < 1 || (unsigned)s > GA_SCHEME_LIHAO3)
+        return 0;
     size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
     return sizeof(double) * (n + n * stride + scheme_doubles(s, n, g->dim));
 }
 
 /* Check the arguments and lay the arrays out in the workspace. */
-static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const double *times,
-                  const void *keys, void *work, size_t bytes)
+static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
+                  void *work, size_t bytes)
 {
     if (!p || !g || !times || !keys || !work || (unsigned)s > GA_SCHEME_LIHAO3)
         return GA_ERR_ARG;
-    if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)) return GA_ERR_ARG;
+    if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3))
+        return GA_ERR_ARG;
     if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
         return GA_ERR_ARG;
-    if (!allfinite(times, n)) return GA_ERR_NOTFINITE;
+    if (!allfinite(times, n))
+        return GA_ERR_NOTFINITE;
     for (size_t i = 0; i + 1 < n; ++i)
-        if (!(times[i] < times[i + 1])) return GA_ERR_ARG;
+        if (!(times[i] < times[i + 1]))
+            return GA_ERR_ARG;
     size_t d = g->dim;
     double *w = work;
     memset(p, 0, sizeof *p);
-    p->group = g; p->scheme = s; p->n = n;
+    p->group = g;
+    p->scheme = s;
+    p->n = n;
     p->key_stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
-    p->t = w; w += n;
-    p->key = w; w += n * p->key_stride;
+    p->t = w;
+    w += n;
+    p->key = w;
+    w += n * p->key_stride;
     memcpy(p->t, times, n * sizeof(double));
     switch (s) {
     case GA_SCHEME_SCREW: p->coef = w; break;
-    case GA_SCHEME_LIHAO2: p->coef = w; p->vel = w + 2 * (n - 1) * d; break;
-    case GA_SCHEME_LIHAO3: p->coef = w; p->vel = w + 3 * (n - 1) * d; break;
+    case GA_SCHEME_LIHAO2:
+        p->coef = w;
+        p->vel = w + 2 * (n - 1) * d;
+        break;
+    case GA_SCHEME_LIHAO3:
+        p->coef = w;
+        p->vel = w + 3 * (n - 1) * d;
+        break;
     case GA_SCHEME_BIVECTOR: p->gen = w; break;
     case GA_SCHEME_QUADRATIC:
-    case GA_SCHEME_SMOOTH: p->gen = w; p->slope = w + n * d; break;
+    case GA_SCHEME_SMOOTH:
+        p->gen = w;
+        p->slope = w + n * d;
+        break;
     }
     return GA_OK;
 }
@@ -205,21 +217,25 @@ static int build_lihao(ga_path *p, const double *vel)
     }
     if (p->scheme == GA_SCHEME_LIHAO3) {
         if (vel) {
-            if (!allfinite(vel, n * d)) return GA_ERR_NOTFINITE;
+            if (!allfinite(vel, n * d))
+                return GA_ERR_NOTFINITE;
             memcpy(p->vel, vel, n * d * sizeof(double));
         } else {
             /* default rule (path.h): s_i = plog(A_i^-1 A_{i+1})/h_i, parked in D_i */
             for (size_t i = 0; i + 1 < n; ++i) {
                 double *s = p->coef + (i * 3 + 2) * d;
-                if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), s, rel))) return st;
+                if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), s, rel)))
+                    return st;
                 lin(d, s, 1.0 / seg_len(p, i), s, 0.0, s);
             }
             for (size_t i = 0; i < n; ++i) {
                 double *v = p->vel + i * d;
                 const double *sl = i > 0 ? p->coef + ((i - 1) * 3 + 2) * d : NULL;
                 const double *sr = i + 1 < n ? p->coef + (i * 3 + 2) * d : NULL;
-                if (!sl) memcpy(v, sr, d * sizeof(double));
-                else if (!sr) memcpy(v, sl, d * sizeof(double));
+                if (!sl)
+                    memcpy(v, sr, d * sizeof(double));
+                else if (!sr)
+                    memcpy(v, sl, d * sizeof(double));
                 else {
                     double hl = seg_len(p, i - 1), hr = seg_len(p, i);
                     lin(d, v, hr / (hl + hr), sl, hl / (hl + hr), sr);
@@ -228,10 +244,12 @@ static int build_lihao(ga_path *p, const double *vel)
         }
     } else { /* LIHAO2: the first key's velocity */
         if (vel) {
-            if (!allfinite(vel, d)) return GA_ERR_NOTFINITE;
+            if (!allfinite(vel, d))
+                return GA_ERR_NOTFINITE;
             memcpy(p->vel, vel, d * sizeof(double));
         } else {
-            if ((st = rel_log(g, key_of(p, 0), key_of(p, 1), p->vel, rel))) return st;
+            if ((st = rel_log(g, key_of(p, 0), key_of(p, 1), p->vel, rel)))
+                return st;
             lin(d, p->vel, 1.0 / seg_len(p, 0), p->vel, 0.0, p->vel);
         }
     }
@@ -246,17 +264,22 @@ static int build_lihao(ga_path *p, const double *vel)
         const double *vi = p->vel + i * d;
         /* eq. 26: B_i = velocity at the key, per unit u */
         lin(d, B, h, vi, 0.0, vi);
-        if (!allfinite(B, d)) return GA_ERR_DOMAIN;
+        if (!allfinite(B, d))
+            return GA_ERR_DOMAIN;
         /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
         double ai[MAXE];
-        if ((st = g->inverse(key_of(p, i), ai))) return st;
+        if ((st = g->inverse(key_of(p, i), ai)))
+            return st;
         g->compose(ai, key_of(p, i + 1), rel);
         lin(d, x, -1.0, B, 0.0, B);
-        if ((st = g->exp(x, e))) return st;
+        if ((st = g->exp(x, e)))
+            return st;
         g->compose(e, rel, m);
-        if ((st = plog(g, m, C))) return st;
+        if ((st = plog(g, m, C)))
+            return st;
         /* body velocity of exp(uB)exp(u^2 C) at u = 1: Ad_{rel^-1} B + 2 C (eqs. 15, 17) */
-        if ((st = g->inverse(rel, reli))) return st;
+        if ((st = g->inverse(rel, reli)))
+            return st;
         g->adjoint(reli, B, ad);
         if (p->scheme == GA_SCHEME_LIHAO2) {
             /* eq. 17, per unit t: the next key's velocity */
@@ -280,8 +303,10 @@ static int build_generators(ga_path *p)
     int st;
     for (size_t i = 0; i < p->n; ++i) {
         double *x = p->gen + i * d;
-        if ((st = plog(g, key_of(p, i), x))) return st;
-        if (g->branch && i > 0) g->branch(x - d, x);
+        if ((st = plog(g, key_of(p, i), x)))
+            return st;
+        if (g->branch && i > 0)
+            g->branch(x - d, x);
     }
     return GA_OK;
 }
@@ -290,8 +315,10 @@ static int build_generators(ga_path *p)
  * 1 <= k <= n-3, xi_{n-2} = t_{n-1}. */
 static double brk(const ga_path *p, size_t k)
 {
-    if (k == 0) return p->t[0];
-    if (k == p->n - 2) return p->t[p->n - 1];
+    if (k == 0)
+        return p->t[0];
+    if (k == p->n - 2)
+        return p->t[p->n - 1];
     return 0.5 * (p->t[k] + p->t[k + 1]);
 }
 
@@ -312,14 +339,20 @@ static void build_smooth(ga_path *p)
         double h = seg_len(p, j), lo, di, up;
         if (j == 0) {
             double gam = h / (brk(p, 1) - brk(p, 0));
-            lo = 0.0; di = 2.0 - gam; up = gam;
+            lo = 0.0;
+            di = 2.0 - gam;
+            up = gam;
         } else if (j == n - 2) {
             double del = (p->t[n - 2] - brk(p, n - 3)) / (brk(p, n - 2) - brk(p, n - 3));
-            lo = 1.0 - del; di = 1.0 + del; up = 0.0;
+            lo = 1.0 - del;
+            di = 1.0 + del;
+            up = 0.0;
         } else {
             double al = (p->t[j] - brk(p, j - 1)) / (brk(p, j) - brk(p, j - 1));
             double be = (p->t[j + 1] - brk(p, j)) / (brk(p, j + 1) - brk(p, j));
-            lo = 0.5 * (1.0 - al); di = 0.5 * (3.0 + al - be); up = 0.5 * be;
+            lo = 0.5 * (1.0 - al);
+            di = 0.5 * (3.0 + al - be);
+            up = 0.5 * be;
         }
         double *r = p->slope + j * d;
         const double *x0 = p->gen + j * d, *x1 = x0 + d;
@@ -347,7 +380,8 @@ static int build_scheme(ga_path *p, const double *vel)
     case GA_SCHEME_QUADRATIC:
     case GA_SCHEME_SMOOTH: {
         int st = build_generators(p);
-        if (st == GA_OK) build_smooth(p);
+        if (st == GA_OK)
+            build_smooth(p);
         return st;
     }
     }
@@ -364,12 +398,16 @@ static int build(ga_path *p, const double *vel)
     const ga_group *g = p->group;
     size_t ed = g->elem_size / sizeof(double);
     for (size_t i = 0; i < p->n; ++i)
-        if (!allfinite(key_of(p, i), ed)) return GA_ERR_NOTFINITE;
+        if (!allfinite(key_of(p, i), ed))
+            return GA_ERR_NOTFINITE;
     size_t nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
-    if (vel && !allfinite(vel, nv * g->dim)) return GA_ERR_NOTFINITE;
+    if (vel && !allfinite(vel, nv * g->dim))
+        return GA_ERR_NOTFINITE;
     int st = build_scheme(p, vel);
-    if (st == GA_ERR_NOTFINITE) return GA_ERR_DOMAIN;
-    if (st != GA_OK) return st;
+    if (st == GA_ERR_NOTFINITE)
+        return GA_ERR_DOMAIN;
+    if (st != GA_OK)
+        return st;
     const double *c = p->key + p->n * p->key_stride;
     return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_ERR_DOMAIN;
 }
@@ -380,26 +418,32 @@ int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, 
                  const double *velocities, void *work, size_t work_bytes, ga_path *out)
 {
     ga_path p;
-    if (!out) return GA_ERR_ARG;
+    if (!out)
+        return GA_ERR_ARG;
     int st = layout(&p, g, s, n, times, keys, work, work_bytes);
-    if (st != GA_OK) return st;
+    if (st != GA_OK)
+        return st;
     for (size_t i = 0; i < n; ++i)
         copy_elem(g, key_of(&p, i), (const unsigned char *)keys + i * g->elem_size);
-    if ((st = build(&p, velocities)) == GA_OK) *out = p;
+    if ((st = build(&p, velocities)) == GA_OK)
+        *out = p;
     return st;
 }
 
-int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times,
-                      const ga_mat4 *keys, const double *velocities, void *work,
-                      size_t work_bytes, ga_path *out)
+int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times, const ga_mat4 *keys,
+                      const double *velocities, void *work, size_t work_bytes, ga_path *out)
 {
     ga_path p;
-    if (!out) return GA_ERR_ARG;
+    if (!out)
+        return GA_ERR_ARG;
     int st = layout(&p, g, s, n, times, keys, work, work_bytes);
-    if (st != GA_OK) return st;
+    if (st != GA_OK)
+        return st;
     for (size_t i = 0; i < n; ++i)
-        if ((st = g->from_mat4(keys[i], key_of(&p, i)))) return st;
-    if ((st = build(&p, velocities)) == GA_OK) *out = p;
+        if ((st = g->from_mat4(keys[i], key_of(&p, i))))
+            return st;
+    if ((st = build(&p, velocities)) == GA_OK)
+        *out = p;
     return st;
 }
 
@@ -408,11 +452,15 @@ int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *ti
 int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
 {
     size_t n = p->n;
-    if (!(t >= p->t[0] && t <= p->t[n - 1])) return GA_ERR_ARG; /* also NaN */
+    if (!(t >= p->t[0] && t <= p->t[n - 1]))
+        return GA_ERR_ARG;     /* also NaN */
     size_t lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
     while (lo < hi) {
         size_t mid = (lo + hi + 1) / 2;
-        if (p->t[mid] <= t) lo = mid; else hi = mid - 1;
+        if (p->t[mid] <= t)
+            lo = mid;
+        else
+            hi = mid - 1;
     }
     *seg = lo;
     *u = (t - p->t[lo]) / seg_len(p, lo);
@@ -448,7 +496,8 @@ static void gen_curve(const ga_path *p, size_t j, double u, double *x, double *x
 
 int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
 {
-    if (!p || !out || seg + 2 > p->n || !isfinite(u)) return GA_ERR_ARG;
+    if (!p || !out || seg + 2 > p->n || !isfinite(u))
+        return GA_ERR_ARG;
     const ga_group *g = p->group;
     size_t d = g->dim, nf = nfac(p->scheme);
     int st;
@@ -464,7 +513,8 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
     const double *left = key_of(p, seg), *X = p->coef + seg * nf * d;
     for (size_t j = 0; j < nf; ++j, X += d) {
         lin(d, x, poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
-        if ((st = g->exp(x, e))) return st;
+        if ((st = g->exp(x, e)))
+            return st;
         double *dst = j + 1 == nf ? out : acc[j & 1];
         g->compose(left, e, dst);
         left = dst;
@@ -487,7 +537,8 @@ int ga_path_eval(const ga_path *p, double t, void *out)
 {
     size_t seg;
     double u;
-    if (!p || !out) return GA_ERR_ARG;
+    if (!p || !out)
+        return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
     return st ? st : eval_direct(p, seg, u, out);
 }
@@ -512,7 +563,8 @@ static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
         if (j > 0) {
             double fi[MAXE];
             lin(d, x, -poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
-            if ((st = g->exp(x, fi))) return st;
+            if ((st = g->exp(x, fi)))
+                return st;
             g->adjoint(fi, v, w);
         } else {
             for (size_t k = 0; k < d; ++k) w[k] = 0.0;
@@ -524,13 +576,16 @@ static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
 
 int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v)
 {
-    if (!p || !v || seg + 2 > p->n || !isfinite(u)) return GA_ERR_ARG;
+    if (!p || !v || seg + 2 > p->n || !isfinite(u))
+        return GA_ERR_ARG;
     size_t d = p->group->dim;
     double w[MAXD];
     int st = velocity_u(p, seg, u, w);
-    if (st != GA_OK) return st;
+    if (st != GA_OK)
+        return st;
     lin(d, w, 1.0 / seg_len(p, seg), w, 0.0, w);
-    if (!allfinite(w, d)) return GA_ERR_DOMAIN; /* see finite_elem */
+    if (!allfinite(w, d))
+        return GA_ERR_DOMAIN; /* see finite_elem */
     memcpy(v, w, d * sizeof(double));
     return GA_OK;
 }
@@ -539,7 +594,8 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
 {
     size_t seg;
     double u;
-    if (!p || !v) return GA_ERR_ARG;
+    if (!p || !v)
+        return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
     return st ? st : ga_path_velocity_segment(p, seg, u, v);
 }
@@ -551,8 +607,8 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
 
 /* One Euler sample at (seg, u): continue the running state (*cur, *grid, A)
  * when it is on this segment at or below u, else restart at the key. */
-static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, double *A,
-                        size_t seg, double u, void *out)
+static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, double *A, size_t seg,
+                        double u, void *out)
 {
     const ga_group *g = p->group;
     size_t d = g->dim;
@@ -565,18 +621,22 @@ static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, d
     }
     /* eq. 32 in group form: A(u + h) = A(u) exp(h V(u)) */
     while ((double)(*grid + 1) * h <= u) {
-        if ((st = velocity_u(p, seg, (double)*grid * h, v))) return st;
+        if ((st = velocity_u(p, seg, (double)*grid * h, v)))
+            return st;
         lin(d, v, h, v, 0.0, v);
-        if ((st = g->exp(v, e))) return st;
+        if ((st = g->exp(v, e)))
+            return st;
         g->compose(A, e, tmp);
         copy_elem(g, A, tmp);
         ++*grid;
     }
     double r = u - (double)*grid * h;
     if (r > 0.0) {
-        if ((st = velocity_u(p, seg, (double)*grid * h, v))) return st;
+        if ((st = velocity_u(p, seg, (double)*grid * h, v)))
+            return st;
         lin(d, v, r, v, 0.0, v);
-        if ((st = g->exp(v, e))) return st;
+        if ((st = g->exp(v, e)))
+            return st;
         g->compose(A, e, out);
     } else {
         copy_elem(g, out, A);
@@ -602,10 +662,13 @@ static int exact_anchor(ga_path_stepper *s, size_t seg, double u)
     const double *X = p->coef + seg * nf * d;
     for (size_t j = 0; j < nf; ++j, X += d)
         for (size_t m = 0; m <= j + 1; ++m) {
-            if (m == j + 1 && !newseg) break; /* E is kept for the segment */
+            if (m == j + 1 && !newseg)
+                break; /* E is kept for the segment */
             lin(d, x, poly_diff(fac_poly[j], m, u, delta), X, 0.0, X);
-            if ((st = g->exp(x, m == 0 && j == 0 ? e : s->slot[slot_base(j) + m]))) return st;
-            if (m == 0 && j == 0) g->compose(key_of(p, seg), e, s->slot[0]);
+            if ((st = g->exp(x, m == 0 && j == 0 ? e : s->slot[slot_base(j) + m])))
+                return st;
+            if (m == 0 && j == 0)
+                g->compose(key_of(p, seg), e, s->slot[0]);
         }
     return GA_OK;
 }
@@ -631,7 +694,10 @@ static void exact_output(const ga_path_stepper *s, void *out)
     const ga_group *g = s->path->group;
     size_t nf = nfac(s->path->scheme);
     double acc[MAXE], tmp[MAXE];
-    if (nf == 1) { copy_elem(g, out, s->slot[0]); return; }
+    if (nf == 1) {
+        copy_elem(g, out, s->slot[0]);
+        return;
+    }
     g->compose(s->slot[0], s->slot[slot_base(1)], acc);
     if (nf == 3) {
         g->compose(acc, s->slot[slot_base(2)], tmp);
@@ -642,24 +708,35 @@ static void exact_output(const ga_path_stepper *s, void *out)
 
 /* ---- samplers --------------------------------------------------------------------- */
 
-int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0,
-                         double t1, ga_path_stepper *s)
+int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
+                         ga_path_stepper *s)
 {
-    if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT) return GA_ERR_ARG;
-    if (!isfinite(t0) || !isfinite(t1)) return GA_ERR_NOTFINITE;
-    if (!(t0 >= p->t[0] && t1 <= p->t[p->n - 1] && t0 <= t1)) return GA_ERR_ARG;
-    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_ERR_ARG;
-    s->path = p; s->eval = ev; s->step = step;
-    s->n = n; s->k = 0;
-    s->t0 = t0; s->t1 = t1;
+    if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT)
+        return GA_ERR_ARG;
+    if (!isfinite(t0) || !isfinite(t1))
+        return GA_ERR_NOTFINITE;
+    if (!(t0 >= p->t[0] && t1 <= p->t[p->n - 1] && t0 <= t1))
+        return GA_ERR_ARG;
+    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0))
+        return GA_ERR_ARG;
+    s->path = p;
+    s->eval = ev;
+    s->step = step;
+    s->n = n;
+    s->k = 0;
+    s->t0 = t0;
+    s->t1 = t1;
     s->dt = n > 1 ? (t1 - t0) / (double)(n - 1) : 0.0;
-    s->seg = SIZE_MAX; s->since = 0; s->grid = 0;
+    s->seg = SIZE_MAX;
+    s->since = 0;
+    s->grid = 0;
     return GA_OK;
 }
 
 int ga_path_stepper_next(ga_path_stepper *s, void *out)
 {
-    if (!s || !out || s->k >= s->n) return GA_ERR_ARG;
+    if (!s || !out || s->k >= s->n)
+        return GA_ERR_ARG;
     const ga_path *p = s->path;
     double t = s->k + 1 == s->n ? s->t1 : s->t0 + (double)s->k * s->dt, u;
     size_t seg = s->seg;
@@ -691,26 +768,29 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
         }
     }
     /* DIRECT and EULER checked their own results (finite_elem) */
-    if (st == GA_OK) ++s->k;
+    if (st == GA_OK)
+        ++s->k;
     return st;
 }
 
-int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
-                           double t0, double t1, void *out)
+int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
+                           void *out)
 {
     ga_path_stepper s;
     int st = ga_path_stepper_init(p, ev, step, n, t0, t1, &s);
-    if (!out && st == GA_OK) st = GA_ERR_ARG;
+    if (!out && st == GA_OK)
+        st = GA_ERR_ARG;
     for (size_t k = 0; st == GA_OK && k < n; ++k)
         st = ga_path_stepper_next(&s, (unsigned char *)out + k * p->group->elem_size);
     return st;
 }
 
-int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times,
-                   void *out)
+int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times, void *out)
 {
-    if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT) return GA_ERR_ARG;
-    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0)) return GA_ERR_ARG;
+    if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT)
+        return GA_ERR_ARG;
+    if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0))
+        return GA_ERR_ARG;
     size_t cur = SIZE_MAX, grid = 0;
     double A[MAXE];
     for (size_t k = 0; k < n; ++k) {
@@ -721,7 +801,8 @@ int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const do
         if (st == GA_OK)
             st = ev == GA_EVAL_EULER ? euler_sample(p, step, &cur, &grid, A, seg, u, o)
                                      : eval_direct(p, seg, u, o); /* both checked */
-        if (st) return st;
+        if (st)
+            return st;
     }
     return GA_OK;
 }

@@ -44,16 +44,18 @@
 
 #define EPS DBL_EPSILON
 
-typedef struct { long double w, x, y, z; } lq;
-typedef struct { lq r, d; } ldq;
+typedef struct {
+    long double w, x, y, z;
+} lq;
+typedef struct {
+    lq r, d;
+} ldq;
 
 static lq lq_of(ga_quat q) { return (lq){q.w, q.x, q.y, q.z}; }
 static lq lq_mul(lq a, lq b)
 {
-    return (lq){a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-                a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-                a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-                a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+    return (lq){a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+                a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
 }
 static lq lq_add(lq a, lq b) { return (lq){a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z}; }
 static lq lq_conj(lq a) { return (lq){a.w, -a.x, -a.y, -a.z}; }
@@ -126,9 +128,9 @@ int main(int argc, char **argv)
     /* rotation 1e-3 rad about (1, 2, 2)/3; translation 1e-3 across the axis,
        1e-6 along it: a circle of radius ~1 climbing 1e-6 a step */
     ga_vec3 u = {1.0 / 3, 2.0 / 3, 2.0 / 3}, across = {2.0 / 3, 1.0 / 3, -2.0 / 3};
-    ga_twist xi = {tk_scale(u, 1e-3),
-                   {1e-3 * across.x + 1e-6 * u.x, 1e-3 * across.y + 1e-6 * u.y,
-                    1e-3 * across.z + 1e-6 * u.z}};
+    ga_twist xi = {
+        tk_scale(u, 1e-3),
+        {1e-3 * across.x + 1e-6 * u.x, 1e-3 * across.y + 1e-6 * u.y, 1e-3 * across.z + 1e-6 * u.z}};
     ga_rotor M = ga_rotor_exp(ga_twist_to_generator(xi));
     ldq Mq = ldq_of(M), ref = ldq_of(ga_rotor_identity());
     ga_rotor R = ga_rotor_identity(), raw = R;
@@ -136,8 +138,7 @@ int main(int argc, char **argv)
     tk_check c_group = tk_begin("normalised chain: group error at the checkpoints", 4 * EPS);
     tk_check c_pose = tk_begin("normalised chain: pose error <= k 16 EPS (1 + 2 T)", 0);
     printf("soak_chain: %ld steps of a screw of 1e-3 rad, 1e-3 across, 1e-6 along\n", n);
-    printf("%10s %12s %12s %12s %12s %9s\n", "steps", "group", "pose", "raw group", "raw pose",
-           "|t|");
+    printf("%10s %12s %12s %12s %12s %9s\n", "steps", "group", "pose", "raw group", "raw pose", "|t|");
     for (long k = 1; k <= n; k++) {
         ga_rotor P = ga_rotor_mul(M, R);
         int st = ga_rotor_normalize(P, &R);
@@ -163,7 +164,7 @@ int main(int argc, char **argv)
     tk_end(&c_pose);
     printf("     (group error %.2f EPS; pose bound at the end %.3e)\n", c_group.worst / EPS,
            (double)n * 16 * EPS * (1 + 2 * T));
-    printf("unnormalised chain (reported only): worst group error %.3e, worst pose error %.3e\n",
-           w_raw_group, w_raw_pose);
+    printf("unnormalised chain (reported only): worst group error %.3e, worst pose error %.3e\n", w_raw_group,
+           w_raw_pose);
     return tk_finish("soak_chain");
 }

@@ -28,8 +28,7 @@ static double gen_dist(ga_generator a, ga_generator b)
 {
     const double *x = &a.e12, *y = &b.e12;
     double d = 0.0;
-    for (int i = 0; i < 6; i++)
-        d = tk_max(d, fabs(x[i] - y[i]));
+    for (int i = 0; i < 6; i++) d = tk_max(d, fabs(x[i] - y[i]));
     return d;
 }
 

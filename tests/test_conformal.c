@@ -27,8 +27,7 @@ static void check_status(const char *name, int got, int want) { tk_add_status(tk
 static ga_mv rand_mv(tk_rng *t)
 {
     ga_mv a;
-    for (int i = 0; i < 32; i++)
-        a.c[i] = tk_range(t, -1, 1);
+    for (int i = 0; i < 32; i++) a.c[i] = tk_range(t, -1, 1);
     return a;
 }
 static ga_vec3 rand_vec3(tk_rng *t, double s)
@@ -45,8 +44,7 @@ static double maxdiff(ga_mv a, ga_mv b) { return tk_mv_maxabs(ga_mv_sub(a, b)); 
 static double sumabs(ga_mv a)
 {
     double s = 0;
-    for (int i = 0; i < 32; i++)
-        s += fabs(a.c[i]);
+    for (int i = 0; i < 32; i++) s += fabs(a.c[i]);
     return s;
 }
 static ga_vec3 add3(ga_vec3 a, ga_vec3 b) { return (ga_vec3){a.x + b.x, a.y + b.y, a.z + b.z}; }
@@ -64,8 +62,7 @@ static double vmax3(ga_vec3 a) { return tk_max(fabs(a.x), tk_max(fabs(a.y), fabs
 static int popcount(unsigned m)
 {
     int k = 0;
-    for (; m; m >>= 1)
-        k += m & 1;
+    for (; m; m >>= 1) k += m & 1;
     return k;
 }
 
@@ -82,7 +79,8 @@ static void test_table(void)
         for (int j = 1; j <= 5; j++) {
             if (i == j)
                 continue;
-            ga_mv ij = ga_mv_gp(ga_mv_blade(i), ga_mv_blade(j)), ji = ga_mv_gp(ga_mv_blade(j), ga_mv_blade(i));
+            ga_mv ij = ga_mv_gp(ga_mv_blade(i), ga_mv_blade(j)),
+                  ji = ga_mv_gp(ga_mv_blade(j), ga_mv_blade(i));
             check("anticommute e_i e_j = -e_j e_i", tk_mv_maxabs(ga_mv_add(ij, ji)), 0);
         }
     /* every blade is the product of its vectors in increasing order: with
@@ -93,8 +91,7 @@ static void test_table(void)
             if (ga_blade_mask(b) & (1u << k))
                 p = ga_mv_gp(p, ga_mv_blade(1 + k));
         check("blade = ordered product of its vectors", maxdiff(p, ga_mv_blade(b)), 0);
-        check("blade grade = popcount of mask",
-              ga_blade_grade(b) == popcount(ga_blade_mask(b)) ? 0 : 1, 0);
+        check("blade grade = popcount of mask", ga_blade_grade(b) == popcount(ga_blade_mask(b)) ? 0 : 1, 0);
     }
 }
 
@@ -105,13 +102,15 @@ static void test_products(tk_rng *t)
        most gamma(33) * 32; (ab)c then errs by at most 2 gamma(33) 1024, and the
        difference of the two bracketings by twice that. */
     const double tol_assoc = 4 * gamma_k(33) * 1024;
-    const double tol_dist = 2 * gamma_k(34) * 64;  /* |b + c|_i <= 2: one sum more */
-    const double tol_one = 2 * gamma_k(33) * 32;   /* two orders of the same 32-term sums */
+    const double tol_dist = 2 * gamma_k(34) * 64; /* |b + c|_i <= 2: one sum more */
+    const double tol_one = 2 * gamma_k(33) * 32;  /* two orders of the same 32-term sums */
     for (int trial = 0; trial < 2000; trial++) {
         ga_mv a = rand_mv(t), b = rand_mv(t), c = rand_mv(t);
         ga_mv ab = ga_mv_gp(a, b);
-        check("associativity (ab)c = a(bc)", maxdiff(ga_mv_gp(ab, c), ga_mv_gp(a, ga_mv_gp(b, c))), tol_assoc);
-        check("distributivity a(b+c) = ab+ac", maxdiff(ga_mv_gp(a, ga_mv_add(b, c)), ga_mv_add(ab, ga_mv_gp(a, c))), tol_dist);
+        check("associativity (ab)c = a(bc)", maxdiff(ga_mv_gp(ab, c), ga_mv_gp(a, ga_mv_gp(b, c))),
+              tol_assoc);
+        check("distributivity a(b+c) = ab+ac",
+              maxdiff(ga_mv_gp(a, ga_mv_add(b, c)), ga_mv_add(ab, ga_mv_gp(a, c))), tol_dist);
         check("distributivity (b+c)a = ba+ca",
               maxdiff(ga_mv_gp(ga_mv_add(b, c), a), ga_mv_add(ga_mv_gp(b, a), ga_mv_gp(c, a))), tol_dist);
         check("reverse(ab) = reverse(b) reverse(a)",
@@ -122,8 +121,7 @@ static void test_products(tk_rng *t)
               maxdiff(ga_mv_conjugate(ab), ga_mv_gp(ga_mv_conjugate(b), ga_mv_conjugate(a))), tol_one);
         check("sp(a,b) = <ab>_0", fabs(ga_mv_sp(a, b) - ab.c[GA_BLADE_SCALAR]), tol_one);
         ga_mv sum = ga_mv_zero();
-        for (int k = 0; k <= 5; k++)
-            sum = ga_mv_add(sum, ga_mv_grade(a, k));
+        for (int k = 0; k <= 5; k++) sum = ga_mv_add(sum, ga_mv_grade(a, k));
         check("sum of grade parts = a", maxdiff(sum, a), 0);
         /* outer product and left contraction of homogeneous parts are grade parts of
            the geometric product: A_r ^ B_s = <A_r B_s>_{r+s}, A_r _| B_s = <A_r B_s>_{s-r}
@@ -135,8 +133,8 @@ static void test_products(tk_rng *t)
                 ga_mv ar = ga_mv_grade(a, r), bs = ga_mv_grade(b, s), g = ga_mv_gp(ar, bs);
                 ga_mv o = ga_mv_op(ar, bs), l = ga_mv_lc(ar, bs);
                 check("A_r ^ B_s = <A_r B_s>_(r+s)", maxdiff(o, ga_mv_grade(g, r + s)), tol_one);
-                check("A_r _| B_s = <A_r B_s>_(s-r)", maxdiff(l, s >= r ? ga_mv_grade(g, s - r) : ga_mv_zero()),
-                      tol_one);
+                check("A_r _| B_s = <A_r B_s>_(s-r)",
+                      maxdiff(l, s >= r ? ga_mv_grade(g, s - r) : ga_mv_zero()), tol_one);
                 op = ga_mv_add(op, o);
                 lc = ga_mv_add(lc, l);
             }
@@ -155,8 +153,7 @@ static ga_mv rand_nonnull(tk_rng *t)
     for (;;) {
         ga_mv v = ga_mv_grade(rand_mv(t), 1);
         double e2 = 0;
-        for (int i = 1; i <= 5; i++)
-            e2 += v.c[i] * v.c[i];
+        for (int i = 1; i <= 5; i++) e2 += v.c[i] * v.c[i];
         if (fabs(ga_mv_sp(v, v)) >= 0.25 * e2 && e2 > 0.01)
             return v;
     }
@@ -190,7 +187,8 @@ static void test_versors(tk_rng *t)
         check("versor V^-1 V = 1", maxdiff(ga_mv_gp(Vi, V), ga_mv_scalar(1)), tol);
     }
     /* what has no inverse: zero divisors (x y = 0 with y != 0 rules out x^-1) */
-    ga_mv n = ga_mv_n(), one_e45 = ga_mv_add(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E45)), out = ga_mv_scalar(42);
+    ga_mv n = ga_mv_n(), one_e45 = ga_mv_add(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E45)),
+          out = ga_mv_scalar(42);
     check("n n = 0 (n is a zero divisor)", tk_mv_maxabs(ga_mv_gp(n, n)), 0);
     check("(1+e45)(1-e45) = 0 (a zero divisor)",
           tk_mv_maxabs(ga_mv_gp(one_e45, ga_mv_sub(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E45)))), 0);
@@ -215,12 +213,18 @@ static void test_model(tk_rng *t)
     check("n^2 = 0", tk_mv_maxabs(ga_mv_gp(n, n)), 0);
     check("nbar^2 = 0", tk_mv_maxabs(ga_mv_gp(nb, nb)), 0);
     check("n.nbar = 2", fabs(ga_mv_sp(n, nb) - 2), 0);
-    check("n nbar = 2 - 2 e45", maxdiff(ga_mv_gp(n, nb), ga_mv_sub(ga_mv_scalar(2), ga_mv_scale(ga_mv_blade(GA_BLADE_E45), 2))), 0);
+    check("n nbar = 2 - 2 e45",
+          maxdiff(ga_mv_gp(n, nb), ga_mv_sub(ga_mv_scalar(2), ga_mv_scale(ga_mv_blade(GA_BLADE_E45), 2))), 0);
     check("e4^2 = 1, e5^2 = -1",
           fabs(ga_mv_sp(ga_mv_e4(), ga_mv_e4()) - 1) + fabs(ga_mv_sp(ga_mv_e5(), ga_mv_e5()) + 1), 0);
     check("I3^2 = -1, I5^2 = -1",
-          maxdiff(ga_mv_gp(ga_mv_i3(), ga_mv_i3()), ga_mv_scalar(-1)) + maxdiff(ga_mv_gp(ga_mv_i5(), ga_mv_i5()), ga_mv_scalar(-1)), 0);
-    check("I3 = e1 e2 e3", maxdiff(ga_mv_i3(), ga_mv_gp(ga_mv_gp(ga_mv_blade(GA_BLADE_E1), ga_mv_blade(GA_BLADE_E2)), ga_mv_blade(GA_BLADE_E3))), 0);
+          maxdiff(ga_mv_gp(ga_mv_i3(), ga_mv_i3()), ga_mv_scalar(-1)) +
+              maxdiff(ga_mv_gp(ga_mv_i5(), ga_mv_i5()), ga_mv_scalar(-1)),
+          0);
+    check("I3 = e1 e2 e3",
+          maxdiff(ga_mv_i3(), ga_mv_gp(ga_mv_gp(ga_mv_blade(GA_BLADE_E1), ga_mv_blade(GA_BLADE_E2)),
+                                       ga_mv_blade(GA_BLADE_E3))),
+          0);
     check("F(0) = -nbar/2", maxdiff(ga_point_up((ga_vec3){0, 0, 0}), ga_mv_scale(nb, -0.5)), 0);
 
     for (int trial = 0; trial < 20000; trial++) {
@@ -372,9 +376,11 @@ static void test_objects(tk_rng *t)
         double w = pow(10, tk_range(t, -6, 6));
         st = ga_plane_params(ga_mv_scale(ga_plane_dual(m, d), w), &om, &od);
         check_status("plane (dual) read back: status", st, GA_OK);
-        check("plane (dual) read back: normal, distance", tk_max(dist3(om, m), fabs(od - d) / (fabs(d) + 1)), 8 * U);
+        check("plane (dual) read back: normal, distance", tk_max(dist3(om, m), fabs(od - d) / (fabs(d) + 1)),
+              8 * U);
         st = ga_plane_params(ga_mv_scale(ga_plane_dual(m, d), -w), &om, &od);
-        check("plane -(m + d n) reads -m, -d", tk_max(dist3(om, mul3(m, -1)), fabs(od + d) / (fabs(d) + 1)), 8 * U);
+        check("plane -(m + d n) reads -m, -d", tk_max(dist3(om, mul3(m, -1)), fabs(od + d) / (fabs(d) + 1)),
+              8 * U);
 
         /* sphere: centre c, radius r, four points c + r v_k with v_k the vertices
            of a randomly turned regular tetrahedron, each moved by up to 0.3 */
@@ -442,40 +448,46 @@ static void test_bad_input(void)
                  GA_ERR_DOMAIN);
     check_status("up of |x|/lambda = 1e100, lambda 1e-100 overflows",
                  ga_point_up_scaled((ga_vec3){1, 0, 0}, 1e-200, &up), GA_ERR_DOMAIN);
-    check_status("failed up leaves its output untouched", memcmp(&up, &up0, sizeof up) == 0 ? GA_OK : -99, GA_OK);
-    check_status("point with x NaN is NaN", ga_point_down(ga_point_up((ga_vec3){NAN, 0, 0}), &out), GA_ERR_NOTFINITE);
+    check_status("failed up leaves its output untouched", memcmp(&up, &up0, sizeof up) == 0 ? GA_OK : -99,
+                 GA_OK);
+    check_status("point with x NaN is NaN", ga_point_down(ga_point_up((ga_vec3){NAN, 0, 0}), &out),
+                 GA_ERR_NOTFINITE);
 
     /* not finite points */
     ga_mv e1 = ga_mv_blade(GA_BLADE_E1);
     check_status("down(n): at infinity", ga_point_down(ga_mv_n(), &out), GA_ERR_NOTPOINT);
     check_status("down(0)", ga_point_down(ga_mv_zero(), &out), GA_ERR_NOTPOINT);
     check_status("down(e1): not null, X.n = 0", ga_point_down(e1, &out), GA_ERR_NOTPOINT);
-    check_status("down(e1 - nbar/2): not null", ga_point_down(ga_mv_sub(e1, ga_mv_scale(ga_mv_nbar(), 0.5)), &out),
-                 GA_ERR_NOTPOINT);
+    check_status("down(e1 - nbar/2): not null",
+                 ga_point_down(ga_mv_sub(e1, ga_mv_scale(ga_mv_nbar(), 0.5)), &out), GA_ERR_NOTPOINT);
     check_status("down(e4): not null", ga_point_down(ga_mv_e4(), &out), GA_ERR_NOTPOINT);
     check_status("down(e5): not null", ga_point_down(ga_mv_e5(), &out), GA_ERR_NOTPOINT);
     check_status("down(bivector e12)", ga_point_down(ga_mv_blade(GA_BLADE_E12), &out), GA_ERR_NOTPOINT);
-    check_status("down(F(x) + e12): grade 2 present", ga_point_down(ga_mv_add(X, ga_mv_blade(GA_BLADE_E12)), &out),
-                 GA_ERR_NOTPOINT);
+    check_status("down(F(x) + e12): grade 2 present",
+                 ga_point_down(ga_mv_add(X, ga_mv_blade(GA_BLADE_E12)), &out), GA_ERR_NOTPOINT);
     check_status("down(F(x) + 1): grade 0 present", ga_point_down(ga_mv_add(X, ga_mv_scalar(1)), &out),
                  GA_ERR_NOTPOINT);
-    check_status("down(point pair)", ga_point_down(ga_pointpair_from_points(x, sentinel), &out), GA_ERR_NOTPOINT);
+    check_status("down(point pair)", ga_point_down(ga_pointpair_from_points(x, sentinel), &out),
+                 GA_ERR_NOTPOINT);
     /* the tolerance GA_POINT_TOL: 1e-6 off null is rejected, 1e-12 (rounding) accepted */
     double s = ga_mv_maxabs(X);
-    check_status("down(F(x) + 1e-6 s e1): not null", ga_point_down(ga_mv_add(X, ga_mv_scale(e1, 1e-6 * s)), &out),
-                 GA_ERR_NOTPOINT);
-    check_status("down(F(x) + 1e-12 s e1): accepted", ga_point_down(ga_mv_add(X, ga_mv_scale(e1, 1e-12 * s)), &out),
-                 GA_OK);
-    check_status("down(F(x) + 1e-6 s e45): grade 2", ga_point_down(ga_mv_add(X, ga_mv_scale(ga_mv_blade(GA_BLADE_E45), 1e-6 * s)), &out),
+    check_status("down(F(x) + 1e-6 s e1): not null",
+                 ga_point_down(ga_mv_add(X, ga_mv_scale(e1, 1e-6 * s)), &out), GA_ERR_NOTPOINT);
+    check_status("down(F(x) + 1e-12 s e1): accepted",
+                 ga_point_down(ga_mv_add(X, ga_mv_scale(e1, 1e-12 * s)), &out), GA_OK);
+    check_status("down(F(x) + 1e-6 s e45): grade 2",
+                 ga_point_down(ga_mv_add(X, ga_mv_scale(ga_mv_blade(GA_BLADE_E45), 1e-6 * s)), &out),
                  GA_ERR_NOTPOINT);
     /* far points: |x| / lambda beyond sqrt(2 / GA_POINT_TOL) ~ 4.5e4 reads as infinity */
     ga_vec3 far = {1e5, 0, 0};
-    check_status("down(F(1e5 e1)), lambda 1: at infinity", ga_point_down(ga_point_up(far), &out), GA_ERR_NOTPOINT);
+    check_status("down(F(1e5 e1)), lambda 1: at infinity", ga_point_down(ga_point_up(far), &out),
+                 GA_ERR_NOTPOINT);
     check_status("down(F(1e5 e1)), lambda 10: a point",
                  ga_point_up_scaled(far, 10, &X) == GA_OK ? ga_point_down_scaled(X, 10, &out) : -99, GA_OK);
     check("down(F(1e5 e1)), lambda 10 = 1e5 e1", dist3(out, far), 32 * U * 1e5);
     ga_vec3 near_limit = {3e4, -1e4, 2e3};
-    check_status("down(F(3e4, -1e4, 2e3)), lambda 1: a point", ga_point_down(ga_point_up(near_limit), &out), GA_OK);
+    check_status("down(F(3e4, -1e4, 2e3)), lambda 1: a point", ga_point_down(ga_point_up(near_limit), &out),
+                 GA_OK);
     check("down(F(3e4, -1e4, 2e3)) = x (full accuracy far out)", dist3(out, near_limit),
           32 * U * norm3(near_limit));
 
@@ -483,20 +495,25 @@ static void test_bad_input(void)
     out = o2 = sentinel;
     r = 7;
     ga_vec3 a = {0.1, 0.2, 0.3}, b = {1.3, -0.4, 0.5}, c = {-0.7, 0.9, 1.1}, d = {0.4, -1.2, -0.6};
-    ga_mv S = ga_sphere_from_points(a, b, c, d), P = ga_plane_from_points(a, b, c), L = ga_line_from_points(a, b), C = ga_circle_from_points(a, b, c);
+    ga_mv S = ga_sphere_from_points(a, b, c, d), P = ga_plane_from_points(a, b, c),
+          L = ga_line_from_points(a, b), C = ga_circle_from_points(a, b, c);
     ga_mv PP = ga_pointpair_from_points(a, b);
-    ga_mv wrong[] = {ga_mv_zero(), ga_mv_scalar(2), ga_mv_blade(GA_BLADE_E12345), ga_mv_add(X, PP), ga_mv_add(S, C)};
+    ga_mv wrong[] = {ga_mv_zero(), ga_mv_scalar(2), ga_mv_blade(GA_BLADE_E12345), ga_mv_add(X, PP),
+                     ga_mv_add(S, C)};
     for (unsigned i = 0; i < sizeof wrong / sizeof wrong[0]; i++) {
         check_status("sphere_params: wrong grade", ga_sphere_params(wrong[i], &out, &r), GA_ERR_NOTBLADE);
         check_status("plane_params: wrong grade", ga_plane_params(wrong[i], &out, &r), GA_ERR_NOTBLADE);
         check_status("line_params: wrong grade", ga_line_params(wrong[i], &out, &o2), GA_ERR_NOTBLADE);
-        check_status("point_pair_points: wrong grade", ga_pointpair_points(wrong[i], &out, &o2), GA_ERR_NOTBLADE);
-        check_status("circle_params: wrong grade", ga_circle_params(wrong[i], &out, &r, &o2), GA_ERR_NOTBLADE);
+        check_status("point_pair_points: wrong grade", ga_pointpair_points(wrong[i], &out, &o2),
+                     GA_ERR_NOTBLADE);
+        check_status("circle_params: wrong grade", ga_circle_params(wrong[i], &out, &r, &o2),
+                     GA_ERR_NOTBLADE);
     }
     check_status("sphere_params(bivector)", ga_sphere_params(PP, &out, &r), GA_ERR_NOTBLADE);
     check_status("sphere_params(trivector)", ga_sphere_params(C, &out, &r), GA_ERR_NOTBLADE);
     check_status("sphere_params(direct plane)", ga_sphere_params(P, &out, &r), GA_ERR_NOTBLADE);
-    check_status("sphere_params(dual plane)", ga_sphere_params(ga_plane_dual(x, 1), &out, &r), GA_ERR_NOTBLADE);
+    check_status("sphere_params(dual plane)", ga_sphere_params(ga_plane_dual(x, 1), &out, &r),
+                 GA_ERR_NOTBLADE);
     check_status("sphere_params(n)", ga_sphere_params(ga_mv_n(), &out, &r), GA_ERR_NOTBLADE);
     ga_mv imag = ga_point_up(x); /* F(c) + (r^2/2) n: an imaginary sphere */
     imag.c[GA_BLADE_E4] += 2;
@@ -505,7 +522,8 @@ static void test_bad_input(void)
     check_status("plane_params(bivector)", ga_plane_params(PP, &out, &r), GA_ERR_NOTBLADE);
     check_status("plane_params(trivector)", ga_plane_params(L, &out, &r), GA_ERR_NOTBLADE);
     check_status("plane_params(direct sphere)", ga_plane_params(S, &out, &r), GA_ERR_NOTBLADE);
-    check_status("plane_params(dual sphere)", ga_plane_params(ga_sphere_dual(x, 1), &out, &r), GA_ERR_NOTBLADE);
+    check_status("plane_params(dual sphere)", ga_plane_params(ga_sphere_dual(x, 1), &out, &r),
+                 GA_ERR_NOTBLADE);
     check_status("plane_params(n): plane at infinity", ga_plane_params(ga_mv_n(), &out, &r), GA_ERR_NOTBLADE);
     check_status("line_params(vector)", ga_line_params(X, &out, &o2), GA_ERR_NOTBLADE);
     check_status("line_params(bivector)", ga_line_params(PP, &out, &o2), GA_ERR_NOTBLADE);
@@ -518,13 +536,15 @@ static void test_bad_input(void)
     check_status("line_params(sum of two skew lines)", ga_line_params(nonblade, &out, &o2), GA_ERR_NOTBLADE);
     check_status("point_pair_points(vector)", ga_pointpair_points(X, &out, &o2), GA_ERR_NOTBLADE);
     check_status("point_pair_points(trivector)", ga_pointpair_points(C, &out, &o2), GA_ERR_NOTBLADE);
-    check_status("point_pair_points(flat point F(a)^n)", ga_pointpair_points(ga_mv_op(X, ga_mv_n()), &out, &o2),
-                 GA_ERR_NOTBLADE);
+    check_status("point_pair_points(flat point F(a)^n)",
+                 ga_pointpair_points(ga_mv_op(X, ga_mv_n()), &out, &o2), GA_ERR_NOTBLADE);
     check_status("point_pair_points(e12 + e34): not a blade",
-                 ga_pointpair_points(ga_mv_add(ga_mv_blade(GA_BLADE_E12), ga_mv_blade(GA_BLADE_E34)), &out, &o2), GA_ERR_NOTBLADE);
+                 ga_pointpair_points(ga_mv_add(ga_mv_blade(GA_BLADE_E12), ga_mv_blade(GA_BLADE_E34)), &out,
+                                     &o2),
+                 GA_ERR_NOTBLADE);
     /* imaginary point pair: dual to an imaginary sphere meeting two planes through its centre */
     ga_mv ipp = ga_mv_undual(ga_mv_op(ga_mv_op(imag, ga_plane_dual((ga_vec3){1, 0, 0}, x.x)),
-                                ga_plane_dual((ga_vec3){0, 1, 0}, x.y)));
+                                      ga_plane_dual((ga_vec3){0, 1, 0}, x.y)));
     check_status("point_pair_points(imaginary pair)", ga_pointpair_points(ipp, &out, &o2), GA_ERR_NOTBLADE);
     check_status("circle_params(vector)", ga_circle_params(X, &out, &r, &o2), GA_ERR_NOTBLADE);
     check_status("circle_params(bivector)", ga_circle_params(PP, &out, &r, &o2), GA_ERR_NOTBLADE);
@@ -532,14 +552,19 @@ static void test_bad_input(void)
     check_status("circle_params(line)", ga_circle_params(L, &out, &r, &o2), GA_ERR_NOTBLADE);
     /* (circles sharing two points add to a circle: F(b)^F(c)^(F(a) + F(d))) */
     check_status("circle_params(sum of two disjoint circles): not a blade",
-                 ga_circle_params(ga_mv_add(C, ga_circle_from_points(d, add3(d, a), add3(d, b))), &out, &r, &o2), GA_ERR_NOTBLADE);
+                 ga_circle_params(ga_mv_add(C, ga_circle_from_points(d, add3(d, a), add3(d, b))), &out, &r,
+                                  &o2),
+                 GA_ERR_NOTBLADE);
     ga_mv icirc = ga_mv_undual(ga_mv_op(imag, ga_plane_dual((ga_vec3){0, 0, 1}, x.z)));
     check_status("circle_params(imaginary circle)", ga_circle_params(icirc, &out, &r, &o2), GA_ERR_NOTBLADE);
     /* collinear points make a line, not a circle; coplanar ones a plane */
     check_status("circle_params(circle through collinear points)",
-                 ga_circle_params(ga_circle_from_points(a, b, add3(a, mul3(sub3(b, a), 2))), &out, &r, &o2), GA_ERR_NOTBLADE);
+                 ga_circle_params(ga_circle_from_points(a, b, add3(a, mul3(sub3(b, a), 2))), &out, &r, &o2),
+                 GA_ERR_NOTBLADE);
     check_status("sphere_params(sphere through coplanar points)",
-                 ga_sphere_params(ga_sphere_from_points(a, b, c, add3(a, add3(sub3(b, a), sub3(c, a)))), &out, &r), GA_ERR_NOTBLADE);
+                 ga_sphere_params(ga_sphere_from_points(a, b, c, add3(a, add3(sub3(b, a), sub3(c, a)))), &out,
+                                  &r),
+                 GA_ERR_NOTBLADE);
 
     check("failed read-backs leave outputs untouched",
           dist3(out, sentinel) + dist3(o2, sentinel) + fabs(r - 7), 0);

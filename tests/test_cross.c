@@ -31,14 +31,14 @@
 
 #define N_PER_FAMILY 11112 /* x 9 families: 1e5 twists */
 
-static const int families[] = {TK_IDENTITY, TK_TRANSLATION, TK_ROT_TINY, TK_ROT_SMALL, TK_ROT_QUARTER,
-                               TK_ROT_NEAR_PI, TK_ROT_PI, TK_TINY_UNDER_LARGE, TK_SCREW};
+static const int families[] = {TK_IDENTITY,  TK_TRANSLATION,      TK_ROT_TINY,
+                               TK_ROT_SMALL, TK_ROT_QUARTER,      TK_ROT_NEAR_PI,
+                               TK_ROT_PI,    TK_TINY_UNDER_LARGE, TK_SCREW};
 
 static double mat_err(ga_mat4 a, ga_mat4 b, ga_mat4 ref)
 {
     double e = 0.0;
-    for (int i = 0; i < 16; i++)
-        e = tk_max(e, fabs(a.m[i] - b.m[i]));
+    for (int i = 0; i < 16; i++) e = tk_max(e, fabs(a.m[i] - b.m[i]));
     double t = sqrt(ref.m[3] * ref.m[3] + ref.m[7] * ref.m[7] + ref.m[11] * ref.m[11]);
     return e / fmax(1.0, t);
 }
@@ -134,10 +134,10 @@ int main(void)
     tk_end(&back_near);
     tk_end(&back);
     char what[128];
-    printf("     logm at exactly pi: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n",
-           pi_domain, pi_cases);
-    printf("     logm at pi - 1e-9: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n",
-           near_domain, near_cases);
+    printf("     logm at exactly pi: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n", pi_domain,
+           pi_cases);
+    printf("     logm at pi - 1e-9: GA_ERR_DOMAIN in %ld of %ld cases, the rest checked above\n", near_domain,
+           near_cases);
     snprintf(what, sizeof what, "no unexpected failure status (%ld)", status_fail);
     tk_expect(status_fail == 0, what);
     return tk_finish("test_cross");

@@ -66,8 +66,8 @@
 #include <stdlib.h>
 
 #define U (DBL_EPSILON / 2) /* unit roundoff 2^-53 */
-#define ETA 0x1p-1074      /* the smallest subnormal: a rounding's absolute error below DBL_MIN */
-#define C_OP 32.0          /* roundings of one operation, in units of u (see (R)) */
+#define ETA 0x1p-1074       /* the smallest subnormal: a rounding's absolute error below DBL_MIN */
+#define C_OP 32.0           /* roundings of one operation, in units of u (see (R)) */
 #define N_PER_FAMILY 128
 #define MAXS (TK_FAMILIES * N_PER_FAMILY)
 #define DMAX GA_GROUP_MAX_DIM
@@ -76,27 +76,23 @@
 static ga_mat4 mmul(ga_mat4 a, ga_mat4 b) { return ga_mat4_mul(a, b); }
 static ga_mat4 mabs(ga_mat4 a)
 {
-    for (int i = 0; i < 16; i++)
-        a.m[i] = fabs(a.m[i]);
+    for (int i = 0; i < 16; i++) a.m[i] = fabs(a.m[i]);
     return a;
 }
 static ga_mat4 madd(ga_mat4 a, ga_mat4 b)
 {
-    for (int i = 0; i < 16; i++)
-        a.m[i] += b.m[i];
+    for (int i = 0; i < 16; i++) a.m[i] += b.m[i];
     return a;
 }
 static ga_mat4 mscale(ga_mat4 a, double k)
 {
-    for (int i = 0; i < 16; i++)
-        a.m[i] *= k;
+    for (int i = 0; i < 16; i++) a.m[i] *= k;
     return a;
 }
 static double mmax(ga_mat4 a)
 {
     double e = 0;
-    for (int i = 0; i < 16; i++)
-        e = tk_max(e, fabs(a.m[i]));
+    for (int i = 0; i < 16; i++) e = tk_max(e, fabs(a.m[i]));
     return e;
 }
 /* N(G) of (R): each entry replaced by the largest magnitude in its column. */
@@ -105,10 +101,8 @@ static ga_mat4 colmax(ga_mat4 g)
     ga_mat4 n;
     for (int j = 0; j < 4; j++) {
         double c = 0;
-        for (int i = 0; i < 4; i++)
-            c = fmax(c, fabs(g.m[4 * i + j]));
-        for (int i = 0; i < 4; i++)
-            n.m[4 * i + j] = c;
+        for (int i = 0; i < 4; i++) c = fmax(c, fabs(g.m[4 * i + j]));
+        for (int i = 0; i < 4; i++) n.m[4 * i + j] = c;
     }
     return n;
 }
@@ -124,8 +118,7 @@ static ga_mat4 blockmax(ga_mat4 x)
             else
                 t = fmax(t, fabs(x.m[4 * i + j]));
     ga_mat4 n;
-    for (int i = 0; i < 16; i++)
-        n.m[i] = i % 4 < 3 ? a : t;
+    for (int i = 0; i < 16; i++) n.m[i] = i % 4 < 3 ? a : t;
     return n;
 }
 /* max_ij |a_ij - b_ij| / s_ij (0/0 = 0; NaN or x/0 for x != 0: infinite) */
@@ -147,8 +140,7 @@ static double rel_err(ga_mat4 a, ga_mat4 b, ga_mat4 s)
  * its bound: its |a - b| / n and its bound / n). */
 static void add_entrywise(tk_check *c, ga_mat4 a, ga_mat4 b, ga_mat4 t, ga_mat4 n)
 {
-    for (int i = 0; i < 16; i++)
-        t.m[i] += C_OP * ETA;
+    for (int i = 0; i < 16; i++) t.m[i] += C_OP * ETA;
     int w = -1;
     double wr = -1, tmin = INFINITY;
     for (int i = 0; i < 16; i++) {
@@ -175,8 +167,7 @@ static double cond_lin(ga_mat4 g)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             double s = 0;
-            for (int k = 0; k < 3; k++)
-                s += g.m[4 * k + i] * g.m[4 * k + j];
+            for (int k = 0; k < 3; k++) s += g.m[4 * k + i] * g.m[4 * k + j];
             b[i][j] = s;
         }
     for (int sweep = 0; sweep < 30; sweep++) {
@@ -206,8 +197,8 @@ static double cond_lin(ga_mat4 g)
 }
 
 /* ---- algebra helpers -------------------------------------------------------------- */
-static const ga_group *G; /* the group under test */
-static int D;             /* its dim */
+static const ga_group *G;     /* the group under test */
+static int D;                 /* its dim */
 static ga_mat4 hat_abs[DMAX]; /* |hat(e_k)| */
 
 static void setup_group(const ga_group *g)
@@ -225,8 +216,7 @@ static ga_mat4 hat_of_abs(const double *z)
 {
     ga_mat4 h;
     memset(&h, 0, sizeof h);
-    for (int k = 0; k < D; k++)
-        h = madd(h, mscale(hat_abs[k], z[k]));
+    for (int k = 0; k < D; k++) h = madd(h, mscale(hat_abs[k], z[k]));
     return h;
 }
 /* Per algebra coordinate, the largest entry of s where hat(e_k) has one. */
@@ -246,8 +236,7 @@ static void jacobian(const double *x, double *J)
         double e[DMAX] = {0}, c[DMAX];
         e[j] = 1;
         G->dexp(x, e, c);
-        for (int i = 0; i < D; i++)
-            J[i * D + j] = c[i];
+        for (int i = 0; i < D; i++) J[i * D + j] = c[i];
     }
 }
 /* Gauss-Jordan with partial pivoting; 0 if singular. */
@@ -255,8 +244,7 @@ static int invert(const double *A, double *Ai)
 {
     double a[DMAX][2 * DMAX];
     for (int i = 0; i < D; i++)
-        for (int j = 0; j < 2 * D; j++)
-            a[i][j] = j < D ? A[i * D + j] : (j - D == i);
+        for (int j = 0; j < 2 * D; j++) a[i][j] = j < D ? A[i * D + j] : (j - D == i);
     for (int c = 0; c < D; c++) {
         int p = c;
         for (int i = c + 1; i < D; i++)
@@ -273,13 +261,11 @@ static int invert(const double *A, double *Ai)
             if (i == c)
                 continue;
             double f = a[i][c] / a[c][c];
-            for (int j = 0; j < 2 * D; j++)
-                a[i][j] -= f * a[c][j];
+            for (int j = 0; j < 2 * D; j++) a[i][j] -= f * a[c][j];
         }
     }
     for (int i = 0; i < D; i++)
-        for (int j = 0; j < D; j++)
-            Ai[i * D + j] = a[i][D + j] / a[i][i];
+        for (int j = 0; j < D; j++) Ai[i * D + j] = a[i][D + j] / a[i][i];
     return 1;
 }
 /* z = |M| b */
@@ -287,8 +273,7 @@ static void absmatvec(const double *M, const double *b, double *z)
 {
     for (int i = 0; i < D; i++) {
         z[i] = 0;
-        for (int j = 0; j < D; j++)
-            z[i] += fabs(M[i * D + j]) * b[j];
+        for (int j = 0; j < D; j++) z[i] += fabs(M[i * D + j]) * b[j];
     }
 }
 /* (J): the entrywise bound |E| |hat|(|J| b) on how far exp(x) moves when x
@@ -336,7 +321,9 @@ static void draw_samples(tk_rng *r, tk_check *c_status)
                bounds the imaginary parts of its eigenvalues (Bendixson) */
             double th = tk_norm(ga_twist_vee(X).w);
             s->where = f == TK_ROT_PI ? HALF_TURN : f == TK_BEYOND_PI ? BEYOND : PRINCIPAL;
-            s->margin = s->where == HALF_TURN ? 0 : s->where == BEYOND ? TK_PI - fabs(th - 2 * TK_PI) : TK_PI - th;
+            s->margin = s->where == HALF_TURN ? 0
+                      : s->where == BEYOND    ? TK_PI - fabs(th - 2 * TK_PI)
+                                              : TK_PI - th;
             int st = G->exp(s->x, s->e);
             tk_add_status(c_status, st, GA_OK);
             if (st != GA_OK)
@@ -433,7 +420,8 @@ static void check_exp_log(void)
     tk_end(&le);
     tk_end(&st_c);
     if (domain)
-        printf("     (GA_ERR_DOMAIN for %ld elements, all within %.2e rad of a half turn)\n", domain, domain_margin);
+        printf("     (GA_ERR_DOMAIN for %ld elements, all within %.2e rad of a half turn)\n", domain,
+               domain_margin);
 }
 
 /* g g^-1 = e = g^-1 g. The computed inverse is wrong by C_OP u kappa
@@ -442,7 +430,8 @@ static void check_exp_log(void)
  * |g^-1 g - I| <= 2 C_OP u kappa |g^-1| N(g). */
 static void check_inverse(void)
 {
-    tk_check a = tk_begin("g g^-1 = e, |D| / (|g| N(g^-1))", 0), b = tk_begin("g^-1 g = e, |D| / (|g^-1| N(g))", 0);
+    tk_check a = tk_begin("g g^-1 = e, |D| / (|g| N(g^-1))", 0),
+             b = tk_begin("g^-1 g = e, |D| / (|g^-1| N(g))", 0);
     ga_mat4 id = ga_mat4_identity();
     for (int i = 0; i < NS; i++) {
         sample *s = &S[i];
@@ -548,8 +537,7 @@ static void check_dexp(tk_rng *r)
     for (int i = 0; i < NS; i++) {
         sample *s = &S[i];
         double y[DMAX], jy[DMAX];
-        for (int k = 0; k < D; k++)
-            y[k] = tk_range(r, -1, 1);
+        for (int k = 0; k < D; k++) y[k] = tk_range(r, -1, 1);
         G->dexp(s->x, y, jy);
         ga_mat4 dd[2], noise;
         int ok = 1;
@@ -566,8 +554,7 @@ static void check_dexp(tk_rng *r)
                 break;
             }
             ga_mat4 mp = G->to_mat4(ep), mm = G->to_mat4(em), diff;
-            for (int k = 0; k < 16; k++)
-                diff.m[k] = (mp.m[k] - mm.m[k]) / (2 * step);
+            for (int k = 0; k < 16; k++) diff.m[k] = (mp.m[k] - mm.m[k]) / (2 * step);
             dd[q] = mmul(s->mi, diff);
             if (q == 0) {
                 double kap = fmax(s->kappa, fmax(cond_lin(mp), cond_lin(mm)));
@@ -605,12 +592,10 @@ static void check_mat4(void)
             tk_add(&rt, rel_err(G->to_mat4(e), s->m, colmax(s->m)));
         ga_mat4 bad = s->m;
         bad.m[14] = 0.5;
-        for (int j = 0; j < GA_GROUP_MAX_ELEM; j++)
-            e[j] = 12345.0;
+        for (int j = 0; j < GA_GROUP_MAX_ELEM; j++) e[j] = 12345.0;
         k = G->from_mat4(bad, e);
         int untouched = 1;
-        for (size_t j = 0; j < G->elem_size / sizeof(double); j++)
-            untouched &= e[j] == 12345.0;
+        for (size_t j = 0; j < G->elem_size / sizeof(double); j++) untouched &= e[j] == 12345.0;
         tk_add_bool(&rej, k != GA_OK && untouched);
     }
     tk_end(&rt);
@@ -632,18 +617,15 @@ static void check_hat_vee(void)
         ga_mat4 h = G->hat(s->x);
         int st = G->vee(h, x);
         double e = st == GA_OK ? 0 : INFINITY;
-        for (int k = 0; st == GA_OK && k < D; k++)
-            e = tk_max(e, fabs(x[k] - s->x[k]));
+        for (int k = 0; st == GA_OK && k < D; k++) e = tk_max(e, fabs(x[k] - s->x[k]));
         tk_add(&rt, e);
         for (int k = 12; k < 16; k++) {
             ga_mat4 b = h;
             b.m[k] = k % 2 ? 1e-300 : 1.0;
-            for (int j = 0; j < D; j++)
-                x[j] = 777.0;
+            for (int j = 0; j < D; j++) x[j] = 777.0;
             st = G->vee(b, x);
             int untouched = 1;
-            for (int j = 0; j < D; j++)
-                untouched &= x[j] == 777.0;
+            for (int j = 0; j < D; j++) untouched &= x[j] == 777.0;
             tk_add_status(&rows, untouched ? st : 99, GA_ERR_ARG);
         }
         if (G->rigid) {
@@ -651,12 +633,10 @@ static void check_hat_vee(void)
             double d = 1e-6 * fmax(1.0, mmax(h));
             b.m[1] += d; /* a symmetric pair, off the diagonal */
             b.m[4] += d;
-            for (int j = 0; j < D; j++)
-                x[j] = 777.0;
+            for (int j = 0; j < D; j++) x[j] = 777.0;
             st = G->vee(b, x);
             int untouched = 1;
-            for (int j = 0; j < D; j++)
-                untouched &= x[j] == 777.0;
+            for (int j = 0; j < D; j++) untouched &= x[j] == 777.0;
             tk_add_status(&sym, untouched ? st : 99, GA_ERR_ARG);
             b = h;
             b.m[10] += d; /* on the diagonal */
@@ -700,17 +680,13 @@ static void same_element(const double *x, const double *x2, tk_check *c)
     double b[DMAX], J2[DMAX * DMAX];
     if (G->rigid) {
         double w = norm3(x), w2 = norm3(x2), v = 0, v2 = 0;
-        for (int k = 0; k < 3; k++)
-            v = fmax(v, fabs(x[3 + k])), v2 = fmax(v2, fabs(x2[3 + k]));
+        for (int k = 0; k < 3; k++) v = fmax(v, fabs(x[3 + k])), v2 = fmax(v2, fabs(x2[3 + k]));
         double k = w > 0 ? w2 / w : 1;
-        for (int j = 0; j < 3; j++)
-            b[j] = 16 * U * fmax(w, w2), b[3 + j] = 16 * U * fmax(fmax(v, v2), k * v);
+        for (int j = 0; j < 3; j++) b[j] = 16 * U * fmax(w, w2), b[3 + j] = 16 * U * fmax(fmax(v, v2), k * v);
     } else {
         double sx = 0, sx2 = 0;
-        for (int k = 0; k < D; k++)
-            sx = fmax(sx, fabs(x[k])), sx2 = fmax(sx2, fabs(x2[k]));
-        for (int k = 0; k < D; k++)
-            b[k] = 16 * U * fmax(sx, sx2);
+        for (int k = 0; k < D; k++) sx = fmax(sx, fabs(x[k])), sx2 = fmax(sx2, fabs(x2[k]));
+        for (int k = 0; k < D; k++) b[k] = 16 * U * fmax(sx, sx2);
     }
     jacobian(x2, J2);
     ga_mat4 bound = madd(mscale(madd(colmax(m1), colmax(m2)), C_OP * U * fmax(cond_lin(m1), cond_lin(m2))),
@@ -735,8 +711,7 @@ static void check_half_turn_branch(void)
             memcpy(x2, x, sizeof x);
             G->half_turn(x2);
             double e = 0;
-            for (int k = 0; k < D; k++)
-                e = tk_max(e, fabs(x2[k] - x[k]));
+            for (int k = 0; k < D; k++) e = tk_max(e, fabs(x2[k] - x[k]));
             tk_add(&idem, e);
         }
         tk_end(&same);
@@ -768,8 +743,7 @@ static void check_half_turn_branch(void)
             memcpy(x, S[i].x, sizeof x);
             G->branch(S[i].x, x);
             double e = 0;
-            for (int k = 0; k < D; k++)
-                e = tk_max(e, fabs(x[k] - S[i].x[k]));
+            for (int k = 0; k < D; k++) e = tk_max(e, fabs(x[k] - S[i].x[k]));
             tk_add(&self, e);
         }
         tk_end(&same);
@@ -789,7 +763,8 @@ int main(int argc, char **argv)
         tk_check st = tk_begin("exp and inverse of every sample: status", 0);
         draw_samples(&r, &st);
         tk_end(&st);
-        printf("     (%d elements from the families of its algebra; %ld draws outside it)\n", NS, families_out);
+        printf("     (%d elements from the families of its algebra; %ld draws outside it)\n", NS,
+               families_out);
         check_exp_log();
         check_inverse();
         check_assoc_identity();

@@ -41,7 +41,7 @@ static ga_vec3 rvec(tk_rng *r, double s)
 static ga_mat4 rigid(ga_vec3 u, double th, ga_vec3 t)
 {
     double s = sin(th), c = 1.0 - cos(th);
-    double K[9] = { 0, -u.z, u.y, u.z, 0, -u.x, -u.y, u.x, 0 };
+    double K[9] = {0, -u.z, u.y, u.z, 0, -u.x, -u.y, u.x, 0};
     ga_mat4 m;
     memset(&m, 0, sizeof m);
     for (int i = 0; i < 3; ++i)
@@ -50,19 +50,25 @@ static ga_mat4 rigid(ga_vec3 u, double th, ga_vec3 t)
             for (int l = 0; l < 3; ++l) k2 += K[3 * i + l] * K[3 * l + j];
             m.m[4 * i + j] = (i == j) + s * K[3 * i + j] + c * k2;
         }
-    m.m[3] = t.x; m.m[7] = t.y; m.m[11] = t.z; m.m[15] = 1.0;
+    m.m[3] = t.x;
+    m.m[7] = t.y;
+    m.m[11] = t.z;
+    m.m[15] = 1.0;
     return m;
 }
 
 /* An exact half turn: R = 2 u u^T - I. */
 static ga_mat4 half_turn(ga_vec3 u, ga_vec3 t)
 {
-    double a[3] = { u.x, u.y, u.z };
+    double a[3] = {u.x, u.y, u.z};
     ga_mat4 m;
     memset(&m, 0, sizeof m);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) m.m[4 * i + j] = 2 * a[i] * a[j] - (i == j);
-    m.m[3] = t.x; m.m[7] = t.y; m.m[11] = t.z; m.m[15] = 1.0;
+    m.m[3] = t.x;
+    m.m[7] = t.y;
+    m.m[11] = t.z;
+    m.m[15] = 1.0;
     return m;
 }
 
@@ -116,7 +122,12 @@ static double vnorm(const double *a, int d)
 
 /* ---- key sets ---------------------------------------------------------------- */
 
-typedef struct { int n; double t[MAXK]; ga_mat4 m[MAXK]; double scale; } keyset;
+typedef struct {
+    int n;
+    double t[MAXK];
+    ga_mat4 m[MAXK];
+    double scale;
+} keyset;
 
 static void random_times(tk_rng *r, keyset *k)
 {
@@ -146,7 +157,11 @@ static void random_keys(tk_rng *r, keyset *k, int n, int kind)
         int kd = kind == 4 ? (int)(tk_next(r) % 4) : kind;
         ga_vec3 u = tk_unit(r);
         if (kd == 1 && tk_next(r) % 2) {
-            if (tk_next(r) % 3 == 0) { u.x = 0; u.y = 0; u.z = 1; } /* coordinate axis */
+            if (tk_next(r) % 3 == 0) {
+                u.x = 0;
+                u.y = 0;
+                u.z = 1;
+            } /* coordinate axis */
             k->m[i] = half_turn(u, rvec(r, 5));
         } else if (kd == 2) {
             double th = pow(10.0, tk_range(r, -9, -5));
@@ -177,7 +192,10 @@ static void affine_keys(tk_rng *r, keyset *k, int n)
 
 /* ---- paths ---------------------------------------------------------------------- */
 
-typedef struct { ga_path p; double work[WORK]; } pathbuf;
+typedef struct {
+    ga_path p;
+    double work[WORK];
+} pathbuf;
 
 static int mkpath(pathbuf *b, const ga_group *g, ga_scheme s, const keyset *k, const double *vel)
 {
@@ -188,14 +206,22 @@ static ga_mat4 at(const ga_path *p, double t)
 {
     double e[16];
     int st = ga_path_eval(p, t, e);
-    if (st) { ga_mat4 z; for (int i = 0; i < 16; ++i) z.m[i] = NAN; return z; }
+    if (st) {
+        ga_mat4 z;
+        for (int i = 0; i < 16; ++i) z.m[i] = NAN;
+        return z;
+    }
     return p->group->to_mat4(e);
 }
 static ga_mat4 at_seg(const ga_path *p, int seg, double u)
 {
     double e[16];
     int st = ga_path_eval_segment(p, seg, u, e);
-    if (st) { ga_mat4 z; for (int i = 0; i < 16; ++i) z.m[i] = NAN; return z; }
+    if (st) {
+        ga_mat4 z;
+        for (int i = 0; i < 16; ++i) z.m[i] = NAN;
+        return z;
+    }
     return p->group->to_mat4(e);
 }
 
@@ -245,14 +271,12 @@ static void fd_central(const ga_path *p, int seg, double u, double eps, double *
     for (size_t i = 0; i < g->dim; ++i) v[i] = (y1[i] - y2[i]) / (2 * eps);
 }
 
-static const ga_scheme all_schemes[6] = {
-    GA_SCHEME_SCREW, GA_SCHEME_BIVECTOR, GA_SCHEME_QUADRATIC,
-    GA_SCHEME_SMOOTH, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3
-};
+static const ga_scheme all_schemes[6] = {GA_SCHEME_SCREW,  GA_SCHEME_BIVECTOR, GA_SCHEME_QUADRATIC,
+                                         GA_SCHEME_SMOOTH, GA_SCHEME_LIHAO2,   GA_SCHEME_LIHAO3};
 static int is_c1(ga_scheme s)
 {
-    return s == GA_SCHEME_SMOOTH || s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_LIHAO2
-        || s == GA_SCHEME_LIHAO3;
+    return s == GA_SCHEME_SMOOTH || s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_LIHAO2 ||
+           s == GA_SCHEME_LIHAO3;
 }
 
 /* The scale a path's computation carries: keys' translations and the algebra
@@ -260,7 +284,10 @@ static int is_c1(ga_scheme s)
 static double path_scale(const ga_path *p, const keyset *k)
 {
     double s = k->scale;
-    size_t m = p->gen ? p->n : (p->n - 1) * (p->scheme == GA_SCHEME_SCREW ? 1 : p->scheme == GA_SCHEME_LIHAO2 ? 2 : 3);
+    size_t m = p->gen ? p->n
+                      : (p->n - 1) * (p->scheme == GA_SCHEME_SCREW    ? 1
+                                      : p->scheme == GA_SCHEME_LIHAO2 ? 2
+                                                                      : 3);
     const double *x = p->gen ? p->gen : p->coef;
     for (size_t i = 0; i < m * p->group->dim; ++i) s = fmax(s, fabs(x[i]));
     return s;
@@ -274,7 +301,9 @@ static double path_scale(const ga_path *p, const keyset *k)
 static double path_cond(const ga_path *p)
 {
     const ga_group *g = p->group;
-    int d = g->dim, m = p->coef ? (p->n - 1) * (p->scheme == GA_SCHEME_SCREW ? 1 : p->scheme == GA_SCHEME_LIHAO2 ? 2 : 3)
+    int d = g->dim, m = p->coef ? (p->n - 1) * (p->scheme == GA_SCHEME_SCREW    ? 1
+                                                : p->scheme == GA_SCHEME_LIHAO2 ? 2
+                                                                                : 3)
                                 : p->n;
     const double *x = p->coef ? p->coef : p->gen;
     double c = 1.0;
@@ -290,8 +319,8 @@ static double path_cond(const ga_path *p)
 
 static void test_keys(tk_rng *r)
 {
-    const ga_group *gs[3] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
-    double worst_lim = 0, worst_mid = 0, worst_aff[6] = { 0 }, worst_cond = 0, worst_midv = 0;
+    const ga_group *gs[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
+    double worst_lim = 0, worst_mid = 0, worst_aff[6] = {0}, worst_cond = 0, worst_midv = 0;
     int skipped = 0;
     tk_check c_init = tk_begin("path init (keys test)", 0);
     tk_check c_at = tk_begin("A(t_i) returns A_i (its representation's rounding)", 1e-15);
@@ -301,12 +330,15 @@ static void test_keys(tk_rng *r)
     for (int trial = 0; trial < 90; ++trial) {
         keyset k;
         int gi = trial % 3;
-        if (gi == 2) affine_keys(r, &k, 3 + trial % 5);
-        else random_keys(r, &k, 3 + trial % 5, trial % 5 == 1 ? 1 : trial % 5 == 2 ? 2 : 0);
+        if (gi == 2)
+            affine_keys(r, &k, 3 + trial % 5);
+        else
+            random_keys(r, &k, 3 + trial % 5, trial % 5 == 1 ? 1 : trial % 5 == 2 ? 2 : 0);
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
             keyset kk = k;
-            if (s == GA_SCHEME_QUADRATIC) kk.n = 3;
+            if (s == GA_SCHEME_QUADRATIC)
+                kk.n = 3;
             set_scale(&kk);
             pathbuf b;
             int st = mkpath(&b, gs[gi], s, &kk, NULL);
@@ -315,7 +347,8 @@ static void test_keys(tk_rng *r)
                 continue;
             }
             tk_add_status(&c_init, st, GA_OK);
-            if (st) continue;
+            if (st)
+                continue;
             /* rigid keys: 1e-14 relative; affine: times the conditioning */
             double cond = gi == 2 ? path_cond(&b.p) : 1.0, tol = gi == 2 ? 1e-13 * cond : 1e-14;
             double sc = gi == 2 ? kk.scale : path_scale(&b.p, &kk);
@@ -325,10 +358,15 @@ static void test_keys(tk_rng *r)
                 /* the formulas' own limits at the key: u -> 1 on the segment
                  * before, u -> 0 on the one after */
                 double l = 0;
-                if (i > 0) l = mdiff(at_seg(&b.p, i - 1, 1.0), kk.m[i]) / sc;
-                if (i + 1 < kk.n) l = fmax(l, mdiff(at_seg(&b.p, i, 0.0), kk.m[i]) / sc);
-                if (gi == 2) { worst_aff[si] = fmax(worst_aff[si], l); worst_cond = fmax(worst_cond, l / cond); }
-                else worst_lim = fmax(worst_lim, l);
+                if (i > 0)
+                    l = mdiff(at_seg(&b.p, i - 1, 1.0), kk.m[i]) / sc;
+                if (i + 1 < kk.n)
+                    l = fmax(l, mdiff(at_seg(&b.p, i, 0.0), kk.m[i]) / sc);
+                if (gi == 2) {
+                    worst_aff[si] = fmax(worst_aff[si], l);
+                    worst_cond = fmax(worst_cond, l / cond);
+                } else
+                    worst_lim = fmax(worst_lim, l);
                 tk_add_tol(&c_lim, l, tol);
             }
             /* continuity inside: the smooth spline's two formulas meet at u = 1/2 */
@@ -354,20 +392,23 @@ static void test_keys(tk_rng *r)
     printf("     formula at u = 1 / u = 0 vs A_i, rigid keys  %.3g / scale (tol 1e-14)\n", worst_lim);
     printf("     same on affine keys (scaling, shear), / scale:");
     for (int si = 0; si < 6; ++si) printf(" %s %.2g", ga_scheme_name(all_schemes[si]), worst_aff[si]);
-    printf("\n     largest / (scale * cond) %.3g (tol 1e-13; cond = max ||e^X|| ||e^-X||, large for lihao2)\n",
-           worst_cond);
+    printf(
+        "\n     largest / (scale * cond) %.3g (tol 1e-13; cond = max ||e^X|| ||e^-X||, large for lihao2)\n",
+        worst_cond);
     tk_end(&c_mid);
     tk_end(&c_midv);
     printf("     continuity at u = 1/2 %.3g / (scale*cond); velocity %.3g\n", worst_mid, worst_midv);
-    if (skipped) printf("     (%d affine lihao2 sets skipped: velocities grew along the keys until logm failed)\n", skipped);
+    if (skipped)
+        printf("     (%d affine lihao2 sets skipped: velocities grew along the keys until logm failed)\n",
+               skipped);
 }
 
 /* ---- 2. C1 at keys; analytic velocity vs finite differences ---------------------- */
 
 static void test_c1(tk_rng *r)
 {
-    const ga_group *gs[3] = { &ga_group_cga, &ga_group_se3, &ga_group_affine };
-    double worst_fd[2] = { 0, 0 }, ratio = 1e300;
+    const ga_group *gs[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
+    double worst_fd[2] = {0, 0}, ratio = 1e300;
     int skipped = 0;
     tk_check c_init = tk_begin("path init (C1 test)", 0);
     tk_check c_int = tk_begin("velocity: analytic = central FD inside segments", 1e-7);
@@ -381,8 +422,10 @@ static void test_c1(tk_rng *r)
     for (int trial = 0; trial < 30; ++trial) {
         int gi = trial % 3;
         keyset k;
-        if (gi == 2) affine_keys(r, &k, 4 + trial % 3);
-        else random_keys(r, &k, 4 + trial % 3, 0);
+        if (gi == 2)
+            affine_keys(r, &k, 4 + trial % 3);
+        else
+            random_keys(r, &k, 4 + trial % 3, 0);
         int d = gs[gi]->dim;
         double vel[MAXK * 12];
         for (int i = 0; i < k.n * d; ++i) /* affine: mild scaling rates, any translation */
@@ -390,14 +433,22 @@ static void test_c1(tk_rng *r)
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
             keyset kk = k;
-            if (s == GA_SCHEME_QUADRATIC) kk.n = 3;
+            if (s == GA_SCHEME_QUADRATIC)
+                kk.n = 3;
             pathbuf b;
             const double *vv = s == GA_SCHEME_LIHAO3 && trial % 2 ? vel
-                             : s == GA_SCHEME_LIHAO2 && trial % 2 ? vel : NULL;
+                             : s == GA_SCHEME_LIHAO2 && trial % 2 ? vel
+                                                                  : NULL;
             int st = mkpath(&b, gs[gi], s, &kk, vv);
-            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_ERR_DOMAIN || st == GA_ERR_SINGULAR)) { ++skipped; continue; }
+            if (gi == 2 && s == GA_SCHEME_LIHAO2 && (st == GA_ERR_DOMAIN || st == GA_ERR_SINGULAR)) {
+                ++skipped;
+                continue;
+            }
             tk_add_status(&c_init, st, GA_OK);
-            if (st) { printf("     (failed: %s on %s)\n", ga_scheme_name(s), gs[gi]->name); continue; }
+            if (st) {
+                printf("     (failed: %s on %s)\n", ga_scheme_name(s), gs[gi]->name);
+                continue;
+            }
             /* equalities of velocities hold to rounding amplified by Ad of the
              * factors: on affine keys, by their condition number */
             double vtol = 1e-12 * (gi == 2 ? path_cond(&b.p) : 1.0);
@@ -431,7 +482,7 @@ static void test_c1(tk_rng *r)
                 /* one-sided second-order FD at two steps: the left-right gap must
                  * fall like eps^2 (a kink would stay), and each side must match
                  * the analytic value */
-                double eps[2] = { 1e-3, 1e-4 }, gap[2], ea[2];
+                double eps[2] = {1e-3, 1e-4}, gap[2], ea[2];
                 for (int q = 0; q < 2; ++q) {
                     double fl[12], fr[12];
                     fd_velocity(&b.p, i - 1, 1.0, -1, eps[q], fl);
@@ -480,14 +531,15 @@ static void test_c1(tk_rng *r)
     tk_end(&c_afdfall);
     tk_end(&c_req);
     tk_end(&c_kink);
-    if (skipped) printf("     (%d affine lihao2 sets skipped: velocities grew until logm failed)\n", skipped);
+    if (skipped)
+        printf("     (%d affine lihao2 sets skipped: velocities grew until logm failed)\n", skipped);
 }
 
 /* ---- 3. cga == se3 on random key sets ----------------------------------------------- */
 
 static void test_cga_se3(tk_rng *r)
 {
-    double worst[6] = { 0 };
+    double worst[6] = {0};
     int sets = 0;
     tk_check c_init = tk_begin("cga/se3 path init", 0);
     tk_check c_pose = tk_begin("cga == se3 samples, / scale", 1e-12);
@@ -500,13 +552,15 @@ static void test_cga_se3(tk_rng *r)
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
             keyset kk = k;
-            if (s == GA_SCHEME_QUADRATIC) kk.n = 3;
+            if (s == GA_SCHEME_QUADRATIC)
+                kk.n = 3;
             set_scale(&kk);
             const double *vv = (s == GA_SCHEME_LIHAO2 || s == GA_SCHEME_LIHAO3) && trial % 2 ? vel : NULL;
             pathbuf a, b;
             int s1 = mkpath(&a, &ga_group_cga, s, &kk, vv), s2 = mkpath(&b, &ga_group_se3, s, &kk, vv);
             tk_add_status(&c_init, s1 ? s1 : s2, GA_OK);
-            if (s1 || s2) continue;
+            if (s1 || s2)
+                continue;
             double sc = fmax(path_scale(&a.p, &kk), path_scale(&b.p, &kk));
             for (int q = 0; q <= 40; ++q) {
                 double t = tgrid(&kk, q, 40);
@@ -523,30 +577,42 @@ static void test_cga_se3(tk_rng *r)
             }
         }
     }
-    printf("cga vs se3 over %d key sets (half turns, relative half turns, 1e-9..1e-5 rad under 1e4):\n", sets);
+    printf("cga vs se3 over %d key sets (half turns, relative half turns, 1e-9..1e-5 rad under 1e4):\n",
+           sets);
     tk_end(&c_init);
     tk_end(&c_pose);
     printf("    ");
-    for (int si = 0; si < 6; ++si)
-        printf(" %s %.3g", ga_scheme_name(all_schemes[si]), worst[si]);
+    for (int si = 0; si < 6; ++si) printf(" %s %.3g", ga_scheme_name(all_schemes[si]), worst[si]);
     printf("\n");
     tk_end(&c_vel);
 }
 
 /* ---- 4. screw = Eberly geodesic = W-L rotor form = dual-quaternion ScLERP; SLERP ---- */
 
-typedef struct { double w, x, y, z; } quat;
+typedef struct {
+    double w, x, y, z;
+} quat;
 static quat qmul(quat a, quat b)
 {
-    quat r = { a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-               a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-               a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-               a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w };
+    quat r = {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+              a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
     return r;
 }
-static quat qconj(quat a) { quat r = { a.w, -a.x, -a.y, -a.z }; return r; }
-static quat qadd(quat a, quat b) { quat r = { a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z }; return r; }
-static quat qscale(quat a, double s) { quat r = { s * a.w, s * a.x, s * a.y, s * a.z }; return r; }
+static quat qconj(quat a)
+{
+    quat r = {a.w, -a.x, -a.y, -a.z};
+    return r;
+}
+static quat qadd(quat a, quat b)
+{
+    quat r = {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
+    return r;
+}
+static quat qscale(quat a, double s)
+{
+    quat r = {s * a.w, s * a.x, s * a.y, s * a.z};
+    return r;
+}
 
 /* Shepperd's method, written here independently of rotor.c. */
 static quat quat_of(ga_mat4 m)
@@ -555,48 +621,65 @@ static quat quat_of(ga_mat4 m)
     quat q;
     if (tr >= r00 && tr >= r11 && tr >= r22) {
         double s = 2 * sqrt(1 + tr);
-        q.w = s / 4; q.x = (m.m[9] - m.m[6]) / s; q.y = (m.m[2] - m.m[8]) / s; q.z = (m.m[4] - m.m[1]) / s;
+        q.w = s / 4;
+        q.x = (m.m[9] - m.m[6]) / s;
+        q.y = (m.m[2] - m.m[8]) / s;
+        q.z = (m.m[4] - m.m[1]) / s;
     } else if (r00 >= r11 && r00 >= r22) {
         double s = 2 * sqrt(1 + r00 - r11 - r22);
-        q.w = (m.m[9] - m.m[6]) / s; q.x = s / 4; q.y = (m.m[1] + m.m[4]) / s; q.z = (m.m[2] + m.m[8]) / s;
+        q.w = (m.m[9] - m.m[6]) / s;
+        q.x = s / 4;
+        q.y = (m.m[1] + m.m[4]) / s;
+        q.z = (m.m[2] + m.m[8]) / s;
     } else if (r11 >= r22) {
         double s = 2 * sqrt(1 + r11 - r00 - r22);
-        q.w = (m.m[2] - m.m[8]) / s; q.x = (m.m[1] + m.m[4]) / s; q.y = s / 4; q.z = (m.m[6] + m.m[9]) / s;
+        q.w = (m.m[2] - m.m[8]) / s;
+        q.x = (m.m[1] + m.m[4]) / s;
+        q.y = s / 4;
+        q.z = (m.m[6] + m.m[9]) / s;
     } else {
         double s = 2 * sqrt(1 + r22 - r00 - r11);
-        q.w = (m.m[4] - m.m[1]) / s; q.x = (m.m[2] + m.m[8]) / s; q.y = (m.m[6] + m.m[9]) / s; q.z = s / 4;
+        q.w = (m.m[4] - m.m[1]) / s;
+        q.x = (m.m[2] + m.m[8]) / s;
+        q.y = (m.m[6] + m.m[9]) / s;
+        q.z = s / 4;
     }
     return q;
 }
 static ga_mat4 mat_of(quat q, ga_vec3 t)
 {
     double w = q.w, x = q.x, y = q.y, z = q.z;
-    ga_mat4 m = { { 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x,
-                    2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y,
-                    2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), t.z,
-                    0, 0, 0, 1 } };
+    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x, 2 * (x * y + w * z),
+                  1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y, 2 * (x * z - w * y), 2 * (y * z + w * x),
+                  1 - 2 * (x * x + y * y), t.z, 0, 0, 0, 1}};
     return m;
 }
 
-typedef struct { quat r, d; } dquat;
+typedef struct {
+    quat r, d;
+} dquat;
 static dquat dq_of(ga_mat4 m)
 {
     dquat a;
     a.r = quat_of(m);
-    quat t = { 0, m.m[3], m.m[7], m.m[11] };
+    quat t = {0, m.m[3], m.m[7], m.m[11]};
     a.d = qscale(qmul(t, a.r), 0.5);
     return a;
 }
 static dquat dq_mul(dquat a, dquat b)
 {
-    dquat c = { qmul(a.r, b.r), qadd(qmul(a.r, b.d), qmul(a.d, b.r)) };
+    dquat c = {qmul(a.r, b.r), qadd(qmul(a.r, b.d), qmul(a.d, b.r))};
     return c;
 }
-static dquat dq_conj(dquat a) { dquat c = { qconj(a.r), qconj(a.d) }; return c; }
+static dquat dq_conj(dquat a)
+{
+    dquat c = {qconj(a.r), qconj(a.d)};
+    return c;
+}
 static ga_mat4 dq_mat(dquat a)
 {
     quat t = qscale(qmul(a.d, qconj(a.r)), 2.0);
-    ga_vec3 tv = { t.x, t.y, t.z };
+    ga_vec3 tv = {t.x, t.y, t.z};
     return mat_of(a.r, tv);
 }
 /* a^u through the screw parameters: a = cos(th^/2) + sin(th^/2) l^, th^ = th + e d,
@@ -605,24 +688,32 @@ static dquat dq_pow(dquat a, double u)
 {
     double sv = sqrt(a.r.x * a.r.x + a.r.y * a.r.y + a.r.z * a.r.z);
     double th = 2 * atan2(sv, a.r.w);
-    ga_vec3 l = { a.r.x / sv, a.r.y / sv, a.r.z / sv };
+    ga_vec3 l = {a.r.x / sv, a.r.y / sv, a.r.z / sv};
     quat tq = qscale(qmul(a.d, qconj(a.r)), 2.0);
-    ga_vec3 t = { tq.x, tq.y, tq.z };
+    ga_vec3 t = {tq.x, tq.y, tq.z};
     double dd = t.x * l.x + t.y * l.y + t.z * l.z, ct = cos(th / 2) / sin(th / 2);
-    ga_vec3 m = { 0.5 * ((t.y * l.z - t.z * l.y) + (t.x - dd * l.x) * ct),
-                  0.5 * ((t.z * l.x - t.x * l.z) + (t.y - dd * l.y) * ct),
-                  0.5 * ((t.x * l.y - t.y * l.x) + (t.z - dd * l.z) * ct) };
+    ga_vec3 m = {0.5 * ((t.y * l.z - t.z * l.y) + (t.x - dd * l.x) * ct),
+                 0.5 * ((t.z * l.x - t.x * l.z) + (t.y - dd * l.y) * ct),
+                 0.5 * ((t.x * l.y - t.y * l.x) + (t.z - dd * l.z) * ct)};
     double c = cos(u * th / 2), s = sin(u * th / 2), hd = u * dd / 2;
     dquat r;
-    r.r.w = c; r.r.x = s * l.x; r.r.y = s * l.y; r.r.z = s * l.z;
+    r.r.w = c;
+    r.r.x = s * l.x;
+    r.r.y = s * l.y;
+    r.r.z = s * l.z;
     r.d.w = -hd * s;
-    r.d.x = hd * c * l.x + s * m.x; r.d.y = hd * c * l.y + s * m.y; r.d.z = hd * c * l.z + s * m.z;
+    r.d.x = hd * c * l.x + s * m.x;
+    r.d.y = hd * c * l.y + s * m.y;
+    r.d.z = hd * c * l.z + s * m.z;
     return r;
 }
 static ga_mat4 sclerp(ga_mat4 a, ga_mat4 b, double u)
 {
     dquat da = dq_of(a), rel = dq_mul(dq_conj(da), dq_of(b));
-    if (rel.r.w < 0) { rel.r = qscale(rel.r, -1); rel.d = qscale(rel.d, -1); }
+    if (rel.r.w < 0) {
+        rel.r = qscale(rel.r, -1);
+        rel.d = qscale(rel.d, -1);
+    }
     return dq_mat(dq_mul(da, dq_pow(rel, u)));
 }
 
@@ -669,17 +760,22 @@ static void test_screw(tk_rng *r)
         keyset rk = k;
         for (int i = 0; i < rk.n; ++i) rk.m[i].m[3] = rk.m[i].m[7] = rk.m[i].m[11] = 0;
         pathbuf c;
-        if (mkpath(&c, &ga_group_cga, GA_SCHEME_SCREW, &rk, NULL)) continue;
+        if (mkpath(&c, &ga_group_cga, GA_SCHEME_SCREW, &rk, NULL))
+            continue;
         for (int i = 0; i + 1 < rk.n; ++i) {
             quat q0 = quat_of(rk.m[i]), q1 = quat_of(rk.m[i + 1]);
             double dot = q0.w * q1.w + q0.x * q1.x + q0.y * q1.y + q0.z * q1.z;
-            if (dot < 0) { q1 = qscale(q1, -1); dot = -dot; }
+            if (dot < 0) {
+                q1 = qscale(q1, -1);
+                dot = -dot;
+            }
             double phi = acos(fmin(1.0, dot));
             for (int q = 0; q <= 10; ++q) {
                 double u = q / 10.0;
                 quat s = phi < 1e-8 ? q0
-                       : qadd(qscale(q0, sin((1 - u) * phi) / sin(phi)), qscale(q1, sin(u * phi) / sin(phi)));
-                ga_vec3 z = { 0, 0, 0 };
+                                    : qadd(qscale(q0, sin((1 - u) * phi) / sin(phi)),
+                                           qscale(q1, sin(u * phi) / sin(phi)));
+                ga_vec3 z = {0, 0, 0};
                 tk_add(&e_slerp, mdiff(at_seg(&c.p, i, u), mat_of(s, z)));
             }
         }
@@ -708,10 +804,13 @@ static void test_identities(tk_rng *r)
     for (int trial = 0; trial < 40; ++trial) {
         keyset k;
         random_keys(r, &k, 3, 0);
-        k.t[0] = -1; k.t[1] = 0; k.t[2] = 1;
+        k.t[0] = -1;
+        k.t[1] = 0;
+        k.t[2] = 1;
         const ga_group *g = trial % 2 ? &ga_group_cga : &ga_group_se3;
         pathbuf q, sm;
-        int s1 = mkpath(&q, g, GA_SCHEME_QUADRATIC, &k, NULL), s2 = mkpath(&sm, g, GA_SCHEME_SMOOTH, &k, NULL);
+        int s1 = mkpath(&q, g, GA_SCHEME_QUADRATIC, &k, NULL),
+            s2 = mkpath(&sm, g, GA_SCHEME_SMOOTH, &k, NULL);
         tk_add_status(&c_init, s1 ? s1 : s2, GA_OK);
         if (s1 || s2)
             continue;
@@ -741,7 +840,7 @@ static void test_identities(tk_rng *r)
         for (int i = 0; i < k.n; ++i) {
             double s = (k.t[i] - mid) / (k.t[k.n - 1] - k.t[0]) * 2, x[6];
             for (int j = 0; j < 6; ++j) x[j] = c0[j] + c1[j] * s + c2[j] * s * s;
-            k.m[i] = ga_se3_exp((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
+            k.m[i] = ga_se3_exp((ga_twist){{x[0], x[1], x[2]}, {x[3], x[4], x[5]}});
         }
         set_scale(&k);
         pathbuf sm;
@@ -753,7 +852,7 @@ static void test_identities(tk_rng *r)
             double t = tgrid(&k, j, 50);
             double s = (t - mid) / (k.t[k.n - 1] - k.t[0]) * 2, x[6];
             for (int c = 0; c < 6; ++c) x[c] = c0[c] + c1[c] * s + c2[c] * s * s;
-            ga_mat4 ref = ga_se3_exp((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
+            ga_mat4 ref = ga_se3_exp((ga_twist){{x[0], x[1], x[2]}, {x[3], x[4], x[5]}});
             tk_add(&e_exact, mdiff(at(&sm.p, t), ref) / k.scale);
         }
     }
@@ -768,7 +867,7 @@ static void test_identities(tk_rng *r)
         random_times(r, &k);
         for (int i = 0; i < k.n; ++i) {
             double s = 0.4 * (k.t[i] - k.t[0]);
-            ga_twist x = { { s * V.w.x, s * V.w.y, s * V.w.z }, { s * V.v.x, s * V.v.y, s * V.v.z } };
+            ga_twist x = {{s * V.w.x, s * V.w.y, s * V.w.z}, {s * V.v.x, s * V.v.y, s * V.v.z}};
             k.m[i] = mmul(A0, ga_se3_exp(x));
         }
         set_scale(&k);
@@ -780,9 +879,10 @@ static void test_identities(tk_rng *r)
             continue;
         for (int j = 0; j <= 30; ++j) {
             double t = tgrid(&k, j, 30), s = 0.4 * (t - k.t[0]);
-            ga_twist x = { { s * V.w.x, s * V.w.y, s * V.w.z }, { s * V.v.x, s * V.v.y, s * V.v.z } };
+            ga_twist x = {{s * V.w.x, s * V.w.y, s * V.w.z}, {s * V.v.x, s * V.v.y, s * V.v.z}};
             tk_add(&e_l3, mdiff(at(&b.p, t), mmul(A0, ga_se3_exp(x))) / k.scale);
-            double v[6], vr[6] = { 0.4 * V.w.x, 0.4 * V.w.y, 0.4 * V.w.z, 0.4 * V.v.x, 0.4 * V.v.y, 0.4 * V.v.z };
+            double v[6],
+                vr[6] = {0.4 * V.w.x, 0.4 * V.w.y, 0.4 * V.w.z, 0.4 * V.v.x, 0.4 * V.v.y, 0.4 * V.v.z};
             vel_at(&b.p, t, v);
             tk_add(&e_l3v, vdiff(v, vr, 6));
         }
@@ -792,24 +892,29 @@ static void test_identities(tk_rng *r)
     for (int trial = 0; trial < 20; ++trial) {
         ga_mat4 A = rand_rigid(r, 0, 2, 2), Bm = rand_rigid(r, 0, 2, 2);
         ga_mat4 rel = mmul(ga_se3_inverse(A), Bm);
-        ga_twist B = rand_twist(r, 0.5, 0.5), mB = { { -B.w.x, -B.w.y, -B.w.z }, { -B.v.x, -B.v.y, -B.v.z } };
+        ga_twist B = rand_twist(r, 0.5, 0.5), mB = {{-B.w.x, -B.w.y, -B.w.z}, {-B.v.x, -B.v.y, -B.v.z}};
         ga_twist C16, C27, D = rand_twist(r, 0.5, 0.5);
         ga_se3_log(mmul(ga_se3_exp(mB), rel), &C16);
         ga_se3_log(mmul(ga_se3_exp(B), rel), &C27);
         tk_add(&e16, mdiff(mmul(ga_se3_exp(B), ga_se3_exp(C16)), rel));
         tk_add(&e27, mdiff(mmul(ga_se3_exp(B), ga_se3_exp(C27)), rel));
         /* eq. 25: M'(1) = B^ rel + 2 rel C^ + rel D^ for M = e^{uB} e^{u^2 C} e^{(u^3-u^2) D} */
-        ga_mat4 lhs = mmul(ga_twist_hat(B), rel), r2 = mmul(rel, ga_twist_hat(C16)), r3 = mmul(rel, ga_twist_hat(D));
+        ga_mat4 lhs = mmul(ga_twist_hat(B), rel), r2 = mmul(rel, ga_twist_hat(C16)),
+                r3 = mmul(rel, ga_twist_hat(D));
         for (int i = 0; i < 16; ++i) lhs.m[i] += 2 * r2.m[i] + r3.m[i];
         double hs = 1e-5;
         ga_mat4 Mp, Mm;
         for (int sgn = -1; sgn <= 1; sgn += 2) {
             double u = 1 + sgn * hs, pb = u, pc = u * u, pd = u * u * u - u * u;
-            ga_twist xb = { { pb * B.w.x, pb * B.w.y, pb * B.w.z }, { pb * B.v.x, pb * B.v.y, pb * B.v.z } };
-            ga_twist xc = { { pc * C16.w.x, pc * C16.w.y, pc * C16.w.z }, { pc * C16.v.x, pc * C16.v.y, pc * C16.v.z } };
-            ga_twist xd = { { pd * D.w.x, pd * D.w.y, pd * D.w.z }, { pd * D.v.x, pd * D.v.y, pd * D.v.z } };
+            ga_twist xb = {{pb * B.w.x, pb * B.w.y, pb * B.w.z}, {pb * B.v.x, pb * B.v.y, pb * B.v.z}};
+            ga_twist xc = {{pc * C16.w.x, pc * C16.w.y, pc * C16.w.z},
+                           {pc * C16.v.x, pc * C16.v.y, pc * C16.v.z}};
+            ga_twist xd = {{pd * D.w.x, pd * D.w.y, pd * D.w.z}, {pd * D.v.x, pd * D.v.y, pd * D.v.z}};
             ga_mat4 M = mmul(mmul(ga_se3_exp(xb), ga_se3_exp(xc)), ga_se3_exp(xd));
-            if (sgn < 0) Mm = M; else Mp = M;
+            if (sgn < 0)
+                Mm = M;
+            else
+                Mp = M;
         }
         for (int i = 0; i < 16; ++i) tk_add(&e25, fabs((Mp.m[i] - Mm.m[i]) / (2 * hs) - lhs.m[i]));
     }
@@ -833,25 +938,34 @@ static void test_dexp(tk_rng *r)
     for (int trial = 0; trial < 200; ++trial) {
         double x[6], y[6], j1[6], j2[12], xa[12], ya[12];
         ga_vec3 u = tk_unit(r);
-        double th = trial % 5 == 0 ? pow(10.0, tk_range(r, -12, -1)) : trial % 5 == 1 ? PI - pow(10.0, tk_range(r, -12, -1))
-                  : trial % 5 == 2 ? tk_range(r, 0.9, 1.1) : tk_range(r, 0, 8);
-        x[0] = th * u.x; x[1] = th * u.y; x[2] = th * u.z;
+        double th = trial % 5 == 0 ? pow(10.0, tk_range(r, -12, -1))
+                  : trial % 5 == 1 ? PI - pow(10.0, tk_range(r, -12, -1))
+                  : trial % 5 == 2 ? tk_range(r, 0.9, 1.1)
+                                   : tk_range(r, 0, 8);
+        x[0] = th * u.x;
+        x[1] = th * u.y;
+        x[2] = th * u.z;
         for (int i = 3; i < 6; ++i) x[i] = tk_range(r, -3, 3);
         for (int i = 0; i < 6; ++i) y[i] = tk_range(r, -1, 1);
         ga_group_se3.dexp(x, y, j1);
         /* the same twists as affine algebra elements (top rows of the hat) */
-        ga_mat4 hx = ga_twist_hat((ga_twist){ { x[0], x[1], x[2] }, { x[3], x[4], x[5] } });
-        ga_mat4 hy = ga_twist_hat((ga_twist){ { y[0], y[1], y[2] }, { y[3], y[4], y[5] } });
+        ga_mat4 hx = ga_twist_hat((ga_twist){{x[0], x[1], x[2]}, {x[3], x[4], x[5]}});
+        ga_mat4 hy = ga_twist_hat((ga_twist){{y[0], y[1], y[2]}, {y[3], y[4], y[5]}});
         memcpy(xa, hx.m, sizeof xa);
         memcpy(ya, hy.m, sizeof ya);
         ga_group_affine.dexp(xa, ya, j2);
-        ga_mat4 hj = ga_twist_hat((ga_twist){ { j1[0], j1[1], j1[2] }, { j1[3], j1[4], j1[5] } });
+        ga_mat4 hj = ga_twist_hat((ga_twist){{j1[0], j1[1], j1[2]}, {j1[3], j1[4], j1[5]}});
         double e = vdiff(hj.m, j2, 12);
         tk_add(&e_aff, e / fmax(1, vnorm(x, 6)));
         /* FD: log(exp(x)^-1 exp(x + s y))/s, central */
         double hs = 1e-6, xp[6], xm[6], ex[16], ep[16], em[16], yp[6], ym[6];
-        for (int i = 0; i < 6; ++i) { xp[i] = x[i] + hs * y[i]; xm[i] = x[i] - hs * y[i]; }
-        ga_group_se3.exp(x, ex); ga_group_se3.exp(xp, ep); ga_group_se3.exp(xm, em);
+        for (int i = 0; i < 6; ++i) {
+            xp[i] = x[i] + hs * y[i];
+            xm[i] = x[i] - hs * y[i];
+        }
+        ga_group_se3.exp(x, ex);
+        ga_group_se3.exp(xp, ep);
+        ga_group_se3.exp(xm, em);
         body_log(&ga_group_se3, ex, ep, yp);
         body_log(&ga_group_se3, ex, em, ym);
         double fd[6];
@@ -875,16 +989,18 @@ static void test_affine(tk_rng *r)
         random_times(r, &k);
         for (int i = 0; i < k.n; ++i) k.m[i] = rand_rigid(r, 0, 2.5, 4);
         set_scale(&k);
-        ga_scheme ss[3] = { GA_SCHEME_SCREW, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3 };
+        ga_scheme ss[3] = {GA_SCHEME_SCREW, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3};
         for (int si = 0; si < 3; ++si) {
             pathbuf a, b;
-            int s1 = mkpath(&a, &ga_group_affine, ss[si], &k, NULL), s2 = mkpath(&b, &ga_group_se3, ss[si], &k, NULL);
+            int s1 = mkpath(&a, &ga_group_affine, ss[si], &k, NULL),
+                s2 = mkpath(&b, &ga_group_se3, ss[si], &k, NULL);
             if (s1 == GA_ERR_DOMAIN) { /* a relative motion near a half turn: no real logm */
                 ++domain;
                 continue;
             }
             tk_add_status(&c_init, s1 ? s1 : s2, GA_OK);
-            if (s1 || s2) continue;
+            if (s1 || s2)
+                continue;
             for (int j = 0; j <= 20; ++j) {
                 double t = tgrid(&k, j, 20);
                 tk_add(&c, mdiff(at(&a.p, t), at(&b.p, t)) / k.scale);
@@ -893,7 +1009,8 @@ static void test_affine(tk_rng *r)
     }
     tk_end(&c_init);
     tk_end(&c);
-    if (domain) printf("     (%ld affine paths GA_ERR_DOMAIN: a relative motion near a half turn)\n", domain);
+    if (domain)
+        printf("     (%ld affine paths GA_ERR_DOMAIN: a relative motion near a half turn)\n", domain);
     /* det and last-row checks */
     ga_mat4 bad = ga_mat4_identity(), m;
     bad.m[0] = -1;
@@ -912,7 +1029,8 @@ static double euler_error(const ga_path *p, double h, int nsamp)
     ga_path_stepper_init(p, GA_EVAL_EULER, h, nsamp, p->t[0], p->t[p->n - 1], &se);
     ga_path_stepper_init(p, GA_EVAL_DIRECT, 0, nsamp, p->t[0], p->t[p->n - 1], &sd);
     for (int k = 0; k < nsamp; ++k) {
-        if (ga_path_stepper_next(&se, a) || ga_path_stepper_next(&sd, b)) return NAN;
+        if (ga_path_stepper_next(&se, a) || ga_path_stepper_next(&sd, b))
+            return NAN;
         e = fmax(e, mdiff(p->group->to_mat4(a), p->group->to_mat4(b)));
     }
     return e;
@@ -922,25 +1040,33 @@ static void test_euler(tk_rng *r)
 {
     keyset k;
     k.n = 4;
-    for (int i = 0; i < 4; ++i) { k.t[i] = i; k.m[i] = rand_rigid(r, 0.5, 2.5, 3); }
+    for (int i = 0; i < 4; ++i) {
+        k.t[i] = i;
+        k.m[i] = rand_rigid(r, 0.5, 2.5, 3);
+    }
     set_scale(&k);
-    ga_scheme ss[2] = { GA_SCHEME_LIHAO3, GA_SCHEME_SMOOTH };
-    const ga_group *gs[2] = { &ga_group_se3, &ga_group_cga };
+    ga_scheme ss[2] = {GA_SCHEME_LIHAO3, GA_SCHEME_SMOOTH};
+    const ga_group *gs[2] = {&ga_group_se3, &ga_group_cga};
     tk_check c_init = tk_begin("path init (Euler)", 0);
     tk_check c_slope = tk_begin("Euler error: log-log slope over 3 decades, |slope - 1|", 0.1);
     for (int si = 0; si < 2; ++si) {
         pathbuf b;
         int st = mkpath(&b, gs[si], ss[si], &k, NULL);
         tk_add_status(&c_init, st, GA_OK);
-        if (st) continue;
+        if (st)
+            continue;
         double lx[7], ly[7], sx = 0, sy = 0, sxx = 0, sxy = 0;
         printf("Euler (%s on %s): step -> max error:", ga_scheme_name(ss[si]), gs[si]->name);
         for (int j = 0; j < 7; ++j) {
             double h = pow(10.0, -1.0 - 0.5 * j);
             double e = euler_error(&b.p, h, 13);
-            lx[j] = log10(h); ly[j] = log10(e);
+            lx[j] = log10(h);
+            ly[j] = log10(e);
             printf(" %.0e:%.2e", h, e);
-            sx += lx[j]; sy += ly[j]; sxx += lx[j] * lx[j]; sxy += lx[j] * ly[j];
+            sx += lx[j];
+            sy += ly[j];
+            sxx += lx[j] * lx[j];
+            sxy += lx[j] * ly[j];
         }
         double slope = (7 * sxy - sx * sy) / (7 * sxx - sx * sx);
         printf("\n    log-log slope over 3 decades (1e-1 .. 1e-4): %.3f  (want 1 +- 0.1)\n", slope);
@@ -967,10 +1093,14 @@ static void test_exact(tk_rng *r)
     for (int i = 1; i < 4; ++i) k.t[i] = k.t[i - 1] + tk_range(r, 0.5, 2);
     for (int i = 0; i < 4; ++i) k.m[i] = rand_rigid(r, 0.5, 3, 50);
     set_scale(&k);
-    struct { ga_scheme s; const ga_group *g; long n; } runs[] = {
-        { GA_SCHEME_LIHAO3, &ga_group_se3, 1000001 }, { GA_SCHEME_LIHAO3, &ga_group_cga, 1000001 },
-        { GA_SCHEME_LIHAO2, &ga_group_cga, 200001 }, { GA_SCHEME_SCREW, &ga_group_se3, 200001 },
-        { GA_SCHEME_LIHAO3, &ga_group_affine, 100001 },
+    struct {
+        ga_scheme s;
+        const ga_group *g;
+        long n;
+    } runs[] = {
+        {GA_SCHEME_LIHAO3, &ga_group_se3, 1000001},   {GA_SCHEME_LIHAO3, &ga_group_cga, 1000001},
+        {GA_SCHEME_LIHAO2, &ga_group_cga, 200001},    {GA_SCHEME_SCREW, &ga_group_se3, 200001},
+        {GA_SCHEME_LIHAO3, &ga_group_affine, 100001},
     };
     printf("exact stepping re-anchors every %d samples (GA_PATH_EXACT_REANCHOR)\n", GA_PATH_EXACT_REANCHOR);
     tk_check c_init = tk_begin("path init (exact stepping)", 0);
@@ -984,14 +1114,18 @@ static void test_exact(tk_rng *r)
         }
         int st = mkpath(&b, runs[q].g, runs[q].s, &kk, NULL);
         tk_add_status(&c_init, st, GA_OK);
-        if (st) continue;
+        if (st)
+            continue;
         ga_path_stepper sx, sd;
         ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, runs[q].n, kk.t[0], kk.t[3], &sx);
         ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, runs[q].n, kk.t[0], kk.t[3], &sd);
         double e = 0, a[16], c[16];
         clock_t c0 = clock();
         for (long j = 0; j < runs[q].n; ++j) {
-            if (ga_path_stepper_next(&sx, a) || ga_path_stepper_next(&sd, c)) { e = NAN; break; }
+            if (ga_path_stepper_next(&sx, a) || ga_path_stepper_next(&sd, c)) {
+                e = NAN;
+                break;
+            }
             e = fmax(e, mdiff(runs[q].g->to_mat4(a), runs[q].g->to_mat4(c)));
         }
         e /= kk.scale;
@@ -1006,7 +1140,8 @@ static void test_exact(tk_rng *r)
     int st = mkpath(&b, &ga_group_cga, GA_SCHEME_LIHAO3, &k, NULL);
     tk_add_status(&c_init, st, GA_OK);
     tk_end(&c_init);
-    if (st) return;
+    if (st)
+        return;
     double buf[3][101 * 8];
     tk_check c_batch = tk_begin("batch uniform (exact) == batch at times (direct), / scale", 1e-12);
     ga_path_sample_uniform(&b.p, GA_EVAL_EXACT, 0, 101, k.t[0], k.t[3], buf[0]);
@@ -1015,9 +1150,11 @@ static void test_exact(tk_rng *r)
     times[100] = k.t[3];
     ga_path_sample(&b.p, GA_EVAL_DIRECT, 0, 101, times, buf[1]);
     for (int j = 0; j < 101; ++j)
-        tk_add(&c_batch, mdiff(ga_group_cga.to_mat4(buf[0] + 8 * j), ga_group_cga.to_mat4(buf[1] + 8 * j)) / k.scale);
+        tk_add(&c_batch,
+               mdiff(ga_group_cga.to_mat4(buf[0] + 8 * j), ga_group_cga.to_mat4(buf[1] + 8 * j)) / k.scale);
     tk_end(&c_batch);
-    tk_expect_status("batch euler at times", ga_path_sample(&b.p, GA_EVAL_EULER, 1e-3, 101, times, buf[2]), GA_OK);
+    tk_expect_status("batch euler at times", ga_path_sample(&b.p, GA_EVAL_EULER, 1e-3, 101, times, buf[2]),
+                     GA_OK);
 }
 
 /* ---- 10. bad input ---------------------------------------------------------------- */
@@ -1026,18 +1163,23 @@ static void test_errors(void)
 {
     keyset k;
     k.n = 4;
-    for (int i = 0; i < 4; ++i) { k.t[i] = i; k.m[i] = ga_mat4_identity(); k.m[i].m[3] = i; }
+    for (int i = 0; i < 4; ++i) {
+        k.t[i] = i;
+        k.m[i] = ga_mat4_identity();
+        k.m[i].m[3] = i;
+    }
     pathbuf b;
     int st;
     st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, 1, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     tk_expect_status("screw with 1 key -> GA_ERR_ARG", st, GA_ERR_ARG);
     st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_SMOOTH, 2, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     tk_expect_status("smooth with 2 keys -> GA_ERR_ARG", st, GA_ERR_ARG);
-    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
+    st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work,
+                           &b.p);
     tk_expect_status("quadratic with 4 keys -> GA_ERR_ARG", st, GA_ERR_ARG);
     st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_LIHAO3, 0, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     tk_expect_status("lihao3 with 0 keys -> GA_ERR_ARG", st, GA_ERR_ARG);
-    double t2[4] = { 0, 1, 1, 2 }, t3[4] = { 0, 2, 1, 3 }, t4[4] = { 0, NAN, 1, 3 };
+    double t2[4] = {0, 1, 1, 2}, t3[4] = {0, 2, 1, 3}, t4[4] = {0, NAN, 1, 3};
     st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_LIHAO2, 4, t2, k.m, NULL, b.work, sizeof b.work, &b.p);
     tk_expect_status("equal times -> GA_ERR_ARG", st, GA_ERR_ARG);
     st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_BIVECTOR, 4, t3, k.m, NULL, b.work, sizeof b.work, &b.p);
@@ -1054,13 +1196,15 @@ static void test_errors(void)
     tk_expect_status("t after the last key -> GA_ERR_ARG", ga_path_eval(&b.p, 3.5, out), GA_ERR_ARG);
     tk_expect_status("t NaN -> GA_ERR_ARG", ga_path_eval(&b.p, NAN, out), GA_ERR_ARG);
     ga_path_stepper s;
-    tk_expect_status("Euler step 0 -> GA_ERR_ARG", ga_path_stepper_init(&b.p, GA_EVAL_EULER, 0.0, 10, 0, 3, &s),
+    tk_expect_status("Euler step 0 -> GA_ERR_ARG",
+                     ga_path_stepper_init(&b.p, GA_EVAL_EULER, 0.0, 10, 0, 3, &s), GA_ERR_ARG);
+    tk_expect(ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, 1, 1.5, 1.5, &s) == GA_OK &&
+                  ga_path_stepper_next(&s, out) == GA_OK && ga_path_stepper_next(&s, out) == GA_ERR_ARG,
+              "one-sample stepper, then GA_ERR_ARG");
+    tk_expect_status("t0 > t1 -> GA_ERR_ARG", ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, 5, 2, 1, &s),
                      GA_ERR_ARG);
-    tk_expect(ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, 1, 1.5, 1.5, &s) == GA_OK
-          && ga_path_stepper_next(&s, out) == GA_OK && ga_path_stepper_next(&s, out) == GA_ERR_ARG, "one-sample stepper, then GA_ERR_ARG");
-    tk_expect_status("t0 > t1 -> GA_ERR_ARG", ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, 5, 2, 1, &s), GA_ERR_ARG);
-    tk_expect_status("t0 before keys -> GA_ERR_ARG", ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, 5, -1, 1, &s),
-                     GA_ERR_ARG);
+    tk_expect_status("t0 before keys -> GA_ERR_ARG",
+                     ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, 5, -1, 1, &s), GA_ERR_ARG);
     double nanv[4 * 6];
     for (int i = 0; i < 24; ++i) nanv[i] = NAN;
     st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_LIHAO3, 4, k.t, k.m, nanv, b.work, sizeof b.work, &b.p);
@@ -1082,7 +1226,7 @@ static void test_errors(void)
 
 int main(void)
 {
-    tk_rng r = { 20240607u };
+    tk_rng r = {20240607u};
     clock_t c0 = clock();
     test_keys(&r);
     test_c1(&r);

@@ -21,15 +21,12 @@
 #include "testkit.h"
 
 #define N_TWISTS 100000 /* random and adversarial twists, across the families */
-#define N_AFFINE 5000  /* random affine matrices for the expm/logm round trip */
+#define N_AFFINE 5000   /* random affine matrices for the expm/logm round trip */
 #define N_FAMILIES 8
 
 static const double PI = TK_PI;
 
-static double trans_len(ga_mat4 m)
-{
-    return sqrt(m.m[3] * m.m[3] + m.m[7] * m.m[7] + m.m[11] * m.m[11]);
-}
+static double trans_len(ga_mat4 m) { return sqrt(m.m[3] * m.m[3] + m.m[7] * m.m[7] + m.m[11] * m.m[11]); }
 
 /* max |a - b| / max(1, |t_b|); NaN if an entry is NaN */
 static double mat_err(ga_mat4 a, ga_mat4 b)
@@ -37,7 +34,8 @@ static double mat_err(ga_mat4 a, ga_mat4 b)
     double e = 0;
     for (int i = 0; i < 16; i++) {
         double d = fabs(a.m[i] - b.m[i]);
-        if (isnan(d)) return NAN;
+        if (isnan(d))
+            return NAN;
         e = fmax(e, d);
     }
     return e / fmax(1.0, trans_len(b));
@@ -46,11 +44,11 @@ static double mat_err(ga_mat4 a, ga_mat4 b)
 /* max |a - b| / max(1, |v_b|) */
 static double twist_err(ga_twist a, ga_twist b)
 {
-    double d[6] = {a.w.x - b.w.x, a.w.y - b.w.y, a.w.z - b.w.z,
-                   a.v.x - b.v.x, a.v.y - b.v.y, a.v.z - b.v.z};
+    double d[6] = {a.w.x - b.w.x, a.w.y - b.w.y, a.w.z - b.w.z, a.v.x - b.v.x, a.v.y - b.v.y, a.v.z - b.v.z};
     double e = 0;
     for (int i = 0; i < 6; i++) {
-        if (isnan(d[i])) return NAN;
+        if (isnan(d[i]))
+            return NAN;
         e = fmax(e, fabs(d[i]));
     }
     return e / fmax(1.0, tk_norm(b.v));
@@ -58,9 +56,9 @@ static double twist_err(ga_twist a, ga_twist b)
 
 /* ---- twist families: testkit.h's, in this order ---------------------------- */
 /* The first six have |w| < pi (their twists are principal logs). */
-static const int family[N_FAMILIES] = {TK_SCREW,           TK_TINY_UNDER_LARGE, TK_ROT_SPREAD,
-                                       TK_ROT_NEAR_PI_SPREAD, TK_TRANSLATION,   TK_NEAR_IDENTITY,
-                                       TK_ROT_PI,          TK_BEYOND_PI};
+static const int family[N_FAMILIES] = {
+    TK_SCREW,       TK_TINY_UNDER_LARGE, TK_ROT_SPREAD, TK_ROT_NEAR_PI_SPREAD,
+    TK_TRANSLATION, TK_NEAR_IDENTITY,    TK_ROT_PI,     TK_BEYOND_PI};
 #define HALF_TURN 6 /* index of TK_ROT_PI above */
 #define BEYOND 7    /* index of TK_BEYOND_PI */
 
@@ -79,14 +77,17 @@ static ga_mat4 random_affine(tk_rng *s, double *cond)
         for (int i = 0; i < 3; i++) t[i][i] = d[i];
         if (tk_uni(s) < 0.5) { /* a rotation-scaling block in rows/cols 1,2 */
             double phi = tk_range(s, -0.95 * PI, 0.95 * PI);
-            t[1][1] = d[1] * cos(phi); t[1][2] = -d[1] * sin(phi);
-            t[2][1] = d[1] * sin(phi); t[2][2] = d[1] * cos(phi);
+            t[1][1] = d[1] * cos(phi);
+            t[1][2] = -d[1] * sin(phi);
+            t[2][1] = d[1] * sin(phi);
+            t[2][2] = d[1] * cos(phi);
             d[2] = d[1];
         }
         double h = tk_loguni(s, 1e-3, 10.0);
         t[0][1] = h * sqrt(d[0] * d[1]) * tk_range(s, -1, 1);
         t[0][2] = h * sqrt(d[0] * d[2]) * tk_range(s, -1, 1);
-        if (t[2][1] == 0) t[1][2] = h * sqrt(d[1] * d[2]) * tk_range(s, -1, 1);
+        if (t[2][1] == 0)
+            t[1][2] = h * sqrt(d[1] * d[2]) * tk_range(s, -1, 1);
         ga_vec3 qn = tk_unit(s);
         ga_twist q = {tk_scale(qn, tk_range(s, 0, PI)), {0, 0, 0}};
         ga_mat4 qm = ga_se3_exp(q), a = ga_mat4_identity();
@@ -98,15 +99,24 @@ static ga_mat4 random_affine(tk_rng *s, double *cond)
                 a.m[4 * i + j] = acc;
             }
         ga_vec3 tn = tk_unit(s), tr = tk_scale(tn, tk_loguni(s, 1e-3, 1e3));
-        a.m[3] = tr.x; a.m[7] = tr.y; a.m[11] = tr.z;
+        a.m[3] = tr.x;
+        a.m[7] = tr.y;
+        a.m[11] = tr.z;
         ga_mat4 inv;
-        if (ga_mat4_inverse(a, &inv) != GA_OK) continue;
+        if (ga_mat4_inverse(a, &inv) != GA_OK)
+            continue;
         *cond = ga_mat4_norm1(a) * ga_mat4_norm1(inv);
-        if (*cond <= 1e6) return a;
+        if (*cond <= 1e6)
+            return a;
     }
 }
 
-static ga_mat4 mat(const double v[16]) { ga_mat4 m; memcpy(m.m, v, sizeof m.m); return m; }
+static ga_mat4 mat(const double v[16])
+{
+    ga_mat4 m;
+    memcpy(m.m, v, sizeof m.m);
+    return m;
+}
 
 static ga_mat4 sentinel(void)
 {
@@ -117,7 +127,8 @@ static ga_mat4 sentinel(void)
 static int is_sentinel(ga_mat4 m)
 {
     for (int i = 0; i < 16; i++)
-        if (m.m[i] != 12345.0) return 0;
+        if (m.m[i] != 12345.0)
+            return 0;
     return 1;
 }
 
@@ -160,8 +171,7 @@ int main(void)
                 e *= fmax(1.0, trans_len(e1)) / fmax(fmax(1.0, tk_norm(xi.v)), trans_len(e1));
             tk_add(&c[fam], e);
         }
-        for (int f = 0; f < N_FAMILIES; f++)
-            tk_end(&c[f]);
+        for (int f = 0; f < N_FAMILIES; f++) tk_end(&c[f]);
     }
 
     /* ---- 2. log(exp(xi)) = xi for angles < pi ----------------------------- */
@@ -176,8 +186,7 @@ int main(void)
             int st = ga_se3_log(ga_se3_exp(xi), &back);
             tk_add(&c[fam], st == GA_OK ? twist_err(back, xi) : INFINITY);
         }
-        for (int f = 0; f < 6; f++)
-            tk_end(&c[f]);
+        for (int f = 0; f < 6; f++) tk_end(&c[f]);
     }
 
     /* ---- 3. half turns and beyond: the backward error ---------------------- */
@@ -197,12 +206,18 @@ int main(void)
                 xi.w = tk_scale(u, PI);
             }
             int st = ga_se3_log(m, &l);
-            if (st != GA_OK) { tk_add(&back, INFINITY); continue; }
+            if (st != GA_OK) {
+                tk_add(&back, INFINITY);
+                continue;
+            }
             tk_add(&back, mat_err(ga_se3_exp(l), m));
             /* either sign of the axis: the angle is pi and w = +-xi.w */
             double dp = 0, dm = 0;
             double a[3] = {l.w.x, l.w.y, l.w.z}, b[3] = {xi.w.x, xi.w.y, xi.w.z};
-            for (int k = 0; k < 3; k++) { dp = fmax(dp, fabs(a[k] - b[k])); dm = fmax(dm, fabs(a[k] + b[k])); }
+            for (int k = 0; k < 3; k++) {
+                dp = fmax(dp, fabs(a[k] - b[k]));
+                dm = fmax(dm, fabs(a[k] + b[k]));
+            }
             tk_add(&axis, isnan(tk_norm(l.w)) ? NAN : fmin(dp, dm));
             tk_add(&angle, fabs(tk_norm(l.w) - PI));
         }
@@ -214,7 +229,10 @@ int main(void)
         for (long i = 0; i < N_TWISTS / 4; i++) {
             ga_twist xi = tk_twist(&s, family[BEYOND]), l;
             ga_mat4 m = ga_se3_exp(xi);
-            if (ga_se3_log(m, &l) != GA_OK) { tk_add(&back7, INFINITY); continue; }
+            if (ga_se3_log(m, &l) != GA_OK) {
+                tk_add(&back7, INFINITY);
+                continue;
+            }
             tk_add(&back7, mat_err(ga_se3_exp(l), m));
             tk_add(&over, tk_norm(l.w) - PI);
         }
@@ -245,7 +263,8 @@ int main(void)
             ga_mat4 m = ga_se3_exp(xi), l2;
             int st1 = ga_se3_log(m, &l1);
             tk_add_status(&status, st1, GA_OK);
-            if (st1 != GA_OK) continue;
+            if (st1 != GA_OK)
+                continue;
             int st = ga_mat4_logm(m, &l2);
             double th = tk_norm(l1.w);
             double cond = th > 0 ? th / sin(th) : 1.0;
@@ -262,11 +281,10 @@ int main(void)
                 tk_add(&wrel, tk_norm(dw) / tk_norm(l1.w));
             }
         }
-        for (int f = 0; f < 6; f++)
-            tk_end(&c[f]);
+        for (int f = 0; f < 6; f++) tk_end(&c[f]);
         tk_end(&status);
-        printf("     GA_ERR_DOMAIN within rounding of pi: %ld cases, (pi - th)/max(1,|t|) <= %.2e\n",
-               domain, domain_max);
+        printf("     GA_ERR_DOMAIN within rounding of pi: %ld cases, (pi - th)/max(1,|t|) <= %.2e\n", domain,
+               domain_max);
         /* Tiny rotations under large translations: logm's w keeps relative
          * accuracy, not only accuracy relative to |v| (the rotation block of
          * each root and solve never mixes with the translation column, and
@@ -288,9 +306,13 @@ int main(void)
             maxcond = fmax(maxcond, cond);
             hard += cond > 1e5;
             int st = ga_mat4_logm(a, &l);
-            if (st == GA_OK) st = ga_mat4_expm(l, &b);
+            if (st == GA_OK)
+                st = ga_mat4_expm(l, &b);
             tk_add_status(&status, st, GA_OK);
-            if (st != GA_OK) { tk_add(&rt, INFINITY); continue; }
+            if (st != GA_OK) {
+                tk_add(&rt, INFINITY);
+                continue;
+            }
             for (int k = 0; k < 16; k++) b.m[k] -= a.m[k];
             tk_add(&rt, ga_mat4_norm1(b) / ga_mat4_norm1(a));
             /* the inverse: residual ||A A^-1 - I||_1 <= c n eps cond(A) for
@@ -362,7 +384,8 @@ int main(void)
         ga_mat4 a = mat((double[16]){-50, 0, 0, 0, 0, -20, 0, 0, 0, 0, 1, 0, 0, 0, 0, 3}), r;
         c = tk_begin("expm(diag(-50,-20,1,3)) per entry, relative", 40 * u * 50);
         st = ga_mat4_expm(a, &r);
-        for (int k = 0; k < 4; k++) tk_add(&c, st == GA_OK ? fabs(r.m[5 * k] - exp(d[k])) / exp(d[k]) : INFINITY);
+        for (int k = 0; k < 4; k++)
+            tk_add(&c, st == GA_OK ? fabs(r.m[5 * k] - exp(d[k])) / exp(d[k]) : INFINITY);
         tk_end(&c);
         ga_mat4 j = mat((double[16]){-30, 1, 0, 0, 0, -30, 1, 0, 0, 0, -30, 0, 0, 0, 0, 0});
         c = tk_begin("expm(Jordan block at -30) per entry, relative", 40 * u * 31);
@@ -392,13 +415,14 @@ int main(void)
         tk_end(&c);
         /* small parts under large ones: a scaling of 1 + 1e-10 under a
          * translation of 1e6, compared with log1p of the stored entry */
-        ga_mat4 tiny = mat((double[16]){1 + 1e-10, 3e-9, 0, 1e6, 0, 1 - 2e-10, 0, -5e5,
-                                        0, 0, 1 + 3e-10, 2e5, 0, 0, 0, 1});
+        ga_mat4 tiny = mat((double[16]){1 + 1e-10, 3e-9, 0, 1e6, 0, 1 - 2e-10, 0, -5e5, 0, 0, 1 + 3e-10, 2e5,
+                                        0, 0, 0, 1});
         c = tk_begin("logm(I + 1e-10 D, t = 1e6) diagonal, relative", 1e-13);
         st = ga_mat4_logm(tiny, &ln);
         for (int k = 0; k < 3; k++)
-            tk_add(&c, st == GA_OK ? fabs(ln.m[5 * k] - log1p(tiny.m[5 * k] - 1)) / fabs(log1p(tiny.m[5 * k] - 1))
-                                   : INFINITY);
+            tk_add(&c, st == GA_OK
+                           ? fabs(ln.m[5 * k] - log1p(tiny.m[5 * k] - 1)) / fabs(log1p(tiny.m[5 * k] - 1))
+                           : INFINITY);
         tk_end(&c);
         /* se3_exp(pi e3) has eigenvalues -1 +- 1.2e-16 i (sin(pi) in double):
          * one rounding off the axis, so a principal log exists; logm finds it
@@ -442,30 +466,39 @@ int main(void)
     {
         ga_mat4 id = ga_mat4_identity(), m;
         ga_twist tw, t0 = {{1, 2, 3}, {4, 5, 6}};
-        m = id; m.m[6] = NAN;
+        m = id;
+        m.m[6] = NAN;
         expect_fail("mat4_inverse(NaN)", ga_mat4_inverse, m, GA_ERR_NOTFINITE);
         expect_fail("mat4_expm(NaN)", ga_mat4_expm, m, GA_ERR_NOTFINITE);
         expect_fail("mat4_logm(NaN)", ga_mat4_logm, m, GA_ERR_NOTFINITE);
-        m = id; m.m[3] = INFINITY;
+        m = id;
+        m.m[3] = INFINITY;
         expect_fail("mat4_expm(Inf)", ga_mat4_expm, m, GA_ERR_NOTFINITE);
         expect_fail("mat4_logm(Inf)", ga_mat4_logm, m, GA_ERR_NOTFINITE);
         tw = t0;
         tk_expect_status("se3_log(Inf)", ga_se3_log(m, &tw), GA_ERR_NOTFINITE);
         tk_expect_status("se3_check(Inf)", ga_se3_check(m, 1e-9), GA_ERR_NOTFINITE);
-        m = id; m.m[0] = NAN;
+        m = id;
+        m.m[0] = NAN;
         tk_expect_status("se3_log(NaN)", ga_se3_log(m, &tw), GA_ERR_NOTFINITE);
-        m = id; m.m[0] = m.m[5] = m.m[10] = 1.001;
+        m = id;
+        m.m[0] = m.m[5] = m.m[10] = 1.001;
         tk_expect_status("se3_log(scaled R)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
-        m = id; m.m[1] = 1e-6;
+        m = id;
+        m.m[1] = 1e-6;
         tk_expect_status("se3_log(sheared R)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
-        m = id; m.m[0] = -1;
+        m = id;
+        m.m[0] = -1;
         tk_expect_status("se3_log(reflection)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
-        m = id; m.m[12] = 0.5;
+        m = id;
+        m.m[12] = 0.5;
         tk_expect_status("se3_log(last row 0.5 0 0 1)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
-        m = id; m.m[15] = 2;
+        m = id;
+        m.m[15] = 2;
         tk_expect_status("se3_log(last row 0 0 0 2)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
         tk_expect(tw.w.x == 1 && tw.v.z == 6, "se3_log: a failed call leaves its output untouched");
-        m = ga_se3_exp(t0); m.m[0] += 1e-12; /* slightly off: accepted */
+        m = ga_se3_exp(t0);
+        m.m[0] += 1e-12; /* slightly off: accepted */
         tk_expect_status("se3_log(R off by 1e-12)", ga_se3_log(m, &tw), GA_OK);
         m.m[0] += 1e-8; /* far off */
         tk_expect_status("se3_log(R off by 1e-8)", ga_se3_log(m, &tw), GA_ERR_NOTRIGID);
@@ -476,8 +509,11 @@ int main(void)
         expect_fail("mat4_expm(1000 I) overflows", ga_mat4_expm, m, GA_ERR_DOMAIN);
         for (int k = 0; k < 4; k++) m.m[5 * k] = -1000;
         ga_mat4 r;
-        tk_expect(ga_mat4_expm(m, &r) == GA_OK && ga_mat4_norm1(r) == 0, "mat4_expm(-1000 I) underflows to 0");
-        m = id; m.m[0] = DBL_MAX; m.m[4] = DBL_MAX;
+        tk_expect(ga_mat4_expm(m, &r) == GA_OK && ga_mat4_norm1(r) == 0,
+                  "mat4_expm(-1000 I) underflows to 0");
+        m = id;
+        m.m[0] = DBL_MAX;
+        m.m[4] = DBL_MAX;
         expect_fail("mat4_expm(entries DBL_MAX)", ga_mat4_expm, m, GA_ERR_DOMAIN);
 
         expect_fail("mat4_logm(half turn diag(1,-1,-1,1))", ga_mat4_logm,
@@ -493,15 +529,18 @@ int main(void)
         ga_mat4 sing = mat((double[16]){1, 2, 3, 0, 2, 4, 6, 0, 1, 1, 1, 0, 0, 0, 0, 1});
         expect_fail("mat4_logm(rank 3)", ga_mat4_logm, sing, GA_ERR_SINGULAR);
         expect_fail("mat4_inverse(rank 3)", ga_mat4_inverse, sing, GA_ERR_SINGULAR);
-        m = id; m.m[10] = 0;
+        m = id;
+        m.m[10] = 0;
         expect_fail("mat4_logm(diag(1,1,0,1))", ga_mat4_logm, m, GA_ERR_SINGULAR);
         expect_fail("mat4_inverse(0)", ga_mat4_inverse, mat((double[16]){0}), GA_ERR_SINGULAR);
 
         ga_mat4 g = sentinel();
         tk_expect_status("se3_geodesic(t = NaN)", ga_se3_geodesic(id, id, NAN, &g), GA_ERR_NOTFINITE);
-        m = id; m.m[0] = 2;
+        m = id;
+        m.m[0] = 2;
         tk_expect_status("se3_geodesic(h1 not rigid)", ga_se3_geodesic(id, m, 0.5, &g), GA_ERR_NOTRIGID);
-        m = id; m.m[7] = NAN;
+        m = id;
+        m.m[7] = NAN;
         tk_expect_status("se3_geodesic(h0 NaN)", ga_se3_geodesic(m, id, 0.5, &g), GA_ERR_NOTFINITE);
         tk_expect(is_sentinel(g), "se3_geodesic: a failed call leaves its output untouched");
     }

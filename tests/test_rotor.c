@@ -23,7 +23,11 @@
 static tk_rng rng = {0x9E3779B97F4A7C15u}; /* testkit.h: splitmix64 */
 
 /* ---- small vector helpers ------------------------------------------------ */
-static ga_vec3 v3(double x, double y, double z) { ga_vec3 r = {x, y, z}; return r; }
+static ga_vec3 v3(double x, double y, double z)
+{
+    ga_vec3 r = {x, y, z};
+    return r;
+}
 static ga_vec3 vadd(ga_vec3 a, ga_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static ga_vec3 vsub(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static ga_vec3 vscale(ga_vec3 a, double k) { return v3(k * a.x, k * a.y, k * a.z); }
@@ -69,8 +73,7 @@ static double r_comp(ga_rotor r, int i)
 static double rdiff(ga_rotor a, ga_rotor b)
 {
     double d = 0.0;
-    for (int i = 0; i < 8; i++)
-        d = tk_max(d, fabs(r_comp(a, i) - r_comp(b, i)));
+    for (int i = 0; i < 8; i++) d = tk_max(d, fabs(r_comp(a, i) - r_comp(b, i)));
     return d;
 }
 static ga_rotor rneg(ga_rotor r)
@@ -85,14 +88,13 @@ static ga_rotor rnd_rotor8(double scale)
 {
     ga_rotor r;
     double *c = &r.s;
-    for (int k = 0; k < 8; k++)
-        c[k] = scale * tk_range(&rng, -1, 1);
+    for (int k = 0; k < 8; k++) c[k] = scale * tk_range(&rng, -1, 1);
     return r;
 }
 static double gdiff(ga_generator a, ga_generator b)
 {
     return tk_max(tk_max(fabs(a.e12 - b.e12), tk_max(fabs(a.e13 - b.e13), fabs(a.e23 - b.e23))),
-                tk_max(fabs(a.e1n - b.e1n), tk_max(fabs(a.e2n - b.e2n), fabs(a.e3n - b.e3n))));
+                  tk_max(fabs(a.e1n - b.e1n), tk_max(fabs(a.e2n - b.e2n), fabs(a.e3n - b.e3n))));
 }
 static ga_mv gen_mv(ga_generator g)
 {
@@ -103,7 +105,11 @@ static ga_mv gen_mv(ga_generator g)
     m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = g.e3n;
     return m;
 }
-static ga_twist twist(ga_vec3 w, ga_vec3 v) { ga_twist t = {w, v}; return t; }
+static ga_twist twist(ga_vec3 w, ga_vec3 v)
+{
+    ga_twist t = {w, v};
+    return t;
+}
 static ga_generator gen(ga_vec3 w, ga_vec3 v) { return ga_twist_to_generator(twist(w, v)); }
 
 /* ---- references ------------------------------------------------------------ */
@@ -121,21 +127,20 @@ static ga_rotor mv_exp(ga_generator g, int *k_out)
     double nc = sqrt(g.e1n * g.e1n + g.e2n * g.e2n + g.e3n * g.e3n), kc = nc > 0 ? 1 / nc : 0;
     ga_generator gu = {g.e12, g.e13, g.e23, kc * g.e1n, kc * g.e2n, kc * g.e3n};
     int k = 0;
-    while (nb > 0.125)
-        nb *= 0.5, k++;
+    while (nb > 0.125) nb *= 0.5, k++;
     ga_mv X = ga_mv_scale(gen_mv(gu), ldexp(1.0, -k)), E = ga_mv_scalar(1.0), T = E;
     for (int j = 1; j <= 14; j++) {
         T = ga_mv_scale(ga_mv_gp(T, X), 1.0 / j);
         E = ga_mv_add(E, T);
     }
-    for (int i = 0; i < k; i++)
-        E = ga_mv_gp(E, E);
+    for (int i = 0; i < k; i++) E = ga_mv_gp(E, E);
     *k_out = k;
     ga_rotor r;
     tk_add_bool(tk_get("full-algebra exp lies in the 8-component form"),
                 ga_rotor_from_mv(E, 1e-6, &r) == GA_OK);
-    ga_rotor raw = {E.c[GA_BLADE_SCALAR], E.c[GA_BLADE_E12], E.c[GA_BLADE_E13], E.c[GA_BLADE_E23],
-                    nc * E.c[GA_BLADE_E14], nc * E.c[GA_BLADE_E24], nc * E.c[GA_BLADE_E34], nc * E.c[GA_BLADE_E1234]};
+    ga_rotor raw = {E.c[GA_BLADE_SCALAR],   E.c[GA_BLADE_E12],       E.c[GA_BLADE_E13],
+                    E.c[GA_BLADE_E23],      nc * E.c[GA_BLADE_E14],  nc * E.c[GA_BLADE_E24],
+                    nc * E.c[GA_BLADE_E34], nc * E.c[GA_BLADE_E1234]};
     return raw;
 }
 
@@ -148,43 +153,34 @@ static void mm_ld(const ld *a, const ld *b, ld *c)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
             ld s = 0;
-            for (int k = 0; k < 4; k++)
-                s += a[4 * i + k] * b[4 * k + j];
+            for (int k = 0; k < 4; k++) s += a[4 * i + k] * b[4 * k + j];
             t[4 * i + j] = s;
         }
-    for (int i = 0; i < 16; i++)
-        c[i] = t[i];
+    for (int i = 0; i < 16; i++) c[i] = t[i];
 }
 static ga_mat4 expm_ref(ga_twist xi)
 {
-    ld A[16] = {0, -xi.w.z, xi.w.y, xi.v.x, xi.w.z, 0, -xi.w.x, xi.v.y,
-                -xi.w.y, xi.w.x, 0, xi.v.z, 0, 0, 0, 0};
+    ld A[16] = {0,       -xi.w.z, xi.w.y, xi.v.x, xi.w.z, 0, -xi.w.x, xi.v.y,
+                -xi.w.y, xi.w.x,  0,      xi.v.z, 0,      0, 0,       0};
     ld th = sqrtl((ld)xi.w.x * xi.w.x + (ld)xi.w.y * xi.w.y + (ld)xi.w.z * xi.w.z);
     int k = 0;
-    while (th > 0.125L)
-        th *= 0.5L, k++;
-    for (int i = 0; i < 16; i++)
-        A[i] = ldexpl(A[i], -k);
+    while (th > 0.125L) th *= 0.5L, k++;
+    for (int i = 0; i < 16; i++) A[i] = ldexpl(A[i], -k);
     ld E[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, T[16];
-    for (int i = 0; i < 16; i++)
-        T[i] = E[i];
+    for (int i = 0; i < 16; i++) T[i] = E[i];
     for (int j = 1; j <= 20; j++) {
         mm_ld(T, A, T);
-        for (int i = 0; i < 16; i++)
-            T[i] /= j, E[i] += T[i];
+        for (int i = 0; i < 16; i++) T[i] /= j, E[i] += T[i];
     }
-    for (int i = 0; i < k; i++)
-        mm_ld(E, E, E);
+    for (int i = 0; i < k; i++) mm_ld(E, E, E);
     ga_mat4 m;
-    for (int i = 0; i < 16; i++)
-        m.m[i] = (double)E[i];
+    for (int i = 0; i < 16; i++) m.m[i] = (double)E[i];
     return m;
 }
 static double mdiff(ga_mat4 a, ga_mat4 b)
 {
     double d = 0.0;
-    for (int i = 0; i < 16; i++)
-        d = tk_max(d, fabs(a.m[i] - b.m[i]));
+    for (int i = 0; i < 16; i++) d = tk_max(d, fabs(a.m[i] - b.m[i]));
     return d;
 }
 static ga_mat4 mmul(ga_mat4 a, ga_mat4 b)
@@ -193,8 +189,7 @@ static ga_mat4 mmul(ga_mat4 a, ga_mat4 b)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
             double s = 0;
-            for (int k = 0; k < 4; k++)
-                s += a.m[4 * i + k] * b.m[4 * k + j];
+            for (int k = 0; k < 4; k++) s += a.m[4 * i + k] * b.m[4 * k + j];
             c.m[4 * i + j] = s;
         }
     return c;
@@ -203,8 +198,7 @@ static ga_mat4 mmul(ga_mat4 a, ga_mat4 b)
 /* Hamilton quaternion product and the plain dual-quaternion product. */
 static ga_quat qmul(ga_quat a, ga_quat b)
 {
-    ga_quat r = {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
-                 a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+    ga_quat r = {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
                  a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
                  a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
     return r;
@@ -248,12 +242,12 @@ static void check_product(long n)
         ga_mv rest = full; /* closure: nothing outside the 8-component form */
         rest.c[GA_BLADE_E14] -= rest.c[GA_BLADE_E15], rest.c[GA_BLADE_E24] -= rest.c[GA_BLADE_E25];
         rest.c[GA_BLADE_E34] -= rest.c[GA_BLADE_E35], rest.c[GA_BLADE_E1234] -= rest.c[GA_BLADE_E1235];
-        const int in[8] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E15, GA_BLADE_E25, GA_BLADE_E35, GA_BLADE_E1235};
-        for (int k = 0; k < 8; k++)
-            rest.c[in[k]] = 0;
+        const int in[8] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23,
+                           GA_BLADE_E15,    GA_BLADE_E25, GA_BLADE_E35, GA_BLADE_E1235};
+        for (int k = 0; k < 8; k++) rest.c[in[k]] = 0;
         tk_add(&w_out, tk_mv_maxabs(rest) / scale);
         tk_add(&w_rev, tk_mv_maxabs(ga_mv_sub(ga_mv_reverse(ga_rotor_to_mv(a)),
-                                          ga_rotor_to_mv(ga_rotor_reverse(a)))));
+                                              ga_rotor_to_mv(ga_rotor_reverse(a)))));
         ga_vec3 gw = rnd_vec_u(3), gv = rnd_vec_logu(1e-3, 1e3);
         ga_generator g = gen(gw, gv);
         ga_rotor r = ga_rotor_exp(g), back;
@@ -288,8 +282,10 @@ static void check_action(long n)
         tk_add(&w_pt, st == GA_OK ? vmaxabs(vsub(y, yf)) / scale : INFINITY);
         tk_add(&w_null, tk_mv_maxabs(ga_mv_sub(X, ga_point_up(y))) / scale);
         ga_mv Rm = ga_rotor_to_mv(r);
-        tk_add(&w_n, tk_mv_maxabs(ga_mv_sub(ga_rotor_apply_mv(r, ga_mv_n()), ga_mv_n())) / ((1 + tl) * (1 + tl)));
-        tk_add(&w_rr, tk_mv_maxabs(ga_mv_sub(ga_mv_gp(Rm, ga_mv_reverse(Rm)), ga_mv_scalar(1))) / ((1 + tl) * (1 + tl)));
+        tk_add(&w_n,
+               tk_mv_maxabs(ga_mv_sub(ga_rotor_apply_mv(r, ga_mv_n()), ga_mv_n())) / ((1 + tl) * (1 + tl)));
+        tk_add(&w_rr, tk_mv_maxabs(ga_mv_sub(ga_mv_gp(Rm, ga_mv_reverse(Rm)), ga_mv_scalar(1))) /
+                          ((1 + tl) * (1 + tl)));
         /* R2 R1 means R1 first */
         ga_vec3 w2 = rnd_vec_u(3), v2 = rnd_vec_u(10);
         ga_rotor r2 = ga_rotor_exp(gen(w2, v2));
@@ -310,7 +306,8 @@ static void check_action(long n)
     ga_vec3 ta = ga_rotor_apply(ga_rotor_translation(v3(1, -2, 5)), v3(0, 0, 0)), tf;
     ga_point_down(ga_rotor_apply_mv(ga_rotor_translation(v3(1, -2, 5)), ga_point_up(v3(0, 0, 0))), &tf);
     tk_add_bool(tk_get("T_a = 1 + n a/2 translates by +a (W-L §2.2)"),
-                ta.x == 1 && ta.y == -2 && ta.z == 5 && fabs(tf.x - 1) + fabs(tf.y + 2) + fabs(tf.z - 5) < 16 * EPS);
+                ta.x == 1 && ta.y == -2 && ta.z == 5 &&
+                    fabs(tf.x - 1) + fabs(tf.y + 2) + fabs(tf.z - 5) < 16 * EPS);
     ga_vec3 rr = ga_rotor_apply(ga_rotor_rotation(v3(0, 0, 2), PI / 2), v3(1, 0, 0));
     tk_add_bool(tk_get("ga_rotor_rotation is right-handed"),
                 fabs(rr.x) < 4 * EPS && fabs(rr.y - 1) < 4 * EPS);
@@ -429,7 +426,8 @@ static void check_exp_log(long n)
        c_perp is divided by sinc(phi) >= sinc(pi - 1/4) = 0.079, amplifying errors ~13x */
     tk_check w_lit = tk_begin("   l_literal(exp(B)) = B", 8 * 13 * EPS);
     for (long i = 0; i < n; i++) {
-        ga_vec3 wu = tk_unit(&rng), w = vscale(wu, PI + (PI - 0.5) * tk_uni(&rng)), v = rnd_vec_logu(1e-3, 1e3);
+        ga_vec3 wu = tk_unit(&rng), w = vscale(wu, PI + (PI - 0.5) * tk_uni(&rng)),
+                v = rnd_vec_logu(1e-3, 1e3);
         ga_generator B = gen(w, v), L;
         int st = ga_rotor_log_literal(ga_rotor_exp(B), &L);
         tk_add(&w_lit, st == GA_OK ? gdiff(L, B) / fmax(1, vnorm(v)) : INFINITY);
@@ -455,8 +453,10 @@ static void check_matrix(long n)
     tk_check w_mul = tk_begin("mat(R2 R1) = mat(R2) mat(R1)", 16 * EPS);
     for (long i = 0; i < n; i++) {
         int kind = i % 4;
-        double th = kind == 0 ? tk_loguni(&rng, 1e-12, 1e-3) : kind == 1 ? PI - tk_loguni(&rng, 1e-12, 1e-3)
-                  : kind == 2 ? PI : 3 * PI * tk_uni(&rng);
+        double th = kind == 0 ? tk_loguni(&rng, 1e-12, 1e-3)
+                  : kind == 1 ? PI - tk_loguni(&rng, 1e-12, 1e-3)
+                  : kind == 2 ? PI
+                              : 3 * PI * tk_uni(&rng);
         double tl = tk_loguni(&rng, 1e-6, 1e3);
         ga_vec3 xw = rnd_vec(th), xv = rnd_vec(tl);
         ga_twist xi = twist(xw, xv);
@@ -477,7 +477,8 @@ static void check_matrix(long n)
         tk_add(&w_app, vmaxabs(vsub(y, ym)) / (scale + 10));
         ga_vec3 w2 = rnd_vec_u(3), v2 = rnd_vec(tl);
         ga_rotor r2 = ga_rotor_exp(gen(w2, v2));
-        tk_add(&w_mul, mdiff(ga_rotor_to_mat4(ga_rotor_mul(r2, r)), mmul(ga_rotor_to_mat4(r2), M)) / (2 * scale));
+        tk_add(&w_mul,
+               mdiff(ga_rotor_to_mat4(ga_rotor_mul(r2, r)), mmul(ga_rotor_to_mat4(r2), M)) / (2 * scale));
     }
     tk_end(&w_exp);
     tk_end(&w_rmr);
@@ -517,8 +518,7 @@ static void check_quat(long n)
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
                 double k2 = 0;
-                for (int m = 0; m < 3; m++)
-                    k2 += K[3 * a + m] * K[3 * m + b];
+                for (int m = 0; m < 3; m++) k2 += K[3 * a + m] * K[3 * m + b];
                 tk_add(&w_rod, fabs(M.m[4 * a + b] - ((a == b) + s * K[3 * a + b] + (1 - c) * k2)));
             }
         ga_vec3 rw = rnd_vec_u(3), rv = rnd_vec_logu(1e-3, 1e3);
@@ -597,8 +597,12 @@ static void check_helix(void)
         double psi = 9 * PI, ta = 4, tb = 6;
         ga_vec3 t = vadd(vadd(vscale(a, ta), vscale(b, tb)), tperp);
         /* B = (psi/2) P + t n/2 with P = ab = a ^ b: (e12, e13, e23) of a ^ b, c = t/2 */
-        ga_generator B = {psi / 2 * (a.x * b.y - a.y * b.x), psi / 2 * (a.x * b.z - a.z * b.x),
-                          psi / 2 * (a.y * b.z - a.z * b.y), t.x / 2, t.y / 2, t.z / 2};
+        ga_generator B = {psi / 2 * (a.x * b.y - a.y * b.x),
+                          psi / 2 * (a.x * b.z - a.z * b.x),
+                          psi / 2 * (a.y * b.z - a.z * b.y),
+                          t.x / 2,
+                          t.y / 2,
+                          t.z / 2};
         double alpha = hypot(ta, tb), b1 = atan2(-tb, ta); /* cos b1 = ta/alpha, sin b1 = -tb/alpha */
         ga_vec3 centre = vscale(vadd(vscale(a, sin(b1)), vscale(b, cos(b1))), alpha / psi);
         for (int k = 0; k <= N_PATH; k++) {
@@ -607,7 +611,8 @@ static void check_helix(void)
             ga_rotor R = ga_rotor_exp(Bl);
             ga_vec3 r = ga_rotor_apply(R, v3(0, 0, 0));
             ga_vec3 circ = vadd(vscale(vadd(vscale(a, sin(lam * psi + b1)), vscale(b, cos(lam * psi + b1))),
-                                       -alpha / psi), centre);
+                                       -alpha / psi),
+                                centre);
             /* the printed formula is the path moved by +2 lam t_perp, exactly in
                exact arithmetic: its miss is 2 lam |t_perp| = 2 lam (so 2 at
                lam = 1), to the rounding of the path itself */
@@ -641,7 +646,8 @@ static void check_paper_forms(long n)
     for (long i = 0; i < n / 10; i++) {
         ga_vec3 u = tk_unit(&rng), a = rnd_perp(u), b = vcross(u, a); /* P = ab, axis u */
         double psi = 0.5 + (2 * PI - 1) * tk_uni(&rng), h = psi / 2;
-        double ka = 10 * tk_range(&rng, -1, 1), kb = 10 * tk_range(&rng, -1, 1), ku = 10 * tk_range(&rng, -1, 1);
+        double ka = 10 * tk_range(&rng, -1, 1), kb = 10 * tk_range(&rng, -1, 1),
+               ku = 10 * tk_range(&rng, -1, 1);
         ga_vec3 tpar = vadd(vscale(a, ka), vscale(b, kb)), tperp = vscale(u, ku);
         ga_vec3 t = vadd(tpar, tperp);
         ga_generator plane = {a.x * b.y - a.y * b.x, a.x * b.z - a.z * b.x, a.y * b.z - a.z * b.y, 0, 0, 0};
@@ -650,15 +656,20 @@ static void check_paper_forms(long n)
         ga_mv P = gen_mv(plane);
         /* Def. 4: tau = [cos + sin P][1 + n a/2], built here in the full algebra */
         ga_mv rot = ga_mv_add(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)));
-        ga_mv tau = ga_mv_gp(rot, ga_mv_add(ga_mv_scalar(1), ga_mv_scale(ga_mv_gp(nn, ga_vec3_to_mv(vscale(tperp, -1))), 0.5)));
-        tk_add(&w_tau, tk_mv_maxabs(ga_mv_sub(ga_rotor_to_mv(ga_rotor_twist(psi, plane, vscale(tperp, -1))), tau)) / 10);
+        ga_mv tau = ga_mv_gp(rot,
+                             ga_mv_add(ga_mv_scalar(1),
+                                       ga_mv_scale(ga_mv_gp(nn, ga_vec3_to_mv(vscale(tperp, -1))), 0.5)));
+        tk_add(&w_tau,
+               tk_mv_maxabs(ga_mv_sub(ga_rotor_to_mv(ga_rotor_twist(psi, plane, vscale(tperp, -1))), tau)) /
+                   10);
         /* Lemma 5: exp(B) = [1 + sinc(psi/2) t_par n/2 ~tau] tau */
         double sinc = sin(h) / h;
         ga_mv tpn = ga_mv_gp(ga_vec3_to_mv(tpar), nn);
         ga_mv L = ga_mv_add(ga_mv_scalar(1), ga_mv_scale(ga_mv_gp(tpn, ga_mv_reverse(tau)), sinc / 2));
         tk_add(&w_l5, tk_mv_maxabs(ga_mv_sub(ga_mv_gp(L, tau), R)) / 100);
         /* Lemma 6: L translates by t'_par = -sinc t_par (cos - sin P) */
-        ga_mv tp = ga_mv_scale(ga_mv_gp(ga_vec3_to_mv(tpar), ga_mv_sub(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)))), -sinc);
+        ga_mv tp = ga_mv_scale(
+            ga_mv_gp(ga_vec3_to_mv(tpar), ga_mv_sub(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)))), -sinc);
         ga_rotor Lr;
         ga_vec3 moved = {NAN, NAN, NAN};
         if (ga_rotor_from_mv(L, 1e-12, &Lr) == GA_OK) /* a rotor, and a pure translation */
@@ -731,7 +742,7 @@ static void check_screws(long n)
     int st = ga_rotor_to_screw(ga_rotor_identity(), &id);
     tk_add_bool(tk_get("identity screw: all zero, axis (0, 0, 1)"),
                 st == GA_OK && id.angle == 0 && id.axis.z == 1 && id.axis.x == 0 && id.shift == 0 &&
-               id.pitch == 0 && id.point.x == 0);
+                    id.pitch == 0 && id.point.x == 0);
     tk_add_bool(tk_get("identity screw -> identity rotor"),
                 rdiff(ga_rotor_from_screw(id), ga_rotor_identity()) == 0);
     tk_end_named();
@@ -770,7 +781,7 @@ static void check_bad_input(void)
     ga_rotor zero = {0, 0, 0, 0, 1, 2, 3, 4};
     tk_add_bool(tk_get("normalize of q = 0: GA_ERR_NOTRIGID"),
                 ga_rotor_normalize(zero, &out) == GA_ERR_NOTRIGID && out.s == 9);
-    ga_rotor scaled = {3 * good.s, 3 * good.e12, 3 * good.e13, 3 * good.e23,
+    ga_rotor scaled = {3 * good.s,   3 * good.e12, 3 * good.e13, 3 * good.e23,
                        3 * good.e1n, 3 * good.e2n, 3 * good.e3n, 3 * good.e123n};
     tk_add_bool(tk_get("normalize(3 R) = R"),
                 ga_rotor_normalize(scaled, &out) == GA_OK && rdiff(out, good) < 16 * EPS * 10);
@@ -802,8 +813,7 @@ static void check_bad_input(void)
     B = M, B.m[1] += 0.1;
     tk_add_bool(tk_get("from_mat4: shear"), ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID);
     B = M;
-    for (int j = 0; j < 3; j++)
-        B.m[j] = -B.m[j];
+    for (int j = 0; j < 3; j++) B.m[j] = -B.m[j];
     tk_add_bool(tk_get("from_mat4: a reflection (det -1)"), ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID);
     B = M, B.m[12] = 0.1;
     tk_add_bool(tk_get("from_mat4: last row not 0 0 0 1"), ga_rotor_from_mat4(B, &r) == GA_ERR_NOTRIGID);
@@ -829,8 +839,10 @@ static void check_se3(long n)
     tk_check w_ref = tk_begin("ga_se3_exp(xi) = long-double expm(xi^)", 16 * EPS);
     for (long i = 0; i < n; i++) {
         int kind = i % 4;
-        double th = kind == 0 ? tk_loguni(&rng, 1e-12, 1e-3) : kind == 1 ? PI - tk_loguni(&rng, 1e-9, 1e-3)
-                  : kind == 2 ? tk_loguni(&rng, 1e-3, PI - 1e-3) : 0;
+        double th = kind == 0 ? tk_loguni(&rng, 1e-12, 1e-3)
+                  : kind == 1 ? PI - tk_loguni(&rng, 1e-9, 1e-3)
+                  : kind == 2 ? tk_loguni(&rng, 1e-3, PI - 1e-3)
+                              : 0;
         double tl = tk_loguni(&rng, 1e-6, 1e3);
         ga_vec3 xw = rnd_vec(th), xv = rnd_vec(tl);
         ga_twist xi = twist(xw, xv), xl;
@@ -843,7 +855,8 @@ static void check_se3(long n)
         int st = ga_rotor_log(r, &L), sm = ga_se3_log(M, &xl);
         ga_twist xr = ga_generator_to_twist(L);
         tk_add(&w_log, st == GA_OK && sm == GA_OK
-                          ? tk_max(vmaxabs(vsub(xr.w, xl.w)), vmaxabs(vsub(xr.v, xl.v))) / scale : INFINITY);
+                           ? tk_max(vmaxabs(vsub(xr.w, xl.w)), vmaxabs(vsub(xr.v, xl.v))) / scale
+                           : INFINITY);
     }
     /* each side is a closed form of a few dozen roundings of size max(1, |v|);
        against the long-double series (exact to ~1e-19 here, then rounded to

@@ -38,7 +38,9 @@
 #define TK_PI 3.14159265358979323846
 
 /* ---- splitmix64: the same sequence on every machine and compiler -------- */
-typedef struct { uint64_t s; } tk_rng;
+typedef struct {
+    uint64_t s;
+} tk_rng;
 
 static inline uint64_t tk_next(tk_rng *r)
 {
@@ -52,10 +54,7 @@ static inline double tk_uni(tk_rng *r) { return (double)(tk_next(r) >> 11) * 0x1
 /** Uniform in [lo, hi). */
 static inline double tk_range(tk_rng *r, double lo, double hi) { return lo + (hi - lo) * tk_uni(r); }
 /** Log-uniform in [lo, hi). */
-static inline double tk_loguni(tk_rng *r, double lo, double hi)
-{
-    return exp(tk_range(r, log(lo), log(hi)));
-}
+static inline double tk_loguni(tk_rng *r, double lo, double hi) { return exp(tk_range(r, log(lo), log(hi))); }
 /** A uniformly distributed unit vector (one draw per statement: C leaves the
  *  order of evaluation of arguments and initializers unspecified). */
 static inline ga_vec3 tk_unit(tk_rng *r)
@@ -79,8 +78,7 @@ static inline double tk_max(double a, double b) { return a > b || isnan(a) ? a :
 static inline double tk_mv_maxabs(ga_mv a)
 {
     double m = 0.0;
-    for (int i = 0; i < 32; i++)
-        m = tk_max(m, fabs(a.c[i]));
+    for (int i = 0; i < 32; i++) m = tk_max(m, fabs(a.c[i]));
     return m;
 }
 static inline double tk_norm(ga_vec3 u) { return sqrt(u.x * u.x + u.y * u.y + u.z * u.z); }
@@ -111,8 +109,8 @@ enum {
     TK_BEYOND_PI,          /* |w| U(pi, 3 pi), |v| 1e-3..1e6 */
     TK_TWIST_FAMILIES,
     TK_SCALING = TK_TWIST_FAMILIES, /* [diag(d), b], d U(-3,3), |b| 1e-3..1e3 */
-    TK_SHEAR,              /* [N, b], N strictly upper U(-2,2), |b| 1e-3..1e3 */
-    TK_AFFINE,             /* [A, b], A U(-1,1) entrywise, b U(-10,10) */
+    TK_SHEAR,                       /* [N, b], N strictly upper U(-2,2), |b| 1e-3..1e3 */
+    TK_AFFINE,                      /* [A, b], A U(-1,1) entrywise, b U(-10,10) */
     TK_FAMILIES
 };
 static const char *const tk_family_name[TK_FAMILIES] = {
@@ -142,15 +140,32 @@ static inline ga_twist tk_twist(tk_rng *r, int f)
     switch (f) {
     case TK_IDENTITY: break;
     case TK_NEAR_IDENTITY:
-        if (tk_uni(r) < 0.5) v = tk_loguni(r, 1e-300, 1e-12);
-        if (tk_uni(r) < 0.5) angle = tk_loguni(r, 1e-300, 1e-12);
+        if (tk_uni(r) < 0.5)
+            v = tk_loguni(r, 1e-300, 1e-12);
+        if (tk_uni(r) < 0.5)
+            angle = tk_loguni(r, 1e-300, 1e-12);
         break;
     case TK_TRANSLATION: v = tk_loguni(r, 1e-12, 1e6); break;
-    case TK_ROT_TINY: angle = tk_uni(r) < 0.5 ? 1e-12 : 1e-8; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
-    case TK_ROT_SMALL: angle = 1e-4; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
-    case TK_ROT_SPREAD: angle = tk_loguni(r, 1e-6, 1.0); v = tk_loguni(r, 1e-3, 1e6); break;
-    case TK_ROT_QUARTER: angle = TK_PI / 2; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
-    case TK_ROT_NEAR_PI: angle = TK_PI - 1e-9; v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2); break;
+    case TK_ROT_TINY:
+        angle = tk_uni(r) < 0.5 ? 1e-12 : 1e-8;
+        v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2);
+        break;
+    case TK_ROT_SMALL:
+        angle = 1e-4;
+        v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2);
+        break;
+    case TK_ROT_SPREAD:
+        angle = tk_loguni(r, 1e-6, 1.0);
+        v = tk_loguni(r, 1e-3, 1e6);
+        break;
+    case TK_ROT_QUARTER:
+        angle = TK_PI / 2;
+        v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2);
+        break;
+    case TK_ROT_NEAR_PI:
+        angle = TK_PI - 1e-9;
+        v = tk_uni(r) < 0.5 ? 0 : tk_range(r, 0, 2);
+        break;
     case TK_ROT_NEAR_PI_SPREAD:
         angle = TK_PI - (tk_uni(r) < 0.2 ? 1e-9 : tk_loguni(r, 1e-12, 1e-1));
         v = tk_loguni(r, 1e-3, 1e6);
@@ -165,9 +180,18 @@ static inline ga_twist tk_twist(tk_rng *r, int f)
         v = c < 1.0 / 3 ? 0 : c < 2.0 / 3 ? tk_range(r, 0, 2) : tk_loguni(r, 1e-3, 1e6);
         break;
     }
-    case TK_TINY_UNDER_LARGE: angle = tk_loguni(r, 1e-12, 1e-6); v = tk_loguni(r, 1, 1e6); break;
-    case TK_SCREW: angle = tk_range(r, 0, TK_PI); v = tk_loguni(r, 1e-3, 1e3); break;
-    case TK_BEYOND_PI: angle = tk_range(r, TK_PI, 3 * TK_PI); v = tk_loguni(r, 1e-3, 1e6); break;
+    case TK_TINY_UNDER_LARGE:
+        angle = tk_loguni(r, 1e-12, 1e-6);
+        v = tk_loguni(r, 1, 1e6);
+        break;
+    case TK_SCREW:
+        angle = tk_range(r, 0, TK_PI);
+        v = tk_loguni(r, 1e-3, 1e3);
+        break;
+    case TK_BEYOND_PI:
+        angle = tk_range(r, TK_PI, 3 * TK_PI);
+        v = tk_loguni(r, 1e-3, 1e6);
+        break;
     default: break; /* not a twist family: the zero twist */
     }
     return (ga_twist){tk_scale(u, angle), tk_scale(d, v)};
@@ -183,8 +207,7 @@ static inline ga_mat4 tk_algebra(tk_rng *r, int f)
     ga_mat4 x;
     memset(&x, 0, sizeof x);
     if (f == TK_AFFINE) {
-        for (int i = 0; i < 12; i++)
-            x.m[i] = i % 4 == 3 ? tk_range(r, -10, 10) : tk_range(r, -1, 1);
+        for (int i = 0; i < 12; i++) x.m[i] = i % 4 == 3 ? tk_range(r, -10, 10) : tk_range(r, -1, 1);
         return x;
     }
     for (int i = 0; i < 3; i++)
@@ -207,8 +230,7 @@ static inline ga_mat4 tk_algebra(tk_rng *r, int f)
 static inline ga_rotor tk_drift(tk_rng *r, ga_rotor R)
 {
     double *c = &R.s;
-    for (int k = 0; k < 8; k++)
-        c[k] += 1e-12 * tk_range(r, -1, 1) * (k < 4 ? 1 : fmax(1, fabs(c[k])));
+    for (int k = 0; k < 8; k++) c[k] += 1e-12 * tk_range(r, -1, 1) * (k < 4 ? 1 : fmax(1, fabs(c[k])));
     return R;
 }
 
@@ -218,12 +240,12 @@ enum { TK_MAX, TK_PER_CASE, TK_LEAST, TK_STATUS, TK_BOOL };
 typedef struct {
     char name[128];
     int kind;
-    long n, bad;    /* cases; cases that failed (statuses, conditions, per-case) */
-    double worst;   /* TK_MAX: largest error; TK_PER_CASE: the error of the case
-                       nearest its tolerance; TK_LEAST: smallest value */
-    double tol;     /* the tolerance (TK_PER_CASE: that case's); TK_LEAST: the bound */
-    double ratio;   /* TK_PER_CASE: largest err/tol */
-    int got, want;  /* TK_STATUS: the first wrong status (or the last right one) */
+    long n, bad;   /* cases; cases that failed (statuses, conditions, per-case) */
+    double worst;  /* TK_MAX: largest error; TK_PER_CASE: the error of the case
+                      nearest its tolerance; TK_LEAST: smallest value */
+    double tol;    /* the tolerance (TK_PER_CASE: that case's); TK_LEAST: the bound */
+    double ratio;  /* TK_PER_CASE: largest err/tol */
+    int got, want; /* TK_STATUS: the first wrong status (or the last right one) */
 } tk_check;
 
 static int tk_failures;
@@ -375,8 +397,7 @@ static inline tk_check *tk_get(const char *name)
 /** End every named check opened since the last call, in order of first use. */
 static inline void tk_end_named(void)
 {
-    for (int i = 0; i < tk_named_n; i++)
-        tk_end(&tk_named[i]);
+    for (int i = 0; i < tk_named_n; i++) tk_end(&tk_named[i]);
     tk_named_n = 0;
 }
 

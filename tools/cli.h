@@ -4,14 +4,24 @@
 
 /** Every option any command takes; each command says which it accepts. */
 enum {
-    OPT_IN = 1 << 0, OPT_OUT = 1 << 1, OPT_HEADER = 1 << 2, OPT_GROUP = 1 << 3,
-    OPT_SCHEME = 1 << 4, OPT_SAMPLES = 1 << 5, OPT_AT = 1 << 6, OPT_FORMAT = 1 << 7,
-    OPT_EVAL = 1 << 8, OPT_STEP = 1 << 9, OPT_V0 = 1 << 10, OPT_VELOCITIES = 1 << 11,
-    OPT_SVG = 1 << 12, OPT_VIEW = 1 << 13
+    OPT_IN = 1 << 0,
+    OPT_OUT = 1 << 1,
+    OPT_HEADER = 1 << 2,
+    OPT_GROUP = 1 << 3,
+    OPT_SCHEME = 1 << 4,
+    OPT_SAMPLES = 1 << 5,
+    OPT_AT = 1 << 6,
+    OPT_FORMAT = 1 << 7,
+    OPT_EVAL = 1 << 8,
+    OPT_STEP = 1 << 9,
+    OPT_V0 = 1 << 10,
+    OPT_VELOCITIES = 1 << 11,
+    OPT_SVG = 1 << 12,
+    OPT_VIEW = 1 << 13
 };
 
 typedef struct {
-    unsigned given;                    /* OPT_* bits of the options on the command line */
+    unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
     const char *group, *scheme, *format, *eval;
     int header;

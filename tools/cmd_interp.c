@@ -20,8 +20,10 @@ static int pose_to_mat4(const tio_items *in, size_t i, const double *v, ga_mat4 
     ga_quat q = {v[6], v[3], v[4], v[5]};
     double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
     if (fabs(norm - 1.0) > 1e-9)
-        return tio_error(in, i, "not a rigid motion: the quaternion has norm %.17g, not 1 "
-                                "(to 1e-9)", norm);
+        return tio_error(in, i,
+                         "not a rigid motion: the quaternion has norm %.17g, not 1 "
+                         "(to 1e-9)",
+                         norm);
     *out = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[0], v[1], v[2]}));
     return 0;
 }
@@ -49,8 +51,7 @@ static int mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
 static int parse_times(const char *s, double **out, size_t *n)
 {
     size_t cap = 1;
-    for (const char *c = s; *c; c++)
-        cap += *c == ',';
+    for (const char *c = s; *c; c++) cap += *c == ',';
     double *t = malloc(cap * sizeof *t);
     if (!t)
         return -1;
@@ -92,22 +93,20 @@ static int read_velocity(const ga_group *g, const double *v, int count, double *
 /* The picture of the path: the keys, the samples (in the order sampled) and,
  * for the screw scheme on keys that follow one screw motion, its axis.
  * 0, or -1 after a message. */
-static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval ev,
-                svg_view view, const ga_mat4 *keys, const double *times, size_t n,
-                const void *samples, size_t ns)
+static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval ev, svg_view view,
+                const ga_mat4 *keys, const double *times, size_t n, const void *samples, size_t ns)
 {
     ga_mat4 *m = malloc(ns * sizeof *m);
     if (!m) {
         fprintf(stderr, "garotor interp: out of memory\n");
         return -1;
     }
-    for (size_t k = 0; k < ns; k++)
-        m[k] = g->to_mat4((const char *)samples + k * g->elem_size);
+    for (size_t k = 0; k < ns; k++) m[k] = g->to_mat4((const char *)samples + k * g->elem_size);
     char title[256], step[64] = "";
     if (ev == GA_EVAL_EULER)
         snprintf(step, sizeof step, ", step %g", o->step);
-    snprintf(title, sizeof title, "%s: %zu keys, %zu samples (group %s, eval %s%s)",
-             ga_scheme_name(scheme), n, ns, g->name, ga_eval_name(ev), step);
+    snprintf(title, sizeof title, "%s: %zu keys, %zu samples (group %s, eval %s%s)", ga_scheme_name(scheme),
+             n, ns, g->name, ga_eval_name(ev), step);
     int frames = 4 * (int)(n - 1) < 12 ? 12 : 4 * (int)(n - 1) > 48 ? 48 : 4 * (int)(n - 1);
     svg_path path = {ga_scheme_name(scheme), "#333333", m, ns, frames};
     svg_picture pic = {title, view, keys, times, n, &path, 1, 0, {0, 0, 0}, {0, 0, 0}};
@@ -125,8 +124,10 @@ int cmd_interp(const cli_opts *o)
         return 2;
     ga_scheme scheme = GA_SCHEME_SCREW;
     if (o->scheme && ga_scheme_by_name(o->scheme, &scheme) != GA_OK) {
-        fprintf(stderr, "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
-                        "lihao2 or lihao3, not '%s'\n", o->scheme);
+        fprintf(stderr,
+                "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
+                "lihao2 or lihao3, not '%s'\n",
+                o->scheme);
         return 2;
     }
     ga_eval ev = GA_EVAL_DIRECT;
@@ -198,8 +199,7 @@ int cmd_interp(const cli_opts *o)
         }
         times[i] = v[0];
         if (i > 0 && !(times[i] > times[i - 1])) {
-            tio_error(&in, i, "key times must increase strictly: %.17g after %.17g", times[i],
-                      times[i - 1]);
+            tio_error(&in, i, "key times must increase strictly: %.17g after %.17g", times[i], times[i - 1]);
             goto done;
         }
         if (pose ? pose_to_mat4(&in, i, v + 1, &keys[i]) : 0)
@@ -213,8 +213,7 @@ int cmd_interp(const cli_opts *o)
     size_t min = ga_scheme_min_keys(scheme);
     if (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
         fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %zu keys, found %zu\n", in.name,
-                ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least",
-                min, n);
+                ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
         goto done;
     }
     for (size_t k = 0; k < nat; k++)
@@ -238,20 +237,22 @@ int cmd_interp(const cli_opts *o)
             if (vin.n > n)
                 tio_error(&vin, n, "one velocity per key: %zu keys, but %zu velocities", n, vin.n);
             else
-                fprintf(stderr, "garotor interp: %s: one velocity per key: %zu keys, but %zu "
-                                "velocities\n", vin.name, n, vin.n);
+                fprintf(stderr,
+                        "garotor interp: %s: one velocity per key: %zu keys, but %zu "
+                        "velocities\n",
+                        vin.name, n, vin.n);
             goto done;
         }
         vel = malloc(n * (size_t)g->dim * sizeof *vel);
         if (!vel)
             goto oom;
         for (size_t i = 0; i < n; i++)
-            if (read_velocity(g, vin.item[i].count ? vin.value + vin.item[i].first : NULL,
-                              vin.item[i].count,
+            if (read_velocity(g, vin.item[i].count ? vin.value + vin.item[i].first : NULL, vin.item[i].count,
                               vel + i * (size_t)g->dim)) {
-                tio_error(&vin, i, "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
-                                   "found %d", g->rigid ? "" : " or 16 (a 4x4, last row zero)",
-                          vin.item[i].count);
+                tio_error(&vin, i,
+                          "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
+                          "found %d",
+                          g->rigid ? "" : " or 16 (a 4x4, last row zero)", vin.item[i].count);
                 goto done;
             }
     }
@@ -263,8 +264,8 @@ int cmd_interp(const cli_opts *o)
         goto oom;
     int st = ga_path_init_mat4(g, scheme, n, times, keys, vel, work, wbytes, &path);
     if (st != GA_OK) {
-        fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name,
-                ga_scheme_name(scheme), ga_status_string(st));
+        fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name, ga_scheme_name(scheme),
+                ga_status_string(st));
         goto done;
     }
 
@@ -284,12 +285,13 @@ int cmd_interp(const cli_opts *o)
     ga_quat prev = {1, 0, 0, 0};
     for (size_t k = 0; k < ns; k++) {
         double *row = res + k * (size_t)width;
-        row[0] = nat ? at[k] : (k + 1 == ns ? times[n - 1]
-                                            : times[0] + (double)k * (times[n - 1] - times[0]) / (double)(ns - 1));
+        row[0] = nat ? at[k]
+                     : (k + 1 == ns ? times[n - 1]
+                                    : times[0] + (double)k * (times[n - 1] - times[0]) / (double)(ns - 1));
         ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
         if (pose && (st = mat4_to_pose(m, &prev, row + 1)) != GA_OK) {
-            fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name,
-                    k + 1, ga_status_string(st));
+            fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name, k + 1,
+                    ga_status_string(st));
             goto done;
         }
         if (!pose)
@@ -303,8 +305,7 @@ int cmd_interp(const cli_opts *o)
             tio_out_close(&out, 0);
             goto done;
         }
-        for (size_t k = 0; k < ns; k++)
-            tio_out_line(&out, res + k * (size_t)width, width);
+        for (size_t k = 0; k < ns; k++) tio_out_line(&out, res + k * (size_t)width, width);
         if (tio_out_close(&out, 1) == 0)
             rc = 0;
         else if (o->svg)

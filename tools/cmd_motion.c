@@ -42,8 +42,10 @@ int cli_check_motion(const ga_group *g, ga_mat4 m, const tio_items *in, size_t i
             off = fmax(off, fabs(d - (r == s)));
         }
     if (off > 1e-9)
-        return tio_error(in, i, "not a rigid motion: the rotation part is not orthonormal "
-                                "(max |R^T R - I| = %.3g > 1e-9)", off);
+        return tio_error(in, i,
+                         "not a rigid motion: the rotation part is not orthonormal "
+                         "(max |R^T R - I| = %.3g > 1e-9)",
+                         off);
     if (!(det > 0.0))
         return tio_error(in, i, "not a rigid motion: the rotation part is a reflection (det < 0)");
     return 0;
@@ -66,8 +68,7 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
     for (size_t i = 0; i < in.n; i++)
         if (in.item[i].count != want) {
             tio_error(&in, i, "expected %d numbers (%s), found %d", want,
-                      is_exp ? (want == 6 ? "a twist" : "a 4x4 matrix with last row zero")
-                             : "a 4x4 matrix",
+                      is_exp ? (want == 6 ? "a twist" : "a 4x4 matrix with last row zero") : "a 4x4 matrix",
                       in.item[i].count);
             tio_free(&in);
             return 2;
@@ -121,8 +122,7 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
     }
     tio_out out;
     if (ok && tio_out_open(&out, o->out) == 0) {
-        for (size_t i = 0; i < in.n; i++)
-            tio_out_line(&out, res + i * (size_t)nout, nout);
+        for (size_t i = 0; i < in.n; i++) tio_out_line(&out, res + i * (size_t)nout, nout);
         ok = tio_out_close(&out, 1) == 0;
     } else {
         ok = 0;

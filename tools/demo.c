@@ -28,17 +28,13 @@ static const struct {
 };
 
 /* v, or 0 when it prints as zero with `decimals` decimals (no "-0.00"). */
-static double shown(double v, int decimals)
-{
-    return fabs(v) < 0.5 * pow(10.0, -decimals) ? 0.0 : v;
-}
+static double shown(double v, int decimals) { return fabs(v) < 0.5 * pow(10.0, -decimals) ? 0.0 : v; }
 
 static double max_diff(const ga_mat4 *a, const ga_mat4 *b, size_t n)
 {
     double d = 0.0;
     for (size_t k = 0; k < n; k++)
-        for (int i = 0; i < 16; i++)
-            d = fmax(d, fabs(a[k].m[i] - b[k].m[i]));
+        for (int i = 0; i < 16; i++) d = fmax(d, fabs(a[k].m[i] - b[k].m[i]));
     return d;
 }
 
@@ -57,8 +53,7 @@ static double rotation_of(ga_mat4 m, ga_vec3 *axis)
 }
 
 /* Sample a path of `scheme` through the keys on group g, as matrices. */
-static int sample(const ga_group *g, ga_scheme scheme, const double *t, const ga_mat4 *key,
-                  ga_mat4 *out)
+static int sample(const ga_group *g, ga_scheme scheme, const double *t, const ga_mat4 *key, ga_mat4 *out)
 {
     static double work[4096];
     static double elem[DEMO_SAMPLES * GA_GROUP_MAX_ELEM]; /* elem_size bytes each */
@@ -67,8 +62,7 @@ static int sample(const ga_group *g, ga_scheme scheme, const double *t, const ga
         return GA_ERR_ARG;
     int st = ga_path_init_mat4(g, scheme, DEMO_KEYS, t, key, NULL, work, sizeof work, &p);
     if (st == GA_OK)
-        st = ga_path_sample_uniform(&p, GA_EVAL_DIRECT, 1.0, DEMO_SAMPLES, t[0], t[DEMO_KEYS - 1],
-                                    elem);
+        st = ga_path_sample_uniform(&p, GA_EVAL_DIRECT, 1.0, DEMO_SAMPLES, t[0], t[DEMO_KEYS - 1], elem);
     for (size_t k = 0; st == GA_OK && k < DEMO_SAMPLES; k++)
         out[k] = g->to_mat4((const char *)elem + k * g->elem_size);
     return st;
@@ -116,7 +110,15 @@ int cmd_demo(const cli_opts *o)
             {"quadratic", "#6a3d9a", path[1][0], DEMO_SAMPLES, 8},
         };
         svg_picture pic = {"garotor demo: the screw and quadratic paths through three keys",
-                           view, M, t, DEMO_KEYS, sp, 2, 0, {0, 0, 0}, {0, 0, 0}};
+                           view,
+                           M,
+                           t,
+                           DEMO_KEYS,
+                           sp,
+                           2,
+                           0,
+                           {0, 0, 0},
+                           {0, 0, 0}};
         if (svg_write(o->svg, &pic))
             return 2;
     }
@@ -145,8 +147,8 @@ int cmd_demo(const cli_opts *o)
         printf("  t = %g to %g:  %.4g deg about (%.4f, %.4f, %.4f) through (%.4f, %.4f, %.4f),\n"
                "                shift %.4f along the axis, pitch %.4f per rad\n",
                t[i], t[i + 1], s->angle * 180.0 / pi, shown(s->axis.x, 4), shown(s->axis.y, 4),
-               shown(s->axis.z, 4), shown(s->point.x, 4), shown(s->point.y, 4),
-               shown(s->point.z, 4), shown(s->shift, 4), shown(s->pitch, 4));
+               shown(s->axis.z, 4), shown(s->point.x, 4), shown(s->point.y, 4), shown(s->point.z, 4),
+               shown(s->shift, 4), shown(s->pitch, 4));
     }
 
     /* 4. the two paths */

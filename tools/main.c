@@ -42,8 +42,8 @@ static const command commands[] = {
      "                   principal matrix log as a 4x4 with last row zero\n"
      "  --in FILE, --out FILE, --header   as for exp\n"},
     {"interp", cmd_interp,
-     OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT |
-         OPT_EVAL | OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW,
+     OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
+         OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,...) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
      "write samples of the path through them in the same format.\n"
@@ -69,34 +69,33 @@ static const command commands[] = {
      "  --in FILE, --out FILE, --header   as for exp\n"},
 };
 
-static const char usage[] =
-    "usage: garotor [COMMAND] [OPTIONS]\n"
-    "Rigid motions in conformal geometric algebra G(4,1).\n"
-    "\n"
-    "commands:\n"
-    "  demo     (the default) the built-in demonstration\n"
-    "  exp      twists to rigid motions (4x4 matrices)\n"
-    "  log      rigid motions to their principal twists\n"
-    "  interp   sample a path through key poses\n"
-    "\n"
-    "garotor COMMAND --help shows a command's options.\n";
+static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
+                            "Rigid motions in conformal geometric algebra G(4,1).\n"
+                            "\n"
+                            "commands:\n"
+                            "  demo     (the default) the built-in demonstration\n"
+                            "  exp      twists to rigid motions (4x4 matrices)\n"
+                            "  log      rigid motions to their principal twists\n"
+                            "  interp   sample a path through key poses\n"
+                            "\n"
+                            "garotor COMMAND --help shows a command's options.\n";
 
 static const struct {
     const char *name;
     unsigned bit;
     int takes_value;
 } option_table[] = {
-    {"--in", OPT_IN, 1}, {"--out", OPT_OUT, 1}, {"--header", OPT_HEADER, 0},
+    {"--in", OPT_IN, 1},       {"--out", OPT_OUT, 1},       {"--header", OPT_HEADER, 0},
     {"--group", OPT_GROUP, 1}, {"--scheme", OPT_SCHEME, 1}, {"--samples", OPT_SAMPLES, 1},
-    {"--at", OPT_AT, 1}, {"--format", OPT_FORMAT, 1}, {"--eval", OPT_EVAL, 1},
-    {"--step", OPT_STEP, 1}, {"--v0", OPT_V0, 6}, {"--velocities", OPT_VELOCITIES, 1},
-    {"--svg", OPT_SVG, 1}, {"--view", OPT_VIEW, 1},
+    {"--at", OPT_AT, 1},       {"--format", OPT_FORMAT, 1}, {"--eval", OPT_EVAL, 1},
+    {"--step", OPT_STEP, 1},   {"--v0", OPT_V0, 6},         {"--velocities", OPT_VELOCITIES, 1},
+    {"--svg", OPT_SVG, 1},     {"--view", OPT_VIEW, 1},
 };
 
 static int usage_error(const char *cmd, const char *what, const char *arg)
 {
-    fprintf(stderr, "garotor %s: %s%s%s\n(garotor %s --help shows the options)\n", cmd, what,
-            arg ? ": " : "", arg ? arg : "", cmd);
+    fprintf(stderr, "garotor %s: %s%s%s\n(garotor %s --help shows the options)\n", cmd, what, arg ? ": " : "",
+            arg ? arg : "", cmd);
     return 2;
 }
 
@@ -116,8 +115,7 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         size_t k = 0, nopt = sizeof option_table / sizeof option_table[0];
-        while (k < nopt && strcmp(a, option_table[k].name) != 0)
-            k++;
+        while (k < nopt && strcmp(a, option_table[k].name) != 0) k++;
         if (k == nopt || !(c->accepts & option_table[k].bit))
             return usage_error(c->name, "unknown option", a);
         if (i + option_table[k].takes_value >= argc)
@@ -169,8 +167,7 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && argv[1][0] != '-') {
         size_t k = 0, ncmd = sizeof commands / sizeof commands[0];
-        while (k < ncmd && strcmp(argv[1], commands[k].name) != 0)
-            k++;
+        while (k < ncmd && strcmp(argv[1], commands[k].name) != 0) k++;
         if (k == ncmd) {
             fprintf(stderr, "garotor: unknown command '%s'\n%s", argv[1], usage);
             return 2;

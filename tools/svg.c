@@ -66,9 +66,21 @@ static void view_basis(svg_view v, ga_vec3 *right, ga_vec3 *up, ga_vec3 *out)
         *up = vec(-1 / sqrt(6.0), -1 / sqrt(6.0), 2 / sqrt(6.0));
         *out = vec(1 / sqrt(3.0), 1 / sqrt(3.0), 1 / sqrt(3.0));
         break;
-    case SVG_VIEW_XY: *right = vec(1, 0, 0); *up = vec(0, 1, 0); *out = vec(0, 0, 1); break;
-    case SVG_VIEW_XZ: *right = vec(1, 0, 0); *up = vec(0, 0, 1); *out = vec(0, -1, 0); break;
-    case SVG_VIEW_YZ: *right = vec(0, 1, 0); *up = vec(0, 0, 1); *out = vec(1, 0, 0); break;
+    case SVG_VIEW_XY:
+        *right = vec(1, 0, 0);
+        *up = vec(0, 1, 0);
+        *out = vec(0, 0, 1);
+        break;
+    case SVG_VIEW_XZ:
+        *right = vec(1, 0, 0);
+        *up = vec(0, 0, 1);
+        *out = vec(0, -1, 0);
+        break;
+    case SVG_VIEW_YZ:
+        *right = vec(0, 1, 0);
+        *up = vec(0, 0, 1);
+        *out = vec(1, 0, 0);
+        break;
     }
 }
 
@@ -81,8 +93,7 @@ int svg_screw_axis(const ga_mat4 *key, size_t n, ga_vec3 *point, ga_vec3 *dir)
         ga_rotor a, b;
         ga_screw s;
         if (ga_rotor_from_mat4(key[i], &a) != GA_OK || ga_rotor_from_mat4(key[i + 1], &b) != GA_OK ||
-            ga_rotor_to_screw(ga_rotor_mul(b, ga_rotor_reverse(a)), &s) != GA_OK ||
-            !(s.angle > 0.0))
+            ga_rotor_to_screw(ga_rotor_mul(b, ga_rotor_reverse(a)), &s) != GA_OK || !(s.angle > 0.0))
             return 0;
         if (i == 0) {
             first = s;
@@ -92,8 +103,10 @@ int svg_screw_axis(const ga_mat4 *key, size_t n, ga_vec3 *point, ga_vec3 *dir)
         ga_vec3 d = axpy(-1.0, first.point, s.point);
         double size = fmax(1.0, fmax(sqrt(dot(first.point, first.point)), sqrt(dot(s.point, s.point))));
         ga_vec3 off = cross(d, first.axis);
-        if (dot(s.axis, first.axis) <= 0.0 || sqrt(dot(cross(s.axis, first.axis), cross(s.axis, first.axis))) > 1e-9 ||
-            sqrt(dot(off, off)) > 1e-9 * size || fabs(s.pitch - first.pitch) > 1e-9 * fmax(1.0, fabs(first.pitch)))
+        if (dot(s.axis, first.axis) <= 0.0 ||
+            sqrt(dot(cross(s.axis, first.axis), cross(s.axis, first.axis))) > 1e-9 ||
+            sqrt(dot(off, off)) > 1e-9 * size ||
+            fabs(s.pitch - first.pitch) > 1e-9 * fmax(1.0, fabs(first.pitch)))
             return 0;
     }
     if (n < 2)
@@ -133,8 +146,7 @@ static void point_xy(const canvas *c, ga_vec3 p, double *x, double *y)
 
 static void text(FILE *f, const char *s)
 {
-    for (; *s; s++)
-        switch (*s) {
+    for (; *s; s++) switch (*s) {
         case '&': fputs("&amp;", f); break;
         case '<': fputs("&lt;", f); break;
         case '>': fputs("&gt;", f); break;
@@ -145,10 +157,14 @@ static void text(FILE *f, const char *s)
 
 static void line(FILE *f, double x1, double y1, double x2, double y2, const char *colour)
 {
-    fputs("<line x1=\"", f); num(f, x1);
-    fputs("\" y1=\"", f); num(f, y1);
-    fputs("\" x2=\"", f); num(f, x2);
-    fputs("\" y2=\"", f); num(f, y2);
+    fputs("<line x1=\"", f);
+    num(f, x1);
+    fputs("\" y1=\"", f);
+    num(f, y1);
+    fputs("\" x2=\"", f);
+    num(f, x2);
+    fputs("\" y2=\"", f);
+    num(f, y2);
     fprintf(f, "\" stroke=\"%s\"/>\n", colour);
 }
 
@@ -158,8 +174,7 @@ static void frame(const canvas *c, const ga_mat4 *m)
     ga_vec3 o = origin_of(m);
     int order[3] = {0, 1, 2};
     double depth[3];
-    for (int j = 0; j < 3; j++)
-        depth[j] = dot(c->out, column(m, j));
+    for (int j = 0; j < 3; j++) depth[j] = dot(c->out, column(m, j));
     for (int a = 0; a < 3; a++)
         for (int b = a + 1; b < 3; b++)
             if (depth[order[b]] < depth[order[a]]) {
@@ -185,7 +200,9 @@ static size_t frame_index(size_t n, int frames, int k)
 
 /* The bounding box of everything drawn, in world units projected on the
  * screen's right and up directions. */
-typedef struct { double lo[2], hi[2]; } box2;
+typedef struct {
+    double lo[2], hi[2];
+} box2;
 
 static void box_add(box2 *b, const canvas *c, ga_vec3 p)
 {
@@ -200,8 +217,7 @@ static void box_add_frame(box2 *b, const canvas *c, const ga_mat4 *m)
 {
     ga_vec3 o = origin_of(m);
     box_add(b, c, o);
-    for (int j = 0; j < 3; j++)
-        box_add(b, c, axpy(c->frame_len, column(m, j), o));
+    for (int j = 0; j < 3; j++) box_add(b, c, axpy(c->frame_len, column(m, j), o));
 }
 
 /* Every frame origin (keys and samples): its 3D bounding box centre and diagonal. */
@@ -229,16 +245,21 @@ static void scene_extent(const svg_picture *pic, ga_vec3 *centre, double *diag)
                  (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
-static void legend_line(FILE *f, double *x, double y, const char *colour, const char *dash,
-                        const char *label)
+static void legend_line(FILE *f, double *x, double y, const char *colour, const char *dash, const char *label)
 {
-    fputs("<line x1=\"", f); num(f, *x);
-    fputs("\" y1=\"", f); num(f, y);
-    fputs("\" x2=\"", f); num(f, *x + 22);
-    fputs("\" y2=\"", f); num(f, y);
+    fputs("<line x1=\"", f);
+    num(f, *x);
+    fputs("\" y1=\"", f);
+    num(f, y);
+    fputs("\" x2=\"", f);
+    num(f, *x + 22);
+    fputs("\" y2=\"", f);
+    num(f, y);
     fprintf(f, "\" stroke=\"%s\" stroke-width=\"2.5\"%s/>\n", colour, dash);
-    fputs("<text x=\"", f); num(f, *x + 27);
-    fputs("\" y=\"", f); num(f, y + 4);
+    fputs("<text x=\"", f);
+    num(f, *x + 27);
+    fputs("\" y=\"", f);
+    num(f, y + 4);
     fputs("\">", f);
     text(f, label);
     fputs("</text>\n", f);
@@ -275,11 +296,9 @@ int svg_write(const char *file, const svg_picture *pic)
 
     /* fit everything drawn into the plot area, the same scale both ways */
     box2 b = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
-    for (size_t k = 0; k < pic->nkeys; k++)
-        box_add_frame(&b, &c, &pic->key[k]);
+    for (size_t k = 0; k < pic->nkeys; k++) box_add_frame(&b, &c, &pic->key[k]);
     for (size_t p = 0; p < pic->npaths; p++)
-        for (size_t i = 0; i < pic->path[p].n; i++)
-            box_add_frame(&b, &c, &pic->path[p].sample[i]);
+        for (size_t i = 0; i < pic->path[p].n; i++) box_add_frame(&b, &c, &pic->path[p].sample[i]);
     if (pic->has_axis) {
         box_add(&b, &c, axis_a);
         box_add(&b, &c, axis_b);
@@ -298,9 +317,10 @@ int svg_write(const char *file, const svg_picture *pic)
     if (tio_out_open(&out, file))
         return -1;
     FILE *f = c.f = out.fp;
-    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
-               "viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"12\">\n",
+    fprintf(f,
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+            "viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"12\">\n",
             WIDTH, height, WIDTH, height);
     fputs("<title>", f);
     text(f, pic->title ? pic->title : "garotor");
@@ -322,8 +342,10 @@ int svg_write(const char *file, const svg_picture *pic)
     /* trajectories, then the frames along them, then the keys on top */
     for (size_t p = 0; p < pic->npaths; p++) {
         const svg_path *pa = &pic->path[p];
-        fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" "
-                   "stroke-linejoin=\"round\" points=\"", pa->colour);
+        fprintf(f,
+                "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" "
+                "stroke-linejoin=\"round\" points=\"",
+                pa->colour);
         for (size_t i = 0; i < pa->n; i++) {
             double x, y;
             point_xy(&c, origin_of(&pa->sample[i]), &x, &y);
@@ -352,18 +374,21 @@ int svg_write(const char *file, const svg_picture *pic)
      * at the first and last */
     int few = pic->nkeys <= KEYS_SHOWN;
     fprintf(f, "</g>\n<g stroke-width=\"%s\" stroke-linecap=\"round\">\n", few ? "2.6" : "1.3");
-    for (size_t k = 0; k < pic->nkeys; k++)
-        frame(&c, &pic->key[k]);
+    for (size_t k = 0; k < pic->nkeys; k++) frame(&c, &pic->key[k]);
     fputs("</g>\n", f);
     for (size_t k = 0; k < pic->nkeys; k++) {
         double x, y;
         point_xy(&c, origin_of(&pic->key[k]), &x, &y);
-        fputs("<circle cx=\"", f); num(f, x);
-        fputs("\" cy=\"", f); num(f, y);
+        fputs("<circle cx=\"", f);
+        num(f, x);
+        fputs("\" cy=\"", f);
+        num(f, y);
         fprintf(f, "\" r=\"3.5\" fill=\"%s\"/>\n", key_colour);
         if (pic->key_t && (few || k == 0 || k + 1 == pic->nkeys)) {
-            fputs("<text x=\"", f); num(f, x + 7);
-            fputs("\" y=\"", f); num(f, y - 7);
+            fputs("<text x=\"", f);
+            num(f, x + 7);
+            fputs("\" y=\"", f);
+            num(f, y - 7);
             fprintf(f, "\">t=%g</text>\n", pic->key_t[k]);
         }
     }
@@ -376,12 +401,13 @@ int svg_write(const char *file, const svg_picture *pic)
     if (pic->has_axis)
         legend_line(f, &lx, ly, screw_colour, " stroke-dasharray=\"8 5\"", "screw axis");
     static const char *const names[3] = {"x", "y", "z"};
-    fputs("<text x=\"", f); num(f, lx);
-    fputs("\" y=\"", f); num(f, ly + 4);
+    fputs("<text x=\"", f);
+    num(f, lx);
+    fputs("\" y=\"", f);
+    num(f, ly + 4);
     fputs("\">frames:</text>\n", f);
     lx += 58;
-    for (int j = 0; j < 3; j++)
-        legend_line(f, &lx, ly, axis_colour[j], "", names[j]);
+    for (int j = 0; j < 3; j++) legend_line(f, &lx, ly, axis_colour[j], "", names[j]);
     double tx = WIDTH - 70, ty = height - LEGEND_H / 2.0;
     fputs("<g stroke=\"#555555\" stroke-width=\"1.2\">\n", f);
     for (int j = 0; j < 3; j++) {
@@ -397,12 +423,16 @@ int svg_write(const char *file, const svg_picture *pic)
         double dx = 16 * dot(c.right, e), dy = -16 * dot(c.up, e);
         if (dx * dx + dy * dy < 4)
             continue;
-        fputs("<text text-anchor=\"middle\" x=\"", f); num(f, tx + 1.5 * dx);
-        fputs("\" y=\"", f); num(f, ty + 1.5 * dy + 4);
+        fputs("<text text-anchor=\"middle\" x=\"", f);
+        num(f, tx + 1.5 * dx);
+        fputs("\" y=\"", f);
+        num(f, ty + 1.5 * dy + 4);
         fprintf(f, "\" fill=\"#555555\">%s</text>\n", names[j]);
     }
-    fputs("<text text-anchor=\"end\" x=\"", f); num(f, tx - 24);
-    fputs("\" y=\"", f); num(f, ty + 4);
+    fputs("<text text-anchor=\"end\" x=\"", f);
+    num(f, tx - 24);
+    fputs("\" y=\"", f);
+    num(f, ty + 4);
     fprintf(f, "\" fill=\"#555555\">view %s</text>\n", svg_view_name(pic->view));
     fputs("</svg>\n", f);
     return tio_out_close(&out, 1);

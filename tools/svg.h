@@ -32,19 +32,19 @@ typedef struct {
     const char *colour;    /**< trajectory colour (an SVG colour, e.g. "#222222") */
     const ga_mat4 *sample; /**< the samples, drawn in this order */
     size_t n;
-    int frames;            /**< about how many frames to draw along it (0: none) */
+    int frames; /**< about how many frames to draw along it (0: none) */
 } svg_path;
 
 /** A picture. */
 typedef struct {
-    const char *title;                   /**< one line of text at the top */
+    const char *title; /**< one line of text at the top */
     svg_view view;
-    const ga_mat4 *key;                  /**< keys: bold frames with a dot */
-    const double *key_t;                 /**< their times (labels), or NULL */
+    const ga_mat4 *key;  /**< keys: bold frames with a dot */
+    const double *key_t; /**< their times (labels), or NULL */
     size_t nkeys;
     const svg_path *path;
     size_t npaths;
-    int has_axis;                        /**< draw the screw axis below */
+    int has_axis; /**< draw the screw axis below */
     ga_vec3 axis_point, axis_dir;
 } svg_picture;
 

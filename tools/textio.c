@@ -15,8 +15,7 @@ static int grow(void **p, size_t *cap, size_t need, size_t size)
     if (need <= *cap)
         return 0;
     size_t c = *cap ? *cap : 64;
-    while (c < need)
-        c *= 2;
+    while (c < need) c *= 2;
     void *q = realloc(*p, c * size);
     if (!q)
         return -1;
@@ -62,8 +61,7 @@ int tio_read(const char *path, int skip_header, tio_items *out)
         if (lineno == 1 && skip_header)
             continue;
         char *s = buf;
-        while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n')
-            s++;
+        while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n') s++;
         if (*s == '\0' || *s == '#')
             continue;
         if (grow((void **)&it.item, &icap, it.n + 1, sizeof *it.item)) {
@@ -83,9 +81,8 @@ int tio_read(const char *path, int skip_header, tio_items *out)
             int comma = 0;
             for (;; s++) {
                 if (*s == ',' && (comma || cur->count == 0)) {
-                    status = cur->count
-                        ? tio_error(&it, it.n - 1, "empty field after number %d", cur->count)
-                        : tio_error(&it, it.n - 1, "empty field before number 1");
+                    status = cur->count ? tio_error(&it, it.n - 1, "empty field after number %d", cur->count)
+                                        : tio_error(&it, it.n - 1, "empty field before number 1");
                     break;
                 }
                 if (*s == ',')
@@ -208,8 +205,7 @@ int tio_out_open(tio_out *o, const char *path)
 
 void tio_out_line(tio_out *o, const double *v, int n)
 {
-    for (int i = 0; i < n; i++)
-        fprintf(o->fp, i ? " %.17g" : "%.17g", v[i] == 0.0 ? 0.0 : v[i]);
+    for (int i = 0; i < n; i++) fprintf(o->fp, i ? " %.17g" : "%.17g", v[i] == 0.0 ? 0.0 : v[i]);
     fputc('\n', o->fp);
 }
 

@@ -30,7 +30,7 @@ typedef struct {
     const char *name; /* file name for messages ("<stdin>" for standard input) */
     double *value;    /* all numbers, item after item */
     tio_item *item;
-    size_t n;         /* number of items */
+    size_t n; /* number of items */
 } tio_items;
 
 /** Read every item of `path` (NULL or "-" for standard input). On error prints

@@ -23,15 +23,43 @@ extern "C" {
 #endif
 
 /** A multivector of G(4,1): c[i] is the coefficient of the i-th blade in canonical order. */
-typedef struct { double c[32]; } ga_mv;
+typedef struct {
+    double c[32];
+} ga_mv;
 
 /** Index of each blade in ga_mv.c (canonical order). */
 enum {
     GA_BLADE_SCALAR = 0,
-    GA_BLADE_E1, GA_BLADE_E2, GA_BLADE_E3, GA_BLADE_E4, GA_BLADE_E5,
-    GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E14, GA_BLADE_E15, GA_BLADE_E23, GA_BLADE_E24, GA_BLADE_E25, GA_BLADE_E34, GA_BLADE_E35, GA_BLADE_E45,
-    GA_BLADE_E123, GA_BLADE_E124, GA_BLADE_E125, GA_BLADE_E134, GA_BLADE_E135, GA_BLADE_E145, GA_BLADE_E234, GA_BLADE_E235, GA_BLADE_E245, GA_BLADE_E345,
-    GA_BLADE_E1234, GA_BLADE_E1235, GA_BLADE_E1245, GA_BLADE_E1345, GA_BLADE_E2345,
+    GA_BLADE_E1,
+    GA_BLADE_E2,
+    GA_BLADE_E3,
+    GA_BLADE_E4,
+    GA_BLADE_E5,
+    GA_BLADE_E12,
+    GA_BLADE_E13,
+    GA_BLADE_E14,
+    GA_BLADE_E15,
+    GA_BLADE_E23,
+    GA_BLADE_E24,
+    GA_BLADE_E25,
+    GA_BLADE_E34,
+    GA_BLADE_E35,
+    GA_BLADE_E45,
+    GA_BLADE_E123,
+    GA_BLADE_E124,
+    GA_BLADE_E125,
+    GA_BLADE_E134,
+    GA_BLADE_E135,
+    GA_BLADE_E145,
+    GA_BLADE_E234,
+    GA_BLADE_E235,
+    GA_BLADE_E245,
+    GA_BLADE_E345,
+    GA_BLADE_E1234,
+    GA_BLADE_E1235,
+    GA_BLADE_E1245,
+    GA_BLADE_E1345,
+    GA_BLADE_E2345,
     GA_BLADE_E12345
 };
 

@@ -129,8 +129,12 @@ extern "C" {
 #endif
 
 typedef enum {
-    GA_SCHEME_SCREW, GA_SCHEME_BIVECTOR, GA_SCHEME_QUADRATIC,
-    GA_SCHEME_SMOOTH, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3
+    GA_SCHEME_SCREW,
+    GA_SCHEME_BIVECTOR,
+    GA_SCHEME_QUADRATIC,
+    GA_SCHEME_SMOOTH,
+    GA_SCHEME_LIHAO2,
+    GA_SCHEME_LIHAO3
 } ga_scheme;
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
@@ -155,10 +159,10 @@ typedef struct {
     double *t;         /**< the n key times */
     double *key;       /**< the n keys, each group->elem_size bytes, padded to doubles */
     size_t key_stride; /**< doubles from one key to the next */
-    double *coef;     /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units) */
-    double *gen;      /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
-    double *slope;    /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
-    double *vel;      /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
+    double *coef;      /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units) */
+    double *gen;       /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
+    double *slope;     /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
+    double *vel;       /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
 } ga_path;
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3". */
@@ -181,15 +185,13 @@ size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
  *  velocities: LIHAO2: NULL or the first key's velocity (g->dim doubles);
  *  LIHAO3: NULL or one velocity per key (n * g->dim doubles); other schemes
  *  ignore it. */
-int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times,
-                 const void *keys, const double *velocities, void *work, size_t work_bytes,
-                 ga_path *out);
+int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
+                 const double *velocities, void *work, size_t work_bytes, ga_path *out);
 
 /** The same from 4x4 matrices, each read by g->from_mat4 (its status is
  *  returned: GA_ERR_NOTRIGID for a non-rigid matrix on cga/se3, ...). */
-int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times,
-                      const ga_mat4 *keys, const double *velocities, void *work,
-                      size_t work_bytes, ga_path *out);
+int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times, const ga_mat4 *keys,
+                      const double *velocities, void *work, size_t work_bytes, ga_path *out);
 
 /** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
  *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_ERR_ARG outside. */
@@ -214,12 +216,12 @@ int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v);
 typedef struct {
     const ga_path *path;
     ga_eval eval;
-    double step;         /**< Euler step in u units */
-    size_t n, k;         /**< samples in all, index of the next one */
+    double step; /**< Euler step in u units */
+    size_t n, k; /**< samples in all, index of the next one */
     double t0, t1, dt;
-    size_t seg;          /**< segment of the running state, SIZE_MAX for none */
-    size_t since;        /**< EXACT: samples since the last anchor */
-    size_t grid;         /**< EULER: grid index of the running state */
+    size_t seg;   /**< segment of the running state, SIZE_MAX for none */
+    size_t since; /**< EXACT: samples since the last anchor */
+    size_t grid;  /**< EULER: grid index of the running state */
     double slot[GA_PATH_STEP_SLOTS][GA_GROUP_MAX_ELEM];
 } ga_path_stepper;
 
@@ -227,20 +229,19 @@ typedef struct {
  *  t1, t_0 <= t0 <= t1 <= t_{n-1} (n = 1: t0 alone), each rounded to a double
  *  (EXACT: only at its anchors, whole steps from there; see EXACT above).
  *  step: the Euler step in u units (> 0), ignored by the other evaluators. */
-int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0,
-                         double t1, ga_path_stepper *out);
+int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
+                         ga_path_stepper *out);
 /** Write the next sample to out, advancing s. GA_ERR_ARG after the last. */
 int ga_path_stepper_next(ga_path_stepper *s, void *out);
 
 /** n evenly spaced samples t0..t1 (both included) into out (n elements of
  *  g->elem_size bytes, contiguous). */
-int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
-                           double t0, double t1, void *out);
+int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
+                           void *out);
 /** Samples at n given times (any order; EULER is fastest with increasing
  *  times, as it continues from the previous sample within a segment). EXACT
  *  needs even spacing, so here it is DIRECT. */
-int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n,
-                   const double *times, void *out);
+int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times, void *out);
 
 #ifdef __cplusplus
 }

@@ -45,24 +45,38 @@ extern "C" {
 #endif
 
 /** A rigid-motion rotor R = q + P n: q = s + e12 + e13 + e23 terms, P n = e1n..e123n terms. */
-typedef struct { double s, e12, e13, e23, e1n, e2n, e3n, e123n; } ga_rotor;
+typedef struct {
+    double s, e12, e13, e23, e1n, e2n, e3n, e123n;
+} ga_rotor;
 
 /** A generator: a bivector B in span{e_ij, e_i n} (W-L §2.3: B = ab + c n). */
-typedef struct { double e12, e13, e23, e1n, e2n, e3n; } ga_generator;
+typedef struct {
+    double e12, e13, e23, e1n, e2n, e3n;
+} ga_generator;
 
 /** Screw parameters of a rigid motion (Chasles; W-L §4.1, the helix).
  *  angle in [0, pi]; axis a unit vector; point the point of the axis closest to
  *  the origin; shift the translation along the axis; pitch = shift / angle.
  *  Pure translation: angle 0, axis its unit direction, point 0, shift its
  *  length, pitch INFINITY. Identity: everything 0, axis (0, 0, 1), pitch 0. */
-typedef struct { double angle; ga_vec3 axis; ga_vec3 point; double shift; double pitch; } ga_screw;
+typedef struct {
+    double angle;
+    ga_vec3 axis;
+    ga_vec3 point;
+    double shift;
+    double pitch;
+} ga_screw;
 
 /** A quaternion w + x i + y j + z k (Hamilton's convention). */
-typedef struct { double w, x, y, z; } ga_quat;
+typedef struct {
+    double w, x, y, z;
+} ga_quat;
 
 /** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
  *  by t", real = r and dual = t r / 2, with t the pure quaternion (0, t). */
-typedef struct { ga_quat real, dual; } ga_dualquat;
+typedef struct {
+    ga_quat real, dual;
+} ga_dualquat;
 
 /** Largest distance from the group, max(| |q|^2 - 1 |, 2 |<P ~q>_3| / max(1, |P|)),
  *  that ga_rotor_log, ga_rotor_log_literal and ga_rotor_to_screw accept (and

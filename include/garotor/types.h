@@ -16,13 +16,19 @@ extern "C" {
 #endif
 
 /** A point or direction of Euclidean 3-space. */
-typedef struct { double x, y, z; } ga_vec3;
+typedef struct {
+    double x, y, z;
+} ga_vec3;
 
 /** A 4x4 matrix, row-major: m[4*row + col]. */
-typedef struct { double m[16]; } ga_mat4;
+typedef struct {
+    double m[16];
+} ga_mat4;
 
 /** A twist: angular part w, linear part v (the motion is expm of [[w]x, v; 0, 0]). */
-typedef struct { ga_vec3 w, v; } ga_twist;
+typedef struct {
+    ga_vec3 w, v;
+} ga_twist;
 
 /** Status codes. GA_OK is 0; every error is negative. */
 enum {
