@@ -768,7 +768,7 @@ static void json_num(const char *fmt, double x)
         printf("null");
 }
 
-/* ---- targets of issue 6 ----------------------------------------------------- */
+/* ---- the speed targets ------------------------------------------------------- */
 
 typedef struct {
     const char *name; /* the ratio */

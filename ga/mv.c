@@ -117,7 +117,7 @@ double ga_mv_maxabs(ga_mv a)
 }
 
 /* Which blade pairs of the geometric product a product keeps. */
-enum product_kind { GEOMETRIC, OUTER, LEFT_CONTRACTION };
+enum product_kind { GEOMETRIC, OUTER, LEFT_INNER };
 
 static ga_mv product(ga_mv a, ga_mv b, enum product_kind kind)
 {
@@ -130,7 +130,7 @@ static ga_mv product(ga_mv a, ga_mv b, enum product_kind kind)
             unsigned mb = blade_mask[j];
             if (kind == OUTER && (ma & mb))
                 continue; /* a ^ b keeps only disjoint blades */
-            if (kind == LEFT_CONTRACTION && (ma & mb) != ma)
+            if (kind == LEFT_INNER && (ma & mb) != ma)
                 continue; /* a _| b keeps a subset of b: grade(b) - grade(a) */
             r.c[mask_index[ma ^ mb]] += blade_sign(ma, mb) * a.c[i] * b.c[j];
         }
@@ -140,7 +140,7 @@ static ga_mv product(ga_mv a, ga_mv b, enum product_kind kind)
 
 ga_mv ga_mv_gp(ga_mv a, ga_mv b) { return product(a, b, GEOMETRIC); }
 ga_mv ga_mv_op(ga_mv a, ga_mv b) { return product(a, b, OUTER); }
-ga_mv ga_mv_lc(ga_mv a, ga_mv b) { return product(a, b, LEFT_CONTRACTION); }
+ga_mv ga_mv_lc(ga_mv a, ga_mv b) { return product(a, b, LEFT_INNER); }
 
 double ga_mv_sp(ga_mv a, ga_mv b)
 {
