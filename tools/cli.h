@@ -17,13 +17,15 @@ enum {
     OPT_V0 = 1 << 10,
     OPT_VELOCITIES = 1 << 11,
     OPT_SVG = 1 << 12,
-    OPT_VIEW = 1 << 13
+    OPT_VIEW = 1 << 13,
+    OPT_VERB = 1 << 14 /* not an option: the command takes an operation word first */
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
     const char *group, *scheme, *format, *eval;
+    const char *verb; /* `versor exp`: the operation word */
     int header;
     long samples;
     double step;
@@ -47,5 +49,6 @@ int cmd_demo(const cli_opts *o);
 int cmd_exp(const cli_opts *o);
 int cmd_log(const cli_opts *o);
 int cmd_interp(const cli_opts *o);
+int cmd_versor(const cli_opts *o);
 
 #endif

@@ -67,6 +67,21 @@ static const command commands[] = {
      "                      at the keys and along it, the screw axis if it is one\n"
      "  --view V            the picture's view: iso (default), xy, xz or yz\n"
      "  --in FILE, --out FILE, --header   as for exp\n"},
+    {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER,
+     "usage: garotor versor exp|log|apply [--in FILE] [--out FILE] [--header]\n"
+     "The general algebra of G(4,1), one item a line (docs/versors.md).\n"
+     "  exp      a bivector, 10 numbers: the coefficients of\n"
+     "           e12 e13 e14 e15 e23 e24 e25 e34 e35 e45; writes exp(B), 32 numbers\n"
+     "           in canonical order (1; e1..e5; e12..e45; e123..e345; e1234..e2345;\n"
+     "           e12345). exp(a e45) is the dilation by e^(-2a) about the origin\n"
+     "  log      a rotor (an even versor with R ~R = 1), 32 numbers; writes its\n"
+     "           principal log, 10 numbers, with exp(log R) = R: log(exp(B)) = B\n"
+     "           whenever every rotation part of B has half-angle below pi/2.\n"
+     "           An error where R has no real logarithm (not a rotor to 1e-9)\n"
+     "  apply    a versor V (32 numbers) then a point x (3 numbers); writes the\n"
+     "           point whose embedding is V F(x) V^-1 (with the grade involution\n"
+     "           of F(x) for odd V); an error where it goes to infinity\n"
+     "  --in FILE, --out FILE, --header   as for exp\n"},
 };
 
 static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
@@ -77,6 +92,7 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  exp      twists to rigid motions (4x4 matrices)\n"
                             "  log      rigid motions to their principal twists\n"
                             "  interp   sample a path through key poses\n"
+                            "  versor   exp, log and action of general rotors and versors\n"
                             "\n"
                             "garotor COMMAND --help shows a command's options.\n";
 
@@ -182,6 +198,8 @@ int main(int argc, char **argv)
         }
     cli_opts o;
     memset(&o, 0, sizeof o);
+    if ((c->accepts & OPT_VERB) && first < argc && argv[first][0] != '-')
+        o.verb = argv[first++];
     int st = parse_options(c, argc - first, argv + first, &o);
     return st ? st : c->run(&o);
 }
