@@ -17,14 +17,17 @@ enum {
     OPT_V0 = 1 << 10,
     OPT_VELOCITIES = 1 << 11,
     OPT_SVG = 1 << 12,
-    OPT_VIEW = 1 << 13
+    OPT_VIEW = 1 << 13,
+    OPT_NORMALIZE = 1 << 14,
+    OPT_WITH = 1 << 15,
+    OPT_FRAME = 1 << 16
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
-    const char *group, *scheme, *format, *eval;
-    int header;
+    const char *group, *scheme, *format, *eval, *with, *frame;
+    int header, normalize;
     long samples;
     double step;
     double v0[6];

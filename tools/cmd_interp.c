@@ -14,18 +14,50 @@
 #include <string.h>
 
 /* A unit quaternion (ROS order qx qy qz qw) and a position to a 4x4 matrix;
- * -1 after a message when q is not unit to 1e-9. */
-static int pose_to_mat4(const tio_items *in, size_t i, const double *v, ga_mat4 *out)
+ * -1 after a message when q is not unit to 1e-9, or with --normalize to
+ * GA_SE3_NORMALIZE_TOL (then q is divided by its norm: ga_quat_normalize). */
+static int pose_to_mat4(const tio_items *in, size_t i, const double *v, int normalize, ga_mat4 *out)
 {
     ga_quat q = {v[6], v[3], v[4], v[5]};
     double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-    if (fabs(norm - 1.0) > 1e-9)
+    if (normalize && ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &q) != GA_OK)
+        return tio_error(in, i,
+                         "not a rigid motion: the quaternion has norm %.17g, farther from 1 "
+                         "than --normalize accepts (1e-3)",
+                         norm);
+    if (!normalize && fabs(norm - 1.0) > 1e-9)
         return tio_error(in, i,
                          "not a rigid motion: the quaternion has norm %.17g, not 1 "
-                         "(to 1e-9)",
+                         "(to 1e-9; --normalize accepts up to 1e-3)",
                          norm);
     *out = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[0], v[1], v[2]}));
     return 0;
+}
+
+/* A key read as a matrix, on a rigid group with --normalize: projected onto
+ * the group (ga_se3_normalize) when within GA_SE3_NORMALIZE_TOL; without it,
+ * a matrix off by more than 1e-9 but within that is refused with a message
+ * naming --normalize. 1 when this handled it (0: ok, -1: error after a
+ * message), 0 to leave the key to cli_check_motion. */
+static int normalize_key(const ga_group *g, int normalize, const tio_items *in, size_t i, ga_mat4 *m, int *rc)
+{
+    ga_mat4 r;
+    if (!g->rigid || ga_se3_normalize(*m, GA_SE3_NORMALIZE_TOL, &r) != GA_OK)
+        return 0; /* cli_check_motion says what is wrong */
+    if (normalize) {
+        *m = r;
+        *rc = 0;
+        return 1;
+    }
+    if (ga_se3_check(*m, 1e-9) == GA_OK)
+        return 0;
+    double off = 0.0;
+    for (int k = 0; k < 16; k++) off = fmax(off, fabs(m->m[k] - r.m[k]));
+    *rc = tio_error(in, i,
+                    "not a rigid motion to 1e-9 (it is %.3g from the nearest one); "
+                    "--normalize accepts up to 1e-3",
+                    off);
+    return 1;
 }
 
 /* The pose (x y z qx qy qz qw) of a rigid 4x4 matrix; the quaternion's sign
@@ -88,6 +120,18 @@ static int read_velocity(const ga_group *g, const double *v, int count, double *
     else
         return -1;
     return g->vee(a, x) == GA_OK ? 0 : -1;
+}
+
+/* An algebra element as written: 6 numbers on a rigid group, else the 16 of
+ * its hat. */
+static void put_algebra(const ga_group *g, const double *x, double *row)
+{
+    if (g->rigid) {
+        memcpy(row, x, 6 * sizeof *row);
+        return;
+    }
+    ga_mat4 h = g->hat(x);
+    memcpy(row, h.m, sizeof h.m);
 }
 
 /* The picture of the path: the keys, the samples (in the order sampled) and,
@@ -166,6 +210,30 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: --velocities applies only to --scheme lihao3\n");
         return 2;
     }
+    if (o->normalize && !g->rigid) {
+        fprintf(stderr, "garotor interp: --normalize applies to --group cga or matrix\n");
+        return 2;
+    }
+    int with_v = 0, with_a = 0, spatial = 0;
+    if (o->with && strcmp(o->with, "velocity") == 0)
+        with_v = 1;
+    else if (o->with && strcmp(o->with, "velocity,acceleration") == 0)
+        with_v = with_a = 1;
+    else if (o->with) {
+        fprintf(stderr, "garotor interp: --with must be velocity or velocity,acceleration, not '%s'\n",
+                o->with);
+        return 2;
+    }
+    if (o->frame && strcmp(o->frame, "spatial") == 0)
+        spatial = 1;
+    else if (o->frame && strcmp(o->frame, "body") != 0) {
+        fprintf(stderr, "garotor interp: --frame must be body or spatial, not '%s'\n", o->frame);
+        return 2;
+    }
+    if (o->frame && !with_v) {
+        fprintf(stderr, "garotor interp: --frame applies only with --with velocity[,acceleration]\n");
+        return 2;
+    }
     svg_view view;
     if (svg_options(cmd, o->svg, o->view, &view))
         return 2;
@@ -202,16 +270,18 @@ int cmd_interp(const cli_opts *o)
             tio_error(&in, i, "key times must increase strictly: %.17g after %.17g", times[i], times[i - 1]);
             goto done;
         }
-        if (pose ? pose_to_mat4(&in, i, v + 1, &keys[i]) : 0)
+        if (pose ? pose_to_mat4(&in, i, v + 1, o->normalize, &keys[i]) : 0)
             goto done;
         if (!pose) {
+            int krc;
             memcpy(keys[i].m, v + 1, sizeof keys[i].m);
-            if (cli_check_motion(g, keys[i], &in, i))
+            if (normalize_key(g, o->normalize, &in, i, &keys[i], &krc) ? krc
+                                                                       : cli_check_motion(g, keys[i], &in, i))
                 goto done;
         }
     }
     size_t min = ga_scheme_min_keys(scheme);
-    if (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
+    if (n != 1 && (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
         fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %zu keys, found %zu\n", in.name,
                 ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
         goto done;
@@ -272,7 +342,9 @@ int cmd_interp(const cli_opts *o)
     size_t ns = nat ? nat : (size_t)o->samples;
     double step = ev == GA_EVAL_EULER ? o->step : 1.0;
     samples = malloc(ns * g->elem_size);
-    int width = pose ? 8 : 17;
+    /* an algebra element as the tool writes it: a twist (6) on a rigid group,
+       else its hat, a 4x4 with zero last row (16) */
+    int dw = g->rigid ? 6 : 16, pw = pose ? 8 : 17, width = pw + (with_v + with_a) * dw;
     res = malloc(ns * (size_t)width * sizeof *res);
     if (!samples || !res)
         goto oom;
@@ -296,6 +368,18 @@ int cmd_interp(const cli_opts *o)
         }
         if (!pose)
             memcpy(row + 1, m.m, sizeof m.m);
+        if (with_v) {
+            double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
+            st = ga_path_differentiate(&path, row[0], spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY, dv, da);
+            if (st != GA_OK) {
+                fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", in.name, k + 1,
+                        ga_status_string(st));
+                goto done;
+            }
+            put_algebra(g, dv, row + pw);
+            if (with_a)
+                put_algebra(g, da, row + pw + dw);
+        }
     }
     /* open the samples' output, draw the picture, then write the samples:
      * if they cannot be written, the picture is removed again */

@@ -43,10 +43,11 @@ static const command commands[] = {
      "  --in FILE, --out FILE, --header   as for exp\n"},
     {"interp", cmd_interp,
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
-         OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW,
+         OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,...) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
-     "write samples of the path through them in the same format.\n"
+     "write samples of the path through them in the same format. One key is the\n"
+     "constant path.\n"
      "  --scheme screw      piecewise screw-linear (default)\n"
      "  --scheme bivector   piecewise-linear in the generators l(R_i)\n"
      "  --scheme quadratic  exactly 3 keys: quadratic in the generators\n"
@@ -63,6 +64,11 @@ static const command commands[] = {
      "  --eval direct|exact|euler   closed form (default), exact incremental\n"
      "                      stepping, or Li-Hao's generalized Euler (needs --step H)\n"
      "  --step H            the Euler step, in units of u (segment fraction)\n"
+     "  --normalize         accept key rotations up to 1e-3 off (quaternion norm,\n"
+     "                      max |R^T R - I|) and project them onto the group\n"
+     "  --with velocity[,acceleration]   append to each sample its velocity (w v,\n"
+     "                      per unit t), then its acceleration (per unit t^2)\n"
+     "  --frame body|spatial   those in the body frame (default) or the world frame\n"
      "  --svg FILE          also draw the path: the trajectory of the origin, frames\n"
      "                      at the keys and along it, the screw axis if it is one\n"
      "  --view V            the picture's view: iso (default), xy, xz or yz\n"
@@ -89,7 +95,8 @@ static const struct {
     {"--group", OPT_GROUP, 1}, {"--scheme", OPT_SCHEME, 1}, {"--samples", OPT_SAMPLES, 1},
     {"--at", OPT_AT, 1},       {"--format", OPT_FORMAT, 1}, {"--eval", OPT_EVAL, 1},
     {"--step", OPT_STEP, 1},   {"--v0", OPT_V0, 6},         {"--velocities", OPT_VELOCITIES, 1},
-    {"--svg", OPT_SVG, 1},     {"--view", OPT_VIEW, 1},
+    {"--svg", OPT_SVG, 1},     {"--view", OPT_VIEW, 1},     {"--normalize", OPT_NORMALIZE, 0},
+    {"--with", OPT_WITH, 1},   {"--frame", OPT_FRAME, 1},
 };
 
 static int usage_error(const char *cmd, const char *what, const char *arg)
@@ -134,6 +141,9 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
         case OPT_VELOCITIES: o->velocities = v; break;
         case OPT_SVG: o->svg = v; break;
         case OPT_VIEW: o->view = v; break;
+        case OPT_NORMALIZE: o->normalize = 1; break;
+        case OPT_WITH: o->with = v; break;
+        case OPT_FRAME: o->frame = v; break;
         case OPT_SAMPLES: {
             char *end;
             errno = 0;
