@@ -181,6 +181,34 @@ expect_error "interp: --frame" "--frame must be body or spatial, not 'world'" \
     "$G" interp --in "$d/tum" --normalize --format pose --samples 2 --with velocity --frame world --out "$d/out"
 expect_error "interp: --frame alone" "--frame applies only with --with" \
     "$G" interp --in "$d/tum" --normalize --format pose --samples 2 --frame spatial --out "$d/out"
+# ---- timing: --rate, --times, --extrapolate ----
+printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0.6 0.8\n2.5 1 1 0 0 0 1 0\n' >"$d/k3"
+[ "$("$G" interp --format pose --in "$d/k3" --rate 2 | awk '{ printf "%s ", $1 }')" = "0 0.5 1 1.5 2 2.5 " ] ||
+    fail "--rate 2: times"
+[ "$("$G" interp --format pose --in "$d/k3" --rate 3 | awk 'END { print NR, $1 }')" = "8 2.3333333333333335" ] ||
+    fail "--rate 3: 8 samples up to 7/3"
+printf -- '-1\n3\n# a comment\n1\n' >"$d/tt"
+expect_error "interp: --times outside" "--times time -1 is outside the keys' range \\[0, 2.5\\] (see --extrapolate)" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/tt" --out "$d/out"
+"$G" interp --format pose --in "$d/k3" --times "$d/tt" --extrapolate hold --with velocity >"$d/hold" ||
+    fail "--extrapolate hold"
+[ "$(sed -n 1p "$d/hold")" = "-1 0 0 0 0 0 0 1 0 0 0 0 0 0" ] || fail "--extrapolate hold: $(sed -n 1p "$d/hold")"
+[ "$(sed -n 3p "$d/hold")" = "1 1 0 0 0 0 0.59999999999999998 0.80000000000000004 0 0 1.2363936240021496 0.61819681200107479 -0.46364760900080615 0" ] ||
+    fail "--extrapolate hold, at a key: $(sed -n 3p "$d/hold")"
+# extend: the first segment continued to t = -1 is that screw at u = -1
+"$G" interp --format pose --in "$d/k3" --at -1 --extrapolate extend >"$d/ext" || fail "--extrapolate extend"
+[ "$(cut -d' ' -f1-4 "$d/ext")" = "-1 -0.28000000000000003 0.95999999999999996 0" ] ||
+    fail "--extrapolate extend: $(cat "$d/ext")"
+printf '1 2\n' >"$d/tt2"
+expect_error "interp: --times two numbers" "tt2:1: expected 1 number (a time), found 2" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/tt2" --out "$d/out"
+printf '# nothing\n' >"$d/tt0"
+expect_error "interp: --times empty" "tt0: no times" "$G" interp --format pose --in "$d/k3" --times "$d/tt0" --out "$d/out"
+expect_error "interp: --rate 0" "--rate needs a number > 0, not: 0" "$G" interp --in "$d/k3" --rate 0 --out "$d/out"
+expect_error "interp: --rate huge" "--rate 1.0000000000000001e+300 gives more than 1e9 samples" \
+    "$G" interp --format pose --in "$d/k3" --rate 1e300 --out "$d/out"
+expect_error "interp: --extrapolate" "--extrapolate must be error, hold or extend, not 'wrap'" \
+    "$G" interp --format pose --in "$d/k3" --rate 1 --extrapolate wrap --out "$d/out"
 expect_error "interp: too few keys (smooth)" "two: --scheme smooth needs at least 3 keys" \
     "$G" interp --scheme smooth --format pose --samples 3 --in "$d/two" --out "$d/out"
 expect_error "interp: quadratic needs 3" "two: --scheme quadratic needs exactly 3 keys" \
@@ -209,7 +237,7 @@ expect_error "interp: unknown scheme" "--scheme must be" \
     "$G" interp --scheme spline --format pose --samples 3 --in "$d/keys" --out "$d/out"
 expect_error "interp: affine with poses" "affine takes keys as matrices" \
     "$G" interp --group affine --format pose --samples 3 --in "$d/keys" --out "$d/out"
-expect_error "interp: neither --samples nor --at" "either --samples" \
+expect_error "interp: neither --samples nor --at" "give one of --samples N" \
     "$G" interp --format pose --in "$d/keys" --out "$d/out"
 
 # ---- more of the error table ----------------------------------------------

@@ -20,13 +20,17 @@ enum {
     OPT_VIEW = 1 << 13,
     OPT_NORMALIZE = 1 << 14,
     OPT_WITH = 1 << 15,
-    OPT_FRAME = 1 << 16
+    OPT_FRAME = 1 << 16,
+    OPT_RATE = 1 << 17,
+    OPT_TIMES = 1 << 18,
+    OPT_EXTRAPOLATE = 1 << 19
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
-    const char *group, *scheme, *format, *eval, *with, *frame;
+    const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
+    double rate;
     int header, normalize;
     long samples;
     double step;

@@ -9,6 +9,7 @@
 #include "svg.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -134,6 +135,63 @@ static void put_algebra(const ga_group *g, const double *x, double *row)
     memcpy(row, h.m, sizeof h.m);
 }
 
+/* Where a time outside the keys goes (--extrapolate): hold, the end key
+ * (segment SIZE_MAX); extend, the end segment at its u outside [0, 1]. 0 for
+ * a time inside, 1 outside. */
+static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *u)
+{
+    size_t n = p->n;
+    if (t >= p->t[0] && t <= p->t[n - 1])
+        return 0;
+    int after = t > p->t[n - 1];
+    if (extrap == 1 || n == 1) {
+        *seg = SIZE_MAX;
+        *u = after;
+    } else {
+        *seg = after ? n - 2 : 0;
+        *u = (t - p->t[*seg]) / (p->t[*seg + 1] - p->t[*seg]);
+    }
+    return 1;
+}
+
+/* ga_path_sample with --extrapolate hold or extend for times outside. */
+static int sample_extrapolated(const ga_path *p, ga_eval ev, double step, int extrap, size_t ns,
+                               const double *at, void *out)
+{
+    const ga_group *g = p->group;
+    for (size_t k = 0; k < ns; k++) {
+        char *o = (char *)out + k * g->elem_size;
+        size_t seg;
+        double u;
+        int st;
+        if (!outside(p, extrap, at[k], &seg, &u))
+            st = ga_path_sample(p, ev, step, 1, at + k, o);
+        else if (seg == SIZE_MAX) {
+            memcpy(o, p->key + (u > 0 ? p->n - 1 : 0) * p->key_stride, g->elem_size);
+            st = GA_OK;
+        } else
+            st = ga_path_eval_segment(p, seg, u, o);
+        if (st != GA_OK)
+            return st;
+    }
+    return GA_OK;
+}
+
+/* Velocity and acceleration at t, extrapolated as the samples are. */
+static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, double *v, double *a)
+{
+    size_t seg;
+    double u;
+    if (!extrap || !outside(p, extrap, t, &seg, &u))
+        return ga_path_differentiate(p, t, f, v, a);
+    if (seg == SIZE_MAX) {
+        memset(v, 0, p->group->dim * sizeof *v);
+        memset(a, 0, p->group->dim * sizeof *a);
+        return GA_OK;
+    }
+    return ga_path_differentiate_segment(p, seg, u, f, v, a);
+}
+
 /* The picture of the path: the keys, the samples (in the order sampled) and,
  * for the screw scheme on keys that follow one screw motion, its axis.
  * 0, or -1 after a message. */
@@ -198,8 +256,20 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: --group %s takes keys as matrices (--format mat)\n", g->name);
         return 2;
     }
-    if (!!(o->given & OPT_SAMPLES) == !!(o->given & OPT_AT)) {
-        fprintf(stderr, "garotor interp: give either --samples N or --at t1,t2,...\n");
+    int nwhen = !!(o->given & OPT_SAMPLES) + !!(o->given & OPT_AT) + !!(o->given & OPT_RATE) +
+                !!(o->given & OPT_TIMES);
+    if (nwhen != 1) {
+        fprintf(stderr, "garotor interp: give one of --samples N, --at t1,t2,..., --rate HZ, --times FILE\n");
+        return 2;
+    }
+    int extrap = 0; /* 0 error, 1 hold, 2 extend */
+    if (o->extrapolate && strcmp(o->extrapolate, "hold") == 0)
+        extrap = 1;
+    else if (o->extrapolate && strcmp(o->extrapolate, "extend") == 0)
+        extrap = 2;
+    else if (o->extrapolate && strcmp(o->extrapolate, "error") != 0) {
+        fprintf(stderr, "garotor interp: --extrapolate must be error, hold or extend, not '%s'\n",
+                o->extrapolate);
         return 2;
     }
     if ((o->given & OPT_V0) && scheme != GA_SCHEME_LIHAO2) {
@@ -238,7 +308,7 @@ int cmd_interp(const cli_opts *o)
     if (svg_options(cmd, o->svg, o->view, &view))
         return 2;
 
-    tio_items in = {0}, vin = {0};
+    tio_items in = {0}, vin = {0}, tin = {0};
     double *times = NULL, *at = NULL, *vel = NULL, *samples = NULL, *res = NULL;
     ga_mat4 *keys = NULL;
     void *work = NULL;
@@ -286,10 +356,50 @@ int cmd_interp(const cli_opts *o)
                 ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
         goto done;
     }
-    for (size_t k = 0; k < nat; k++)
+    if (o->times) { /* --times FILE: one time a line */
+        if (tio_read(o->times, 0, &tin))
+            goto done;
+        nat = tin.n;
+        at = malloc((nat ? nat : 1) * sizeof *at);
+        if (!at)
+            goto oom;
+        for (size_t k = 0; k < nat; k++) {
+            if (tin.item[k].count != 1) {
+                tio_error(&tin, k, "expected 1 number (a time), found %d", tin.item[k].count);
+                goto done;
+            }
+            at[k] = tin.value[tin.item[k].first];
+        }
+        if (nat == 0) {
+            fprintf(stderr, "garotor interp: %s: no times\n", tin.name);
+            goto done;
+        }
+    }
+    if (o->given & OPT_RATE) { /* t0 + k/HZ, each from k, while <= t_last */
+        double span = (times[n - 1] - times[0]) * o->rate;
+        if (!(span < 1e9)) {
+            fprintf(stderr, "garotor interp: --rate %.17g gives more than 1e9 samples\n", o->rate);
+            goto done;
+        }
+        nat = (size_t)floor(span) + 2;
+        at = malloc(nat * sizeof *at);
+        if (!at)
+            goto oom;
+        size_t k = 0;
+        for (; k < nat; k++) {
+            double t = times[0] + (double)k / o->rate;
+            if (!(t <= times[n - 1]))
+                break;
+            at[k] = t;
+        }
+        nat = k;
+    }
+    for (size_t k = 0; k < nat && !extrap; k++)
         if (!(at[k] >= times[0] && at[k] <= times[n - 1])) {
-            fprintf(stderr, "garotor interp: --at time %.17g is outside the keys' range [%.17g, %.17g]\n",
-                    at[k], times[0], times[n - 1]);
+            fprintf(stderr,
+                    "garotor interp: %s time %.17g is outside the keys' range [%.17g, %.17g] (see "
+                    "--extrapolate)\n",
+                    o->times ? "--times" : "--at", at[k], times[0], times[n - 1]);
             goto done;
         }
 
@@ -348,8 +458,9 @@ int cmd_interp(const cli_opts *o)
     res = malloc(ns * (size_t)width * sizeof *res);
     if (!samples || !res)
         goto oom;
-    st = nat ? ga_path_sample(&path, ev, step, ns, at, samples)
-             : ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples);
+    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples)
+       : !extrap ? ga_path_sample(&path, ev, step, ns, at, samples)
+                 : sample_extrapolated(&path, ev, step, extrap, ns, at, samples);
     if (st != GA_OK) {
         fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", in.name, ga_status_string(st));
         goto done;
@@ -370,7 +481,7 @@ int cmd_interp(const cli_opts *o)
             memcpy(row + 1, m.m, sizeof m.m);
         if (with_v) {
             double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
-            st = ga_path_differentiate(&path, row[0], spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY, dv, da);
+            st = differentiate(&path, extrap, row[0], spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY, dv, da);
             if (st != GA_OK) {
                 fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", in.name, k + 1,
                         ga_status_string(st));
@@ -408,5 +519,6 @@ done:
     free(work);
     tio_free(&in);
     tio_free(&vin);
+    tio_free(&tin);
     return rc;
 }
