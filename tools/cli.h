@@ -18,15 +18,22 @@ enum {
     OPT_VELOCITIES = 1 << 11,
     OPT_SVG = 1 << 12,
     OPT_VIEW = 1 << 13,
-    OPT_VERB = 1 << 14 /* not an option: the command takes an operation word first */
+    OPT_NORMALIZE = 1 << 14,
+    OPT_WITH = 1 << 15,
+    OPT_FRAME = 1 << 16,
+    OPT_RATE = 1 << 17,
+    OPT_TIMES = 1 << 18,
+    OPT_EXTRAPOLATE = 1 << 19,
+    OPT_VERB = 1 << 20 /* not an option: the command takes an operation word first */
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
-    const char *group, *scheme, *format, *eval;
+    const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
     const char *verb; /* `versor exp`: the operation word */
-    int header;
+    double rate;
+    int header, normalize;
     long samples;
     double step;
     double v0[6];
