@@ -14,6 +14,9 @@
 #include <math.h>
 #include <stddef.h>
 
+/* R X ~R of ga_rotor_apply_mv: written by gen/generate.py */
+#include "rotor_sandwich.inc"
+
 #define GA_PI 3.14159265358979323846
 
 typedef struct {
@@ -232,8 +235,10 @@ ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x)
 
 ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
 {
-    ga_mv R = ga_rotor_to_mv(r);
-    return ga_mv_gp(ga_mv_gp(R, X), ga_mv_reverse(R));
+    /* R X ~R, over the 16 blades of R: written by gen/generate.py */
+    ga_mv out;
+    rotor_sandwich_dense(r, X.c, out.c);
+    return out;
 }
 
 /* ---- constructors ------------------------------------------------------- */
