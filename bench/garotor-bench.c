@@ -43,6 +43,7 @@
 #include <garotor/mat4.h>
 #include <garotor/path.h>
 #include <garotor/rotor.h>
+#include <garotor/rotor_inline.h>
 
 #ifdef GAROTOR_BENCH_EIGEN
 #include "eigen_peer.h"
@@ -359,11 +360,13 @@ typedef size_t (*run_fn)(const void *ctx, size_t n);
     }
 
 RING_LOOP(run_gp_full, out_mv[j] = ga_mv_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
-RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul_inline(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_motor_mul_call, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
 RING_LOOP(run_dualquat_mul, out_dq[j] = dualquat_mul(dq_a[j], dq_b[j]), out_dq[last].dual.z)
 RING_LOOP(run_gp_table, gp_table(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
 RING_LOOP(run_mat4_mul, out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]), out_mat[last].m[11])
-RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply_inline(rot_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_motor_apply_call, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
 /* the same point moved through the full algebra: F(x), R F(x) ~R, down */
 RING_LOOP(run_apply_sandwich,
           st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]), out_v3[last].z)
@@ -373,10 +376,11 @@ RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
 RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
 RING_LOOP(run_se3_log, st |= ga_se3_log(rigid_a[j], &out_tw[j]), out_tw[last].v.z)
 /* twist -> 4x4 matrix through the rotor: exp, then the rotor's matrix */
-RING_LOOP(run_exp_to_mat4, out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
+RING_LOOP(run_exp_to_mat4,
+          out_mat[j] = ga_rotor_to_mat4_inline(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
           out_mat[last].m[11])
 /* 4x4 rigid matrix -> twist through the rotor: checked Shepperd, then the log */
-RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4(rigid_a[j], &r);
+RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4_inline(rigid_a[j], &r);
           st |= ga_rotor_log(r, &g); out_tw[j] = ga_generator_to_twist(g), out_tw[last].v.z)
 /* Chains (latency): each call takes the previous call's result, so the figure
  * is the time from an input to its result, not the throughput of independent
@@ -407,7 +411,7 @@ RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat
         return n;                                                                                            \
     }
 
-CHAIN_LOOP(run_motor_mul_chain, ga_rotor, rot_a[0], x = ga_rotor_mul(x, rot_b[j]), x.e123n)
+CHAIN_LOOP(run_motor_mul_chain, ga_rotor, rot_a[0], x = ga_rotor_mul_inline(x, rot_b[j]), x.e123n)
 CHAIN_LOOP(run_dualquat_mul_chain, ga_dualquat, dq_a[0], x = dualquat_mul(x, dq_b[j]), x.dual.z)
 CHAIN_LOOP(run_exp_chain, ga_rotor, rot_a[0], ga_generator g = gens[j]; g.e12 += 0.0 * x.e123n;
            x = ga_rotor_exp(g), x.e123n)
@@ -495,13 +499,14 @@ static bench benches[] = {
     /* the keys of docs/conventions.md */
     {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full, NULL, 0, NULL,
      0, 0, 0},
-    {"motor_mul", "ga_rotor_mul: product of two compact rotors (8 doubles)", run_motor_mul, NULL, 0, NULL, 0,
-     0, 0},
+    {"motor_mul", "ga_rotor_mul_inline: product of two compact rotors (8 doubles)", run_motor_mul, NULL, 0,
+     NULL, 0, 0, 0},
     {"dualquat_mul", "textbook unit dual-quaternion product (in the bench, inline, 48 mul)", run_dualquat_mul,
      NULL, 0, NULL, 0, 0, 0},
     {"gp_table", "plain table-driven dense 32x32 product (in the bench: sign and index tables)", run_gp_table,
      NULL, 0, NULL, 0, 0, 0},
-    {"motor_apply", "ga_rotor_apply: one 3D point moved by a rotor", run_motor_apply, NULL, 0, NULL, 0, 0, 0},
+    {"motor_apply", "ga_rotor_apply_inline: one 3D point moved by a rotor", run_motor_apply, NULL, 0, NULL, 0,
+     0, 0},
     {"mat4_apply", "4x4 rigid motion times a point (in the bench, inline)", run_mat4_apply, NULL, 0, NULL, 0,
      0, 0},
     {"exp", "ga_rotor_exp: generator -> rotor, closed form", run_exp, NULL, 0, NULL, 0, 0, 0},
@@ -516,8 +521,12 @@ static bench benches[] = {
      0, NULL, 0, 0, 0},
     /* extras */
     {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
-    {"motor_mul_chain", "ga_rotor_mul, each call on the previous result (latency)", run_motor_mul_chain, NULL,
-     0, NULL, 0, 0, 0},
+    {"motor_mul_call", "ga_rotor_mul: the same product through the library's symbol", run_motor_mul_call,
+     NULL, 0, NULL, 0, 0, 0},
+    {"motor_apply_call", "ga_rotor_apply: the same point action through the library's symbol",
+     run_motor_apply_call, NULL, 0, NULL, 0, 0, 0},
+    {"motor_mul_chain", "ga_rotor_mul_inline, each call on the previous result (latency)",
+     run_motor_mul_chain, NULL, 0, NULL, 0, 0, 0},
     {"dualquat_mul_chain", "the bench's dual-quaternion product, chained (latency)", run_dualquat_mul_chain,
      NULL, 0, NULL, 0, 0, 0},
     {"exp_chain", "ga_rotor_exp, input depending on the previous result (latency)", run_exp_chain, NULL, 0,
@@ -526,10 +535,10 @@ static bench benches[] = {
      0, NULL, 0, 0, 0},
     {"apply_sandwich", "ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x))): full sandwich",
      run_apply_sandwich, NULL, 0, NULL, 0, 0, 0},
-    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4", run_exp_to_mat4, NULL, 0, NULL,
-     0, 0, 0},
-    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4, log", run_log_from_mat4, NULL, 0,
+    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4_inline", run_exp_to_mat4, NULL, 0,
      NULL, 0, 0, 0},
+    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4_inline, log", run_log_from_mat4,
+     NULL, 0, NULL, 0, 0, 0},
     {"mat4_expm_se3", "ga_mat4_expm (Pade) of the se3_exp inputs' twist^", run_mat4_expm, hats, 0, NULL, 0, 0,
      0},
     {"mat4_logm_se3", "ga_mat4_logm (inverse scaling and squaring) of the se3_log inputs", run_mat4_logm,
@@ -874,6 +883,8 @@ static const ratio_def ratios[] = {
     {"se3_log/eigen_logm", "se3_log", "eigen_logm", 1.0, 0,
      "closed-form SE(3) log against Eigen's general logm"},
     /* extras, no target */
+    {"motor_mul_call/motor_mul", "motor_mul_call", "motor_mul", NAN, 0,
+     "the product through the library's symbol against inline"},
     {"motor_mul_chain/dualquat_mul_chain", "motor_mul_chain", "dualquat_mul_chain", NAN, 0,
      "product latency: rotor against dual quaternion"},
     {"exp_chain/se3_exp_chain", "exp_chain", "se3_exp_chain", NAN, 0, "exp latency: rotor against 4x4"},

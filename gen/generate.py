@@ -15,7 +15,10 @@ python3's standard library (no sympy, no numpy), so a bare Debian 12 runs it.
 
 What it writes, and how it derives it:
 
-  ga/rotor_mul.inc    the body of ga_rotor_mul (ga/rotor.c): the product of two
+  include/garotor/rotor_mul.h
+                      ga_rotor_mul_inline, a public static inline function
+                      (rotor_inline.h includes it; ga_rotor_mul in ga/rotor.c
+                      calls it; clang-format is off in it): the product of two
                       compact rigid-motion rotors. The script builds the blade
                       product of G(4,1) (section 1: bit masks, sign by counting
                       swaps, e5 e5 = -1), writes each of the 8 compact
@@ -300,7 +303,7 @@ def comment_block(lines):
     return out
 
 
-# ---- 4. the compact rotor product (ga/rotor_mul.inc) ------------------------
+# ---- 4. the compact rotor product (include/garotor/rotor_mul.h) ------------
 
 # The compact rotor's components (ga_rotor, rotor.h), each the product of the
 # vectors named (n = e4 + e5): R = q + P n, q = s + e12 + e13 + e23 terms,
@@ -365,14 +368,20 @@ def gen_rotor_mul():
         m, s = p.ops()
         mul, add = mul + m, add + s
     head = [HEADER, '',
-            'The body of ga_rotor_mul (ga/rotor.c): r = a b for compact rigid-motion',
+            'ga_rotor_mul_inline (include it through <garotor/rotor_inline.h>; ga_rotor_mul',
+            'calls it): r = a b for compact rigid-motion',
             'rotors R = q + P n (include/garotor/rotor.h), from the geometric product',
             'of G(4,1) (e1..e4 square to +1, e5 to -1, n = e4 + e5): each component of',
             'the product of the two general 8-component multivectors, its terms in',
             'the order of b\'s components, then a\'s. The script asserts that the',
-            'product has no other components. %d multiplications, %d additions.' % (mul, add),
-            'Needs in scope: ga_rotor a, b (the factors), r (the result).']
-    text = '\n'.join(comment_block(head) + lines) + '\n'
+            'product has no other components. %d multiplications, %d additions.' % (mul, add)]
+    body = ['/* clang-format off */', '#ifndef GAROTOR_ROTOR_MUL_H', '#define GAROTOR_ROTOR_MUL_H', '',
+            '#include "rotor.h"', '',
+            '/** ga_rotor_mul: the product a b (b first, then a) of compact rotors. */',
+            'static inline ga_rotor ga_rotor_mul_inline(ga_rotor a, ga_rotor b)', '{',
+            '    ga_rotor r;'] + lines + ['    return r;', '}', '', '#endif',
+                                          '/* clang-format on */']
+    text = '\n'.join(comment_block(head) + body) + '\n'
     return text, {'rotor_mul': (mul, add)}
 
 
@@ -706,7 +715,7 @@ def gen_rotor_sandwich():
 # ---- the files --------------------------------------------------------------
 
 GENERATED = [
-    ('ga/rotor_mul.inc', gen_rotor_mul),
+    ('include/garotor/rotor_mul.h', gen_rotor_mul),
     ('interp/se3_dexp.inc', gen_se3_dexp),
     ('ga/mv_products.inc', gen_dense_products),
     ('ga/rotor_sandwich.inc', gen_rotor_sandwich),

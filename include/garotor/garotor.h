@@ -9,6 +9,7 @@
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
  *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
  *                matrices, quaternions and dual quaternions
+ *   rotor_inline.h  the hot path of rotor.h inline: ga_rotor_mul_inline, ...
  *   mat4.h       4x4 matrices: SE(3) exp and log (Eberly), general expm and logm
  *   group.h      the Lie-group interface the schemes are written against
  *   path.h       interpolation schemes through key poses, and their evaluators
@@ -21,6 +22,7 @@
 #include "mv.h"
 #include "conformal.h"
 #include "rotor.h"
+#include "rotor_inline.h"
 #include "mat4.h"
 #include "group.h"
 #include "path.h"
