@@ -658,15 +658,15 @@ def gen_dense_products():
             mul, add = mul + dm, add + da
         counts['mv_%s' % name] = (mul, add)
         out += ['', '/* r = %s: %d multiplications, %d additions. */' % (what, mul, add),
-                'static inline void mv_%s_dense(const double *restrict a, const double *restrict b,'
+                'GA_DENSE_FN void mv_%s_dense(const double *restrict a, const double *restrict b,'
                 % name,
-                '                               double *restrict r)', '{']
+                '                             double *restrict r)', '{']
         out += lines + ['}']
     head = [HEADER, '',
             'The dense products of ga/mv.c (ga_mv_gp, ga_mv_op, ga_mv_lc), every term',
             'written out from the blade products of G(4,1) (section 1 of the script).',
             'Each component sums its terms in the order of the blade loop they replace:',
-            'a\'s blade, then b\'s.']
+            'a\'s blade, then b\'s. Needs GA_DENSE_FN defined (static inline, or more).']
     text = '\n'.join(comment_block(head) + out) + '\n'
     return text, counts
 

@@ -53,9 +53,11 @@ static inline ga_vec3 ga_rotor_to_translation_inline(ga_rotor r)
 static inline ga_vec3 ga_rotor_apply_inline(ga_rotor r, ga_vec3 x)
 {
     double vx = -r.e23, vy = r.e13, vz = -r.e12;
-    double ux = 2.0 * (vy * x.z - vz * x.y), uy = 2.0 * (vz * x.x - vx * x.z), uz = 2.0 * (vx * x.y - vy * x.x);
+    double ux = 2.0 * (vy * x.z - vz * x.y), uy = 2.0 * (vz * x.x - vx * x.z),
+           uz = 2.0 * (vx * x.y - vy * x.x);
     ga_vec3 t = ga_rotor_to_translation_inline(r);
-    ga_vec3 y = {((x.x + r.s * ux) + (vy * uz - vz * uy)) + t.x, ((x.y + r.s * uy) + (vz * ux - vx * uz)) + t.y,
+    ga_vec3 y = {((x.x + r.s * ux) + (vy * uz - vz * uy)) + t.x,
+                 ((x.y + r.s * uy) + (vz * ux - vx * uz)) + t.y,
                  ((x.z + r.s * uz) + (vx * uy - vy * ux)) + t.z};
     return y;
 }
