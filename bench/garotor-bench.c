@@ -15,10 +15,13 @@
  * Inputs come from a seeded PRNG (xoshiro256**) and are stored in rings of
  * RING entries, walked in order and continued from batch to batch, so nothing
  * is constant or loop-invariant; every result is stored to an output ring that
- * is read into a volatile sink after each batch, so nothing is dead. Library
- * calls are ordinary calls across translation units (the bench links the
- * library's objects), and the bench's own reference functions are kept out of
- * line with the same by-value signatures, so each side pays the same call.
+ * is read into a volatile sink after each batch, so nothing is dead. Each
+ * operation is called as a user's code calls it: the hot path of
+ * <garotor/rotor_inline.h> inline, everything else through the library's
+ * symbols (the bench links the library's objects); the floors (a dual-
+ * quaternion product, a 4x4 matrix on a point, a table-driven dense product)
+ * are plain inline C written here, at full strength. Keys ending in _chain
+ * time latency: each call waits for the previous one's result.
  *
  * The keys under "ns" and "err" are those of docs/conventions.md ("The benchmark
  * garotor-bench"); everything else is extra. docs/benchmarks.md explains each
@@ -40,6 +43,7 @@
 #include <garotor/mat4.h>
 #include <garotor/path.h>
 #include <garotor/rotor.h>
+#include <garotor/rotor_inline.h>
 
 #ifdef GAROTOR_BENCH_EIGEN
 #include "eigen_peer.h"
@@ -47,16 +51,6 @@
 
 #ifndef GAROTOR_BENCH_BUILD
 #define GAROTOR_BENCH_BUILD "unknown"
-#endif
-
-/* Keep a reference function out of line and with its ABI signature (GCC's
- * noipa also stops clones that would pass the structs in registers). */
-#if defined(__GNUC__) && !defined(__clang__)
-#define BENCH_OUT_OF_LINE __attribute__((noipa))
-#elif defined(__GNUC__)
-#define BENCH_OUT_OF_LINE __attribute__((noinline))
-#else
-#define BENCH_OUT_OF_LINE
 #endif
 
 #define RING 1024
@@ -141,10 +135,13 @@ static ga_twist random_twist(void)
 
 static ga_rotor rotor_of_twist(ga_twist xi) { return ga_rotor_exp(ga_twist_to_generator(xi)); }
 
-/* ---- the reference dual-quaternion product ------------------------------- */
+/* ---- the floors: what a user would otherwise write --------------------------
+ * Each floor is plain C written here, static inline, compiled at full strength
+ * into its timed loop exactly as a user's own code would be: no call, no
+ * by-value struct crossing a library boundary. */
 
 /* Hamilton's product of quaternions, as in any textbook. */
-static ga_quat quat_mul(ga_quat a, ga_quat b)
+static inline ga_quat quat_mul(ga_quat a, ga_quat b)
 {
     ga_quat r;
     r.w = a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z;
@@ -154,15 +151,14 @@ static ga_quat quat_mul(ga_quat a, ga_quat b)
     return r;
 }
 
-static ga_quat quat_add(ga_quat a, ga_quat b)
+static inline ga_quat quat_add(ga_quat a, ga_quat b)
 {
     ga_quat r = {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z};
     return r;
 }
 
 /* (ra + eps da)(rb + eps db) = ra rb + eps (ra db + da rb): 48 multiplications. */
-ga_dualquat bench_dualquat_mul(ga_dualquat a, ga_dualquat b);
-BENCH_OUT_OF_LINE ga_dualquat bench_dualquat_mul(ga_dualquat a, ga_dualquat b)
+static inline ga_dualquat dualquat_mul(ga_dualquat a, ga_dualquat b)
 {
     ga_dualquat r;
     r.real = quat_mul(a.real, b.real);
@@ -171,13 +167,44 @@ BENCH_OUT_OF_LINE ga_dualquat bench_dualquat_mul(ga_dualquat a, ga_dualquat b)
 }
 
 /* A rigid-motion matrix applied to a point: 9 multiplications, 9 additions. */
-ga_vec3 bench_mat4_apply(const ga_mat4 *m, ga_vec3 x);
-BENCH_OUT_OF_LINE ga_vec3 bench_mat4_apply(const ga_mat4 *m, ga_vec3 x)
+static inline ga_vec3 mat4_apply(const ga_mat4 *m, ga_vec3 x)
 {
     const double *a = m->m;
     ga_vec3 r = {a[0] * x.x + a[1] * x.y + a[2] * x.z + a[3], a[4] * x.x + a[5] * x.y + a[6] * x.z + a[7],
                  a[8] * x.x + a[9] * x.y + a[10] * x.z + a[11]};
     return r;
+}
+
+/* The table-driven dense product a user writes from a GA textbook: for every
+ * pair of blades (i, j), the sign of e_i e_j and the index of its blade, from
+ * two 32x32 tables filled once (by ga_blade_mask and the swap-counting rule),
+ * then two nested loops. */
+static double gp_sign[32][32];
+static unsigned char gp_index[32][32];
+
+static void gp_tables(void)
+{
+    int index_of[32];
+    for (int i = 0; i < 32; i++) index_of[ga_blade_mask(i)] = i;
+    for (int i = 0; i < 32; i++)
+        for (int j = 0; j < 32; j++) {
+            unsigned a = ga_blade_mask(i), b = ga_blade_mask(j);
+            int swaps = 0;
+            for (unsigned x = a >> 1; x; x >>= 1)
+                for (unsigned y = x & b; y; y &= y - 1) swaps++;
+            if (a & b & 0x10u) /* e5 e5 = -1 */
+                swaps++;
+            gp_sign[i][j] = (swaps & 1) ? -1.0 : 1.0;
+            gp_index[i][j] = (unsigned char)index_of[a ^ b];
+        }
+}
+
+static inline void gp_table(const ga_mv *a, const ga_mv *b, ga_mv *r)
+{
+    double acc[32] = {0};
+    for (int i = 0; i < 32; i++)
+        for (int j = 0; j < 32; j++) acc[gp_index[i][j]] += gp_sign[i][j] * (a->c[i] * b->c[j]);
+    memcpy(r->c, acc, sizeof acc);
 }
 
 /* ---- inputs and outputs --------------------------------------------------- */
@@ -333,24 +360,64 @@ typedef size_t (*run_fn)(const void *ctx, size_t n);
     }
 
 RING_LOOP(run_gp_full, out_mv[j] = ga_mv_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
-RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
-RING_LOOP(run_dualquat_mul, out_dq[j] = bench_dualquat_mul(dq_a[j], dq_b[j]), out_dq[last].dual.z)
+RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul_inline(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_motor_mul_call, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_dualquat_mul, out_dq[j] = dualquat_mul(dq_a[j], dq_b[j]), out_dq[last].dual.z)
+RING_LOOP(run_gp_table, gp_table(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
 RING_LOOP(run_mat4_mul, out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]), out_mat[last].m[11])
-RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply_inline(rot_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_motor_apply_call, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
 /* the same point moved through the full algebra: F(x), R F(x) ~R, down */
 RING_LOOP(run_apply_sandwich,
           st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]), out_v3[last].z)
-RING_LOOP(run_mat4_apply, out_v3[j] = bench_mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_mat4_apply, out_v3[j] = mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
 RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
 RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
 RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
 RING_LOOP(run_se3_log, st |= ga_se3_log(rigid_a[j], &out_tw[j]), out_tw[last].v.z)
 /* twist -> 4x4 matrix through the rotor: exp, then the rotor's matrix */
-RING_LOOP(run_exp_to_mat4, out_mat[j] = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
+RING_LOOP(run_exp_to_mat4,
+          out_mat[j] = ga_rotor_to_mat4_inline(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
           out_mat[last].m[11])
 /* 4x4 rigid matrix -> twist through the rotor: checked Shepperd, then the log */
-RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4(rigid_a[j], &r);
+RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4_inline(rigid_a[j], &r);
           st |= ga_rotor_log(r, &g); out_tw[j] = ga_generator_to_twist(g), out_tw[last].v.z)
+/* Chains (latency): each call takes the previous call's result, so the figure
+ * is the time from an input to its result, not the throughput of independent
+ * calls. A product chain multiplies its running result by the next ring
+ * entry; an exp chain adds 0.0 * (previous result) to one component of the
+ * next input (exactly the same input, but the compiler cannot know it: one
+ * multiplication and one addition of latency, the same in exp_chain and
+ * se3_exp_chain). */
+#define CHAIN_LOOP(name, T, init, STEP, LAST)                                                                \
+    static size_t name(const void *ctx, size_t n)                                                            \
+    {                                                                                                        \
+        (void)ctx;                                                                                           \
+        static T carry;                                                                                      \
+        static int started;                                                                                  \
+        if (!started) {                                                                                      \
+            carry = (init);                                                                                  \
+            started = 1;                                                                                     \
+        }                                                                                                    \
+        T x = carry;                                                                                         \
+        size_t k = cursor;                                                                                   \
+        for (size_t i = 0; i < n; i++, k++) {                                                                \
+            size_t j = k & MASK;                                                                             \
+            STEP;                                                                                            \
+        }                                                                                                    \
+        cursor = k;                                                                                          \
+        carry = x;                                                                                           \
+        sink = (LAST);                                                                                       \
+        return n;                                                                                            \
+    }
+
+CHAIN_LOOP(run_motor_mul_chain, ga_rotor, rot_a[0], x = ga_rotor_mul_inline(x, rot_b[j]), x.e123n)
+CHAIN_LOOP(run_dualquat_mul_chain, ga_dualquat, dq_a[0], x = dualquat_mul(x, dq_b[j]), x.dual.z)
+CHAIN_LOOP(run_exp_chain, ga_rotor, rot_a[0], ga_generator g = gens[j]; g.e12 += 0.0 * x.e123n;
+           x = ga_rotor_exp(g), x.e123n)
+CHAIN_LOOP(run_se3_exp_chain, ga_mat4, rigid_a[0], ga_twist xi = twists[j]; xi.w.x += 0.0 * x.m[11];
+           x = ga_se3_exp(xi), x.m[11])
+
 /* ga_mat4_expm / ga_mat4_logm (and Eigen's) of the ring selected by ctx */
 RING_LOOP(run_mat4_expm, st |= ga_mat4_expm(in[j], &out_mat[j]), out_mat[last].m[11])
 RING_LOOP(run_mat4_logm, st |= ga_mat4_logm(in[j], &out_mat[j]), out_mat[last].m[11])
@@ -432,11 +499,16 @@ static bench benches[] = {
     /* the keys of docs/conventions.md */
     {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full, NULL, 0, NULL,
      0, 0, 0},
-    {"motor_mul", "ga_rotor_mul: product of two compact rotors (8 doubles)", run_motor_mul, NULL, 0, NULL, 0,
+    {"motor_mul", "ga_rotor_mul_inline: product of two compact rotors (8 doubles)", run_motor_mul, NULL, 0,
+     NULL, 0, 0, 0},
+    {"dualquat_mul", "textbook unit dual-quaternion product (in the bench, inline, 48 mul)", run_dualquat_mul,
+     NULL, 0, NULL, 0, 0, 0},
+    {"gp_table", "plain table-driven dense 32x32 product (in the bench: sign and index tables)", run_gp_table,
+     NULL, 0, NULL, 0, 0, 0},
+    {"motor_apply", "ga_rotor_apply_inline: one 3D point moved by a rotor", run_motor_apply, NULL, 0, NULL, 0,
      0, 0},
-    {"dualquat_mul", "textbook unit dual-quaternion product (in the bench, 48 mul)", run_dualquat_mul, NULL,
-     0, NULL, 0, 0, 0},
-    {"motor_apply", "ga_rotor_apply: one 3D point moved by a rotor", run_motor_apply, NULL, 0, NULL, 0, 0, 0},
+    {"mat4_apply", "4x4 rigid motion times a point (in the bench, inline)", run_mat4_apply, NULL, 0, NULL, 0,
+     0, 0},
     {"exp", "ga_rotor_exp: generator -> rotor, closed form", run_exp, NULL, 0, NULL, 0, 0, 0},
     {"log", "ga_rotor_log: rotor -> generator, principal", run_log, NULL, 0, NULL, 0, 0, 0},
     {"se3_exp", "ga_se3_exp: twist -> 4x4, Eberly's closed form", run_se3_exp, NULL, 0, NULL, 0, 0, 0},
@@ -449,13 +521,24 @@ static bench benches[] = {
      0, NULL, 0, 0, 0},
     /* extras */
     {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
-    {"mat4_apply", "4x4 rigid motion times a point (in the bench)", run_mat4_apply, NULL, 0, NULL, 0, 0, 0},
+    {"motor_mul_call", "ga_rotor_mul: the same product through the library's symbol", run_motor_mul_call,
+     NULL, 0, NULL, 0, 0, 0},
+    {"motor_apply_call", "ga_rotor_apply: the same point action through the library's symbol",
+     run_motor_apply_call, NULL, 0, NULL, 0, 0, 0},
+    {"motor_mul_chain", "ga_rotor_mul_inline, each call on the previous result (latency)",
+     run_motor_mul_chain, NULL, 0, NULL, 0, 0, 0},
+    {"dualquat_mul_chain", "the bench's dual-quaternion product, chained (latency)", run_dualquat_mul_chain,
+     NULL, 0, NULL, 0, 0, 0},
+    {"exp_chain", "ga_rotor_exp, input depending on the previous result (latency)", run_exp_chain, NULL, 0,
+     NULL, 0, 0, 0},
+    {"se3_exp_chain", "ga_se3_exp, input depending on the previous result (latency)", run_se3_exp_chain, NULL,
+     0, NULL, 0, 0, 0},
     {"apply_sandwich", "ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x))): full sandwich",
      run_apply_sandwich, NULL, 0, NULL, 0, 0, 0},
-    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4", run_exp_to_mat4, NULL, 0, NULL,
-     0, 0, 0},
-    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4, log", run_log_from_mat4, NULL, 0,
+    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4_inline", run_exp_to_mat4, NULL, 0,
      NULL, 0, 0, 0},
+    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4_inline, log", run_log_from_mat4,
+     NULL, 0, NULL, 0, 0, 0},
     {"mat4_expm_se3", "ga_mat4_expm (Pade) of the se3_exp inputs' twist^", run_mat4_expm, hats, 0, NULL, 0, 0,
      0},
     {"mat4_logm_se3", "ga_mat4_logm (inverse scaling and squaring) of the se3_log inputs", run_mat4_logm,
@@ -618,13 +701,15 @@ static int setup_inputs(void)
             break;
         }
     }
+    gp_tables();
     return build_paths();
 }
 
 /* Do the figures compute what they claim? Each is the largest entry difference
  * over the ring between two routes to the same result. */
 typedef struct {
-    double dualquat_vs_motor;  /* to_dualquat(ga_rotor_mul) vs bench_dualquat_mul */
+    double dualquat_vs_motor;  /* to_dualquat(ga_rotor_mul) vs the bench's dualquat_mul */
+    double gp_vs_table;        /* ga_mv_gp vs the bench's gp_table */
     double apply_vs_matrix;    /* ga_rotor_apply vs the rotor's 4x4 times the point */
     double apply_vs_sandwich;  /* ga_rotor_apply vs the full sandwich */
     double exp_vs_se3;         /* ga_rotor_to_mat4(exp) vs ga_se3_exp */
@@ -649,11 +734,14 @@ static checks run_checks(void)
 #endif
     for (int j = 0; j < RING; j++) {
         ga_dualquat d1 = ga_rotor_to_dualquat(ga_rotor_mul(rot_a[j], rot_b[j]));
-        ga_dualquat d2 = bench_dualquat_mul(dq_a[j], dq_b[j]);
+        ga_dualquat d2 = dualquat_mul(dq_a[j], dq_b[j]);
         c.dualquat_vs_motor = fmax(c.dualquat_vs_motor, maxdiff(&d1.real.w, &d2.real.w, 4));
         c.dualquat_vs_motor = fmax(c.dualquat_vs_motor, maxdiff(&d1.dual.w, &d2.dual.w, 4));
+        ga_mv g1 = ga_mv_gp(mv_a[j], mv_b[j]), g2;
+        gp_table(&mv_a[j], &mv_b[j], &g2);
+        c.gp_vs_table = fmax(c.gp_vs_table, maxdiff(g1.c, g2.c, 32));
 
-        ga_vec3 y1 = ga_rotor_apply(rot_a[j], pts[j]), y2 = bench_mat4_apply(&rigid_a[j], pts[j]);
+        ga_vec3 y1 = ga_rotor_apply(rot_a[j], pts[j]), y2 = mat4_apply(&rigid_a[j], pts[j]);
         ga_vec3 y3;
         ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &y3);
         c.apply_vs_matrix = fmax(c.apply_vs_matrix, maxdiff(&y1.x, &y2.x, 3));
@@ -779,8 +867,11 @@ typedef struct {
 } ratio_def;
 
 static const ratio_def ratios[] = {
-    {"motor_mul/dualquat_mul", "motor_mul", "dualquat_mul", 1.15, 0,
-     "compact rotor product against the dual-quaternion floor"},
+    {"motor_mul/dualquat_mul", "motor_mul", "dualquat_mul", 1.2, 0,
+     "compact rotor product against the inline dual-quaternion floor"},
+    {"motor_apply/mat4_apply", "motor_apply", "mat4_apply", 1.5, 0,
+     "point action: rotor against an inline 4x4 matrix"},
+    {"gp_full/gp_table", "gp_full", "gp_table", 0.3, 0, "dense product against a plain table-driven loop"},
     {"gp_full/motor_mul", "gp_full", "motor_mul", 8.0, 1,
      "what the compact form saves over the full algebra"},
     {"exp/se3_exp", "exp", "se3_exp", 0.7, 0, "rotor exp against Eberly's 4x4 exp"},
@@ -792,8 +883,11 @@ static const ratio_def ratios[] = {
     {"se3_log/eigen_logm", "se3_log", "eigen_logm", 1.0, 0,
      "closed-form SE(3) log against Eigen's general logm"},
     /* extras, no target */
-    {"motor_apply/mat4_apply", "motor_apply", "mat4_apply", NAN, 0,
-     "point action: rotor against a 4x4 matrix"},
+    {"motor_mul_call/motor_mul", "motor_mul_call", "motor_mul", NAN, 0,
+     "the product through the library's symbol against inline"},
+    {"motor_mul_chain/dualquat_mul_chain", "motor_mul_chain", "dualquat_mul_chain", NAN, 0,
+     "product latency: rotor against dual quaternion"},
+    {"exp_chain/se3_exp_chain", "exp_chain", "se3_exp_chain", NAN, 0, "exp latency: rotor against 4x4"},
     {"apply_sandwich/motor_apply", "apply_sandwich", "motor_apply", NAN, 0,
      "full sandwich against the fast point action"},
     {"motor_mul/mat4_mul", "motor_mul", "mat4_mul", NAN, 0, "composition: rotor against 4x4 matrix"},
@@ -1014,6 +1108,7 @@ int main(int argc, char **argv)
         printf(",\n    \"batch_poses\": %d\n  },\n", BATCH_POSES);
         printf("  \"check\": {\n");
         printf("    \"dualquat_vs_motor\": %.3e,\n", chk.dualquat_vs_motor);
+        printf("    \"gp_vs_table\": %.3e,\n", chk.gp_vs_table);
         printf("    \"apply_vs_matrix\": %.3e,\n", chk.apply_vs_matrix);
         printf("    \"apply_vs_sandwich\": %.3e,\n", chk.apply_vs_sandwich);
         printf("    \"exp_vs_se3\": %.3e,\n", chk.exp_vs_se3);
@@ -1095,13 +1190,13 @@ int main(int argc, char **argv)
            "  direct %.4g poses/s, exact %.4g poses/s\n",
            BATCH_POSES, pps_direct, pps_exact);
     printf("\nchecks (max |difference| between two routes to the same result):\n"
-           "  dualquat vs motor %.1e, apply vs matrix %.1e, apply vs sandwich %.1e,\n"
+           "  dualquat vs motor %.1e, gp vs table %.1e, apply vs matrix %.1e, apply vs sandwich %.1e,\n"
            "  exp vs se3_exp %.1e, log vs se3_log %.1e, mat4_expm vs se3_exp %.1e, "
            "mat4_logm vs se3_log %.1e,\n"
            "  eigen: expm vs se3_exp %.1e, logm vs se3_log %.1e, general expm %.1e, "
            "general logm %.1e; status %d\n",
-           chk.dualquat_vs_motor, chk.apply_vs_matrix, chk.apply_vs_sandwich, chk.exp_vs_se3, chk.log_vs_se3,
-           chk.expm_vs_se3, chk.logm_vs_se3, chk.eigen_expm_vs_se3, chk.eigen_logm_vs_se3,
+           chk.dualquat_vs_motor, chk.gp_vs_table, chk.apply_vs_matrix, chk.apply_vs_sandwich, chk.exp_vs_se3,
+           chk.log_vs_se3, chk.expm_vs_se3, chk.logm_vs_se3, chk.eigen_expm_vs_se3, chk.eigen_logm_vs_se3,
            chk.eigen_expm_general, chk.eigen_logm_general, status_or);
     printf("\nmachine: %s, %ld online CPUs; %s; build %s; Eigen %s\n", cpu, ncpu, compiler(),
            GAROTOR_BENCH_BUILD, eigen_version ? eigen_version : "absent");

@@ -11,9 +11,13 @@
  */
 #include <garotor/rotor.h>
 #include <garotor/mat4.h>
+#include <garotor/rotor_inline.h>
 
 #include <math.h>
 #include <stddef.h>
+
+/* R X ~R of ga_rotor_apply_mv: written by gen/generate.py */
+#include "rotor_sandwich.inc"
 
 #define GA_PI 3.14159265358979323846
 
@@ -76,20 +80,10 @@ ga_rotor ga_rotor_identity(void)
     return r;
 }
 
-ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b)
-{
-    ga_rotor r;
-    /* q = qa qb, P = qa Pb + Pa qb, term by term: written by gen/generate.py
-     * from the blade products of G(4,1) (`python3 gen/generate.py` rewrites it) */
-#include "rotor_mul.inc"
-    return r;
-}
+/* The hot path is in <garotor/rotor_inline.h>; these are its linkable symbols. */
+ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b) { return ga_rotor_mul_inline(a, b); }
 
-ga_rotor ga_rotor_reverse(ga_rotor r)
-{
-    ga_rotor o = {r.s, -r.e12, -r.e13, -r.e23, -r.e1n, -r.e2n, -r.e3n, r.e123n};
-    return o;
-}
+ga_rotor ga_rotor_reverse(ga_rotor r) { return ga_rotor_reverse_inline(r); }
 
 ga_mv ga_rotor_to_mv(ga_rotor r)
 {
@@ -215,26 +209,14 @@ int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
 
 /* ---- action ---------------------------------------------------------------- */
 
-/* t = -2 <P ~q>_1 = -2 (s p + p4 b + p x b). */
-static vec rotor_translation(ga_rotor r)
-{
-    vec b = rotor_b(r), p = rotor_p(r);
-    return v_scale(v_add(v_add(v_scale(p, r.s), v_scale(b, r.e123n)), v_cross(p, b)), -2.0);
-}
-
-ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x)
-{
-    /* q x ~q by the quaternion (s, v), v = -b: x + s u + v x u with u = 2 v x x */
-    vec v = v_make(-r.e23, r.e13, -r.e12), xv = v_of(x);
-    vec u = v_scale(v_cross(v, xv), 2.0);
-    vec y = v_add(v_add(xv, v_scale(u, r.s)), v_cross(v, u));
-    return v_out(v_add(y, rotor_translation(r)));
-}
+ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x) { return ga_rotor_apply_inline(r, x); }
 
 ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
 {
-    ga_mv R = ga_rotor_to_mv(r);
-    return ga_mv_gp(ga_mv_gp(R, X), ga_mv_reverse(R));
+    /* R X ~R, over the 16 blades of R: written by gen/generate.py */
+    ga_mv out;
+    rotor_sandwich_dense(r, X.c, out.c);
+    return out;
 }
 
 /* ---- constructors ------------------------------------------------------- */
@@ -551,77 +533,13 @@ ga_rotor ga_rotor_from_screw(ga_screw s)
 
 ga_quat ga_rotor_to_quat(ga_rotor r) { return (ga_quat){r.s, -r.e23, r.e13, -r.e12}; }
 
-ga_vec3 ga_rotor_to_translation(ga_rotor r) { return v_out(rotor_translation(r)); }
+ga_vec3 ga_rotor_to_translation(ga_rotor r) { return ga_rotor_to_translation_inline(r); }
 
-ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t)
-{
-    /* T_t q: P = -t q / 2 = ((t x b - s t) - I (t.b)) / 2, b = -(x, y, z) */
-    vec b = v_make(-q.x, -q.y, -q.z), tv = v_of(t);
-    vec p = v_scale(v_sub(v_cross(tv, b), v_scale(tv, q.w)), 0.5);
-    return rotor_make(q.w, b, p, -0.5 * v_dot(tv, b));
-}
+ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t) { return ga_rotor_from_quat_inline(q, t); }
 
-ga_mat4 ga_rotor_to_mat4(ga_rotor r)
-{
-    double w = r.s, x = -r.e23, y = r.e13, z = -r.e12;
-    vec t = rotor_translation(r);
-    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x, 2 * (x * y + w * z),
-                  1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y, 2 * (x * z - w * y), 2 * (y * z + w * x),
-                  1 - 2 * (x * x + y * y), t.z, 0, 0, 0, 1}};
-    return m;
-}
+ga_mat4 ga_rotor_to_mat4(ga_rotor r) { return ga_rotor_to_mat4_inline(r); }
 
-int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
-{
-    const double *m = mm.m;
-    const double tol = 1e-9;
-    for (int i = 0; i < 16; i++)
-        if (!isfinite(m[i]))
-            return GA_ERR_NOTFINITE;
-    if (!(fabs(m[12]) <= tol && fabs(m[13]) <= tol && fabs(m[14]) <= tol && fabs(m[15] - 1.0) <= tol))
-        return GA_ERR_NOTRIGID;
-    for (int i = 0; i < 3; i++)
-        for (int j = i; j < 3; j++) {
-            double d = m[i] * m[j] + m[4 + i] * m[4 + j] + m[8 + i] * m[8 + j];
-            if (!(fabs(d - (i == j)) <= tol))
-                return GA_ERR_NOTRIGID;
-        }
-    double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-                 m[2] * (m[4] * m[9] - m[5] * m[8]);
-    if (!(det > 0.0))
-        return GA_ERR_NOTRIGID;
-    /* Shepperd: divide by the largest of 4w^2, 4x^2, 4y^2, 4z^2 */
-    double tr = m[0] + m[5] + m[10], w, x, y, z, h;
-    if (tr >= m[0] && tr >= m[5] && tr >= m[10]) {
-        h = sqrt(1.0 + tr);
-        w = 0.5 * h, h = 0.5 / h;
-        x = (m[9] - m[6]) * h, y = (m[2] - m[8]) * h, z = (m[4] - m[1]) * h;
-    } else if (m[0] >= m[5] && m[0] >= m[10]) {
-        h = sqrt(1.0 + m[0] - m[5] - m[10]);
-        x = 0.5 * h, h = 0.5 / h;
-        w = (m[9] - m[6]) * h, y = (m[1] + m[4]) * h, z = (m[2] + m[8]) * h;
-    } else if (m[5] >= m[10]) {
-        h = sqrt(1.0 - m[0] + m[5] - m[10]);
-        y = 0.5 * h, h = 0.5 / h;
-        w = (m[2] - m[8]) * h, x = (m[1] + m[4]) * h, z = (m[6] + m[9]) * h;
-    } else {
-        h = sqrt(1.0 - m[0] - m[5] + m[10]);
-        z = 0.5 * h, h = 0.5 / h;
-        w = (m[4] - m[1]) * h, x = (m[2] + m[8]) * h, y = (m[6] + m[9]) * h;
-    }
-    double k = (w < 0.0 ? -1.0 : 1.0) / sqrt(w * w + x * x + y * y + z * z);
-    ga_quat q = {k * w, k * x, k * y, k * z};
-    ga_vec3 t = {m[3], m[7], m[11]};
-    /* P = t q / 2 sums products of t: a translation near DBL_MAX overflows
-       (found by fuzz/fuzz_numeric: fuzz/regress/numeric/from-mat4-translation-overflow) */
-    ga_rotor r = ga_rotor_from_quat(q, t);
-    const double *c = &r.s;
-    for (int i = 0; i < 8; i++)
-        if (!isfinite(c[i]))
-            return GA_ERR_DOMAIN;
-    *out = r;
-    return GA_OK;
-}
+int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out) { return ga_rotor_from_mat4_inline(mm, out); }
 
 ga_dualquat ga_rotor_to_dualquat(ga_rotor r)
 {

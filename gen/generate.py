@@ -15,7 +15,10 @@ python3's standard library (no sympy, no numpy), so a bare Debian 12 runs it.
 
 What it writes, and how it derives it:
 
-  ga/rotor_mul.inc    the body of ga_rotor_mul (ga/rotor.c): the product of two
+  include/garotor/rotor_mul.h
+                      ga_rotor_mul_inline, a public static inline function
+                      (rotor_inline.h includes it; ga_rotor_mul in ga/rotor.c
+                      calls it; clang-format is off in it): the product of two
                       compact rigid-motion rotors. The script builds the blade
                       product of G(4,1) (section 1: bit masks, sign by counting
                       swaps, e5 e5 = -1), writes each of the 8 compact
@@ -300,7 +303,7 @@ def comment_block(lines):
     return out
 
 
-# ---- 4. the compact rotor product (ga/rotor_mul.inc) ------------------------
+# ---- 4. the compact rotor product (include/garotor/rotor_mul.h) ------------
 
 # The compact rotor's components (ga_rotor, rotor.h), each the product of the
 # vectors named (n = e4 + e5): R = q + P n, q = s + e12 + e13 + e23 terms,
@@ -365,14 +368,20 @@ def gen_rotor_mul():
         m, s = p.ops()
         mul, add = mul + m, add + s
     head = [HEADER, '',
-            'The body of ga_rotor_mul (ga/rotor.c): r = a b for compact rigid-motion',
+            'ga_rotor_mul_inline (include it through <garotor/rotor_inline.h>; ga_rotor_mul',
+            'calls it): r = a b for compact rigid-motion',
             'rotors R = q + P n (include/garotor/rotor.h), from the geometric product',
             'of G(4,1) (e1..e4 square to +1, e5 to -1, n = e4 + e5): each component of',
             'the product of the two general 8-component multivectors, its terms in',
             'the order of b\'s components, then a\'s. The script asserts that the',
-            'product has no other components. %d multiplications, %d additions.' % (mul, add),
-            'Needs in scope: ga_rotor a, b (the factors), r (the result).']
-    text = '\n'.join(comment_block(head) + lines) + '\n'
+            'product has no other components. %d multiplications, %d additions.' % (mul, add)]
+    body = ['/* clang-format off */', '#ifndef GAROTOR_ROTOR_MUL_H', '#define GAROTOR_ROTOR_MUL_H', '',
+            '#include "rotor.h"', '',
+            '/** ga_rotor_mul: the product a b (b first, then a) of compact rotors. */',
+            'static inline ga_rotor ga_rotor_mul_inline(ga_rotor a, ga_rotor b)', '{',
+            '    ga_rotor r;'] + lines + ['    return r;', '}', '', '#endif',
+                                          '/* clang-format on */']
+    text = '\n'.join(comment_block(head) + body) + '\n'
     return text, {'rotor_mul': (mul, add)}
 
 
@@ -617,11 +626,99 @@ def gen_se3_dexp():
     return text, counts
 
 
+# ---- 6. the dense products (ga/mv_products.inc) -----------------------------
+
+# gp, op and lc of two general multivectors, every term written out: each
+# component is the sum of its blade pairs in the order of ga/mv.c's loop
+# (a_major: a's blade, then b's), so the rounding is that of the loop, term
+# for term. What differs from the loop: the sum starts at its first term, not
+# at +0.0 (only the sign of a zero result can differ), and no term is skipped
+# where a coefficient of a is zero (a zero term added to a sum leaves it
+# unchanged, so finite inputs give the same numbers; an Inf in b beside a zero
+# in a now gives NaN where the loop skipped it: NaN in, NaN out still holds).
+DENSE = [('gp', Algebra.GP, 'the geometric product a b'),
+         ('op', Algebra.OP, 'the outer product a ^ b'),
+         ('lc', Algebra.LC, 'the left contraction a _| b')]
+
+
+def dense_vars(vars_, cname):
+    return {m: vars_('%s[%d]' % (cname, i)) for i, m in enumerate(ALG.masks)}
+
+
+def gen_dense_products():
+    out, counts = [], {}
+    for name, kind, what in DENSE:
+        vars_ = Vars()
+        A, B = dense_vars(vars_, 'a'), dense_vars(vars_, 'b')
+        P = ALG.product(A, B, kind)
+        lines, mul, add = [], 0, 0
+        for i, m in enumerate(ALG.masks):
+            lines += emit_sum('r[%d]' % i, P.get(m, Poly()), vars_.names, a_major)
+            dm, da = P.get(m, Poly()).ops()
+            mul, add = mul + dm, add + da
+        counts['mv_%s' % name] = (mul, add)
+        out += ['', '/* r = %s: %d multiplications, %d additions. */' % (what, mul, add),
+                'GA_DENSE_FN void mv_%s_dense(const double *restrict a, const double *restrict b,'
+                % name,
+                '                             double *restrict r)', '{']
+        out += lines + ['}']
+    head = [HEADER, '',
+            'The dense products of ga/mv.c (ga_mv_gp, ga_mv_op, ga_mv_lc), every term',
+            'written out from the blade products of G(4,1) (section 1 of the script).',
+            'Each component sums its terms in the order of the blade loop they replace:',
+            'a\'s blade, then b\'s. Needs GA_DENSE_FN defined (static inline, or more).']
+    text = '\n'.join(comment_block(head) + out) + '\n'
+    return text, counts
+
+
+def gen_rotor_sandwich():
+    # the sandwich R X ~R of a compact rotor: T = R X, then T ~R, each with
+    # R's 16 blades (e_i n = e_i4 + e_i5) instead of 32
+    out, counts = [], {}
+    basis = rotor_basis()
+    vars_ = Vars()
+    R = compact_rotor(basis, vars_, 'r')
+    X = dense_vars(vars_, 'x')
+    T = ALG.product(R, X)
+    lines, mul, add = [], 0, 0
+    for i, m in enumerate(ALG.masks):
+        lines += emit_sum('double t%d' % i, T.get(m, Poly()), vars_.names, a_major)
+        dm, da = T.get(m, Poly()).ops()
+        mul, add = mul + dm, add + da
+    vars2 = Vars()
+    R2 = compact_rotor(basis, vars2, 'r')
+    Tv = {m: vars2('t%d' % i) for i, m in enumerate(ALG.masks)}
+    Rrev = {m: c * (-1 if popcount(m) % 4 in (2, 3) else 1) for m, c in R2.items()}
+    S = ALG.product(Tv, Rrev)
+    # the reverse of R is R with its grade-2 part negated: check against the rule
+    assert all(popcount(m) in (0, 2, 4) for m in R2)
+    for i, m in enumerate(ALG.masks):
+        lines += emit_sum('out[%d]' % i, S.get(m, Poly()), vars2.names, a_major)
+        dm, da = S.get(m, Poly()).ops()
+        mul, add = mul + dm, add + da
+    counts['rotor_apply_mv'] = (mul, add)
+    out += ['', '/* out = R X ~R for a compact rotor r (R = q + P n) and a full multivector x:',
+            ' * t = R x, then t ~R, each product over the 16 blades of R. %d multiplications,' % mul,
+            ' * %d additions. */' % add,
+            'static inline void rotor_sandwich_dense(ga_rotor r, const double *restrict x,',
+            '                                        double *restrict out)', '{']
+    out += lines + ['}']
+    head = [HEADER, '',
+            'The sandwich of ga_rotor_apply_mv (ga/rotor.c), R X ~R for a compact rotor',
+            'and a full multivector, every term written out from the blade products of',
+            'G(4,1) (section 1 of the script) and the compact components of section 4.',
+            'Needs in scope: ga_rotor (rotor.h).']
+    text = '\n'.join(comment_block(head) + out) + '\n'
+    return text, counts
+
+
 # ---- the files --------------------------------------------------------------
 
 GENERATED = [
-    ('ga/rotor_mul.inc', gen_rotor_mul),
+    ('include/garotor/rotor_mul.h', gen_rotor_mul),
     ('interp/se3_dexp.inc', gen_se3_dexp),
+    ('ga/mv_products.inc', gen_dense_products),
+    ('ga/rotor_sandwich.inc', gen_rotor_sandwich),
 ]
 
 

@@ -9,6 +9,7 @@
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
  *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
  *                matrices, quaternions and dual quaternions
+ *   rotor_inline.h  the hot path of rotor.h inline: ga_rotor_mul_inline, ...
  *   versor.h     the general algebra: versors (reflections, inversions, dilations,
  *                transversions) and their sandwich, exp, log and split of any
  *                bivector and rotor of G(4,1)
@@ -24,6 +25,7 @@
 #include "mv.h"
 #include "conformal.h"
 #include "rotor.h"
+#include "rotor_inline.h"
 #include "versor.h"
 #include "mat4.h"
 #include "group.h"

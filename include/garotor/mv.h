@@ -8,10 +8,11 @@
  *   e123 e124 e125 e134 e135 e145 e234 e235 e245 e345;
  *   e1234 e1235 e1245 e1345 e2345; e12345
  *
- * The products here are computed blade by blade from the definition (a blade is
- * a set of basis vectors; the sign of a product is the parity of the swaps that
- * sort it, times -1 for e5*e5). They are the reference that the compact rotor
- * (rotor.h) is tested against: obviously right first, fast second.
+ * The products here follow the definition blade by blade (a blade is a set of
+ * basis vectors; the sign of a product is the parity of the swaps that sort
+ * it, times -1 for e5*e5), written out term by term by gen/generate.py and
+ * summed in the order of the blade loop. They are the reference that the
+ * compact rotor (rotor.h) is tested against.
  */
 #ifndef GAROTOR_MV_H
 #define GAROTOR_MV_H
