@@ -359,8 +359,9 @@ static void build_smooth(ga_path *p)
         const double *x0 = p->gen + j * d, *x1 = x0 + d;
         for (size_t k = 0; k < d; ++k) r[k] = 2.0 * (x1[k] - x0[k]) / h;
         if (j > 0) {
+            const double *rp = r - d; /* the previous row (an index k - d would wrap: k is unsigned) */
             di -= lo * cp[j - 1];
-            for (size_t k = 0; k < d; ++k) r[k] -= lo * r[k - d];
+            for (size_t k = 0; k < d; ++k) r[k] -= lo * rp[k];
         }
         cp[j] = up / di;
         for (size_t k = 0; k < d; ++k) r[k] /= di;
