@@ -7,6 +7,8 @@
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
  *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
+ *   object.h     kinds and read-back of every object, meet, projection, distance,
+ *                angle, the rigid motion between two objects
  *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
  *                matrices, quaternions and dual quaternions
  *   mat4.h       4x4 matrices: SE(3) exp and log (Eberly), general expm and logm
@@ -21,6 +23,7 @@
 #include "mv.h"
 #include "conformal.h"
 #include "rotor.h"
+#include "object.h"
 #include "mat4.h"
 #include "group.h"
 #include "path.h"
