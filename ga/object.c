@@ -145,8 +145,8 @@ static int classify(ga_mv X, int strict, ga_object *o)
     if (r.kind >= GA_OBJECT_POINTPAIR) {
         double L2 = fmax(1.0, dot3(r.centre, r.centre));
         r.reality = fabs(r.r2) <= GA_OBJECT_TANGENT_TOL * L2 ? GA_REALITY_TANGENT
-                    : r.r2 < 0.0                              ? GA_REALITY_IMAGINARY
-                                                              : GA_REALITY_REAL;
+                  : r.r2 < 0.0                               ? GA_REALITY_IMAGINARY
+                                                             : GA_REALITY_REAL;
     }
     *o = r;
     return GA_OK;
@@ -223,7 +223,7 @@ int ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
     case GA_OBJECT_FLATPOINT: *out = c; return GA_OK;
     case GA_OBJECT_PLANE: *out = sub3(x, mul3(u, dot3(u, y))); return GA_OK; /* x - (m.x - d) m */
     case GA_OBJECT_LINE: *out = add3(c, mul3(u, dot3(u, y))); return GA_OK;  /* p + ((x - p).u) u */
-    case GA_OBJECT_SPHERE: return onto_round(c, r, y, out);                 /* c + r (x - c)/|x - c| */
+    case GA_OBJECT_SPHERE: return onto_round(c, r, y, out);                  /* c + r (x - c)/|x - c| */
     case GA_OBJECT_CIRCLE: return onto_round(c, r, sub3(y, mul3(u, dot3(u, y))), out);
     default: /* the pair c -+ r u: the nearer one */
         *out = add3(c, mul3(u, dot3(u, y) >= 0.0 ? r : -r));
@@ -316,7 +316,7 @@ int ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
     if (fabs(a.r2 - b.r2) > GA_POINT_TOL * L2)
         return GA_ERR_NOTRIGID;
     ga_rotor R = a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_FLATPOINT ? ga_rotor_identity()
-                                                                              : turn(a.direction, b.direction);
+                                                                             : turn(a.direction, b.direction);
     *out = ga_rotor_mul(ga_rotor_translation(b.centre),
                         ga_rotor_mul(R, ga_rotor_translation(mul3(a.centre, -1.0))));
     return GA_OK;

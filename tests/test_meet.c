@@ -97,7 +97,7 @@ static void scene(tk_rng *t, double D)
 {
     ga_vec3 zero = {0, 0, 0};
     double S = D == 1.0 ? tk_loguni(t, 0.1, 1) : tk_loguni(t, 1, D); /* the size */
-    ga_vec3 o = tk_scale(tk_unit(t), D);                                /* where */
+    ga_vec3 o = tk_scale(tk_unit(t), D);                             /* where */
     ga_vec3 a = add(o, tk_scale(tk_unit(t), S * tk_uni(t)));
     ga_vec3 b = add(o, tk_scale(tk_unit(t), S * tk_uni(t)));
     ga_vec3 c = add(o, tk_scale(tk_unit(t), S * tk_uni(t)));
@@ -154,12 +154,15 @@ static void scene(tk_rng *t, double D)
     ga_vec3 p1 = add(cc, tk_scale(w1, r1)), p2 = add(cc, tk_scale(w2, r1)), p3 = sub(cc, tk_scale(w1, r1));
     ga_vec3 ctrs[] = {a, c, cc};
     for (int i = 0; i < 3; i++)
-        if (ga_object_from_mv(ga_sphere_dual(ctrs[i], i == 1 ? 2 * S : r1), &s1) == GA_OK && s1.kind != GA_OBJECT_SPHERE)
+        if (ga_object_from_mv(ga_sphere_dual(ctrs[i], i == 1 ? 2 * S : r1), &s1) == GA_OK &&
+            s1.kind != GA_OBJECT_SPHERE)
             flat_spheres = 1;
     if (flat_spheres)
         kind_acc("(spheres stored as flats)")->refused++;
     for (int cs = 0; cs < 3 * !flat_spheres; cs++) { /* crossing, tangent, imaginary */
-        double dist = cs == 0 ? tk_range(t, fabs(r1 - r2), r1 + r2) : cs == 1 ? r1 + r2 : (r1 + r2) * tk_range(t, 1.1, 3);
+        double dist = cs == 0 ? tk_range(t, fabs(r1 - r2), r1 + r2)
+                    : cs == 1 ? r1 + r2
+                              : (r1 + r2) * tk_range(t, 1.1, 3);
         ga_vec3 c2 = add(a, tk_scale(e, dist));
         double h = (dist * dist + r1 * r1 - r2 * r2) / (2 * dist);
         ga_mv M = ga_mv_meet(ga_sphere_dual(a, r1), ga_sphere_dual(c2, r2));
@@ -177,14 +180,17 @@ static void scene(tk_rng *t, double D)
         double off = tk_norm(sub(q, c));
         double R = fmin(off * tk_range(t, 0.5, 2), 2 * S);
         st = ga_object_from_mv(ga_mv_meet(Ln, ga_sphere_dual(c, R)), &ob);
-        measure("meet line^sphere: pair", st, obj_err(ob, GA_OBJECT_POINTPAIR, q, (R - off) * (R + off), u, L), 1);
+        measure("meet line^sphere: pair", st,
+                obj_err(ob, GA_OBJECT_POINTPAIR, q, (R - off) * (R + off), u, L), 1);
         if (st == GA_OK)
             tk_add_bool(tk_get("line missing a sphere: an imaginary pair"),
-                        (R < off) == (ob.reality == GA_REALITY_IMAGINARY) || ob.reality == GA_REALITY_TANGENT);
+                        (R < off) == (ob.reality == GA_REALITY_IMAGINARY) ||
+                            ob.reality == GA_REALITY_TANGENT);
         /* plane ^ sphere: circle at c - (m.c - d) m, r^2 = R^2 - (m.c - d)^2 */
         double s = dot(m, c) - dot(m, a);
         st = ga_object_from_mv(ga_mv_meet(P, ga_sphere_dual(c, R)), &ob);
-        measure("meet plane^sphere: circle", st, obj_err(ob, GA_OBJECT_CIRCLE, sub(c, tk_scale(m, s)), (R - s) * (R + s), m, L), 1);
+        measure("meet plane^sphere: circle", st,
+                obj_err(ob, GA_OBJECT_CIRCLE, sub(c, tk_scale(m, s)), (R - s) * (R + s), m, L), 1);
     }
     /* rounds built from points */
     if (!flat_spheres) {
@@ -212,24 +218,30 @@ static void scene(tk_rng *t, double D)
         measure("distance to line", st, fabs(dd - tk_norm(cross(sub(x, a), u))) / L, 0);
         /* the rigid motion from an object to a moved copy (built from the moved
            points) takes a point of it onto the copy and its direction onto the copy's */
-        ga_rotor Rm = ga_rotor_twist(tk_range(t, 0, 3), (ga_generator){0.6, 0, 0.8, 0, 0, 0}, tk_scale(tk_unit(t), S));
+        ga_rotor Rm = ga_rotor_twist(tk_range(t, 0, 3), (ga_generator){0.6, 0, 0.8, 0, 0, 0},
+                                     tk_scale(tk_unit(t), S));
         ga_vec3 q1 = ga_rotor_apply(Rm, p1), q2 = ga_rotor_apply(Rm, p2), q3 = ga_rotor_apply(Rm, p3);
         ga_rotor B;
         ga_object o3;
-        st = flat_spheres ? GA_ERR_PRECISION
-                          : ga_rotor_between(ga_circle_from_points(p1, p2, p3), ga_circle_from_points(q1, q2, q3), &B);
+        st = flat_spheres
+               ? GA_ERR_PRECISION
+               : ga_rotor_between(ga_circle_from_points(p1, p2, p3), ga_circle_from_points(q1, q2, q3), &B);
         if (st == GA_OK)
             st = ga_object_from_mv(ga_circle_from_points(q1, q2, q3), &o3);
         if (st == GA_OK) {
-            ga_vec3 bc = ga_rotor_apply(B, cc), bn = tk_scale(sub(ga_rotor_apply(B, add(cc, tk_scale(e, L))), bc), 1 / L);
-            measure("rotor between circles", st, tk_max(tk_norm(sub(bc, o3.centre)) / L, tk_norm(sub(bn, o3.direction))), 1);
+            ga_vec3 bc = ga_rotor_apply(B, cc),
+                    bn = tk_scale(sub(ga_rotor_apply(B, add(cc, tk_scale(e, L))), bc), 1 / L);
+            measure("rotor between circles", st,
+                    tk_max(tk_norm(sub(bc, o3.centre)) / L, tk_norm(sub(bn, o3.direction))), 1);
         } else
             measure("rotor between circles", st, 0, 1);
         st = ga_rotor_between(ga_plane_from_points(p1, p2, p3), ga_plane_from_points(q1, q2, q3), &B);
         ga_vec3 m3 = unit(cross(sub(q2, q1), sub(q3, q1))), mp = unit(cross(sub(p2, p1), sub(p3, p1)));
         if (st == GA_OK) {
-            ga_vec3 ba = ga_rotor_apply(B, p1), bn = tk_scale(sub(ga_rotor_apply(B, add(p1, tk_scale(mp, L))), ba), 1 / L);
-            measure("rotor between planes", st, tk_max(fabs(dot(m3, sub(ba, q1))) / L, tk_norm(sub(bn, m3))), 0);
+            ga_vec3 ba = ga_rotor_apply(B, p1),
+                    bn = tk_scale(sub(ga_rotor_apply(B, add(p1, tk_scale(mp, L))), ba), 1 / L);
+            measure("rotor between planes", st, tk_max(fabs(dot(m3, sub(ba, q1))) / L, tk_norm(sub(bn, m3))),
+                    0);
         } else
             measure("rotor between planes", st, 0, 0);
         double ang;
@@ -261,17 +273,19 @@ int main(void)
     tk_expect(ob.kind == GA_OBJECT_SPHERE && ob.reality == GA_REALITY_IMAGINARY && ob.r2 == -1.0,
               "imaginary sphere: kind, reality, r^2 = -1");
     tk_expect_status("projection onto an imaginary sphere", ga_point_project(ex, im, &z), GA_ERR_IMAGINARY);
-    tk_expect_status("wrong kind: a line is no sphere", ga_sphere_params(ga_line_from_points(z, ex), &z, &(double){0}),
-                     GA_ERR_NOTBLADE);
+    tk_expect_status("wrong kind: a line is no sphere",
+                     ga_sphere_params(ga_line_from_points(z, ex), &z, &(double){0}), GA_ERR_NOTBLADE);
     tk_expect_status("zero: GA_ERR_SINGULAR", ga_object_from_mv(ga_mv_zero(), &ob), GA_ERR_SINGULAR);
     tk_expect_status("mixed grades: GA_ERR_NOTBLADE",
                      ga_object_from_mv(ga_mv_add(ga_mv_scalar(1), ga_mv_n()), &ob), GA_ERR_NOTBLADE);
     tk_expect_status("centre of a sphere: no nearest point", ga_point_project(z, ga_sphere_dual(z, 1), &ex),
                      GA_ERR_DOMAIN);
     tk_expect_status("rotor between spheres of different radii",
-                     ga_rotor_between(ga_sphere_dual(z, 1), ga_sphere_dual(z, 2), &(ga_rotor){0}), GA_ERR_NOTRIGID);
+                     ga_rotor_between(ga_sphere_dual(z, 1), ga_sphere_dual(z, 2), &(ga_rotor){0}),
+                     GA_ERR_NOTRIGID);
     tk_expect_status("rotor between a sphere and a plane",
-                     ga_rotor_between(ga_sphere_dual(z, 1), ga_plane_dual(ex, 0), &(ga_rotor){0}), GA_ERR_ARG);
+                     ga_rotor_between(ga_sphere_dual(z, 1), ga_plane_dual(ex, 0), &(ga_rotor){0}),
+                     GA_ERR_ARG);
     tk_end_named();
     return tk_finish("test_meet");
 }

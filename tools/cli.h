@@ -17,12 +17,13 @@ enum {
     OPT_V0 = 1 << 10,
     OPT_VELOCITIES = 1 << 11,
     OPT_SVG = 1 << 12,
-    OPT_VIEW = 1 << 13
+    OPT_VIEW = 1 << 13,
+    OPT_HTML = 1 << 14
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
-    const char *in, *out, *svg, *velocities, *at, *view;
+    const char *in, *out, *svg, *velocities, *at, *view, *html;
     const char *group, *scheme, *format, *eval;
     int header;
     long samples;

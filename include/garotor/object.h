@@ -43,20 +43,20 @@ extern "C" {
 
 /** The kind of a conformal object. */
 enum {
-    GA_OBJECT_EMPTY = 0,  /**< no finite point: a flat at infinity (parallel planes' meet) */
-    GA_OBJECT_FLATPOINT,  /**< F(p) ^ n: a point with the point at infinity (a line meeting a plane) */
-    GA_OBJECT_LINE,       /**< F(a) ^ F(b) ^ n */
-    GA_OBJECT_PLANE,      /**< F(a) ^ F(b) ^ F(c) ^ n, or a dual plane (a vector) */
-    GA_OBJECT_POINTPAIR,  /**< F(a) ^ F(b) */
-    GA_OBJECT_CIRCLE,     /**< F(a) ^ F(b) ^ F(c) */
-    GA_OBJECT_SPHERE      /**< F(a) ^ F(b) ^ F(c) ^ F(d), or a dual sphere (a vector) */
+    GA_OBJECT_EMPTY = 0, /**< no finite point: a flat at infinity (parallel planes' meet) */
+    GA_OBJECT_FLATPOINT, /**< F(p) ^ n: a point with the point at infinity (a line meeting a plane) */
+    GA_OBJECT_LINE,      /**< F(a) ^ F(b) ^ n */
+    GA_OBJECT_PLANE,     /**< F(a) ^ F(b) ^ F(c) ^ n, or a dual plane (a vector) */
+    GA_OBJECT_POINTPAIR, /**< F(a) ^ F(b) */
+    GA_OBJECT_CIRCLE,    /**< F(a) ^ F(b) ^ F(c) */
+    GA_OBJECT_SPHERE     /**< F(a) ^ F(b) ^ F(c) ^ F(d), or a dual sphere (a vector) */
 };
 
 /** Whether a round is real, tangent or imaginary (flats are real). */
 enum {
-    GA_REALITY_REAL = 0,  /**< r^2 > 0, or a flat */
-    GA_REALITY_TANGENT,   /**< |r^2| <= GA_OBJECT_TANGENT_TOL L^2: a double point, a point circle, a point */
-    GA_REALITY_IMAGINARY  /**< r^2 < 0 beyond that */
+    GA_REALITY_REAL = 0, /**< r^2 > 0, or a flat */
+    GA_REALITY_TANGENT,  /**< |r^2| <= GA_OBJECT_TANGENT_TOL L^2: a double point, a point circle, a point */
+    GA_REALITY_IMAGINARY /**< r^2 < 0 beyond that */
 };
 
 /** Relative tolerance for "r^2 = 0" (tangent): |r^2| <= GA_OBJECT_TANGENT_TOL L^2,
