@@ -286,6 +286,36 @@ int main(void)
     tk_expect_status("rotor between a sphere and a plane",
                      ga_rotor_between(ga_sphere_dual(z, 1), ga_plane_dual(ex, 0), &(ga_rotor){0}),
                      GA_ERR_ARG);
+    /* the other branches of ga_object_angle and ga_rotor_between, by hand:
+       unit spheres sqrt(2) apart cross at right angles (r1^2 + r2^2 = d^2);
+       a sphere and a plane through its centre too; the line x = y (z = 0)
+       and the plane z = 0 at 0; the plane x = 1 and the line along z at 0 */
+    double ang, s2 = sqrt(2.0);
+    ga_vec3 ez = {0, 0, 1};
+    tk_add_status(tk_get("angles: statuses"),
+                  ga_object_angle(ga_sphere_dual(z, 1), ga_sphere_dual((ga_vec3){s2, 0, 0}, 1), &ang), GA_OK);
+    tk_add_tol(tk_get("angle of spheres sqrt(2) apart: pi/2"), fabs(ang - TK_PI / 2), 4 * DBL_EPSILON);
+    tk_add_status(tk_get("angles: statuses"),
+                  ga_object_angle(ga_sphere_dual(z, 1), ga_plane_dual(ez, 0), &ang), GA_OK);
+    tk_add_tol(tk_get("angle of a sphere and a plane through its centre: pi/2"), fabs(ang - TK_PI / 2),
+               4 * DBL_EPSILON);
+    tk_add_status(tk_get("angles: statuses"),
+                  ga_object_angle(ga_plane_dual(ez, 0), ga_line_from_points(z, (ga_vec3){1, 1, 0}), &ang),
+                  GA_OK);
+    tk_add_tol(tk_get("angle of a line in a plane's direction: 0"), fabs(ang), 4 * DBL_EPSILON);
+    tk_add_status(tk_get("angles: statuses"),
+                  ga_object_angle(ga_sphere_dual(z, 1), ga_sphere_dual((ga_vec3){3, 0, 0}, 1), &ang),
+                  GA_ERR_DOMAIN);
+    tk_add_status(tk_get("angles: statuses"),
+                  ga_object_angle(ga_sphere_dual(z, 1), ga_line_from_points(z, ez), &ang), GA_ERR_NOTBLADE);
+    /* antiparallel planes: a half turn about a perpendicular axis */
+    ga_rotor H;
+    ga_vec3 mz = {0, 0, -1};
+    tk_add_status(tk_get("rotor between opposite planes"),
+                  ga_rotor_between(ga_plane_dual(ez, 0), ga_plane_dual(mz, 1), &H), GA_OK);
+    ga_vec3 hz = ga_rotor_apply(H, ez), h0 = ga_rotor_apply(H, z);
+    tk_add_tol(tk_get("rotor between opposite planes: normal reversed, origin to z = -1"),
+               tk_max(tk_norm(sub(sub(hz, h0), mz)), tk_norm(sub(h0, mz))), 8 * DBL_EPSILON);
     tk_end_named();
     return tk_finish("test_meet");
 }
