@@ -80,7 +80,8 @@ static double mat_dist(ga_mat4 a, ga_mat4 b, double tscale)
 static int is_status(int st)
 {
     return st == GA_OK || st == GA_ERR_NOTFINITE || st == GA_ERR_SINGULAR || st == GA_ERR_NOTPOINT ||
-           st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN || st == GA_ERR_ARG || st == GA_ERR_NOTBLADE;
+           st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN || st == GA_ERR_ARG || st == GA_ERR_NOTBLADE ||
+           st == GA_ERR_IMAGINARY || st == GA_ERR_PRECISION;
 }
 
 /* ---- rotors --------------------------------------------------------------- */
@@ -431,7 +432,8 @@ static void mv_any(const ga_mv *X, double lambda)
     if (st == GA_OK)
         FZ_CHECK(vfinite(a), "down_scaled: GA_OK with a non-finite point");
     st = ga_sphere_params(*X, &a, &r);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "sphere %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE || st == GA_ERR_IMAGINARY) : st == GA_ERR_NOTFINITE,
+             "sphere %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(r) && r >= 0, "sphere: GA_OK with bad output");
     st = ga_plane_params(*X, &a, &d);
@@ -443,11 +445,22 @@ static void mv_any(const ga_mv *X, double lambda)
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && vfinite(b) && fabs(vnorm(a) - 1) <= 1e-12, "line: GA_OK with bad output");
     st = ga_pointpair_points(*X, &a, &b);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "pair %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE || st == GA_ERR_IMAGINARY) : st == GA_ERR_NOTFINITE,
+             "pair %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && vfinite(b), "point pair: GA_OK with bad output");
+    ga_object ob; /* object.h: a kind and finite parameters, or a status */
+    st = ga_object_from_mv(*X, &ob);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_NOTBLADE || st == GA_ERR_PRECISION)
+                 : st == GA_ERR_NOTFINITE,
+             "object %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(vfinite(ob.centre) && vfinite(ob.direction) && isfinite(ob.r2) &&
+                     ob.kind >= GA_OBJECT_EMPTY && ob.kind <= GA_OBJECT_SPHERE,
+                 "object: GA_OK with bad output");
     st = ga_circle_params(*X, &a, &r, &c);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE) : st == GA_ERR_NOTFINITE, "circle %d", st);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE || st == GA_ERR_IMAGINARY) : st == GA_ERR_NOTFINITE,
+             "circle %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(r) && vfinite(c), "circle: GA_OK with bad output");
     ga_mv inv;

@@ -122,22 +122,45 @@ int ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 1.0, o
 
 /* ---- objects ---------------------------------------------------------------- */
 
-ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b) { return ga_mv_op(ga_point_up(a), ga_point_up(b)); }
+/* T_a X ~T_a, T_a = 1 + n a / 2 (Wareham-Lasenby §2.2): moves every object by a
+   exactly, and adds the large e4/e5 terms of a far object without cancelling them. */
+static ga_mv translated(ga_mv X, ga_vec3 a)
+{
+    ga_mv T = ga_mv_scale(ga_mv_op(ga_mv_n(), ga_vec3_to_mv(a)), 0.5);
+    T.c[GA_BLADE_SCALAR] = 1.0;
+    return ga_mv_gp(ga_mv_gp(T, X), ga_mv_reverse(T));
+}
+static ga_vec3 sub3(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+
+/* Each object is built about its first point a and then translated to it:
+   F(a) ^ F(b) ^ ... = T_a (F(0) ^ F(b - a) ^ ...) ~T_a, as T_a F(x) ~T_a = F(x + a).
+   Wedged directly, the coefficients (|x|^2 -+ 1)/2 of far points cancelled
+   (the plane z = 1e5 read back d = 99999.928); this way the object is as
+   accurate as its storage (object.h). */
+static ga_mv about(ga_vec3 a, ga_mv local) { return translated(local, a); }
+ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b)
+{
+    return about(a, ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a))));
+}
 ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 {
-    return ga_mv_op(ga_pointpair_from_points(a, b), ga_point_up(c));
+    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
+    return about(a, ga_mv_op(pp, ga_point_up(sub3(c, a))));
 }
 ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b)
 {
-    return ga_mv_op(ga_pointpair_from_points(a, b), ga_mv_n());
+    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
+    return about(a, ga_mv_op(pp, ga_mv_n()));
 }
 ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d)
 {
-    return ga_mv_op(ga_circle_from_points(a, b, c), ga_point_up(d));
+    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
+    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(sub3(c, a))), ga_point_up(sub3(d, a))));
 }
 ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 {
-    return ga_mv_op(ga_circle_from_points(a, b, c), ga_mv_n());
+    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
+    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(sub3(c, a))), ga_mv_n()));
 }
 
 ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
@@ -198,7 +221,7 @@ static int dual_sphere_params(ga_mv s, ga_vec3 *centre, double *radius)
     double r2 = dot3(c, c) - (s.c[GA_BLADE_E4] + s.c[GA_BLADE_E5]) / w;
     /* r^2 is a difference of terms up to 2 sc / |w|: negative beyond that is imaginary */
     if (r2 < -GA_POINT_TOL * 2.0 * sc / fabs(w))
-        return GA_ERR_NOTBLADE;
+        return GA_ERR_IMAGINARY;
     *centre = c;
     *radius = sqrt(fmax(r2, 0.0));
     return GA_OK;
@@ -294,8 +317,11 @@ int ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
     ga_mv L = ga_mv_op(PP, ga_mv_n());
     ga_vec3 u, p, c;
     double r;
-    if (ga_line_params(L, &u, &p) != GA_OK || carrier(PP, L, &c, &r) != GA_OK)
+    if (ga_line_params(L, &u, &p) != GA_OK)
         return GA_ERR_NOTBLADE;
+    int st = carrier(PP, L, &c, &r);
+    if (st != GA_OK)
+        return st; /* GA_ERR_IMAGINARY for an imaginary pair */
     ga_vec3 pa = v3(c.x - r * u.x, c.y - r * u.y, c.z - r * u.z);
     ga_vec3 pb = v3(c.x + r * u.x, c.y + r * u.y, c.z + r * u.z);
     if (!(r > 0.0) || misfit(PP, ga_pointpair_from_points(pa, pb), 1) > GA_POINT_TOL)
@@ -316,8 +342,11 @@ int ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal)
     ga_mv P = ga_mv_op(C, ga_mv_n());
     ga_vec3 m, c;
     double d, r;
-    if (ga_plane_params(P, &m, &d) != GA_OK || carrier(C, P, &c, &r) != GA_OK)
+    if (ga_plane_params(P, &m, &d) != GA_OK)
         return GA_ERR_NOTBLADE;
+    int st = carrier(C, P, &c, &r);
+    if (st != GA_OK)
+        return st; /* GA_ERR_IMAGINARY for an imaginary circle */
     /* C is dual to sigma ^ pi, the carrier sphere and the plane through its centre */
     ga_mv rebuilt = ga_mv_undual(ga_mv_op(ga_sphere_dual(c, r), ga_plane_dual(m, dot3(m, c))));
     if (misfit(C, rebuilt, 0) > GA_POINT_TOL)

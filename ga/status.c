@@ -12,6 +12,8 @@ const char *ga_status_string(int status)
     case GA_ERR_DOMAIN: return "outside the domain";
     case GA_ERR_ARG: return "invalid argument";
     case GA_ERR_NOTBLADE: return "not an object of the expected kind";
+    case GA_ERR_IMAGINARY: return "an imaginary object (negative squared radius)";
+    case GA_ERR_PRECISION: return "would lose digits (too far from the origin for its size)";
     default: return "unknown status";
     }
 }

@@ -518,7 +518,7 @@ static void test_bad_input(void)
     ga_mv imag = ga_point_up(x); /* F(c) + (r^2/2) n: an imaginary sphere */
     imag.c[GA_BLADE_E4] += 2;
     imag.c[GA_BLADE_E5] += 2;
-    check_status("sphere_params(imaginary sphere)", ga_sphere_params(imag, &out, &r), GA_ERR_NOTBLADE);
+    check_status("sphere_params(imaginary sphere)", ga_sphere_params(imag, &out, &r), GA_ERR_IMAGINARY);
     check_status("plane_params(bivector)", ga_plane_params(PP, &out, &r), GA_ERR_NOTBLADE);
     check_status("plane_params(trivector)", ga_plane_params(L, &out, &r), GA_ERR_NOTBLADE);
     check_status("plane_params(direct sphere)", ga_plane_params(S, &out, &r), GA_ERR_NOTBLADE);
@@ -545,7 +545,7 @@ static void test_bad_input(void)
     /* imaginary point pair: dual to an imaginary sphere meeting two planes through its centre */
     ga_mv ipp = ga_mv_undual(ga_mv_op(ga_mv_op(imag, ga_plane_dual((ga_vec3){1, 0, 0}, x.x)),
                                       ga_plane_dual((ga_vec3){0, 1, 0}, x.y)));
-    check_status("point_pair_points(imaginary pair)", ga_pointpair_points(ipp, &out, &o2), GA_ERR_NOTBLADE);
+    check_status("point_pair_points(imaginary pair)", ga_pointpair_points(ipp, &out, &o2), GA_ERR_IMAGINARY);
     check_status("circle_params(vector)", ga_circle_params(X, &out, &r, &o2), GA_ERR_NOTBLADE);
     check_status("circle_params(bivector)", ga_circle_params(PP, &out, &r, &o2), GA_ERR_NOTBLADE);
     check_status("circle_params(4-vector)", ga_circle_params(S, &out, &r, &o2), GA_ERR_NOTBLADE);
@@ -556,7 +556,7 @@ static void test_bad_input(void)
                                   &o2),
                  GA_ERR_NOTBLADE);
     ga_mv icirc = ga_mv_undual(ga_mv_op(imag, ga_plane_dual((ga_vec3){0, 0, 1}, x.z)));
-    check_status("circle_params(imaginary circle)", ga_circle_params(icirc, &out, &r, &o2), GA_ERR_NOTBLADE);
+    check_status("circle_params(imaginary circle)", ga_circle_params(icirc, &out, &r, &o2), GA_ERR_IMAGINARY);
     /* collinear points make a line, not a circle; coplanar ones a plane */
     check_status("circle_params(circle through collinear points)",
                  ga_circle_params(ga_circle_from_points(a, b, add3(a, mul3(sub3(b, a), 2))), &out, &r, &o2),

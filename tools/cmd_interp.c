@@ -6,6 +6,7 @@
  * checked before anything is written. With --svg FILE it also draws the path
  * (svg.h); a failure then leaves neither the samples' file nor the picture. */
 #include "cli.h"
+#include "html.h"
 #include "svg.h"
 
 #include <math.h>
@@ -213,7 +214,9 @@ static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval 
     svg_path path = {ga_scheme_name(scheme), "#333333", m, ns, frames};
     svg_picture pic = {title, view, keys, times, n, &path, 1, 0, {0, 0, 0}, {0, 0, 0}};
     pic.has_axis = scheme == GA_SCHEME_SCREW && svg_screw_axis(keys, n, &pic.axis_point, &pic.axis_dir);
-    int st = svg_write(o->svg, &pic);
+    int st = o->svg ? svg_write(o->svg, &pic) : 0;
+    if (st == 0 && o->html && (st = html_write(o->html, &pic)) != 0 && o->svg)
+        tio_out_unwrite(o->svg);
     free(m);
     return st;
 }
@@ -305,7 +308,7 @@ int cmd_interp(const cli_opts *o)
         return 2;
     }
     svg_view view;
-    if (svg_options(cmd, o->svg, o->view, &view))
+    if (svg_options(cmd, o->svg, o->view, &view) || html_options(cmd, o->html))
         return 2;
 
     tio_items in = {0}, vin = {0}, tin = {0};
@@ -496,15 +499,19 @@ int cmd_interp(const cli_opts *o)
      * if they cannot be written, the picture is removed again */
     tio_out out;
     if (tio_out_open(&out, o->out) == 0) {
-        if (o->svg && draw(o, g, scheme, ev, view, keys, times, n, samples, ns)) {
+        if ((o->svg || o->html) && draw(o, g, scheme, ev, view, keys, times, n, samples, ns)) {
             tio_out_close(&out, 0);
             goto done;
         }
         for (size_t k = 0; k < ns; k++) tio_out_line(&out, res + k * (size_t)width, width);
         if (tio_out_close(&out, 1) == 0)
             rc = 0;
-        else if (o->svg)
-            tio_out_unwrite(o->svg);
+        else if (o->svg || o->html) {
+            if (o->svg)
+                tio_out_unwrite(o->svg);
+            if (o->html)
+                tio_out_unwrite(o->html);
+        }
     }
     goto done;
 oom:

@@ -4,6 +4,7 @@
  * the largest disagreement between the same paths computed with CGA rotors
  * and with 4x4 matrices. `--svg FILE` draws both paths. */
 #include "cli.h"
+#include "html.h"
 #include "svg.h"
 
 #include <math.h>
@@ -71,7 +72,7 @@ static int sample(const ga_group *g, ga_scheme scheme, const double *t, const ga
 int cmd_demo(const cli_opts *o)
 {
     svg_view view;
-    if (svg_options("demo", o->svg, o->view, &view))
+    if (svg_options("demo", o->svg, o->view, &view) || html_options("demo", o->html))
         return 2;
 
     /* compute everything first, then draw, then print: an error prints nothing */
@@ -104,7 +105,7 @@ int cmd_demo(const cli_opts *o)
                 return 2;
             }
         }
-    if (o->svg) {
+    if (o->svg || o->html) {
         svg_path sp[2] = {
             {"screw", "#ff7f0e", path[0][0], DEMO_SAMPLES, 8},
             {"quadratic", "#6a3d9a", path[1][0], DEMO_SAMPLES, 8},
@@ -119,8 +120,13 @@ int cmd_demo(const cli_opts *o)
                            0,
                            {0, 0, 0},
                            {0, 0, 0}};
-        if (svg_write(o->svg, &pic))
+        if (o->svg && svg_write(o->svg, &pic))
             return 2;
+        if (o->html && html_write(o->html, &pic)) {
+            if (o->svg)
+                tio_out_unwrite(o->svg);
+            return 2;
+        }
     }
 
     printf("garotor %s: rigid motions in conformal geometric algebra G(4,1)\n\n", GAROTOR_VERSION_STRING);
@@ -176,5 +182,7 @@ int cmd_demo(const cli_opts *o)
            max_diff(path[1][0], path[1][1], DEMO_SAMPLES));
     if (o->svg)
         printf("\nThe picture: %s\n", o->svg);
+    if (o->html)
+        printf("\nThe page (drag to turn): %s\n", o->html);
     return 0;
 }

@@ -16,13 +16,14 @@ typedef struct {
 } command;
 
 static const command commands[] = {
-    {"demo", cmd_demo, OPT_SVG | OPT_VIEW,
-     "usage: garotor [demo] [--svg FILE [--view iso|xy|xz|yz]]\n"
+    {"demo", cmd_demo, OPT_SVG | OPT_VIEW | OPT_HTML,
+     "usage: garotor [demo] [--svg FILE [--view iso|xy|xz|yz]] [--html FILE]\n"
      "Run the built-in demonstration and print a short report: three key poses,\n"
      "the screw between consecutive keys, samples of the screw and quadratic\n"
      "paths through them, and how far rotors and 4x4 matrices disagree.\n"
      "  --svg FILE       also draw the two paths as an SVG picture\n"
-     "  --view V         the picture's view: iso (default), xy, xz or yz\n"},
+     "  --view V         the picture's view: iso (default), xy, xz or yz\n"
+     "  --html FILE      also write a web page that draws them in 3D (drag to turn)\n"},
     {"exp", cmd_exp, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP,
      "usage: garotor exp [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
      "Read one twist a line (wx wy wz vx vy vz) and write its motion, the 4x4\n"
@@ -44,7 +45,7 @@ static const command commands[] = {
     {"interp", cmd_interp,
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
-         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE,
+         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -79,6 +80,7 @@ static const command commands[] = {
      "  --svg FILE          also draw the path: the trajectory of the origin, frames\n"
      "                      at the keys and along it, the screw axis if it is one\n"
      "  --view V            the picture's view: iso (default), xy, xz or yz\n"
+     "  --html FILE         also write a web page that draws the path in 3D (drag to turn)\n"
      "  --in FILE, --out FILE, --header   as for exp\n"},
     {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER,
      "usage: garotor versor exp|log|apply [--in FILE] [--out FILE] [--header]\n"
@@ -134,6 +136,7 @@ static const struct {
     {"--rate", OPT_RATE, 1},
     {"--times", OPT_TIMES, 1},
     {"--extrapolate", OPT_EXTRAPOLATE, 1},
+    {"--html", OPT_HTML, 1},
 };
 
 static int usage_error(const char *cmd, const char *what, const char *arg)
@@ -177,6 +180,7 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
         case OPT_AT: o->at = v; break;
         case OPT_VELOCITIES: o->velocities = v; break;
         case OPT_SVG: o->svg = v; break;
+        case OPT_HTML: o->html = v; break;
         case OPT_VIEW: o->view = v; break;
         case OPT_NORMALIZE: o->normalize = 1; break;
         case OPT_WITH: o->with = v; break;

@@ -7,6 +7,8 @@
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
  *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
+ *   object.h     kinds and read-back of every object, meet, projection, distance,
+ *                angle, the rigid motion between two objects
  *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
  *                matrices, quaternions and dual quaternions
  *   rotor_inline.h  the hot path of rotor.h inline: ga_rotor_mul_inline, ...
@@ -27,6 +29,7 @@
 #include "rotor.h"
 #include "rotor_inline.h"
 #include "versor.h"
+#include "object.h"
 #include "mat4.h"
 #include "group.h"
 #include "path.h"

@@ -40,7 +40,10 @@ enum {
     GA_ERR_DOMAIN = -5,    /**< outside the function's domain (e.g. log of a matrix
                              with an eigenvalue on the closed negative real axis) */
     GA_ERR_ARG = -6,       /**< an invalid argument (bad count, times not increasing, ...) */
-    GA_ERR_NOTBLADE = -7   /**< not an object of the expected kind (sphere, plane, line...) */
+    GA_ERR_NOTBLADE = -7,  /**< not an object of the expected kind (sphere, plane, line...) */
+    GA_ERR_IMAGINARY = -8, /**< the right kind of round, but imaginary (r^2 < 0): no real points */
+    GA_ERR_PRECISION = -9  /**< the result would not have the accuracy promised (object.h):
+                             refused rather than returned with digits lost */
 };
 
 /** A short English description of a status code ("ok", "not a rigid motion", ...). */

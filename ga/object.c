@@ -1,0 +1,323 @@
+/* garotor/object.c: classification and read-back of conformal objects, the
+ * meet, projection, distance, angle and the rigid motion between two objects
+ * (Dorst-Fontijne-Mann, "Geometric Algebra for Computer Science", ch. 14-15).
+ * See object.h for the conventions and the accuracy statement. */
+#include <garotor/object.h>
+
+#include <garotor/conformal.h>
+#include <math.h>
+
+static ga_vec3 v3(double x, double y, double z)
+{
+    ga_vec3 r = {x, y, z};
+    return r;
+}
+static double dot3(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static ga_vec3 add3(ga_vec3 a, ga_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static ga_vec3 sub3(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static ga_vec3 mul3(ga_vec3 a, double k) { return v3(k * a.x, k * a.y, k * a.z); }
+static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_BLADE_E1], X.c[GA_BLADE_E2], X.c[GA_BLADE_E3]); }
+static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_mv_sub(X, ga_mv_grade(X, k))); }
+
+/* X scaled by a power of two so that max |coefficient| is in [1/2, 1) (exact). */
+static ga_mv unit_scaled(ga_mv X)
+{
+    int e;
+    frexp(ga_mv_maxabs(X), &e);
+    for (int i = 0; i < 32; i++) X.c[i] = ldexp(X.c[i], -e);
+    return X;
+}
+
+/* Rounding bound of the weight of a round read about the origin: the e4 and e5
+   coefficients, up to s, are stored to u s, and w = v5 - v4 is their difference,
+   so every length read as (coefficient) / w is off by about 8 u s / |w| times
+   its size (8: the few operations of a construction or meet). */
+#define U 1.1102230246251565e-16
+static int round_precise(double s, double w) { return 8.0 * U * s <= GA_OBJECT_TOL * fabs(w); }
+/* A part that vanishes for a flat (v.n of a dual vector, X ^ n of a blade) is
+   zero when at most 64 u s, rounding of a flat built in a few dozen operations;
+   above that and below GA_POINT_TOL s it is a round too far out to tell from a
+   flat at all: GA_ERR_PRECISION, where conformal.h's read-backs say "flat". */
+static int flat_part(double part, double s)
+{
+    return part <= 64.0 * U * s ? 1 : part <= GA_POINT_TOL * s ? -1 : 0;
+}
+
+/* A dual vector v (sphere or plane) into o. */
+static int read_dual(ga_mv v, int strict, ga_object *o)
+{
+    double s = ga_mv_maxabs(v), w = v.c[GA_BLADE_E5] - v.c[GA_BLADE_E4];
+    ga_vec3 m = euclid(v);
+    int flat = flat_part(fabs(w), s);
+    if (flat < 0 && strict)
+        return GA_ERR_PRECISION;
+    if (flat > 0) { /* v.n = 0: a plane w (m + d n) */
+        double len = sqrt(dot3(m, m));
+        if (!(len > GA_POINT_TOL * s)) {
+            o->kind = GA_OBJECT_EMPTY; /* n: the plane at infinity */
+            return GA_OK;
+        }
+        o->kind = GA_OBJECT_PLANE;
+        o->direction = mul3(m, 1.0 / len);
+        o->centre = mul3(o->direction, 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len);
+        return GA_OK;
+    }
+    /* w (F(c) - (r^2/2) n): c = <v>_E / w, r^2 = |c|^2 - (v4 + v5) / w (conformal.h) */
+    ga_vec3 c = mul3(m, 1.0 / w);
+    if (strict && !round_precise(s, w))
+        return GA_ERR_PRECISION;
+    o->kind = GA_OBJECT_SPHERE;
+    o->centre = c;
+    o->r2 = dot3(c, c) - (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / w;
+    return GA_OK;
+}
+
+/* strict = 0: the rough reading of a round too far out (a local origin for the meet) */
+static int classify(ga_mv X, int strict, ga_object *o)
+{
+    if (!ga_mv_isfinite(X))
+        return GA_ERR_NOTFINITE;
+    if (ga_mv_maxabs(X) == 0.0)
+        return GA_ERR_SINGULAR;
+    X = unit_scaled(X);
+    double s = ga_mv_maxabs(X);
+    int k = 1;
+    while (k <= 4 && off_grade(X, k) > GA_POINT_TOL * s) k++;
+    if (k > 4)
+        return GA_ERR_NOTBLADE;
+    ga_object r = {GA_OBJECT_EMPTY, GA_REALITY_REAL, {0, 0, 0}, {0, 0, 0}, 0.0};
+    int st;
+    if (k == 1 || k == 4) {
+        st = read_dual(k == 1 ? ga_mv_grade(X, 1) : ga_mv_grade(ga_mv_undual(X), 1), strict, &r);
+    } else {
+        ga_mv F = ga_mv_op(X, ga_mv_n()); /* the carrier flat */
+        int flat = flat_part(ga_mv_maxabs(F), s);
+        if (flat < 0 && strict)
+            return GA_ERR_PRECISION;
+        if (flat > 0) {
+            if (k == 3) { /* u e45 + (p ^ u) ^ n, or a line at infinity */
+                ga_vec3 u = v3(X.c[GA_BLADE_E145], X.c[GA_BLADE_E245], X.c[GA_BLADE_E345]);
+                if (sqrt(dot3(u, u)) <= GA_POINT_TOL * s) {
+                    r.kind = GA_OBJECT_EMPTY;
+                    st = GA_OK;
+                } else {
+                    r.kind = GA_OBJECT_LINE;
+                    st = ga_line_params(X, &r.direction, &r.centre) == GA_OK ? GA_OK : GA_ERR_NOTBLADE;
+                }
+            } else { /* w (F(p) ^ n) = w (p ^ n - e45): e_i4 = e_i5 = w p_i, e45 = -w */
+                double w = -X.c[GA_BLADE_E45];
+                ga_vec3 p = v3(X.c[GA_BLADE_E14], X.c[GA_BLADE_E24], X.c[GA_BLADE_E34]);
+                if (fabs(w) <= GA_POINT_TOL * s) {
+                    r.kind = GA_OBJECT_EMPTY; /* a direction ^ n: at infinity */
+                    r.direction = p;
+                } else {
+                    r.kind = GA_OBJECT_FLATPOINT;
+                    r.centre = mul3(p, 1.0 / w);
+                }
+                st = GA_OK;
+            }
+        } else { /* a round: its carrier sphere <X F^-1>_1 (conformal.c's carrier) */
+            /* a failure below is rounding when F is small against X (a round far
+               out, as for the weight in round_precise), else X is no round */
+            int bad = round_precise(s, ga_mv_maxabs(F)) ? GA_ERR_NOTBLADE : GA_ERR_PRECISION;
+            ga_mv inv, sigma;
+            if (ga_mv_inverse(F, &inv) != GA_OK)
+                return bad;
+            sigma = ga_mv_gp(X, inv);
+            if (off_grade(sigma, 1) > GA_POINT_TOL * ga_mv_maxabs(sigma))
+                return bad;
+            ga_object flat;
+            if ((st = read_dual(ga_mv_grade(sigma, 1), strict, &r)) != GA_OK)
+                return st;
+            if (r.kind != GA_OBJECT_SPHERE || classify(F, 1, &flat) != GA_OK)
+                return bad;
+            r.kind = k == 2 ? GA_OBJECT_POINTPAIR : GA_OBJECT_CIRCLE;
+            r.direction = flat.direction;
+            /* the round must be the carrier sphere met with its carrier flat */
+        }
+    }
+    if (st != GA_OK)
+        return st;
+    if (r.kind >= GA_OBJECT_POINTPAIR) {
+        double L2 = fmax(1.0, dot3(r.centre, r.centre));
+        r.reality = fabs(r.r2) <= GA_OBJECT_TANGENT_TOL * L2 ? GA_REALITY_TANGENT
+                  : r.r2 < 0.0                               ? GA_REALITY_IMAGINARY
+                                                             : GA_REALITY_REAL;
+    }
+    *o = r;
+    return GA_OK;
+}
+
+int ga_object_from_mv(ga_mv X, ga_object *out) { return classify(X, 1, out); }
+
+/* T_a X ~T_a with T_a = 1 + n a / 2 (Wareham-Lasenby §2.2): exact for any X,
+   and free of cancellation (it adds the multiples of a the object needs). */
+static ga_mv translate(ga_mv X, ga_vec3 a)
+{
+    ga_mv T = ga_mv_scale(ga_mv_op(ga_mv_n(), ga_vec3_to_mv(a)), 0.5);
+    T.c[GA_BLADE_SCALAR] = 1.0;
+    return ga_mv_gp(ga_mv_gp(T, X), ga_mv_reverse(T));
+}
+
+static int is_round(ga_mv X)
+{
+    ga_object o;
+    return classify(X, 0, &o) == GA_OK && o.kind >= GA_OBJECT_POINTPAIR;
+}
+
+ga_mv ga_mv_meet(ga_mv A, ga_mv B)
+{
+    if (ga_mv_maxabs(ga_mv_sub(A, ga_mv_grade(A, 1))) == 0.0)
+        A = ga_mv_dual(A);
+    if (ga_mv_maxabs(ga_mv_sub(B, ga_mv_grade(B, 1))) == 0.0)
+        B = ga_mv_dual(B);
+    /* Two flats meet directly: their coefficients grow like the distance, not
+       its square, and translating them would cancel squares. With a round,
+       meet about the round's centre o (its e4/e5 terms are squares anyway). */
+    ga_object oa;
+    ga_vec3 o = {0, 0, 0};
+    if (ga_mv_isfinite(A) && ga_mv_isfinite(B) && (is_round(A) || is_round(B))) {
+        if (classify(is_round(A) ? A : B, 0, &oa) == GA_OK)
+            o = oa.centre;
+    }
+    ga_mv a = translate(A, mul3(o, -1.0)), b = translate(B, mul3(o, -1.0));
+    return translate(ga_mv_undual(ga_mv_op(ga_mv_dual(a), ga_mv_dual(b))), o);
+}
+
+/* The object of O, refusing what has no nearest point. */
+static int read_real(ga_mv O, ga_object *o)
+{
+    int st = classify(O, 1, o);
+    if (st != GA_OK)
+        return st;
+    if (o->kind == GA_OBJECT_EMPTY)
+        return GA_ERR_NOTBLADE;
+    if (o->reality == GA_REALITY_IMAGINARY)
+        return GA_ERR_IMAGINARY;
+    return GA_OK;
+}
+
+/* Nearest point of a round of centre c and radius r in the direction d from c. */
+static int onto_round(ga_vec3 c, double r, ga_vec3 d, ga_vec3 *out)
+{
+    double len = sqrt(dot3(d, d));
+    if (!(len > 0.0))
+        return r > 0.0 ? GA_ERR_DOMAIN : (*out = c, GA_OK);
+    *out = add3(c, mul3(d, r / len));
+    return GA_OK;
+}
+
+int ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
+{
+    ga_object o;
+    int st = read_real(O, &o);
+    if (st != GA_OK)
+        return st;
+    ga_vec3 c = o.centre, u = o.direction, y = sub3(x, c);
+    double r = sqrt(fmax(o.r2, 0.0));
+    switch (o.kind) {
+    case GA_OBJECT_FLATPOINT: *out = c; return GA_OK;
+    case GA_OBJECT_PLANE: *out = sub3(x, mul3(u, dot3(u, y))); return GA_OK; /* x - (m.x - d) m */
+    case GA_OBJECT_LINE: *out = add3(c, mul3(u, dot3(u, y))); return GA_OK;  /* p + ((x - p).u) u */
+    case GA_OBJECT_SPHERE: return onto_round(c, r, y, out);                  /* c + r (x - c)/|x - c| */
+    case GA_OBJECT_CIRCLE: return onto_round(c, r, sub3(y, mul3(u, dot3(u, y))), out);
+    default: /* the pair c -+ r u: the nearer one */
+        *out = add3(c, mul3(u, dot3(u, y) >= 0.0 ? r : -r));
+        return GA_OK;
+    }
+}
+
+int ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
+{
+    ga_vec3 p;
+    int st = ga_point_project(x, O, &p);
+    if (st == GA_OK)
+        *out = sub3(x, p);
+    return st;
+}
+
+int ga_point_distance(ga_vec3 x, ga_mv O, double *out)
+{
+    ga_vec3 d;
+    int st = ga_point_reject(x, O, &d);
+    if (st == GA_OK)
+        *out = sqrt(dot3(d, d));
+    return st;
+}
+
+/* The angle in [0, pi/2] between two lines of directions a and b. */
+static double line_angle(ga_vec3 a, ga_vec3 b)
+{
+    ga_vec3 x = cross3(a, b);
+    return atan2(sqrt(dot3(x, x)), fabs(dot3(a, b)));
+}
+
+int ga_object_angle(ga_mv A, ga_mv B, double *out)
+{
+    ga_object a, b;
+    int st = read_real(A, &a);
+    if (st == GA_OK)
+        st = read_real(B, &b);
+    if (st != GA_OK)
+        return st;
+    int fa = a.kind == GA_OBJECT_PLANE || a.kind == GA_OBJECT_LINE;
+    int fb = b.kind == GA_OBJECT_PLANE || b.kind == GA_OBJECT_LINE;
+    if (fa && fb) {
+        double t = line_angle(a.direction, b.direction);
+        *out = (a.kind == b.kind) ? t : 0.5 * 3.14159265358979323846 - t;
+        return GA_OK;
+    }
+    if ((a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_PLANE) &&
+        (b.kind == GA_OBJECT_SPHERE || b.kind == GA_OBJECT_PLANE)) {
+        /* the normalised dual vectors' product, written out: two spheres,
+           (r1^2 + r2^2 - |c1 - c2|^2) / (2 r1 r2); a sphere and a plane, m.(c - d m) / r */
+        double cosv;
+        if (a.kind == GA_OBJECT_SPHERE && b.kind == GA_OBJECT_SPHERE) {
+            ga_vec3 d = sub3(a.centre, b.centre);
+            cosv = (a.r2 + b.r2 - dot3(d, d)) / (2.0 * sqrt(a.r2 * b.r2));
+        } else {
+            ga_object sp = a.kind == GA_OBJECT_SPHERE ? a : b, pl = a.kind == GA_OBJECT_SPHERE ? b : a;
+            cosv = dot3(pl.direction, sub3(sp.centre, pl.centre)) / sqrt(sp.r2);
+        }
+        if (!(fabs(cosv) <= 1.0))
+            return GA_ERR_DOMAIN; /* they do not cross */
+        *out = acos(fabs(cosv));
+        return GA_OK;
+    }
+    return GA_ERR_NOTBLADE;
+}
+
+/* The shortest rotation taking unit a to unit b (a half turn about a
+   perpendicular axis when b = -a). */
+static ga_rotor turn(ga_vec3 a, ga_vec3 b)
+{
+    ga_vec3 x = cross3(a, b);
+    double sn = sqrt(dot3(x, x)), cs = dot3(a, b);
+    if (sn == 0.0 && cs < 0.0)
+        x = cross3(a, fabs(a.x) < 0.5 ? v3(1, 0, 0) : v3(0, 1, 0));
+    return ga_rotor_rotation(x, atan2(sn, cs));
+}
+
+int ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
+{
+    ga_object a, b;
+    int st = read_real(A, &a);
+    if (st == GA_OK)
+        st = read_real(B, &b);
+    if (st != GA_OK)
+        return st;
+    if (a.kind != b.kind)
+        return GA_ERR_ARG;
+    double L2 = fmax(1.0, fmax(dot3(a.centre, a.centre), dot3(b.centre, b.centre)));
+    if (fabs(a.r2 - b.r2) > GA_POINT_TOL * L2)
+        return GA_ERR_NOTRIGID;
+    ga_rotor R = a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_FLATPOINT ? ga_rotor_identity()
+                                                                             : turn(a.direction, b.direction);
+    *out = ga_rotor_mul(ga_rotor_translation(b.centre),
+                        ga_rotor_mul(R, ga_rotor_translation(mul3(a.centre, -1.0))));
+    return GA_OK;
+}

@@ -1,0 +1,138 @@
+/* garotor/object.h: what a conformal object is, where two objects meet, and
+ * the Euclidean questions about them (projection, distance, angle, the rigid
+ * motion from one to another).
+ *
+ * Kinds (Dorst-Fontijne-Mann, "Geometric Algebra for Computer Science", 2007,
+ * ch. 14-15): a direct blade X of grade 2, 3 or 4 is a round (point pair,
+ * circle, sphere) when X ^ n != 0 and a flat (flat point, line, plane) when
+ * X ^ n = 0; a vector is read as a dual sphere (X.n != 0) or a dual plane, as
+ * in conformal.h. A round has a centre c and a signed squared radius r^2
+ * (DFM §14.2): real (r^2 > 0), tangent (r^2 = 0: a double point, a point
+ * circle, a point) or imaginary (r^2 < 0: the meet of two spheres that miss
+ * each other is an imaginary circle, whose centre and r^2 are still read).
+ * A flat with no finite point (the meet of parallel planes, of a line
+ * parallel to a plane) is empty.
+ *
+ * Accuracy. Lengths read back (centres, points, distances) are compared with
+ * L = max(1, |c| + |r|), the object's extent from the origin in units of
+ * lambda = 1, and squared radii with L^2. A vector stored in the e4/e5 basis
+ * holds (|x|^2 -+ 1)/2, so a round about the origin carries its weight
+ * w = -X.n only to about u L^2 / |w|:
+ *   - flats (planes, lines, flat points) keep their lengths to a few u L
+ *     anywhere up to 1e8 from the origin: conformal.h's constructors build
+ *     about the first point and translate (the translation rotor moves F(x) to
+ *     F(x + a) without cancelling), and the meet of two flats is taken
+ *     directly (tests/test_meet.c: worst 1.1e-15 at 1e8);
+ *   - rounds are read back where 8 u s <= GA_OBJECT_TOL |w| (s the largest
+ *     coefficient of the carrier sphere) and refused with GA_ERR_PRECISION (or,
+ *     when rounding already broke the blade, GA_ERR_NOTBLADE) beyond; for a
+ *     unit-sized round that is within a few tens of units of the origin. A
+ *     dual vector whose weight is below 64 u s is a flat as stored: at 1e8,
+ *     ga_sphere_dual of a sphere of radius below ~1e7 is already a plane.
+ * For rounds far from the origin, build the scene about a local origin o (pass
+ * x - o, add o to what is read back): exact up to the rounding of x - o.
+ */
+#ifndef GAROTOR_OBJECT_H
+#define GAROTOR_OBJECT_H
+
+#include "rotor.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The kind of a conformal object. */
+enum {
+    GA_OBJECT_EMPTY = 0, /**< no finite point: a flat at infinity (parallel planes' meet) */
+    GA_OBJECT_FLATPOINT, /**< F(p) ^ n: a point with the point at infinity (a line meeting a plane) */
+    GA_OBJECT_LINE,      /**< F(a) ^ F(b) ^ n */
+    GA_OBJECT_PLANE,     /**< F(a) ^ F(b) ^ F(c) ^ n, or a dual plane (a vector) */
+    GA_OBJECT_POINTPAIR, /**< F(a) ^ F(b) */
+    GA_OBJECT_CIRCLE,    /**< F(a) ^ F(b) ^ F(c) */
+    GA_OBJECT_SPHERE     /**< F(a) ^ F(b) ^ F(c) ^ F(d), or a dual sphere (a vector) */
+};
+
+/** Whether a round is real, tangent or imaginary (flats are real). */
+enum {
+    GA_REALITY_REAL = 0, /**< r^2 > 0, or a flat */
+    GA_REALITY_TANGENT,  /**< |r^2| <= GA_OBJECT_TANGENT_TOL L^2: a double point, a point circle, a point */
+    GA_REALITY_IMAGINARY /**< r^2 < 0 beyond that */
+};
+
+/** Relative tolerance for "r^2 = 0" (tangent): |r^2| <= GA_OBJECT_TANGENT_TOL L^2,
+ *  L = max(1, |c|). Far above the rounding of r^2 (a few u L^2 after a meet), so
+ *  objects tangent in exact arithmetic read as tangent; a round with a radius
+ *  below 1e-6 L is therefore reported tangent, and its r^2 is still given. */
+#define GA_OBJECT_TANGENT_TOL 1e-12
+
+/** The accuracy promised, relative to L (above): a round whose rounding bound
+ *  exceeds it is refused with GA_ERR_PRECISION. */
+#define GA_OBJECT_TOL 1e-12
+
+/** What an object is and where. For a flat point: centre is the point. Line:
+ *  centre is its point closest to the origin, direction its unit direction.
+ *  Plane: centre = d m (closest to the origin), direction the unit normal m
+ *  (orientation as ga_plane_params). Point pair: centre the midpoint,
+ *  direction from the first point to the second, r2 the squared half-distance.
+ *  Circle: centre, r2, direction the unit normal of its plane. Sphere: centre,
+ *  r2, direction 0. Empty: centre 0; for a flat point at infinity, direction is
+ *  its direction (not normalised). */
+typedef struct {
+    int kind;    /**< GA_OBJECT_* */
+    int reality; /**< GA_REALITY_* */
+    ga_vec3 centre;
+    ga_vec3 direction;
+    double r2; /**< signed squared radius of a round; 0 for a flat */
+} ga_object;
+
+/** Classify X and read it back. GA_ERR_NOTFINITE on NaN/Inf, GA_ERR_SINGULAR for
+ *  X = 0 (e.g. the meet of two objects not in general position: coincident
+ *  planes, a line in a plane), GA_ERR_NOTBLADE when X is not one of the
+ *  objects above (mixed grades, grade 0 or 5, a non-blade), to GA_POINT_TOL
+ *  relative. */
+int ga_object_from_mv(ga_mv X, ga_object *out);
+
+/** The meet of two objects, A* ^ B* undualised: ((A I^-1) ^ (B I^-1)) I (DFM §5.5,
+ *  the meet in the whole space, as clifford's meet and ganja's dual wedge).
+ *  Sphere/plane with sphere/plane: a circle or line (real, tangent, imaginary,
+ *  or empty for parallel planes); sphere/plane with circle/line: a point pair or
+ *  flat point. A vector argument is a dual sphere or plane (converted with
+ *  ga_mv_dual). Zero when the objects are not in general position (their
+ *  grades sum to less than 5 after dualising, or they share a flat). Two flats
+ *  meet directly; with a round, the meet is taken about its centre (translated
+ *  there and back) so that it adds no cancellation to the round's own. */
+ga_mv ga_mv_meet(ga_mv A, ga_mv B);
+
+/** The point of O nearest x (a plane, line, sphere, circle, flat point, or the
+ *  nearer point of a pair). GA_ERR_IMAGINARY for an imaginary round,
+ *  GA_ERR_DOMAIN where the nearest point is not unique (x at the centre of a
+ *  sphere or on the axis of a circle), GA_ERR_NOTBLADE for an empty object,
+ *  and ga_object_from_mv's codes. */
+int ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out);
+/** The rejection x - ga_point_project(x, O): the offset of x from O. Same codes. */
+int ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out);
+/** |x - ga_point_project(x, O)|, the distance from x to O. Same codes. */
+int ga_point_distance(ga_vec3 x, ga_mv O, double *out);
+
+/** The angle in [0, pi/2] between two flats or rounds through a common point:
+ *  planes (between normals), lines (between directions), a line and a plane
+ *  (pi/2 - the angle of direction and normal), and spheres or a sphere and a
+ *  plane (the angle of their tangent planes where they cross: cos = |s1.s2| /
+ *  sqrt(s1^2 s2^2) for the dual vectors, DFM §14.3). GA_ERR_NOTBLADE for other
+ *  pairs, GA_ERR_IMAGINARY for an imaginary sphere. */
+int ga_object_angle(ga_mv A, ga_mv B, double *out);
+
+/** A rigid motion taking A to B, two objects of the same kind (planes, lines,
+ *  spheres, circles, point pairs, flat points): T(cB) R T(-cA), cA and cB the
+ *  centres of ga_object_from_mv and R the shortest rotation taking A's
+ *  direction to B's (any half turn about a perpendicular axis when opposite).
+ *  It takes A to a positive multiple of B (with orientation, where the kinds
+ *  have one). GA_ERR_ARG for different kinds, GA_ERR_NOTRIGID for rounds of
+ *  different radii (relative GA_POINT_TOL: a dilation would be needed),
+ *  GA_ERR_IMAGINARY, GA_ERR_NOTBLADE for empty objects. */
+int ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
