@@ -213,15 +213,11 @@ int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
 ga_mat4 ga_twist_hat(ga_twist xi)
 {
     ga_mat4 a = mat4_zero();
-    M(a, 0, 1) = -xi.w.z;
-    M(a, 0, 2) = xi.w.y;
-    M(a, 0, 3) = xi.v.x;
-    M(a, 1, 0) = xi.w.z;
-    M(a, 1, 2) = -xi.w.x;
-    M(a, 1, 3) = xi.v.y;
-    M(a, 2, 0) = -xi.w.y;
-    M(a, 2, 1) = xi.w.x;
-    M(a, 2, 3) = xi.v.z;
+    /* clang-format off */
+    M(a, 0, 1) = -xi.w.z; M(a, 0, 2) =  xi.w.y; M(a, 0, 3) = xi.v.x;
+    M(a, 1, 0) =  xi.w.z; M(a, 1, 2) = -xi.w.x; M(a, 1, 3) = xi.v.y;
+    M(a, 2, 0) = -xi.w.y; M(a, 2, 1) =  xi.w.x; M(a, 2, 3) = xi.v.z;
+    /* clang-format on */
     return a;
 }
 
@@ -320,8 +316,12 @@ ga_mat4 ga_se3_exp(ga_twist xi)
     double ax = a * w.x, ay = a * w.y, az = a * w.z;
     ga_vec3 u = cross3(w, v);
     ga_vec3 t = axpy3(c, cross3(w, u), axpy3(b, u, v));
-    ga_mat4 r = {{co + bx * w.x, bx * w.y - az, bx * w.z + ay, t.x, by * w.x + az, co + by * w.y,
-                  by * w.z - ax, t.y, bz * w.x - ay, bz * w.y + ax, co + bz * w.z, t.z, 0.0, 0.0, 0.0, 1.0}};
+    /* clang-format off */
+    ga_mat4 r = {{co + bx * w.x, bx * w.y - az, bx * w.z + ay, t.x,
+                  by * w.x + az, co + by * w.y, by * w.z - ax, t.y,
+                  bz * w.x - ay, bz * w.y + ax, co + bz * w.z, t.z,
+                  0.0, 0.0, 0.0, 1.0}};
+    /* clang-format on */
     return r;
 }
 

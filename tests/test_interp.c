@@ -649,9 +649,12 @@ static quat quat_of(ga_mat4 m)
 static ga_mat4 mat_of(quat q, ga_vec3 t)
 {
     double w = q.w, x = q.x, y = q.y, z = q.z;
-    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x, 2 * (x * y + w * z),
-                  1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y, 2 * (x * z - w * y), 2 * (y * z + w * x),
-                  1 - 2 * (x * x + y * y), t.z, 0, 0, 0, 1}};
+    /* clang-format off */
+    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), t.x,
+                  2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), t.y,
+                  2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), t.z,
+                  0, 0, 0, 1}};
+    /* clang-format on */
     return m;
 }
 
