@@ -206,6 +206,77 @@ static double factor_l(double m, double c)
     return -th * th;
 }
 
+/* Two rotations in one Euclidean 4-space with unit pseudoscalar J (J^2 = 1,
+   J = E1 E2 for the unit planes of the parts): Spin(4) = SU(2) x SU(2)
+   through the central idempotents P+- = (1 +- J)/2 (Dorst-Valkenburg 2011 §5
+   use the same commuting split of the even algebra of a 4-space). With
+   B = t1 E1 + t2 E2, E1 J = -E2 and E2 J = -E1, so
+     R P+ = cos(t1 - t2) P+ + sin(t1 - t2) (E1 - E2)/2,
+     R P- = cos(t1 + t2) P- + sin(t1 + t2) (E1 + E2)/2,
+   each a unit quaternion in its ideal (U = (E1 -+ E2)/2 has U^2 = -P+-,
+   <U^2>_0 = -1/2). Its principal log, phi in [0, pi] from
+   cos phi = 2 <R P>_0 and sin phi = sqrt(-2 <V V>_0), V = <R P>_2, is
+   (phi / sin phi) V, and log R is the sum of the two: t1, t2 = (phi- +- phi+)/2
+   in [0, pi], and t1, t2 < pi/2 gives back B. A factor at -P (phi = pi, sin phi = 0)
+   takes pi U for any unit U of its ideal, as exp(pi U) = -P whatever U is.
+   Unlike the m and ab forms this divides by neither m1 - m2 nor a + b: it is
+   the form for two rotations with cos t1 = -cos t2 (R0 <= 0) and near the
+   conjugate point t1 + t2 = pi of exp, where only the direction of a factor
+   at -P is lost, and exp does not depend on it. */
+/* An orthonormal basis U[0..2] of the bivectors of the ideal of P in the
+   4-space of J (<Ui Uj>_0 = -1/2 for i = j, else 0): Gram-Schmidt on the
+   parts <(e_ij _| J) P>_2 of the basis 2-blades, largest first. The
+   coordinates of a bivector in it put it in the ideal to rounding of its
+   own size, which a projection does not do for a bivector that is itself
+   rounding noise (a factor at -P). */
+static void ideal_basis(ga_mv J, ga_mv P, ga_mv U[3])
+{
+    ga_mv cand[10];
+    for (int i = 0; i < 10; i++)
+        cand[i] = ga_mv_grade(ga_mv_gp(ga_mv_lc(ga_mv_blade(GA_BLADE_E12 + i), J), P), 2);
+    for (int k = 0; k < 3; k++) {
+        double bn = 0.0;
+        int bi = 0;
+        for (int i = 0; i < 10; i++) {
+            ga_mv c = cand[i];
+            for (int l = 0; l < k; l++) c = lin(1.0, c, 2.0 * ga_mv_sp(c, U[l]), U[l]);
+            cand[i] = c;
+            double n = -2.0 * ga_mv_sp(c, c);
+            if (n > bn)
+                bn = n, bi = i;
+        }
+        U[k] = bn > 0.0 ? ga_mv_scale(cand[bi], 1.0 / sqrt(bn)) : ga_mv_zero();
+    }
+}
+
+static ga_mv spin4_log(ga_mv R, ga_mv J)
+{
+    ga_mv B = ga_mv_zero();
+    for (int sgn = -1; sgn <= 1; sgn += 2) {
+        ga_mv P = ga_mv_scale(J, 0.5 * sgn), U[3];
+        P.c[0] += 0.5;
+        ideal_basis(J, P, U);
+        ga_mv X = ga_mv_gp(R, P), V = ga_mv_zero();
+        double s2 = 0.0;
+        for (int k = 0; k < 3; k++) {
+            double v = -2.0 * ga_mv_sp(X, U[k]);
+            V = lin(1.0, V, v, U[k]);
+            s2 += v * v;
+        }
+        double cphi = 2.0 * X.c[0], sphi = sqrt(s2), phi = atan2(sphi, cphi);
+        if (sphi > 0.0) /* phi / sphi, not 1/S(-phi^2): near pi, sin of the
+                           rounded phi is not the sphi that V carries */
+            B = lin(1.0, B, phi / sphi, V);
+        else if (cphi < 0.0) /* X = -P: pi U for any unit U of the ideal */
+            B = lin(1.0, B, 3.14159265358979323846, U[0]);
+    }
+    return B;
+}
+
+/* The unit 4-vector J = q / sqrt(<q q>_0) of a 4-vector q with <q q>_0 > 0
+   (the 4-space of two elliptic parts: q = 2 B1 B2 = 2 t1 t2 J, R4 = s1 s2 J) */
+static ga_mv unit4(ga_mv q) { return ga_mv_scale(q, 1.0 / sqrt(ga_mv_sp(q, q))); }
+
 int ga_mv_log(ga_mv R, ga_mv *out)
 {
     if (!finite_mv(R))
@@ -226,7 +297,29 @@ int ga_mv_log(ga_mv R, ga_mv *out)
     double sig = p22 - 2.0 * p44, prod = p44;
     double disc = fmax(sig * sig - 4.0 * prod, 0.0);
     ga_mv B;
-    if (r0 > 0.0 && fabs(sig) <= 1e-7 && fabs(prod) <= 1e-14) {
+    /* two rotations (m1, m2 < 0) with |c1| near |c2|: where R0 <= 0 the m
+       form divides by m1 - m2 -> 0 (and the ab form by a + b -> 0 at the
+       conjugate point), so take the Spin(4) factors. J = R4/s1 s2 where
+       s1 s2 = sqrt(prod) >= 1/4 (then |R0| = |c1 c2| is below 1/2 + the
+       near-equality); where R0 <= -1/2, J of log(-R), which is in the ab or
+       near-null form. */
+    int two_rot = prod > 0.0 && sig < 0.0 && sqrt(disc) < sqrt(prod);
+    if (two_rot && r0 <= 0.5 && prod >= 1.0 / 16.0) {
+        B = spin4_log(R, unit4(R4));
+    } else if (two_rot && r0 <= -0.5) {
+        ga_mv Lm, q;
+        int st = ga_mv_log(ga_mv_scale(R, -1.0), &Lm);
+        if (st != GA_OK)
+            return st;
+        q = ga_mv_grade(ga_mv_gp(Lm, Lm), 4);
+        if (ga_mv_sp(q, q) > 0.0) {
+            B = spin4_log(R, unit4(q));
+        } else { /* -R = exp(Lm) with Lm one 2-blade (or 0): take the sign in a plane commuting with it */
+            double lm2 = ga_mv_gp(Lm, Lm).c[0];
+            ga_mv E = lm2 < 0.0 ? ga_mv_scale(Lm, 1.0 / sqrt(-lm2)) : commuting_plane(Lm);
+            B = lin(1.0, Lm, -3.14159265358979323846, E);
+        }
+    } else if (r0 > 0.0 && fabs(sig) <= 1e-7 && fabs(prod) <= 1e-14) {
         /* both parts near null (a translation or transversion with at most a
            tiny rotation or boost): m1, m2 are then mostly rounding of
            <R2 R2>_0, but kR and kW are symmetric in them, so analytic in
