@@ -20,6 +20,7 @@
 
 #include <math.h>
 #include <string.h>
+#include <time.h>
 
 #include <garotor/garotor.h>
 
@@ -1355,6 +1356,76 @@ static PyTypeObject MVType = {
     .tp_new = MV_new,
 };
 
+/* ---- the benchmark's reference: the same work as a plain C loop ----------- */
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* _c_loop(kind, x, path=None): seconds for the library calls that exp, log or
+ * Path.sample make per element, in a plain C loop over a C-contiguous float64
+ * x ((n, 6) twists, (n, 4, 4) motions, (n,) times) into a scratch buffer: no
+ * numpy, no broadcasting, no kernel pointer (python/bench.py). */
+static PyObject *py_c_loop(PyObject *self, PyObject *args)
+{
+    (void)self;
+    const char *kind;
+    PyObject *xo, *po = Py_None;
+    if (!PyArg_ParseTuple(args, "sO|O:_c_loop", &kind, &xo, &po))
+        return NULL;
+    PyArrayObject *x = (PyArrayObject *)PyArray_FROM_OTF(xo, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    if (!x)
+        return NULL;
+    int k = strcmp(kind, "exp") == 0    ? 0
+          : strcmp(kind, "log") == 0    ? 1
+          : strcmp(kind, "sample") == 0 ? 2
+                                        : -1;
+    npy_intp n = PyArray_NDIM(x) ? PyArray_DIM(x, 0) : 0;
+    npy_intp width = k == 0 ? 6 : k == 1 ? 16 : 1;
+    if (k < 0 || PyArray_SIZE(x) != n * width || (k == 2 && !PyObject_TypeCheck(po, &PathType))) {
+        Py_DECREF(x);
+        PyErr_SetString(PyExc_ValueError,
+                        "_c_loop: kind exp (n, 6), log (n, 4, 4) or sample (n,) with a Path");
+        return NULL;
+    }
+    const ga_path *p = k == 2 ? &((PathObject *)po)->path : NULL;
+    double *buf = PyMem_Malloc((size_t)(n ? n : 1) * 16 * sizeof *buf);
+    if (!buf) {
+        Py_DECREF(x);
+        return PyErr_NoMemory();
+    }
+    const double *in = PyArray_DATA(x);
+    const ga_group *g = &ga_group_cga;
+    int st = GA_OK;
+    memset(buf, 0, (size_t)(n ? n : 1) * 16 * sizeof *buf); /* the pages, before the clock starts */
+    double t0 = now_seconds();
+    Py_BEGIN_ALLOW_THREADS;
+    for (npy_intp i = 0; i < n && st == GA_OK; i++) {
+        double e[GA_GROUP_MAX_ELEM];
+        if (k == 0) {
+            st = g->exp(in + 6 * i, e);
+            mat_put(g->to_mat4(e), buf + 16 * i);
+        } else if (k == 1) {
+            st = g->from_mat4(mat_get(in + 16 * i), e);
+            if (st == GA_OK)
+                st = g->log(e, buf + 16 * i);
+        } else {
+            st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in + i, e);
+            mat_put(p->group->to_mat4(e), buf + 16 * i);
+        }
+    }
+    Py_END_ALLOW_THREADS;
+    double dt = now_seconds() - t0;
+    PyMem_Free(buf);
+    Py_DECREF(x);
+    if (st != GA_OK)
+        return mv_status("_c_loop", st);
+    return PyFloat_FromDouble(dt);
+}
+
 /* ---- the module ---------------------------------------------------------- */
 
 #define KW (METH_VARARGS | METH_KEYWORDS)
@@ -1388,6 +1459,8 @@ static PyMethodDef module_methods[] = {
      "from_dualquat(d, *, out=None): unit dual quaternions (..., 8) -> (..., 4, 4)."},
     {"up", FN(py_up), KW, "up(x, *, out=None): points (..., 3) -> conformal points (..., 32)."},
     {"down", FN(py_down), KW, "down(X, *, out=None): conformal points (..., 32) -> points (..., 3)."},
+    {"_c_loop", py_c_loop, METH_VARARGS,
+     "_c_loop(kind, x, path=None): the benchmark's plain C loop (python/bench.py)."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef garotor_module = {PyModuleDef_HEAD_INIT,
