@@ -220,7 +220,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int st = via_mat ? ga_path_init_mat4(g, scheme, n, times, mkeys, velp, work, wbytes, &p)
                      : ga_path_init(g, scheme, n, times, keybuf, velp, work, wbytes, &p);
     FZ_CHECK(is_status(st), "init status %d", st);
-    int count_ok = (size_t)n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3);
+    /* one key is the constant path on every scheme */
+    int count_ok = n == 1 ||
+                   ((size_t)n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3));
     if (!count_ok)
         FZ_CHECK(st == GA_ERR_ARG, "%s with %d keys: status %d", ga_scheme_name(scheme), n, st);
     if (count_ok && !times_finite)
@@ -258,6 +260,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             check_elem(g, A, valid, "eval");
         if (vst == GA_OK)
             FZ_CHECK(fz_all_finite(v, dim), "velocity: GA_OK with a non-finite velocity");
+        /* velocity and acceleration in either frame: the same statuses inside
+           and outside, finite on GA_OK */
+        double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
+        int dst = ga_path_differentiate(&p, t, (ga_frame)(k & 1), dv, da);
+        FZ_CHECK(is_status(dst), "differentiate %d", dst);
+        if (!inside)
+            FZ_CHECK(dst != GA_OK, "differentiate: t = %.17g outside accepted", t);
+        if (dst == GA_OK)
+            FZ_CHECK(fz_all_finite(dv, dim) && fz_all_finite(da, dim), "differentiate: GA_OK, not finite");
     }
     /* one segment formula at an arbitrary u (extrapolation beyond [0, 1]) */
     {

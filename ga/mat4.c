@@ -788,3 +788,45 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
     *out = l;
     return GA_OK;
 }
+
+/* Nearest rotation: Higham's Newton iteration for the orthogonal polar factor,
+ * X <- (X + X^-T)/2 (Higham, "Computing the polar decomposition", 1986), from
+ * X_0 = R with ||R^T R - I|| <= 1e-3: the error e_k = ||X_k^T X_k - I|| obeys
+ * e_{k+1} ~ e_k^2 / 4, so three steps reach rounding; the loop stops when a
+ * step changes no entry by more than 4 ulp, at most 8 steps. */
+int ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out)
+{
+    if (!(tol >= 0.0 && tol <= GA_SE3_NORMALIZE_TOL))
+        return GA_ERR_ARG;
+    int st = se3_check(&m, tol);
+    if (st != GA_OK)
+        return st;
+    double x[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) x[i][j] = M(m, i, j);
+    for (int it = 0; it < 8; it++) {
+        /* X^-T = cof(X) / det X */
+        double c[3][3];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+                c[i][j] = x[i1][j1] * x[i2][j2] - x[i1][j2] * x[i2][j1];
+            }
+        double det = x[0][0] * c[0][0] + x[0][1] * c[0][1] + x[0][2] * c[0][2], change = 0.0;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                double nx = 0.5 * (x[i][j] + c[i][j] / det);
+                change = fmax(change, fabs(nx - x[i][j]));
+                x[i][j] = nx;
+            }
+        if (change <= 4 * DBL_EPSILON)
+            break;
+    }
+    ga_mat4 r = m;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) M(r, i, j) = x[i][j];
+    M(r, 3, 0) = M(r, 3, 1) = M(r, 3, 2) = 0.0;
+    M(r, 3, 3) = 1.0;
+    *out = r;
+    return GA_OK;
+}

@@ -10,6 +10,7 @@
  *     P ~q  = (s p + p4 b + p x b) + I (s p4 - p.b).
  */
 #include <garotor/rotor.h>
+#include <garotor/mat4.h>
 
 #include <math.h>
 #include <stddef.h>
@@ -632,4 +633,17 @@ ga_rotor ga_rotor_from_dualquat(ga_dualquat d)
 {
     ga_rotor r = {d.real.w, -d.real.z, d.real.y, -d.real.x, -d.dual.x, -d.dual.y, -d.dual.z, -d.dual.w};
     return r;
+}
+
+int ga_quat_normalize(ga_quat q, double tol, ga_quat *out)
+{
+    if (!(tol >= 0.0 && tol <= GA_SE3_NORMALIZE_TOL))
+        return GA_ERR_ARG;
+    if (!isfinite(q.w) || !isfinite(q.x) || !isfinite(q.y) || !isfinite(q.z))
+        return GA_ERR_NOTFINITE;
+    double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    if (!(fabs(norm - 1.0) <= tol))
+        return GA_ERR_NOTRIGID;
+    *out = (ga_quat){q.w / norm, q.x / norm, q.y / norm, q.z / norm};
+    return GA_OK;
 }

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include <garotor/mat4.h>
 #include <garotor/path.h>
 #define MAXD GA_GROUP_MAX_DIM
 #define MAXE GA_GROUP_MAX_ELEM
@@ -158,8 +159,8 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
 {
     if (!p || !g || !times || !keys || !work || (unsigned)s > GA_SCHEME_LIHAO3)
         return GA_ERR_ARG;
-    if (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3))
-        return GA_ERR_ARG;
+    if (n != 1 && (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)))
+        return GA_ERR_ARG; /* one key: the constant path, on every scheme */
     if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
         return GA_ERR_ARG;
     if (!allfinite(times, n))
@@ -403,6 +404,10 @@ static int build(ga_path *p, const double *vel)
     size_t nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
     if (vel && !allfinite(vel, nv * g->dim))
         return GA_ERR_NOTFINITE;
+    if (p->n == 1) { /* the constant path: no segment, nothing to build */
+        memset(p->key + p->key_stride, 0, scheme_doubles(p->scheme, 1, g->dim) * sizeof(double));
+        return GA_OK;
+    }
     int st = build_scheme(p, vel);
     if (st == GA_ERR_NOTFINITE)
         return GA_ERR_DOMAIN;
@@ -453,7 +458,12 @@ int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
 {
     size_t n = p->n;
     if (!(t >= p->t[0] && t <= p->t[n - 1]))
-        return GA_ERR_ARG;     /* also NaN */
+        return GA_ERR_ARG; /* also NaN */
+    if (n == 1) {          /* the constant path: its key, "segment 0" at u = 0 */
+        *seg = 0;
+        *u = 0.0;
+        return GA_OK;
+    }
     size_t lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
     while (lo < hi) {
         size_t mid = (lo + hi + 1) / 2;
@@ -597,7 +607,244 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
     if (!p || !v)
         return GA_ERR_ARG;
     int st = ga_path_locate(p, t, &seg, &u);
+    if (st == GA_OK && p->n == 1) {
+        memset(v, 0, p->group->dim * sizeof(double));
+        return GA_OK;
+    }
     return st ? st : ga_path_velocity_segment(p, seg, u, v);
+}
+
+/* ---- acceleration ------------------------------------------------------------------ */
+
+/* x = vee(a) for a matrix a in the algebra up to rounding. vee is linear, but
+ * the rigid groups' vee refuses a 3x3 block whose symmetric part exceeds 1e-9
+ * of its largest entry, and a result that is small against the terms it was
+ * formed from (a commutator of near-parallel twists, a body acceleration
+ * near 0) carries a symmetric part of rounding about eps times those terms.
+ * So vee is taken of a + hat(c), c = (S, ..., S) with S >= the terms'
+ * scale, and c is subtracted again: exact up to a rounding of S. The last
+ * row, zero in the algebra of every group here (homogeneous matrices), is
+ * set to zero. */
+static int vee_scaled(const ga_group *g, ga_mat4 a, double scale, double *x)
+{
+    double c[MAXD];
+    size_t d = g->dim;
+    for (size_t k = 0; k < d; ++k) c[k] = scale;
+    ga_mat4 h = g->hat(c);
+    for (int k = 0; k < 12; ++k) a.m[k] += h.m[k];
+    for (int k = 12; k < 16; ++k) a.m[k] = 0.0;
+    int st = g->vee(a, x);
+    if (st != GA_OK)
+        return GA_ERR_DOMAIN;
+    for (size_t k = 0; k < d; ++k) x[k] -= scale;
+    return GA_OK;
+}
+
+static double mat_maxabs(ga_mat4 a)
+{
+    double m = 0.0;
+    for (int k = 0; k < 16; ++k) m = fmax(m, fabs(a.m[k]));
+    return m;
+}
+
+/* out = [x, y] = vee(x^ y^ - y^ x^), the Lie bracket in the convention of
+ * hat (body velocities: d/du Ad_{F^-1} w = Ad_{F^-1} w' + [Ad_{F^-1} w, p'X]
+ * for F = exp(p X)). */
+static int bracket(const ga_group *g, const double *x, const double *y, double *out)
+{
+    ga_mat4 a = g->hat(x), b = g->hat(y), ab = ga_mat4_mul(a, b), ba = ga_mat4_mul(b, a), c;
+    for (int k = 0; k < 16; ++k) c.m[k] = ab.m[k] - ba.m[k];
+    double s = 1.0 + mat_maxabs(ab) + mat_maxabs(ba);
+    return vee_scaled(g, c, s, out);
+}
+
+/* The 4x4 jets a0 + e a1 + e^2 a2 (e^3 = 0): exp of a jet by scaling, Taylor
+ * series and squaring (Higham 2005, as the affine dexp of group.c does to
+ * first order). exp(X + e X' + e^2 X''/2) = G + e G' + e^2 G''/2 along a
+ * curve X(t) at t. */
+typedef struct {
+    ga_mat4 c[3];
+} jet;
+
+static jet jet_mul(const jet *a, const jet *b)
+{
+    jet r;
+    r.c[0] = ga_mat4_mul(a->c[0], b->c[0]);
+    ga_mat4 p = ga_mat4_mul(a->c[0], b->c[1]), q = ga_mat4_mul(a->c[1], b->c[0]);
+    for (int k = 0; k < 16; ++k) r.c[1].m[k] = p.m[k] + q.m[k];
+    ga_mat4 u = ga_mat4_mul(a->c[0], b->c[2]), v = ga_mat4_mul(a->c[1], b->c[1]),
+            w = ga_mat4_mul(a->c[2], b->c[0]);
+    for (int k = 0; k < 16; ++k) r.c[2].m[k] = u.m[k] + v.m[k] + w.m[k];
+    return r;
+}
+
+static jet jet_exp(jet z)
+{
+    double nrm = ga_mat4_norm1(z.c[0]);
+    int s = 0;
+    if (nrm > 0.5)
+        s = (int)ceil(log2(nrm / 0.5));
+    double sc = ldexp(1.0, -s);
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 16; ++k) z.c[i].m[k] *= sc;
+    /* Horner: I + z (I + z/2 (I + z/3 (...))), 18 terms: 0.5^19/19! < 1e-22 */
+    jet r;
+    memset(&r, 0, sizeof r);
+    r.c[0] = ga_mat4_identity();
+    for (int m = 18; m >= 1; --m) {
+        jet t = jet_mul(&z, &r);
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 16; ++k) t.c[i].m[k] /= m;
+        for (int k = 0; k < 16; ++k) t.c[0].m[k] += (k % 5 == 0);
+        r = t;
+    }
+    for (int i = 0; i < s; ++i) r = jet_mul(&r, &r);
+    return r;
+}
+
+/* X''(t) (per unit t^2) of the generator-space schemes on segment j at u:
+ * 0 for BIVECTOR; the slope of X' on its piece for SMOOTH/QUADRATIC (the
+ * piece gen_curve uses). */
+static void gen_curve2(const ga_path *p, size_t j, double u, double *xdd)
+{
+    size_t d = p->group->dim, n = p->n;
+    if (p->scheme == GA_SCHEME_BIVECTOR) {
+        for (size_t i = 0; i < d; ++i) xdd[i] = 0.0;
+        return;
+    }
+    int left = u <= 0.5;
+    size_t k = j == 0 ? 0 : j == n - 2 ? n - 3 : left ? j - 1 : j;
+    double L = brk(p, k + 1) - brk(p, k);
+    const double *dk = p->slope + k * d, *dk1 = dk + d;
+    for (size_t i = 0; i < d; ++i) xdd[i] = (dk1[i] - dk[i]) / L;
+}
+
+/* Body velocity and acceleration per unit u (u^2) on segment seg. */
+static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
+{
+    const ga_group *g = p->group;
+    size_t d = g->dim, nf = nfac(p->scheme);
+    double h = seg_len(p, seg);
+    int st;
+    if (nf == 0) {
+        /* G = exp(X(t)): the jet exp(X + e X' + e^2 X''/2) gives G' and G''/2;
+         * body velocity G^-1 G', acceleration d/dt(G^-1 G') = G^-1 G'' - (G^-1 G')^2 */
+        double x[MAXD], xd[MAXD], xdd[MAXD], gi[MAXE], ge[MAXE];
+        gen_curve(p, seg, u, x, xd);
+        gen_curve2(p, seg, u, xdd);
+        for (size_t k = 0; k < d; ++k) xdd[k] *= 0.5;
+        jet z = {{g->hat(x), g->hat(xd), g->hat(xdd)}};
+        jet e = jet_exp(z);
+        if ((st = g->exp(x, ge)) || (st = g->inverse(ge, gi)))
+            return st;
+        ga_mat4 G1 = g->to_mat4(gi), V = ga_mat4_mul(G1, e.c[1]), P = ga_mat4_mul(G1, e.c[2]),
+                V2 = ga_mat4_mul(V, V), A;
+        for (int k = 0; k < 16; ++k) A.m[k] = 2.0 * P.m[k] - V2.m[k];
+        g->dexp(x, xd, v); /* the velocity as ga_path_velocity has it */
+        if ((st = vee_scaled(g, A, 1.0 + 2.0 * mat_maxabs(P) + mat_maxabs(V2), a)))
+            return st;
+        lin(d, v, h, v, 0.0, v);
+        lin(d, a, h * h, a, 0.0, a);
+        return GA_OK;
+    }
+    /* M = F_1 F_2 F_3, F_j = exp(p_j X_j): with w_1 = p_1' X_1, a_1 = p_1'' X_1,
+     * w_{j+1} = Ad_{F^-1} w_j + p' X, a_{j+1} = Ad_{F^-1} a_j + [Ad_{F^-1} w_j, p' X]
+     * + p'' X (F = F_{j+1}, X = X_{j+1}): the product rule of velocity_u
+     * differentiated once more, the recursion of Sommer et al. 2020 (eqs. for
+     * the cumulative B-spline's acceleration) */
+    const double *X = p->coef + seg * nf * d;
+    double w[MAXD], b[MAXD], c[MAXD], x[MAXD], fi[MAXE];
+    for (size_t k = 0; k < d; ++k) v[k] = a[k] = 0.0;
+    for (size_t j = 0; j < nf; ++j, X += d) {
+        const double *cp = fac_poly[j];
+        double d1 = poly_deriv(cp, u), d2 = 2 * cp[1] + 6 * cp[2] * u;
+        if (j > 0) {
+            lin(d, x, -poly_diff(cp, 0, u, 0.0), X, 0.0, X);
+            if ((st = g->exp(x, fi)))
+                return st;
+            g->adjoint(fi, v, w);
+            g->adjoint(fi, a, b);
+            lin(d, x, d1, X, 0.0, X);
+            if ((st = bracket(g, w, x, c)))
+                return st;
+            lin(d, a, 1.0, b, 1.0, c);
+            memcpy(v, w, d * sizeof(double));
+        }
+        lin(d, v, 1.0, v, d1, X);
+        lin(d, a, 1.0, a, d2, X);
+    }
+    return GA_OK;
+}
+
+int ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a)
+{
+    if (!p || !a || seg + 2 > p->n || !isfinite(u))
+        return GA_ERR_ARG;
+    size_t d = p->group->dim;
+    double v[MAXD], w[MAXD], h = seg_len(p, seg);
+    int st = accel_u(p, seg, u, v, w);
+    if (st != GA_OK)
+        return st;
+    lin(d, w, 1.0 / (h * h), w, 0.0, w);
+    if (!allfinite(w, d))
+        return GA_ERR_DOMAIN;
+    memcpy(a, w, d * sizeof(double));
+    return GA_OK;
+}
+
+int ga_path_acceleration(const ga_path *p, double t, double *a)
+{
+    return ga_path_differentiate(p, t, GA_FRAME_BODY, NULL, a);
+}
+
+int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a)
+{
+    if (!p || seg + 2 > p->n || !isfinite(u) || (unsigned)f > GA_FRAME_SPATIAL)
+        return GA_ERR_ARG;
+    const ga_group *g = p->group;
+    size_t d = g->dim;
+    double vb[MAXD], ab[MAXD], h = seg_len(p, seg), m[MAXE];
+    int st = accel_u(p, seg, u, vb, ab);
+    if (st != GA_OK)
+        return st;
+    lin(d, vb, 1.0 / h, vb, 0.0, vb);
+    lin(d, ab, 1.0 / (h * h), ab, 0.0, ab);
+    if (f == GA_FRAME_SPATIAL) {
+        /* spatial velocity Ad_M v_b; its derivative Ad_M (a_b + [v_b, v_b]) = Ad_M a_b */
+        double vs[MAXD], as[MAXD];
+        if ((st = ga_path_eval_segment(p, seg, u, m)))
+            return st;
+        g->adjoint(m, vb, vs);
+        g->adjoint(m, ab, as);
+        memcpy(vb, vs, sizeof vs);
+        memcpy(ab, as, sizeof as);
+    }
+    if (!allfinite(vb, d) || !allfinite(ab, d))
+        return GA_ERR_DOMAIN;
+    if (v)
+        memcpy(v, vb, d * sizeof(double));
+    if (a)
+        memcpy(a, ab, d * sizeof(double));
+    return GA_OK;
+}
+
+int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, double *a)
+{
+    size_t seg;
+    double u;
+    if (!p || (unsigned)f > GA_FRAME_SPATIAL)
+        return GA_ERR_ARG;
+    int st = ga_path_locate(p, t, &seg, &u);
+    if (st != GA_OK)
+        return st;
+    if (p->n == 1) {
+        if (v)
+            memset(v, 0, p->group->dim * sizeof(double));
+        if (a)
+            memset(a, 0, p->group->dim * sizeof(double));
+        return GA_OK;
+    }
+    return ga_path_differentiate_segment(p, seg, u, f, v, a);
 }
 
 /* ---- Euler (Li-Hao §5, group form) ---------------------------------------------- */
@@ -750,7 +997,7 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
     }
     if (s->eval == GA_EVAL_EULER) {
         st = euler_sample(p, s->step, &s->seg, &s->grid, s->slot[0], seg, u, out);
-    } else if (s->eval == GA_EVAL_DIRECT || nfac(p->scheme) == 0) {
+    } else if (s->eval == GA_EVAL_DIRECT || nfac(p->scheme) == 0 || p->n == 1) {
         st = eval_direct(p, seg, u, out);
         s->seg = seg; /* DIRECT keeps no state: seg is only where to look first */
     } else {

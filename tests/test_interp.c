@@ -1159,6 +1159,142 @@ static void test_exact(tk_rng *r)
 
 /* ---- 10. bad input ---------------------------------------------------------------- */
 
+/* ---- 2b. acceleration, spatial frame, one key ------------------------------------- */
+
+/* Central difference of the analytic velocity in frame f at (seg, u), step e in t. */
+static void fd_accel(const ga_path *p, int seg, double u, ga_frame f, double e, double *a)
+{
+    double vp[12], vm[12], h = p->t[seg + 1] - p->t[seg];
+    ga_path_differentiate_segment(p, seg, u + e / h, f, vp, NULL);
+    ga_path_differentiate_segment(p, seg, u - e / h, f, vm, NULL);
+    for (size_t i = 0; i < p->group->dim; ++i) a[i] = (vp[i] - vm[i]) / (2 * e);
+}
+
+static void test_accel(tk_rng *r)
+{
+    const ga_group *gs[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
+    /* central differences of step e err by e^2/6 times the third derivative of
+     * the velocity, plus eps |v| / e: at e = 1e-4 about 1e-8 of the path's
+     * scale; halving e must cut the error about 4x, so the check is also that
+     * the error falls (ratio >= 3) unless it is at the rounding floor 1e-9 */
+    tk_check c_fd = tk_begin("acceleration: analytic = central FD of velocity, / scale^2 (step 1e-4)", 1e-6);
+    tk_check c_fall = tk_begin("acceleration: FD error falls >= 3x when the step halves (or <= 1e-9)", 0);
+    tk_check c_sp = tk_begin("spatial velocity = Ad_A body; spatial acceleration = FD, / scale^2", 1e-6);
+    tk_check c_cm = tk_begin("acceleration: cga = matrix, / scale^2", 1e-11);
+    tk_check c_vel = tk_begin("ga_path_differentiate velocity = ga_path_velocity", 0);
+    for (int trial = 0; trial < 12; ++trial) {
+        int gi = trial % 3;
+        keyset k;
+        if (gi == 2)
+            affine_keys(r, &k, 4 + trial % 2);
+        else
+            random_keys(r, &k, 4 + trial % 2, 0);
+        int d = gs[gi]->dim;
+        for (int si = 0; si < 6; ++si) {
+            ga_scheme s = all_schemes[si];
+            keyset kk = k;
+            if (s == GA_SCHEME_QUADRATIC)
+                kk.n = 3;
+            pathbuf b, bm;
+            if (mkpath(&b, gs[gi], s, &kk, NULL) != GA_OK)
+                continue; /* affine lihao2 may grow until logm fails (test_c1) */
+            double sc = path_scale(&b.p, &kk), sc2 = sc * sc;
+            int other = gi == 0 ? mkpath(&bm, &ga_group_se3, s, &kk, NULL) : -1;
+            for (int i = 0; i + 1 < kk.n; ++i)
+                for (int q = 1; q <= 3; ++q) {
+                    double u = 0.25 * q + 0.01, a[12], af[12], af2[12], v[12], v0[12];
+                    double vs[12], as[12], asf[12], m[16], adv[12];
+                    ga_path_acceleration_segment(&b.p, i, u, a);
+                    fd_accel(&b.p, i, u, GA_FRAME_BODY, 1e-4, af);
+                    fd_accel(&b.p, i, u, GA_FRAME_BODY, 5e-5, af2);
+                    double e1 = vdiff(a, af, d) / fmax(sc2, vnorm(a, d));
+                    double e2 = vdiff(a, af2, d) / fmax(sc2, vnorm(a, d));
+                    tk_add(&c_fd, e1);
+                    tk_add_bool(&c_fall, e1 <= 1e-9 || e1 >= 3 * e2);
+                    ga_path_differentiate_segment(&b.p, i, u, GA_FRAME_BODY, v, NULL);
+                    ga_path_velocity_segment(&b.p, i, u, v0);
+                    tk_add_bool(&c_vel, vdiff(v, v0, d) == 0.0);
+                    ga_path_differentiate_segment(&b.p, i, u, GA_FRAME_SPATIAL, vs, as);
+                    ga_path_eval_segment(&b.p, i, u, m);
+                    gs[gi]->adjoint(m, v, adv);
+                    fd_accel(&b.p, i, u, GA_FRAME_SPATIAL, 1e-4, asf);
+                    tk_add(&c_sp, fmax(vdiff(vs, adv, d) / fmax(sc2, vnorm(vs, d)),
+                                       vdiff(as, asf, d) / fmax(sc2, vnorm(as, d))));
+                    if (other == GA_OK) {
+                        double am[12];
+                        ga_path_acceleration_segment(&bm.p, i, u, am);
+                        tk_add(&c_cm, vdiff(a, am, d) / sc2);
+                    }
+                }
+        }
+    }
+    tk_end(&c_fd);
+    tk_end(&c_fall);
+    tk_end(&c_sp);
+    tk_end(&c_cm);
+    tk_end(&c_vel);
+
+    /* a uniform screw motion has zero body acceleration: every scheme that
+     * reproduces it (screw; lihao2 given its velocity; lihao3 by default) */
+    tk_check c_z = tk_begin("acceleration of a uniform screw motion (screw, lihao2, lihao3), / scale^2",
+                            1e-13);
+    for (int trial = 0; trial < 6; ++trial) {
+        keyset k;
+        k.n = 5;
+        random_times(r, &k);
+        ga_twist xi = rand_twist(r, 0.5, 1.0);
+        for (int i = 0; i < k.n; ++i) {
+            ga_twist x = {tk_scale(xi.w, k.t[i]), tk_scale(xi.v, k.t[i])};
+            k.m[i] = ga_se3_exp(x);
+        }
+        set_scale(&k);
+        const ga_scheme zs[3] = {GA_SCHEME_SCREW, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3};
+        for (int gi = 0; gi < 2; ++gi)
+            for (int si = 0; si < 3; ++si) {
+                pathbuf b;
+                double v0[6] = {xi.w.x, xi.w.y, xi.w.z, xi.v.x, xi.v.y, xi.v.z};
+                int st = mkpath(&b, gs[gi], zs[si], &k, zs[si] == GA_SCHEME_LIHAO2 ? v0 : NULL);
+                for (double t = k.t[0]; t < k.t[k.n - 1]; t += 0.37) {
+                    double a[6];
+                    if (st != GA_OK || ga_path_acceleration(&b.p, t, a) != GA_OK)
+                        a[0] = NAN;
+                    tk_add(&c_z, vnorm(a, 6) / (k.scale * k.scale));
+                }
+            }
+    }
+    tk_end(&c_z);
+
+    /* one key: the constant path on every scheme and group */
+    tk_check c_one = tk_begin("one key: the constant path (every scheme, group, evaluator)", 0);
+    for (int gi = 0; gi < 3; ++gi)
+        for (int si = 0; si < 6; ++si) {
+            keyset k;
+            k.n = 1;
+            k.t[0] = 1.5;
+            k.m[0] = rand_rigid(r, 0.1, 3.0, 2.0);
+            set_scale(&k);
+            pathbuf b;
+            int st = mkpath(&b, gs[gi], all_schemes[si], &k, NULL);
+            tk_add_status(&c_one, st, GA_OK);
+            if (st)
+                continue;
+            double e[16], v[12], a[12], smp[3 * 16];
+            tk_add_status(&c_one, ga_path_eval(&b.p, 1.5, e), GA_OK);
+            /* the key as its representation holds it (as "A(t_i) returns A_i") */
+            tk_add_bool(&c_one, mdiff(gs[gi]->to_mat4(e), k.m[0]) / k.scale <= 1e-15);
+            tk_add_status(&c_one, ga_path_eval(&b.p, 1.6, e), GA_ERR_ARG);
+            tk_add_status(&c_one, ga_path_differentiate(&b.p, 1.5, GA_FRAME_SPATIAL, v, a), GA_OK);
+            tk_add_bool(&c_one, vnorm(v, gs[gi]->dim) == 0.0 && vnorm(a, gs[gi]->dim) == 0.0);
+            tk_add_status(&c_one, ga_path_velocity(&b.p, 1.5, v), GA_OK);
+            for (int ev = 0; ev < 3; ++ev) {
+                tk_add_status(&c_one, ga_path_sample_uniform(&b.p, (ga_eval)ev, 0.5, 3, 1.5, 1.5, smp),
+                              GA_OK);
+                tk_add_bool(&c_one, memcmp((char *)smp + 2 * gs[gi]->elem_size, e, gs[gi]->elem_size) == 0);
+            }
+        }
+    tk_end(&c_one);
+}
+
 static void test_errors(void)
 {
     keyset k;
@@ -1170,8 +1306,8 @@ static void test_errors(void)
     }
     pathbuf b;
     int st;
-    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, 1, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
-    tk_expect_status("screw with 1 key -> GA_ERR_ARG", st, GA_ERR_ARG);
+    st = ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, 0, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
+    tk_expect_status("screw with 0 keys -> GA_ERR_ARG", st, GA_ERR_ARG);
     st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_SMOOTH, 2, k.t, k.m, NULL, b.work, sizeof b.work, &b.p);
     tk_expect_status("smooth with 2 keys -> GA_ERR_ARG", st, GA_ERR_ARG);
     st = ga_path_init_mat4(&ga_group_cga, GA_SCHEME_QUADRATIC, 4, k.t, k.m, NULL, b.work, sizeof b.work,
@@ -1230,6 +1366,7 @@ int main(void)
     clock_t c0 = clock();
     test_keys(&r);
     test_c1(&r);
+    test_accel(&r);
     test_cga_se3(&r);
     test_screw(&r);
     test_identities(&r);

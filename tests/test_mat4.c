@@ -545,5 +545,49 @@ int main(void)
         tk_expect(is_sentinel(g), "se3_geodesic: a failed call leaves its output untouched");
     }
 
+    /* ---- keys near the group: ga_se3_normalize, ga_quat_normalize --------- */
+    /* A rigid motion with every entry of its 3x3 block moved by up to 1e-4
+     * (max |R^T R - I| then below 1e-3) comes back as R' with R'^T R' = I to
+     * rounding and R'^T M symmetric (R' the orthogonal polar factor of M, the
+     * nearest rotation); 2e-3 off is refused. */
+    {
+        tk_check c_orth = tk_begin("se3_normalize: R^T R = I (entries off by 1e-4 in)", 4 * eps);
+        tk_check c_pol = tk_begin("se3_normalize: R^T M symmetric (the polar factor)", 8 * eps);
+        tk_check c_far = tk_begin("se3_normalize / quat_normalize: 1e-3 off or more refused, less taken", 0);
+        tk_rng s = {seed + 7};
+        for (int i = 0; i < 2000; i++) {
+            ga_mat4 m = ga_se3_exp(tk_twist(&s, 0)), r;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) m.m[4 * a + b] += tk_range(&s, -1e-4, 1e-4);
+            int st = ga_se3_normalize(m, GA_SE3_NORMALIZE_TOL, &r);
+            tk_add_status(&c_far, st, GA_OK);
+            double e = 0, p = 0;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) {
+                    double g = 0, h = 0, k = 0;
+                    for (int q = 0; q < 3; q++) {
+                        g += r.m[4 * q + a] * r.m[4 * q + b];
+                        h += r.m[4 * q + a] * m.m[4 * q + b];
+                        k += r.m[4 * q + b] * m.m[4 * q + a];
+                    }
+                    e = fmax(e, fabs(g - (a == b)));
+                    p = fmax(p, fabs(h - k));
+                }
+            tk_add(&c_orth, e);
+            tk_add(&c_pol, p);
+            ga_mat4 far = m;
+            far.m[0] += 2e-3;
+            tk_add_status(&c_far, ga_se3_normalize(far, GA_SE3_NORMALIZE_TOL, &r), GA_ERR_NOTRIGID);
+            double dq = tk_range(&s, -1e-3, 1e-3), n2 = (1 + dq) / 2;
+            ga_quat q = {n2, n2, n2, n2}, u;
+            tk_add_status(&c_far, ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &u), GA_OK);
+            q.w = q.x = q.y = q.z = (1 + 1.5e-3) / 2;
+            tk_add_status(&c_far, ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &u), GA_ERR_NOTRIGID);
+        }
+        tk_end(&c_orth);
+        tk_end(&c_pol);
+        tk_end(&c_far);
+    }
+
     return tk_finish("test_mat4");
 }

@@ -142,6 +142,73 @@ printf '0 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n' >"$d/same_t"
 expect_error "interp: times not increasing" "same_t:3: key times must increase" \
     "$G" interp --format pose --samples 3 --in "$d/same_t" --out "$d/out"
 printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n' >"$d/two"
+# ---- real pose files: --normalize, a byte-order mark, one key, --with ----
+printf '\357\273\2770 0 0 0 0 0 0 1\n1 1 0 0 0 0 0.7071 0.7071\n2 1 1 0 0 0 1 0.0001\n' >"$d/tum"
+expect_error "interp: 4-decimal quaternion" "tum:2: .*--normalize accepts up to 1e-3" \
+    "$G" interp --format pose --in "$d/tum" --samples 3 --out "$d/out"
+"$G" interp --format pose --normalize --in "$d/tum" --samples 3 --out "$d/tum.out" 2>"$d/err" ||
+    fail "interp --normalize: $(cat "$d/err")"
+# keys hit: the normalised quaternion of line 2 (0.7071/|q|) at t = 1
+awk 'NR == 2 { q = 0.7071 / sqrt(2 * 0.7071 * 0.7071); e = $7 - q; if (e < 0) e = -e
+     if ($1 != 1 || e > 1e-15 || $2 != 1 && ($2 - 1 > 1e-15 || 1 - $2 > 1e-15)) exit 1 }' "$d/tum.out" ||
+    fail "interp --normalize: the key at t = 1 is not the normalised key: $(sed -n 2p "$d/tum.out")"
+printf '0 0 0 0 0 0 0 1.01\n' >"$d/far"
+expect_error "interp: --normalize, too far" "far:1: .*farther from 1 than --normalize accepts" \
+    "$G" interp --format pose --normalize --in "$d/far" --samples 2 --out "$d/out"
+# a matrix 1e-6 off a rotation: refused naming --normalize, accepted with it
+printf '0 1.000001 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n1 1 0 0 1  0 1 0 0  0 0 1 0  0 0 0 1\n' >"$d/matoff"
+expect_error "interp: matrix 1e-6 off" "matoff:1: not a rigid motion to 1e-9 .*--normalize" \
+    "$G" interp --in "$d/matoff" --samples 2 --out "$d/out"
+"$G" interp --normalize --group matrix --in "$d/matoff" --samples 2 --out "$d/matoff.out" 2>"$d/err" ||
+    fail "interp --normalize (matrix): $(cat "$d/err")"
+awk 'NR == 1 && ($2 != 1 || $3 != 0) { exit 1 }' "$d/matoff.out" || fail "--normalize: not projected: $(head -1 "$d/matoff.out")"
+expect_error "interp: --normalize on affine" "--normalize applies to --group cga or matrix" \
+    "$G" interp --group affine --normalize --in "$d/matoff" --samples 2 --out "$d/out"
+# one key: the constant path, velocity and acceleration zero
+printf '5 1 2 3 0 0 0 1\n' | "$G" interp --format pose --samples 2 --with velocity,acceleration >"$d/one" 2>"$d/err" ||
+    fail "interp one key: $(cat "$d/err")"
+[ "$(cat "$d/one")" = "5 1 2 3 0 0 0 1 0 0 0 0 0 0 0 0 0 0 0 0
+5 1 2 3 0 0 0 1 0 0 0 0 0 0 0 0 0 0 0 0" ] || fail "interp one key: $(cat "$d/one")"
+# --with: 8 + 6 + 6 numbers a line in pose format; 17 + 16 on affine with velocity
+"$G" interp --format pose --normalize --scheme lihao3 --in "$d/tum" --samples 5 --with velocity,acceleration --frame spatial |
+    awk 'NF != 20 { exit 1 }' || fail "--with velocity,acceleration: not 20 numbers a line"
+printf '0 1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n1 2 0 0 1  0 1 0 0  0 0 1 0  0 0 0 1\n' |
+    "$G" interp --group affine --samples 3 --with velocity | awk 'NF != 33 { exit 1 }' ||
+    fail "--with velocity on affine: not 33 numbers a line"
+expect_error "interp: --with" "--with must be velocity or velocity,acceleration, not 'acc'" \
+    "$G" interp --in "$d/tum" --normalize --format pose --samples 2 --with acc --out "$d/out"
+expect_error "interp: --frame" "--frame must be body or spatial, not 'world'" \
+    "$G" interp --in "$d/tum" --normalize --format pose --samples 2 --with velocity --frame world --out "$d/out"
+expect_error "interp: --frame alone" "--frame applies only with --with" \
+    "$G" interp --in "$d/tum" --normalize --format pose --samples 2 --frame spatial --out "$d/out"
+# ---- timing: --rate, --times, --extrapolate ----
+printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0.6 0.8\n2.5 1 1 0 0 0 1 0\n' >"$d/k3"
+[ "$("$G" interp --format pose --in "$d/k3" --rate 2 | awk '{ printf "%s ", $1 }')" = "0 0.5 1 1.5 2 2.5 " ] ||
+    fail "--rate 2: times"
+[ "$("$G" interp --format pose --in "$d/k3" --rate 3 | awk 'END { print NR, $1 }')" = "8 2.3333333333333335" ] ||
+    fail "--rate 3: 8 samples up to 7/3"
+printf -- '-1\n3\n# a comment\n1\n' >"$d/tt"
+expect_error "interp: --times outside" "--times time -1 is outside the keys' range \\[0, 2.5\\] (see --extrapolate)" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/tt" --out "$d/out"
+"$G" interp --format pose --in "$d/k3" --times "$d/tt" --extrapolate hold --with velocity >"$d/hold" ||
+    fail "--extrapolate hold"
+[ "$(sed -n 1p "$d/hold")" = "-1 0 0 0 0 0 0 1 0 0 0 0 0 0" ] || fail "--extrapolate hold: $(sed -n 1p "$d/hold")"
+[ "$(sed -n 3p "$d/hold")" = "1 1 0 0 0 0 0.59999999999999998 0.80000000000000004 0 0 1.2363936240021496 0.61819681200107479 -0.46364760900080615 0" ] ||
+    fail "--extrapolate hold, at a key: $(sed -n 3p "$d/hold")"
+# extend: the first segment continued to t = -1 is that screw at u = -1
+"$G" interp --format pose --in "$d/k3" --at -1 --extrapolate extend >"$d/ext" || fail "--extrapolate extend"
+[ "$(cut -d' ' -f1-4 "$d/ext")" = "-1 -0.28000000000000003 0.95999999999999996 0" ] ||
+    fail "--extrapolate extend: $(cat "$d/ext")"
+printf '1 2\n' >"$d/tt2"
+expect_error "interp: --times two numbers" "tt2:1: expected 1 number (a time), found 2" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/tt2" --out "$d/out"
+printf '# nothing\n' >"$d/tt0"
+expect_error "interp: --times empty" "tt0: no times" "$G" interp --format pose --in "$d/k3" --times "$d/tt0" --out "$d/out"
+expect_error "interp: --rate 0" "--rate needs a number > 0, not: 0" "$G" interp --in "$d/k3" --rate 0 --out "$d/out"
+expect_error "interp: --rate huge" "--rate 1.0000000000000001e+300 gives more than 1e9 samples" \
+    "$G" interp --format pose --in "$d/k3" --rate 1e300 --out "$d/out"
+expect_error "interp: --extrapolate" "--extrapolate must be error, hold or extend, not 'wrap'" \
+    "$G" interp --format pose --in "$d/k3" --rate 1 --extrapolate wrap --out "$d/out"
 expect_error "interp: too few keys (smooth)" "two: --scheme smooth needs at least 3 keys" \
     "$G" interp --scheme smooth --format pose --samples 3 --in "$d/two" --out "$d/out"
 expect_error "interp: quadratic needs 3" "two: --scheme quadratic needs exactly 3 keys" \
@@ -170,7 +237,7 @@ expect_error "interp: unknown scheme" "--scheme must be" \
     "$G" interp --scheme spline --format pose --samples 3 --in "$d/keys" --out "$d/out"
 expect_error "interp: affine with poses" "affine takes keys as matrices" \
     "$G" interp --group affine --format pose --samples 3 --in "$d/keys" --out "$d/out"
-expect_error "interp: neither --samples nor --at" "either --samples" \
+expect_error "interp: neither --samples nor --at" "give one of --samples N" \
     "$G" interp --format pose --in "$d/keys" --out "$d/out"
 
 # ---- more of the error table ----------------------------------------------

@@ -17,14 +17,23 @@ enum {
     OPT_V0 = 1 << 10,
     OPT_VELOCITIES = 1 << 11,
     OPT_SVG = 1 << 12,
-    OPT_VIEW = 1 << 13
+    OPT_VIEW = 1 << 13,
+    OPT_NORMALIZE = 1 << 14,
+    OPT_WITH = 1 << 15,
+    OPT_FRAME = 1 << 16,
+    OPT_RATE = 1 << 17,
+    OPT_TIMES = 1 << 18,
+    OPT_EXTRAPOLATE = 1 << 19,
+    OPT_VERB = 1 << 20 /* not an option: the command takes an operation word first */
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
-    const char *group, *scheme, *format, *eval;
-    int header;
+    const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
+    const char *verb; /* `versor exp`: the operation word */
+    double rate;
+    int header, normalize;
     long samples;
     double step;
     double v0[6];
@@ -47,5 +56,6 @@ int cmd_demo(const cli_opts *o);
 int cmd_exp(const cli_opts *o);
 int cmd_log(const cli_opts *o);
 int cmd_interp(const cli_opts *o);
+int cmd_versor(const cli_opts *o);
 
 #endif

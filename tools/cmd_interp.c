@@ -9,23 +9,56 @@
 #include "svg.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* A unit quaternion (ROS order qx qy qz qw) and a position to a 4x4 matrix;
- * -1 after a message when q is not unit to 1e-9. */
-static int pose_to_mat4(const tio_items *in, size_t i, const double *v, ga_mat4 *out)
+ * -1 after a message when q is not unit to 1e-9, or with --normalize to
+ * GA_SE3_NORMALIZE_TOL (then q is divided by its norm: ga_quat_normalize). */
+static int pose_to_mat4(const tio_items *in, size_t i, const double *v, int normalize, ga_mat4 *out)
 {
     ga_quat q = {v[6], v[3], v[4], v[5]};
     double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-    if (fabs(norm - 1.0) > 1e-9)
+    if (normalize && ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &q) != GA_OK)
+        return tio_error(in, i,
+                         "not a rigid motion: the quaternion has norm %.17g, farther from 1 "
+                         "than --normalize accepts (1e-3)",
+                         norm);
+    if (!normalize && fabs(norm - 1.0) > 1e-9)
         return tio_error(in, i,
                          "not a rigid motion: the quaternion has norm %.17g, not 1 "
-                         "(to 1e-9)",
+                         "(to 1e-9; --normalize accepts up to 1e-3)",
                          norm);
     *out = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[0], v[1], v[2]}));
     return 0;
+}
+
+/* A key read as a matrix, on a rigid group with --normalize: projected onto
+ * the group (ga_se3_normalize) when within GA_SE3_NORMALIZE_TOL; without it,
+ * a matrix off by more than 1e-9 but within that is refused with a message
+ * naming --normalize. 1 when this handled it (0: ok, -1: error after a
+ * message), 0 to leave the key to cli_check_motion. */
+static int normalize_key(const ga_group *g, int normalize, const tio_items *in, size_t i, ga_mat4 *m, int *rc)
+{
+    ga_mat4 r;
+    if (!g->rigid || ga_se3_normalize(*m, GA_SE3_NORMALIZE_TOL, &r) != GA_OK)
+        return 0; /* cli_check_motion says what is wrong */
+    if (normalize) {
+        *m = r;
+        *rc = 0;
+        return 1;
+    }
+    if (ga_se3_check(*m, 1e-9) == GA_OK)
+        return 0;
+    double off = 0.0;
+    for (int k = 0; k < 16; k++) off = fmax(off, fabs(m->m[k] - r.m[k]));
+    *rc = tio_error(in, i,
+                    "not a rigid motion to 1e-9 (it is %.3g from the nearest one); "
+                    "--normalize accepts up to 1e-3",
+                    off);
+    return 1;
 }
 
 /* The pose (x y z qx qy qz qw) of a rigid 4x4 matrix; the quaternion's sign
@@ -88,6 +121,75 @@ static int read_velocity(const ga_group *g, const double *v, int count, double *
     else
         return -1;
     return g->vee(a, x) == GA_OK ? 0 : -1;
+}
+
+/* An algebra element as written: 6 numbers on a rigid group, else the 16 of
+ * its hat. */
+static void put_algebra(const ga_group *g, const double *x, double *row)
+{
+    if (g->rigid) {
+        memcpy(row, x, 6 * sizeof *row);
+        return;
+    }
+    ga_mat4 h = g->hat(x);
+    memcpy(row, h.m, sizeof h.m);
+}
+
+/* Where a time outside the keys goes (--extrapolate): hold, the end key
+ * (segment SIZE_MAX); extend, the end segment at its u outside [0, 1]. 0 for
+ * a time inside, 1 outside. */
+static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *u)
+{
+    size_t n = p->n;
+    if (t >= p->t[0] && t <= p->t[n - 1])
+        return 0;
+    int after = t > p->t[n - 1];
+    if (extrap == 1 || n == 1) {
+        *seg = SIZE_MAX;
+        *u = after;
+    } else {
+        *seg = after ? n - 2 : 0;
+        *u = (t - p->t[*seg]) / (p->t[*seg + 1] - p->t[*seg]);
+    }
+    return 1;
+}
+
+/* ga_path_sample with --extrapolate hold or extend for times outside. */
+static int sample_extrapolated(const ga_path *p, ga_eval ev, double step, int extrap, size_t ns,
+                               const double *at, void *out)
+{
+    const ga_group *g = p->group;
+    for (size_t k = 0; k < ns; k++) {
+        char *o = (char *)out + k * g->elem_size;
+        size_t seg;
+        double u;
+        int st;
+        if (!outside(p, extrap, at[k], &seg, &u))
+            st = ga_path_sample(p, ev, step, 1, at + k, o);
+        else if (seg == SIZE_MAX) {
+            memcpy(o, p->key + (u > 0 ? p->n - 1 : 0) * p->key_stride, g->elem_size);
+            st = GA_OK;
+        } else
+            st = ga_path_eval_segment(p, seg, u, o);
+        if (st != GA_OK)
+            return st;
+    }
+    return GA_OK;
+}
+
+/* Velocity and acceleration at t, extrapolated as the samples are. */
+static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, double *v, double *a)
+{
+    size_t seg;
+    double u;
+    if (!extrap || !outside(p, extrap, t, &seg, &u))
+        return ga_path_differentiate(p, t, f, v, a);
+    if (seg == SIZE_MAX) {
+        memset(v, 0, p->group->dim * sizeof *v);
+        memset(a, 0, p->group->dim * sizeof *a);
+        return GA_OK;
+    }
+    return ga_path_differentiate_segment(p, seg, u, f, v, a);
 }
 
 /* The picture of the path: the keys, the samples (in the order sampled) and,
@@ -154,8 +256,20 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: --group %s takes keys as matrices (--format mat)\n", g->name);
         return 2;
     }
-    if (!!(o->given & OPT_SAMPLES) == !!(o->given & OPT_AT)) {
-        fprintf(stderr, "garotor interp: give either --samples N or --at t1,t2,...\n");
+    int nwhen = !!(o->given & OPT_SAMPLES) + !!(o->given & OPT_AT) + !!(o->given & OPT_RATE) +
+                !!(o->given & OPT_TIMES);
+    if (nwhen != 1) {
+        fprintf(stderr, "garotor interp: give one of --samples N, --at t1,t2,..., --rate HZ, --times FILE\n");
+        return 2;
+    }
+    int extrap = 0; /* 0 error, 1 hold, 2 extend */
+    if (o->extrapolate && strcmp(o->extrapolate, "hold") == 0)
+        extrap = 1;
+    else if (o->extrapolate && strcmp(o->extrapolate, "extend") == 0)
+        extrap = 2;
+    else if (o->extrapolate && strcmp(o->extrapolate, "error") != 0) {
+        fprintf(stderr, "garotor interp: --extrapolate must be error, hold or extend, not '%s'\n",
+                o->extrapolate);
         return 2;
     }
     if ((o->given & OPT_V0) && scheme != GA_SCHEME_LIHAO2) {
@@ -166,11 +280,35 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: --velocities applies only to --scheme lihao3\n");
         return 2;
     }
+    if (o->normalize && !g->rigid) {
+        fprintf(stderr, "garotor interp: --normalize applies to --group cga or matrix\n");
+        return 2;
+    }
+    int with_v = 0, with_a = 0, spatial = 0;
+    if (o->with && strcmp(o->with, "velocity") == 0)
+        with_v = 1;
+    else if (o->with && strcmp(o->with, "velocity,acceleration") == 0)
+        with_v = with_a = 1;
+    else if (o->with) {
+        fprintf(stderr, "garotor interp: --with must be velocity or velocity,acceleration, not '%s'\n",
+                o->with);
+        return 2;
+    }
+    if (o->frame && strcmp(o->frame, "spatial") == 0)
+        spatial = 1;
+    else if (o->frame && strcmp(o->frame, "body") != 0) {
+        fprintf(stderr, "garotor interp: --frame must be body or spatial, not '%s'\n", o->frame);
+        return 2;
+    }
+    if (o->frame && !with_v) {
+        fprintf(stderr, "garotor interp: --frame applies only with --with velocity[,acceleration]\n");
+        return 2;
+    }
     svg_view view;
     if (svg_options(cmd, o->svg, o->view, &view))
         return 2;
 
-    tio_items in = {0}, vin = {0};
+    tio_items in = {0}, vin = {0}, tin = {0};
     double *times = NULL, *at = NULL, *vel = NULL, *samples = NULL, *res = NULL;
     ga_mat4 *keys = NULL;
     void *work = NULL;
@@ -202,24 +340,66 @@ int cmd_interp(const cli_opts *o)
             tio_error(&in, i, "key times must increase strictly: %.17g after %.17g", times[i], times[i - 1]);
             goto done;
         }
-        if (pose ? pose_to_mat4(&in, i, v + 1, &keys[i]) : 0)
+        if (pose ? pose_to_mat4(&in, i, v + 1, o->normalize, &keys[i]) : 0)
             goto done;
         if (!pose) {
+            int krc;
             memcpy(keys[i].m, v + 1, sizeof keys[i].m);
-            if (cli_check_motion(g, keys[i], &in, i))
+            if (normalize_key(g, o->normalize, &in, i, &keys[i], &krc) ? krc
+                                                                       : cli_check_motion(g, keys[i], &in, i))
                 goto done;
         }
     }
     size_t min = ga_scheme_min_keys(scheme);
-    if (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
+    if (n != 1 && (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
         fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %zu keys, found %zu\n", in.name,
                 ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
         goto done;
     }
-    for (size_t k = 0; k < nat; k++)
+    if (o->times) { /* --times FILE: one time a line */
+        if (tio_read(o->times, 0, &tin))
+            goto done;
+        nat = tin.n;
+        at = malloc((nat ? nat : 1) * sizeof *at);
+        if (!at)
+            goto oom;
+        for (size_t k = 0; k < nat; k++) {
+            if (tin.item[k].count != 1) {
+                tio_error(&tin, k, "expected 1 number (a time), found %d", tin.item[k].count);
+                goto done;
+            }
+            at[k] = tin.value[tin.item[k].first];
+        }
+        if (nat == 0) {
+            fprintf(stderr, "garotor interp: %s: no times\n", tin.name);
+            goto done;
+        }
+    }
+    if (o->given & OPT_RATE) { /* t0 + k/HZ, each from k, while <= t_last */
+        double span = (times[n - 1] - times[0]) * o->rate;
+        if (!(span < 1e9)) {
+            fprintf(stderr, "garotor interp: --rate %.17g gives more than 1e9 samples\n", o->rate);
+            goto done;
+        }
+        nat = (size_t)floor(span) + 2;
+        at = malloc(nat * sizeof *at);
+        if (!at)
+            goto oom;
+        size_t k = 0;
+        for (; k < nat; k++) {
+            double t = times[0] + (double)k / o->rate;
+            if (!(t <= times[n - 1]))
+                break;
+            at[k] = t;
+        }
+        nat = k;
+    }
+    for (size_t k = 0; k < nat && !extrap; k++)
         if (!(at[k] >= times[0] && at[k] <= times[n - 1])) {
-            fprintf(stderr, "garotor interp: --at time %.17g is outside the keys' range [%.17g, %.17g]\n",
-                    at[k], times[0], times[n - 1]);
+            fprintf(stderr,
+                    "garotor interp: %s time %.17g is outside the keys' range [%.17g, %.17g] (see "
+                    "--extrapolate)\n",
+                    o->times ? "--times" : "--at", at[k], times[0], times[n - 1]);
             goto done;
         }
 
@@ -272,12 +452,15 @@ int cmd_interp(const cli_opts *o)
     size_t ns = nat ? nat : (size_t)o->samples;
     double step = ev == GA_EVAL_EULER ? o->step : 1.0;
     samples = malloc(ns * g->elem_size);
-    int width = pose ? 8 : 17;
+    /* an algebra element as the tool writes it: a twist (6) on a rigid group,
+       else its hat, a 4x4 with zero last row (16) */
+    int dw = g->rigid ? 6 : 16, pw = pose ? 8 : 17, width = pw + (with_v + with_a) * dw;
     res = malloc(ns * (size_t)width * sizeof *res);
     if (!samples || !res)
         goto oom;
-    st = nat ? ga_path_sample(&path, ev, step, ns, at, samples)
-             : ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples);
+    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples)
+       : !extrap ? ga_path_sample(&path, ev, step, ns, at, samples)
+                 : sample_extrapolated(&path, ev, step, extrap, ns, at, samples);
     if (st != GA_OK) {
         fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", in.name, ga_status_string(st));
         goto done;
@@ -296,6 +479,18 @@ int cmd_interp(const cli_opts *o)
         }
         if (!pose)
             memcpy(row + 1, m.m, sizeof m.m);
+        if (with_v) {
+            double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
+            st = differentiate(&path, extrap, row[0], spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY, dv, da);
+            if (st != GA_OK) {
+                fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", in.name, k + 1,
+                        ga_status_string(st));
+                goto done;
+            }
+            put_algebra(g, dv, row + pw);
+            if (with_a)
+                put_algebra(g, da, row + pw + dw);
+        }
     }
     /* open the samples' output, draw the picture, then write the samples:
      * if they cannot be written, the picture is removed again */
@@ -324,5 +519,6 @@ done:
     free(work);
     tio_free(&in);
     tio_free(&vin);
+    tio_free(&tin);
     return rc;
 }

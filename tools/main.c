@@ -43,10 +43,13 @@ static const command commands[] = {
      "  --in FILE, --out FILE, --header   as for exp\n"},
     {"interp", cmd_interp,
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
-         OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW,
-     "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,...) [OPTIONS]\n"
+         OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
+         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE,
+     "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
+     "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
-     "write samples of the path through them in the same format.\n"
+     "write samples of the path through them in the same format. One key is the\n"
+     "constant path.\n"
      "  --scheme screw      piecewise screw-linear (default)\n"
      "  --scheme bivector   piecewise-linear in the generators l(R_i)\n"
      "  --scheme quadratic  exactly 3 keys: quadratic in the generators\n"
@@ -57,15 +60,40 @@ static const command commands[] = {
      "                      velocity (6 numbers, per unit t) per key\n"
      "  --samples N         N >= 2 samples from the first key's t to the last's\n"
      "  --at T1,T2,...      samples at these times instead\n"
+     "  --rate HZ           samples at t0 + k/HZ, k = 0, 1, ... up to the last key\n"
+     "  --times FILE        samples at the times in FILE, one a line\n"
+     "  --extrapolate error|hold|extend   a sample time outside the keys: an error\n"
+     "                      (default), the end key with zero velocity, or the end\n"
+     "                      segment's formula continued\n"
      "  --format mat|pose   a pose is 16 numbers (4x4, default) or x y z qx qy qz qw\n"
      "  --group cga|matrix|affine   rotors (default), SE(3) matrices, or general\n"
      "                      homogeneous matrices (keys in --format mat)\n"
      "  --eval direct|exact|euler   closed form (default), exact incremental\n"
      "                      stepping, or Li-Hao's generalized Euler (needs --step H)\n"
      "  --step H            the Euler step, in units of u (segment fraction)\n"
+     "  --normalize         accept key rotations up to 1e-3 off (quaternion norm,\n"
+     "                      max |R^T R - I|) and project them onto the group\n"
+     "  --with velocity[,acceleration]   append to each sample its velocity (w v,\n"
+     "                      per unit t), then its acceleration (per unit t^2)\n"
+     "  --frame body|spatial   those in the body frame (default) or the world frame\n"
      "  --svg FILE          also draw the path: the trajectory of the origin, frames\n"
      "                      at the keys and along it, the screw axis if it is one\n"
      "  --view V            the picture's view: iso (default), xy, xz or yz\n"
+     "  --in FILE, --out FILE, --header   as for exp\n"},
+    {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER,
+     "usage: garotor versor exp|log|apply [--in FILE] [--out FILE] [--header]\n"
+     "The general algebra of G(4,1), one item a line (docs/versors.md).\n"
+     "  exp      a bivector, 10 numbers: the coefficients of\n"
+     "           e12 e13 e14 e15 e23 e24 e25 e34 e35 e45; writes exp(B), 32 numbers\n"
+     "           in canonical order (1; e1..e5; e12..e45; e123..e345; e1234..e2345;\n"
+     "           e12345). exp(a e45) is the dilation by e^(-2a) about the origin\n"
+     "  log      a rotor (an even versor with R ~R = 1), 32 numbers; writes its\n"
+     "           principal log, 10 numbers, with exp(log R) = R: log(exp(B)) = B\n"
+     "           whenever every rotation part of B has half-angle below pi/2.\n"
+     "           An error where R has no real logarithm (not a rotor to 1e-9)\n"
+     "  apply    a versor V (32 numbers) then a point x (3 numbers); writes the\n"
+     "           point whose embedding is V F(x) V^-1 (with the grade involution\n"
+     "           of F(x) for odd V); an error where it goes to infinity\n"
      "  --in FILE, --out FILE, --header   as for exp\n"},
 };
 
@@ -77,6 +105,7 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  exp      twists to rigid motions (4x4 matrices)\n"
                             "  log      rigid motions to their principal twists\n"
                             "  interp   sample a path through key poses\n"
+                            "  versor   exp, log and action of general rotors and versors\n"
                             "\n"
                             "garotor COMMAND --help shows a command's options.\n";
 
@@ -85,11 +114,26 @@ static const struct {
     unsigned bit;
     int takes_value;
 } option_table[] = {
-    {"--in", OPT_IN, 1},       {"--out", OPT_OUT, 1},       {"--header", OPT_HEADER, 0},
-    {"--group", OPT_GROUP, 1}, {"--scheme", OPT_SCHEME, 1}, {"--samples", OPT_SAMPLES, 1},
-    {"--at", OPT_AT, 1},       {"--format", OPT_FORMAT, 1}, {"--eval", OPT_EVAL, 1},
-    {"--step", OPT_STEP, 1},   {"--v0", OPT_V0, 6},         {"--velocities", OPT_VELOCITIES, 1},
-    {"--svg", OPT_SVG, 1},     {"--view", OPT_VIEW, 1},
+    {"--in", OPT_IN, 1},
+    {"--out", OPT_OUT, 1},
+    {"--header", OPT_HEADER, 0},
+    {"--group", OPT_GROUP, 1},
+    {"--scheme", OPT_SCHEME, 1},
+    {"--samples", OPT_SAMPLES, 1},
+    {"--at", OPT_AT, 1},
+    {"--format", OPT_FORMAT, 1},
+    {"--eval", OPT_EVAL, 1},
+    {"--step", OPT_STEP, 1},
+    {"--v0", OPT_V0, 6},
+    {"--velocities", OPT_VELOCITIES, 1},
+    {"--svg", OPT_SVG, 1},
+    {"--view", OPT_VIEW, 1},
+    {"--normalize", OPT_NORMALIZE, 0},
+    {"--with", OPT_WITH, 1},
+    {"--frame", OPT_FRAME, 1},
+    {"--rate", OPT_RATE, 1},
+    {"--times", OPT_TIMES, 1},
+    {"--extrapolate", OPT_EXTRAPOLATE, 1},
 };
 
 static int usage_error(const char *cmd, const char *what, const char *arg)
@@ -134,6 +178,15 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
         case OPT_VELOCITIES: o->velocities = v; break;
         case OPT_SVG: o->svg = v; break;
         case OPT_VIEW: o->view = v; break;
+        case OPT_NORMALIZE: o->normalize = 1; break;
+        case OPT_WITH: o->with = v; break;
+        case OPT_FRAME: o->frame = v; break;
+        case OPT_TIMES: o->times = v; break;
+        case OPT_EXTRAPOLATE: o->extrapolate = v; break;
+        case OPT_RATE:
+            if (parse_double(v, &o->rate) || !(o->rate > 0.0))
+                return usage_error(c->name, "--rate needs a number > 0, not", v);
+            break;
         case OPT_SAMPLES: {
             char *end;
             errno = 0;
@@ -182,6 +235,8 @@ int main(int argc, char **argv)
         }
     cli_opts o;
     memset(&o, 0, sizeof o);
+    if ((c->accepts & OPT_VERB) && first < argc && argv[first][0] != '-')
+        o.verb = argv[first++];
     int st = parse_options(c, argc - first, argv + first, &o);
     return st ? st : c->run(&o);
 }

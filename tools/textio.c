@@ -61,6 +61,10 @@ int tio_read(const char *path, int skip_header, tio_items *out)
         if (lineno == 1 && skip_header)
             continue;
         char *s = buf;
+        /* a UTF-8 byte-order mark (spreadsheets and Windows editors write
+           one) is no character of the data */
+        if (lineno == 1 && strncmp(s, "\xEF\xBB\xBF", 3) == 0)
+            s += 3;
         while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n') s++;
         if (*s == '\0' || *s == '#')
             continue;

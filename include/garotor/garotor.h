@@ -9,6 +9,9 @@
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
  *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
  *                matrices, quaternions and dual quaternions
+ *   versor.h     the general algebra: versors (reflections, inversions, dilations,
+ *                transversions) and their sandwich, exp, log and split of any
+ *                bivector and rotor of G(4,1)
  *   mat4.h       4x4 matrices: SE(3) exp and log (Eberly), general expm and logm
  *   group.h      the Lie-group interface the schemes are written against
  *   path.h       interpolation schemes through key poses, and their evaluators
@@ -21,6 +24,7 @@
 #include "mv.h"
 #include "conformal.h"
 #include "rotor.h"
+#include "versor.h"
 #include "mat4.h"
 #include "group.h"
 #include "path.h"

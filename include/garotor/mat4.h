@@ -29,6 +29,10 @@ extern "C" {
 /** The rigidity tolerance of docs/conventions.md: ga_se3_log and ga_se3_geodesic accept
  *  a matrix m when ga_se3_check(m, GA_SE3_TOL) is GA_OK. */
 #define GA_SE3_TOL 1e-9
+/** The normalisation tolerance (docs/conventions.md, "Keys near the group"):
+ *  ga_se3_normalize and ga_quat_normalize accept an input this far from the
+ *  group and project it onto it; `garotor interp --normalize` uses it. */
+#define GA_SE3_NORMALIZE_TOL 1e-3
 
 /* ---- plain 4x4 algebra ------------------------------------------------- */
 
@@ -66,6 +70,16 @@ ga_twist ga_twist_vee(ga_mat4 a);
  *  holds NaN or Inf; GA_ERR_NOTRIGID unless max |R^T R - I|_ij <= tol, det R > 0
  *  and the last row is 0 0 0 1 to within tol (entrywise); else GA_OK. */
 int ga_se3_check(ga_mat4 m, double tol);
+
+/** The rigid motion nearest m: when ga_se3_check(m, tol) is GA_OK (rotation
+ *  block with max |R^T R - I| <= tol and det R > 0, last row 0 0 0 1 to tol),
+ *  out is m with its 3x3 block replaced by the nearest rotation (the
+ *  orthogonal polar factor, Higham's Newton iteration R <- (R + R^-T)/2,
+ *  quadratically convergent from such a start) and its last row set to
+ *  0 0 0 1; the translation is kept. Otherwise the status of the check
+ *  (GA_ERR_NOTRIGID, GA_ERR_NOTFINITE); tol > GA_SE3_NORMALIZE_TOL is
+ *  GA_ERR_ARG. A matrix rigid to rounding comes back within 2 ulp. */
+int ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out);
 
 /** The inverse of a rigid motion, [R^T, -R^T t; 0 1] (Eberly eq. 18). m is
  *  assumed rigid; its last row is ignored. */

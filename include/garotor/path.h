@@ -105,14 +105,31 @@
  * schemes: exp(X(t))^-1 d/dt exp(X(t)) = J_r(X) X', the right Jacobian
  * (group.h dexp: the closed form of SE(3) on cga/se3, a series on affine).
  *
+ * Acceleration (ga_path_acceleration, ga_path_differentiate): the derivative
+ * of the body velocity, analytic. Li-Hao forms: with w_1 = p_1' X_1,
+ * a_1 = p_1'' X_1 and F = F_{j+1}, X = X_{j+1},
+ *   w_{j+1} = Ad_{F^-1} w_j + p' X,
+ *   a_{j+1} = Ad_{F^-1} a_j + [Ad_{F^-1} w_j, p' X] + p'' X,
+ * the product rule above differentiated once more, with d/du Ad_{F^-1} w =
+ * Ad_{F^-1} w' + [Ad_{F^-1} w, p' X] ([x, y] = vee(x^ y^ - y^ x^)); it is the
+ * recursion of Sommer et al. 2020 for cumulative B-splines. Generator
+ * schemes: G = exp(X(t)) through the 4x4 jet exp(X^ + e X'^ + e^2 X''^/2) =
+ * G + e G' + e^2 G''/2 (scaling, Taylor series, squaring), then
+ * a = vee(G^-1 G'' - (G^-1 G')^2). Spatial: Ad_A of both (d/dt Ad_A v_b =
+ * Ad_A (a_b + [v_b, v_b])). On a segment the formula is smooth; at a key the
+ * one-sided values of the two segments differ by the scheme's jump.
+ *
+ * One key (n = 1, any scheme): the constant path A(t_0) = A_0, defined at
+ * t_0 only (ga_path_eval_segment has no segment to offer), velocity and
+ * acceleration zero.
+ *
  * Memory: nothing is allocated. ga_path_init copies the times and keys into a
  * caller's workspace of ga_path_workspace_size() bytes (aligned for double),
  * which must outlive the path. Functions returning int give GA_OK or a GA_E*
- * code (types.h): GA_ERR_ARG for too few keys, times not strictly increasing, a
- * bad count, a t outside [t_0, t_{n-1}], a small or misaligned workspace;
- * GA_ERR_NOTFINITE for NaN/Inf input; a failing log (GA_ERR_DOMAIN for an affine key
- * with no real principal log) is passed on; GA_ERR_DOMAIN when finite input
- * overflows (a coefficient, sample or velocity would be Inf or NaN: keys near
+ * code (types.h): GA_ERR_ARG for no key or too few (one key is always enough), times not strictly increasing,
+ * a bad count, a t outside [t_0, t_{n-1}], a small or misaligned workspace; GA_ERR_NOTFINITE for NaN/Inf
+ * input; a failing log (GA_ERR_DOMAIN for an affine key with no real principal log) is passed on;
+ * GA_ERR_DOMAIN when finite input overflows (a coefficient, sample or velocity would be Inf or NaN: keys near
  * DBL_MAX, a segment of subnormal length, spacings whose ratio overflows).
  * GA_OK always comes with finite output. On an error a velocity is left
  * untouched; a sampler may have written the samples before the failing one.
@@ -138,6 +155,12 @@ typedef enum {
 } ga_scheme;
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
+
+/** The frame of a velocity or acceleration: BODY, the twist of M^-1 dM/dt
+ *  (and its derivative); SPATIAL, the twist of dM/dt M^-1 = Ad_M of the body
+ *  one (and its derivative, which is Ad_M of the body acceleration, as
+ *  [v_b, v_b] = 0). */
+typedef enum { GA_FRAME_BODY, GA_FRAME_SPATIAL } ga_frame;
 
 /** Samples between fresh direct evaluations in exact stepping. Between
  *  anchors the rounding of the nested differences grows like K, K^2, K^3 for
@@ -173,8 +196,8 @@ int ga_scheme_by_name(const char *name, ga_scheme *out);
 const char *ga_eval_name(ga_eval e);
 /** The evaluator called name; GA_ERR_ARG if there is none. */
 int ga_eval_by_name(const char *name, ga_eval *out);
-/** Fewest keys the scheme takes (2, or 3 for QUADRATIC and SMOOTH). QUADRATIC
- *  takes exactly 3. */
+/** Fewest keys the scheme takes beyond the constant path of one key (2, or 3
+ *  for QUADRATIC and SMOOTH). QUADRATIC takes exactly 3 (or 1). */
 size_t ga_scheme_min_keys(ga_scheme s);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1). */
@@ -210,6 +233,20 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out);
 int ga_path_velocity(const ga_path *p, double t, double *v);
 /** The body velocity per unit t on segment seg at u. */
 int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v);
+
+/** The body acceleration d/dt (A(t)^-1 dA/dt) at t (g->dim doubles, per unit
+ *  t^2), analytic: Li-Hao forms by the product rule differentiated once more
+ *  (see "Acceleration" above), generator schemes through the 4x4 jet
+ *  exp(X + e X' + e^2 X''/2). At a key time the segment starting there. */
+int ga_path_acceleration(const ga_path *p, double t, double *a);
+/** The body acceleration per unit t^2 on segment seg at u. */
+int ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a);
+/** Velocity (per unit t) and acceleration (per unit t^2) at t in frame f;
+ *  either output may be NULL. The constant path of one key: zeros. */
+int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, double *a);
+/** The same on segment seg at any finite u (outside [0, 1]: the segment's
+ *  formula continued, as ga_path_eval_segment). */
+int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a);
 
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 9

@@ -72,6 +72,11 @@ typedef struct {
     double w, x, y, z;
 } ga_quat;
 
+/** q / |q| when ||q| - 1| <= tol (GA_ERR_NOTRIGID when farther, GA_ERR_NOTFINITE
+ *  for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL (mat4.h)). The rule
+ *  of docs/conventions.md, "Keys near the group". */
+int ga_quat_normalize(ga_quat q, double tol, ga_quat *out);
+
 /** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
  *  by t", real = r and dual = t r / 2, with t the pure quaternion (0, t). */
 typedef struct {

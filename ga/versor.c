@@ -1,0 +1,359 @@
+/* ga/versor.c: versors of G(4,1), and exp, log and split of any bivector and
+ * rotor in closed form. docs/versors.md derives every formula here.
+ *
+ * Notation. B = B1 + B2 with commuting 2-blades, B1^2 = l1, B2^2 = l2
+ * (Dorst-Valkenburg 2011 §3). With s = <B^2>_0 and q = <B^2>_4 = 2 B1 B2:
+ * l1 + l2 = s and l1 l2 = q.q/4 (q.q = <q q>_0, a scalar since q is a
+ * 4-vector of a 5-dimensional space). The entire functions of one real t
+ *   C(t) = cosh(sqrt t) = sum t^k/(2k)!         (cos sqrt(-t) for t < 0)
+ *   S(t) = sinh(sqrt t)/sqrt t = sum t^k/(2k+1)!
+ *   K(t) = (C - 1)/t,  T(t) = (S - 1)/t,  E(t) = (C - S)/t
+ * give exp(Bi) = C(li) + S(li) Bi, whatever the sign of li (l = 0: 1 + Bi).
+ */
+#include <garotor/versor.h>
+
+#include <garotor/conformal.h>
+#include <garotor/rotor.h>
+#include <math.h>
+
+/* ---- the functions of t ------------------------------------------------------ */
+
+/* sum_{j>=0} t^j / (d0 + 2j)! for |t| <= 1: C is d0 = 0, S d0 = 1,
+   K d0 = 2, T d0 = 3. The terms fall by 1/((d0+2j+1)(d0+2j+2)) each, so
+   18 terms leave less than 1/36! < 1e-41 of the first. */
+static double series(double t, int d0)
+{
+    double term = 1.0, sum = 0.0;
+    for (int k = 2; k <= d0; k++) term /= k;
+    for (int j = 0; j < 18; j++) {
+        sum += term;
+        term *= t / ((d0 + 2 * j + 1) * (double)(d0 + 2 * j + 2));
+    }
+    return sum;
+}
+
+typedef struct {
+    double c, s, k, t, e; /* C, S, K, T, E at one t */
+} fns;
+
+static fns fns_at(double t)
+{
+    fns f;
+    if (fabs(t) <= 1.0) {
+        f.c = series(t, 0);
+        f.s = series(t, 1);
+        /* K = sum_{k>=1} t^(k-1)/(2k)!, T = sum_{k>=1} t^(k-1)/(2k+1)! */
+        f.k = series(t, 2);
+        f.t = series(t, 3);
+        f.e = f.k - f.t; /* (C - 1 - (S - 1))/t */
+        return f;
+    }
+    double r = sqrt(fabs(t));
+    f.c = t > 0 ? cosh(r) : cos(r);
+    f.s = (t > 0 ? sinh(r) : sin(r)) / r;
+    f.k = (f.c - 1.0) / t;
+    f.t = (f.s - 1.0) / t;
+    f.e = (f.c - f.s) / t;
+    return f;
+}
+
+/* ---- small helpers ---------------------------------------------------------- */
+
+static ga_mv lin(double a, ga_mv x, double b, ga_mv y)
+{
+    ga_mv r;
+    for (int i = 0; i < 32; i++) r.c[i] = a * x.c[i] + b * y.c[i];
+    return r;
+}
+
+static int finite_mv(ga_mv a) { return ga_mv_isfinite(a); }
+
+/* s = <B^2>_0, q = <B^2>_4, qq = <q q>_0, Bq = <B q>_2 */
+typedef struct {
+    ga_mv b, q, bq;
+    double s, qq;
+} bsquare;
+
+static bsquare square_of(ga_mv B)
+{
+    bsquare r;
+    r.b = ga_mv_grade(B, 2);
+    ga_mv b2 = ga_mv_gp(r.b, r.b);
+    r.s = b2.c[0];
+    r.q = ga_mv_grade(b2, 4);
+    r.qq = ga_mv_sp(r.q, r.q);
+    r.bq = ga_mv_grade(ga_mv_gp(r.b, r.q), 2);
+    return r;
+}
+
+/* l1, l2: the roots of l^2 - s l + qq/4, |l1| >= |l2|, without cancellation;
+   d = s^2 - qq clamped at 0 (it is >= 0 for every bivector of G(4,1):
+   docs/versors.md). */
+static void roots(double s, double qq, double *l1, double *l2)
+{
+    double d = fmax(s * s - qq, 0.0);
+    double big = 0.5 * (s + copysign(sqrt(d), s));
+    *l1 = big;
+    *l2 = big != 0.0 ? 0.25 * qq / big : 0.0;
+}
+
+/* ---- exp --------------------------------------------------------------------- */
+
+/* exp(B) = exp(B1) exp(B2) = (C1 + S1 B1)(C2 + S2 B2), and with
+   B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2), B1 B2 = q/2:
+     exp(B) = alpha + beta B + gamma q + delta Bq,
+     alpha = C1 C2, gamma = S1 S2 / 2,
+     beta  = (l1 S1 C2 - l2 S2 C1) / (l1 - l2),
+     delta = (l1 E1 S2 - l2 E2 S1) / (2 (l1 - l2))         ("l form").
+   With x = sqrt l1, y = sqrt l2 and a = (x+y)^2, b = (x-y)^2 = s +- sqrt(qq)
+   (real when qq >= 0) the same coefficients are, by the product-to-sum
+   formulas,
+     alpha = (C(a) + C(b))/2, beta = (S(a) + S(b))/2,
+     gamma = (a K(a) - b K(b))/(a - b), delta = (a T(a) - b T(b))/(a - b)
+   ("ab form"). The l form divides by l1 - l2 = sqrt(s^2 - qq), the ab form by
+   a - b = 2 sqrt(qq); s^2 = (l1 - l2)^2 + qq, so one of them is at least
+   |s|/sqrt 2: we take that one. Every numerator is a difference of terms
+   proportional to l (or a, b), so it is relatively exact to a few ulps, and
+   the quotient is too. qq < 0 (an elliptic and a hyperbolic part) always
+   takes the l form: then l1 - l2 >= max(|s|, sqrt(-qq)). */
+typedef struct {
+    double alpha, beta, gamma, delta;
+} coeffs;
+
+static coeffs exp_coeffs(double s, double qq)
+{
+    coeffs k;
+    double d = fmax(s * s - qq, 0.0);
+    if (s == 0.0 && qq == 0.0) { /* B^2 = 0: exp(B) = 1 + B */
+        k.alpha = 1.0, k.beta = 1.0, k.gamma = 0.5, k.delta = 1.0 / 6.0;
+        return k;
+    }
+    if (qq < 0.0 || d >= qq) {
+        double l1, l2;
+        roots(s, qq, &l1, &l2);
+        fns f1 = fns_at(l1), f2 = fns_at(l2);
+        double dl = l1 - l2;
+        k.alpha = f1.c * f2.c;
+        k.gamma = 0.5 * f1.s * f2.s;
+        k.beta = (l1 * f1.s * f2.c - l2 * f2.s * f1.c) / dl;
+        k.delta = (l1 * f1.e * f2.s - l2 * f2.e * f1.s) / (2.0 * dl);
+    } else {
+        double r = sqrt(qq), a = s + r, b = s - r;
+        fns fa = fns_at(a), fb = fns_at(b);
+        k.alpha = 0.5 * (fa.c + fb.c);
+        k.beta = 0.5 * (fa.s + fb.s);
+        k.gamma = (a * fa.k - b * fb.k) / (2.0 * r);
+        k.delta = (a * fa.t - b * fb.t) / (2.0 * r);
+    }
+    return k;
+}
+
+ga_mv ga_mv_exp(ga_mv B)
+{
+    bsquare sq = square_of(B);
+    coeffs k = exp_coeffs(sq.s, sq.qq);
+    ga_mv r = lin(k.beta, sq.b, k.delta, sq.bq);
+    r = lin(1.0, r, k.gamma, sq.q);
+    r.c[0] += k.alpha;
+    return r;
+}
+
+/* ---- log --------------------------------------------------------------------- */
+
+/* R = R1 R2, Ri = ci + Pi, Pi = S(li) Bi, mi = Pi^2 = ci^2 - 1. With
+   R0 = <R>_0, R2 = <R>_2, R4 = <R>_4 and W = <R2 R4>_2:
+     R0 = c1 c2,  R2 = c2 P1 + c1 P2,  R4 = P1 P2,  W = c1 m2 P1 + c2 m1 P2,
+     <R4 R4>_0 = m1 m2,  <R2 R2>_0 - 2 <R4 R4>_0 = m1 + m2,
+   so m1, m2 are the roots of a quadratic (Dorst-Valkenburg 2011 §4 reach the
+   same split through the polar decomposition), and solving the two linear
+   equations for P1, P2 and adding Bi = Pi / S(li) gives
+     B = kR R2 + kW W,
+     kR = (c2 S1 l1 - c1 S2 l2)/(m1 - m2),  kW = (l2 E2/S2 - l1 E1/S1)/(m1 - m2)
+   ("m form", with c/S = 1 + l E/S). Near m1 = m2 (two rotations by nearly
+   equal angles t1, t2, R0 > 0) the ab form of the same coefficients, with
+   u = t1 + t2, v = t2 - t1, a = -u^2, b = -v^2:
+     kR = (1/S(a) + 1/S(b))/2,
+     kW = (a T(a) - b T(b)) / ((b K(b) - a K(a)) S(a) S(b)),
+   where cos u = R0 - sqrt(m1 m2), sin^2 u = -<R2 R2>_0 + 2 sqrt(m1 m2) R0, and
+   v likewise with the signs of sqrt(m1 m2) turned. */
+
+/* An elliptic unit 2-blade that commutes with the 2-blade P (any, for P = 0):
+   a 2-blade inside the complement P* = P I^-1 of P's plane; e_k _| P* for the
+   basis vector that gives the most negative square (docs/versors.md). */
+static ga_mv commuting_plane(ga_mv P)
+{
+    if (ga_mv_maxabs(P) == 0.0)
+        return ga_mv_blade(GA_BLADE_E12);
+    ga_mv K = ga_mv_dual(P), best = ga_mv_zero();
+    double bestsq = 0.0;
+    for (int k = 1; k <= 5; k++) {
+        ga_mv E = ga_mv_lc(ga_mv_blade(k), K);
+        double e2 = ga_mv_gp(E, E).c[0];
+        if (e2 < bestsq)
+            bestsq = e2, best = E;
+    }
+    return bestsq < 0.0 ? ga_mv_scale(best, 1.0 / sqrt(-bestsq)) : ga_mv_zero();
+}
+
+/* the angle data of one factor from m = c^2 - 1 and the sign of c */
+static double factor_l(double m, double c)
+{
+    if (m > 0.0) { /* hyperbolic: c = cosh t > 1 */
+        double t = asinh(sqrt(m));
+        return t * t;
+    }
+    double th = atan2(sqrt(-m), c);
+    return -th * th;
+}
+
+int ga_mv_log(ga_mv R, ga_mv *out)
+{
+    if (!finite_mv(R))
+        return GA_ERR_NOTFINITE;
+    double scale = ga_mv_maxabs(R), tol = 1e-9;
+    for (int g = 1; g <= 5; g += 2)
+        if (ga_mv_maxabs(ga_mv_grade(R, g)) > tol * scale)
+            return GA_ERR_DOMAIN;
+    ga_mv rr = ga_mv_gp(R, ga_mv_reverse(R));
+    rr.c[0] -= 1.0;
+    if (!(ga_mv_maxabs(rr) <= tol * fmax(1.0, scale * scale)))
+        return GA_ERR_DOMAIN;
+
+    double r0 = R.c[0];
+    ga_mv R2 = ga_mv_grade(R, 2), R4 = ga_mv_grade(R, 4);
+    ga_mv W = ga_mv_grade(ga_mv_gp(R2, R4), 2);
+    double p44 = ga_mv_sp(R4, R4), p22 = ga_mv_sp(R2, R2);
+    double sig = p22 - 2.0 * p44, prod = p44;
+    double disc = fmax(sig * sig - 4.0 * prod, 0.0);
+    ga_mv B;
+    if (r0 > 0.0 && fabs(sig) <= 1e-7 && fabs(prod) <= 1e-14) {
+        /* both parts near null (a translation or transversion with at most a
+           tiny rotation or boost): m1, m2 are then mostly rounding of
+           <R2 R2>_0, but kR and kW are symmetric in them, so analytic in
+           sig = m1 + m2 and prod = m1 m2; to first order (the next terms are
+           O(sig^2, prod) <= 1e-14) kR = 1 - sig/6, kW = -1/3 + 2 sig/15 */
+        B = lin(1.0 - sig / 6.0, R2, -1.0 / 3.0 + 2.0 * sig / 15.0, W);
+    } else if (prod > 0.0 && sig < 0.0 && r0 > 0.0 && sqrt(disc) < sqrt(prod)) {
+        /* ab form: two rotations by nearly equal angles */
+        double sp = sqrt(prod), A = -p22;
+        double u = atan2(sqrt(fmax(A + 2.0 * sp * r0, 0.0)), r0 - sp);
+        double v = atan2(sqrt(fmax(A - 2.0 * sp * r0, 0.0)), r0 + sp);
+        double a = -u * u, b = -v * v;
+        fns fa = fns_at(a), fb = fns_at(b);
+        double kr = 0.5 * (1.0 / fa.s + 1.0 / fb.s);
+        double kw = (a * fa.t - b * fb.t) / ((b * fb.k - a * fa.k) * fa.s * fb.s);
+        B = lin(kr, R2, kw, W);
+    } else {
+        double m1 = 0.5 * (sig + copysign(sqrt(disc), sig));
+        double m2 = m1 != 0.0 ? prod / m1 : 0.0;
+        if (sig * sig - 4.0 * prod < 0.0)
+            m2 = m1 = 0.5 * sig; /* rounding: a double root */
+        if (m1 < -1.0 - tol || m2 < -1.0 - tol)
+            return GA_ERR_DOMAIN;
+        double c1 = sqrt(fmax(1.0 + m1, 0.0)), c2 = sqrt(fmax(1.0 + m2, 0.0));
+        /* the factor with the smaller |c| is the one near a half turn, where
+           sqrt(1 + m) cancels: take it from R0 = c1 c2 instead */
+        int small = c1 <= c2 ? 1 : 2;
+        if (small == 1 && c2 > 0.0)
+            c1 = fabs(r0) / c2;
+        else if (small == 2 && c1 > 0.0)
+            c2 = fabs(r0) / c1;
+        int flip = 0; /* which factor takes the sign of R0 < 0 */
+        if (r0 < 0.0) {
+            flip = small;
+            if (flip == 1)
+                c1 = -c1;
+            else
+                c2 = -c2;
+        }
+        double mf = flip == 1 ? m1 : m2;
+        if (flip && mf == 0.0) {
+            /* that factor is -1 exactly: R = -(c + P) with P the other
+               factor's 2-blade; B = log(c + P) + pi E, E commuting with P */
+            ga_mv L, P = ga_mv_scale(R2, -1.0);
+            double mo = flip == 1 ? m2 : m1, co = fabs(flip == 1 ? c2 : c1);
+            double lo = factor_l(mo, co);
+            fns f = fns_at(lo);
+            L = mo == 0.0 ? P : ga_mv_scale(P, 1.0 / f.s);
+            ga_mv E = commuting_plane(P);
+            B = lin(1.0, L, 3.14159265358979323846, E);
+        } else if (m1 == m2) { /* both 0: R = 1 + N, N^2 = 0 (c1 = c2 = 1) */
+            B = lin(1.0, R2, -1.0 / 3.0, W);
+        } else {
+            double l1 = factor_l(m1, c1), l2 = factor_l(m2, c2);
+            fns f1 = fns_at(l1), f2 = fns_at(l2);
+            double dm = m1 - m2;
+            double kr = (c2 * f1.s * l1 - c1 * f2.s * l2) / dm;
+            double kw = (l2 * f2.e / f2.s - l1 * f1.e / f1.s) / dm;
+            B = lin(kr, R2, kw, W);
+        }
+    }
+    if (!finite_mv(B))
+        return GA_ERR_DOMAIN;
+    /* no real log (or not a versor): exp(log R) is not R */
+    if (!(ga_mv_maxabs(ga_mv_sub(ga_mv_exp(B), R)) <= tol * scale))
+        return GA_ERR_DOMAIN;
+    *out = B;
+    return GA_OK;
+}
+
+/* ---- versors ----------------------------------------------------------------- */
+
+int ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
+{
+    if (!finite_mv(V) || !finite_mv(X))
+        return GA_ERR_NOTFINITE;
+    double ev = 0.0, od = 0.0;
+    for (int i = 0; i < 32; i++) {
+        if (ga_blade_grade(i) % 2)
+            od = fmax(od, fabs(V.c[i]));
+        else
+            ev = fmax(ev, fabs(V.c[i]));
+    }
+    if (ev > 0.0 && od > 0.0)
+        return GA_ERR_ARG;
+    ga_mv Vi;
+    int st = ga_mv_inverse(V, &Vi);
+    if (st != GA_OK)
+        return st;
+    if (od > 0.0)
+        X = ga_mv_involute(X);
+    *out = ga_mv_gp(ga_mv_gp(V, X), Vi);
+    return GA_OK;
+}
+
+ga_mv ga_versor_reflection(ga_vec3 normal, double distance) { return ga_plane_dual(normal, distance); }
+
+ga_mv ga_versor_inversion(ga_vec3 centre, double radius) { return ga_sphere_dual(centre, radius); }
+
+int ga_versor_dilation(ga_vec3 c, double s, ga_mv *out)
+{
+    if (!isfinite(s) || !isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z))
+        return GA_ERR_NOTFINITE;
+    if (!(s > 0.0))
+        return GA_ERR_ARG;
+    /* exp(a e45) = cosh a + sinh a e45 scales by e^(-2a) (docs/versors.md) */
+    double a = -0.5 * log(s);
+    ga_mv D = ga_mv_scalar(cosh(a));
+    D.c[GA_BLADE_E45] = sinh(a);
+    ga_mv T = ga_versor_translation(c), Ti = ga_versor_translation((ga_vec3){-c.x, -c.y, -c.z});
+    *out = ga_mv_gp(ga_mv_gp(T, D), Ti);
+    return GA_OK;
+}
+
+ga_mv ga_versor_transversion(ga_vec3 b)
+{
+    /* 1 + nbar b/2, nbar = e4 - e5: the products e4 b and -e5 b */
+    ga_mv K = ga_mv_scalar(1.0);
+    K.c[GA_BLADE_E14] = -0.5 * b.x; /* e4 e1 = -e14 */
+    K.c[GA_BLADE_E24] = -0.5 * b.y;
+    K.c[GA_BLADE_E34] = -0.5 * b.z;
+    K.c[GA_BLADE_E15] = 0.5 * b.x; /* -e5 e1 = e15 */
+    K.c[GA_BLADE_E25] = 0.5 * b.y;
+    K.c[GA_BLADE_E35] = 0.5 * b.z;
+    return K;
+}
+
+ga_mv ga_versor_rotation(ga_vec3 axis, double angle) { return ga_rotor_to_mv(ga_rotor_rotation(axis, angle)); }
+
+ga_mv ga_versor_translation(ga_vec3 a) { return ga_rotor_to_mv(ga_rotor_translation(a)); }

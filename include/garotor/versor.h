@@ -1,0 +1,79 @@
+/* garotor/versor.h: the general algebra of G(4,1): versors (products of
+ * vectors, even or odd) and their sandwich, the conformal transformations as
+ * versors, and closed-form exp and log of any bivector and rotor.
+ *
+ * A versor V acts on any multivector X by V X^ V^-1, where X^ is X for even V
+ * and the grade involution of X for odd V (Dorst-Fontijne-Mann, "Geometric
+ * Algebra for Computer Science", 2007, §7.6): so a dual plane vector reflects
+ * points in its plane, a dual sphere vector inverts them in its sphere.
+ *
+ * exp and log (docs/versors.md has the derivation): a bivector B of G(4,1)
+ * is a sum B1 + B2 of two commuting 2-blades with B1^2 = l1, B2^2 = l2
+ * scalars (Dorst-Valkenburg 2011, "Square root and logarithm of rotors in 3D
+ * conformal geometric algebra using polar decomposition", §3), where l1, l2
+ * are the roots of l^2 - s l + q.q/4 = 0 with s = <B^2>_0, q = <B^2>_4. A part
+ * is elliptic (l < 0: a rotation), hyperbolic (l > 0: a boost, e.g. a
+ * dilation) or parabolic (l = 0: a null 2-blade, a translation or a
+ * transversion). exp(B) = exp(B1) exp(B2) is written as
+ * alpha + beta B + gamma q + delta B q with coefficients that are symmetric
+ * functions of l1, l2, evaluated without cancellation in every case
+ * (repeated parts, null parts, near-degenerate ones).
+ */
+#ifndef GAROTOR_VERSOR_H
+#define GAROTOR_VERSOR_H
+
+#include "mv.h"
+#include "types.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- exp, log and factorization ---------------------------------------------- */
+
+/** exp(B) of the bivector part of B (other grades are ignored), in closed form.
+ *  NaN or Inf in B propagates. */
+ga_mv ga_mv_exp(ga_mv B);
+
+/** The principal logarithm of a rotor R (an even versor with R ~R = 1): a
+ *  bivector B with exp(B) = R. Principal: log(exp(B)) = B whenever every
+ *  elliptic part Bi of B (Bi^2 = -ti^2 < 0) has ti < pi/2; in general every
+ *  elliptic part has ti in [0, pi], and a sign of R that no part can take
+ *  within [0, pi/2) goes to the elliptic part with the largest angle (a
+ *  part of angle pi in a plane that commutes with the rest when R has none).
+ *  GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_DOMAIN when R is not a rotor to a
+ *  relative 1e-9 (odd parts, R ~R != 1, or exp(log R) != R to 1e-9), which is
+ *  where R has no real logarithm. */
+int ga_mv_log(ga_mv R, ga_mv *out);
+
+/* ---- versors ------------------------------------------------------------------- */
+
+/** V X^ V^-1 (X^ = X for even V, the grade involution of X for odd V).
+ *  GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_ARG when V has both even and odd parts;
+ *  GA_ERR_SINGULAR when V has no inverse (ga_mv_inverse). */
+int ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out);
+
+/** Reflection in the plane n.x = d (n need not be unit): the dual plane
+ *  vector n + d e_inf (odd). */
+ga_mv ga_versor_reflection(ga_vec3 normal, double distance);
+/** Inversion in the sphere of centre c and radius r: the dual sphere
+ *  F(c) - r^2/2 n (odd); it maps x to c + r^2 (x - c)/|x - c|^2. */
+ga_mv ga_versor_inversion(ga_vec3 centre, double radius);
+/** Dilation about c by the factor s > 0: T_c exp(-ln(s)/2 e45) T_c^-1, which
+ *  maps x to c + s (x - c). GA_ERR_ARG unless s > 0, GA_ERR_NOTFINITE. */
+int ga_versor_dilation(ga_vec3 centre, double s, ga_mv *out);
+/** Transversion 1 + nbar b/2 (b a Euclidean vector): the translation by -b
+ *  conjugated by the inversion in the unit sphere (e4 n e4 = nbar), so it
+ *  maps x to (x - |x|^2 b) / (1 - 2 b.x + |b|^2 |x|^2). */
+ga_mv ga_versor_transversion(ga_vec3 b);
+/** Rotation by angle about the unit axis through the origin, as a full
+ *  multivector (ga_rotor_to_mv of ga_rotor_rotation). */
+ga_mv ga_versor_rotation(ga_vec3 axis, double angle);
+/** Translation by a, as a full multivector (ga_rotor_to_mv of
+ *  ga_rotor_translation): 1 + n a/2. */
+ga_mv ga_versor_translation(ga_vec3 a);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
