@@ -354,6 +354,9 @@ ga_mv ga_versor_transversion(ga_vec3 b)
     return K;
 }
 
-ga_mv ga_versor_rotation(ga_vec3 axis, double angle) { return ga_rotor_to_mv(ga_rotor_rotation(axis, angle)); }
+ga_mv ga_versor_rotation(ga_vec3 axis, double angle)
+{
+    return ga_rotor_to_mv(ga_rotor_rotation(axis, angle));
+}
 
 ga_mv ga_versor_translation(ga_vec3 a) { return ga_rotor_to_mv(ga_rotor_translation(a)); }

@@ -880,6 +880,23 @@ static int k_velocity(void *ctx, const double *const *in, double *out, npy_intp 
     return GA_OK;
 }
 
+static int k_acceleration(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    (void)k;
+    const ga_path *p = ctx;
+    double a[GA_GROUP_MAX_DIM];
+    if (!isfinite(in[0][0]))
+        return GA_ERR_NOTFINITE;
+    int st = ga_path_acceleration(p, in[0][0], a);
+    if (st != GA_OK)
+        return st;
+    if (p->group->rigid)
+        memcpy(out, a, 6 * sizeof *a);
+    else
+        mat_put(p->group->hat(a), out);
+    return GA_OK;
+}
+
 static PyObject *path_call(PathObject *self, PyObject *args, PyObject *kw, const char *what, kernel_fn kernel,
                            core_spec outcore)
 {
@@ -900,6 +917,13 @@ static PyObject *Path_sample(PathObject *self, PyObject *args, PyObject *kw)
 static PyObject *Path_velocity(PathObject *self, PyObject *args, PyObject *kw)
 {
     return path_call(self, args, kw, "Path.velocity", k_velocity,
+                     self->group && !self->group->rigid ? (core_spec)CORE2(4, 4, NULL)
+                                                        : (core_spec)CORE1(6, NULL));
+}
+
+static PyObject *Path_acceleration(PathObject *self, PyObject *args, PyObject *kw)
+{
+    return path_call(self, args, kw, "Path.acceleration", k_acceleration,
                      self->group && !self->group->rigid ? (core_spec)CORE2(4, 4, NULL)
                                                         : (core_spec)CORE1(6, NULL));
 }
@@ -938,6 +962,9 @@ static PyMethodDef Path_methods[] = {
      "velocity(t, *, out=None): the body velocity A(t)^-1 dA/dt per unit time at the times t: (..., 6) "
      "twists "
      "(affine: (..., 4, 4))."},
+    {"acceleration", (PyCFunction)(void (*)(void))Path_acceleration, METH_VARARGS | METH_KEYWORDS,
+     "acceleration(t, *, out=None): the body acceleration d/dt (A^-1 dA/dt) per unit time^2 at the times t: "
+     "(..., 6) (affine: (..., 4, 4))."},
     {NULL, NULL, 0, NULL}};
 
 static PyGetSetDef Path_getset[] = {

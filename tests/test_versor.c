@@ -124,9 +124,18 @@ static ga_mv bv(double e12, double e34, double e23, double e45, double null1)
 
 enum { NFAM = 12 };
 static const char *const fam_name[NFAM] = {
-    "elliptic",           "hyperbolic",     "parabolic (null)",  "elliptic x elliptic",
-    "repeated (isoclinic)", "elliptic x hyperbolic", "elliptic x parabolic", "near-repeated",
-    "near-null (tiny rotation + null)", "near-zero (1e-9)", "dense random", "half-turn neighbourhood",
+    "elliptic",
+    "hyperbolic",
+    "parabolic (null)",
+    "elliptic x elliptic",
+    "repeated (isoclinic)",
+    "elliptic x hyperbolic",
+    "elliptic x parabolic",
+    "near-repeated",
+    "near-null (tiny rotation + null)",
+    "near-zero (1e-9)",
+    "dense random",
+    "half-turn neighbourhood",
 };
 
 /* A bivector of family f; amax bounds elliptic half-angles (pi/2 for the
@@ -166,7 +175,10 @@ static ga_mv conformal_rotor(tk_rng *r)
     return ga_mv_gp(ga_mv_gp(R, D), ga_versor_transversion(b));
 }
 
-static ga_mv conjugated(ga_mv V, ga_mv B) { return ga_mv_grade(ga_mv_gp(ga_mv_gp(V, B), ga_mv_reverse(V)), 2); }
+static ga_mv conjugated(ga_mv V, ga_mv B)
+{
+    return ga_mv_grade(ga_mv_gp(ga_mv_gp(V, B), ga_mv_reverse(V)), 2);
+}
 
 static double rel(ga_mv a, ga_mv b) { return tk_mv_maxabs(ga_mv_sub(a, b)) / tk_mv_maxabs(b); }
 
@@ -253,7 +265,8 @@ int main(int argc, char **argv)
         /* -1, -dilation, -translation, -transversion: the sign needs a plane
            of its own (angle pi) commuting with the rest */
         ga_mv D, cases[5];
-        tk_expect_status("dilation by 3 about (1,2,3)", ga_versor_dilation((ga_vec3){1, 2, 3}, 3.0, &D), GA_OK);
+        tk_expect_status("dilation by 3 about (1,2,3)", ga_versor_dilation((ga_vec3){1, 2, 3}, 3.0, &D),
+                         GA_OK);
         cases[0] = ga_mv_scalar(-1.0);
         cases[1] = ga_mv_scale(D, -1.0);
         cases[2] = ga_mv_scale(ga_versor_translation((ga_vec3){1, -2, 0.5}), -1.0);
@@ -269,15 +282,16 @@ int main(int argc, char **argv)
         ga_mv L, bad = ga_mv_gp(ga_mv_blade(GA_BLADE_E1), ga_mv_blade(GA_BLADE_E5));
         tk_expect_status("log of e1 e5 (R ~R = -1): no real log", ga_mv_log(bad, &L), GA_ERR_DOMAIN);
         tk_expect_status("log of 2 (R ~R = 4)", ga_mv_log(ga_mv_scalar(2.0), &L), GA_ERR_DOMAIN);
-        tk_expect_status("log of 1 + e1 (odd part)", ga_mv_log(ga_mv_add(ga_mv_scalar(1), ga_mv_blade(1)), &L),
-                         GA_ERR_DOMAIN);
+        tk_expect_status("log of 1 + e1 (odd part)",
+                         ga_mv_log(ga_mv_add(ga_mv_scalar(1), ga_mv_blade(1)), &L), GA_ERR_DOMAIN);
         ga_mv nanr = ga_mv_scalar(NAN);
         tk_expect_status("log of NaN", ga_mv_log(nanr, &L), GA_ERR_NOTFINITE);
     }
 
     /* 5. versors against Euclidean formulas */
     for (long n = 0; n < 2000 * reps; n++) {
-        ga_vec3 x = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 4)), c = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 3));
+        ga_vec3 x = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 4)),
+                c = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 3));
         ga_vec3 u = tk_unit(&rng);
         double d = tk_range(&rng, -2, 2), rr = tk_range(&rng, 0.2, 3), s = tk_loguni(&rng, 0.1, 10);
         double k = tk_range(&rng, 0.3, 3); /* a non-unit plane normal */
@@ -292,7 +306,8 @@ int main(int argc, char **argv)
                       (ga_vec3){c.x + q * xc.x, c.y + q * xc.y, c.z + q * xc.z});
         ga_mv D;
         if (ga_versor_dilation(c, s, &D) == GA_OK)
-            check_map("dilation: c + s (x - c)", D, x, (ga_vec3){c.x + s * xc.x, c.y + s * xc.y, c.z + s * xc.z});
+            check_map("dilation: c + s (x - c)", D, x,
+                      (ga_vec3){c.x + s * xc.x, c.y + s * xc.y, c.z + s * xc.z});
         ga_vec3 b = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 0.2));
         double x2 = dot(x, x), den = 1 - 2 * dot(b, x) + dot(b, b) * x2;
         check_map("transversion: (x - |x|^2 b)/(1 - 2 b.x + |b|^2|x|^2)", ga_versor_transversion(b), x,
@@ -301,7 +316,8 @@ int main(int argc, char **argv)
         double ang = tk_range(&rng, -TK_PI, TK_PI);
         check_map("rotation = ga_rotor_apply", ga_versor_rotation(ax, ang), x,
                   ga_rotor_apply(ga_rotor_rotation(ax, ang), x));
-        check_map("translation = x + a", ga_versor_translation(c), x, (ga_vec3){x.x + c.x, x.y + c.y, x.z + c.z});
+        check_map("translation = x + a", ga_versor_translation(c), x,
+                  (ga_vec3){x.x + c.x, x.y + c.y, x.z + c.z});
         /* odd: inversion after reflection (even, 2 vectors) and then a
            reflection (odd, 3 vectors), against composing the maps */
         ga_mv P = ga_versor_reflection(u, d), S = ga_versor_inversion(c, rr);
@@ -320,7 +336,8 @@ int main(int argc, char **argv)
     {
         ga_mv out;
         ga_mv mixed = ga_mv_add(ga_mv_scalar(1), ga_mv_blade(GA_BLADE_E1));
-        tk_expect_status("apply: mixed even and odd", ga_versor_apply(mixed, ga_mv_scalar(1), &out), GA_ERR_ARG);
+        tk_expect_status("apply: mixed even and odd", ga_versor_apply(mixed, ga_mv_scalar(1), &out),
+                         GA_ERR_ARG);
         tk_expect_status("dilation by s = 0", ga_versor_dilation((ga_vec3){0, 0, 0}, 0.0, &out), GA_ERR_ARG);
         /* the contract's sign: exp(a e45) scales by e^(-2a) */
         ga_mv E = ga_mv_exp(bv(0, 0, 0, 0.35, 0));

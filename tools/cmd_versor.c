@@ -65,15 +65,17 @@ int cmd_versor(const cli_opts *o)
                                        "a versor (32 coefficients) then a point (3)"};
     int verb = 0;
     if (!o->verb) {
-        fprintf(stderr, "garotor versor: which one: exp, log or apply?\n(garotor versor --help shows the options)\n");
+        fprintf(stderr,
+                "garotor versor: which one: exp, log or apply?\n(garotor versor --help shows the options)\n");
         return 2;
     }
     while (verb < 3 && strcmp(o->verb, verbs[verb]) != 0) verb++;
     if (verb == 3) {
-        fprintf(stderr,
-                "garotor versor: unknown operation '%s' (exp, log or apply)\n(garotor versor --help shows the "
-                "options)\n",
-                o->verb);
+        fprintf(
+            stderr,
+            "garotor versor: unknown operation '%s' (exp, log or apply)\n(garotor versor --help shows the "
+            "options)\n",
+            o->verb);
         return 2;
     }
     tio_items in;
@@ -82,7 +84,8 @@ int cmd_versor(const cli_opts *o)
     int ok = 1;
     for (size_t i = 0; i < in.n && ok; i++)
         if (in.item[i].count != nin[verb])
-            ok = !tio_error(&in, i, "expected %d numbers (%s), found %d", nin[verb], what[verb], in.item[i].count);
+            ok = !tio_error(&in, i, "expected %d numbers (%s), found %d", nin[verb], what[verb],
+                            in.item[i].count);
     double *res = ok ? malloc((in.n ? in.n : 1) * (size_t)nout[verb] * sizeof *res) : NULL;
     if (ok && !res) {
         fprintf(stderr, "garotor versor: out of memory\n");

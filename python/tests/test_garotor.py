@@ -131,6 +131,25 @@ def test_velocity_is_derivative(rng, scheme, group):
     assert np.abs(fd - v).max() < tol
 
 
+@pytest.mark.parametrize("group", ["cga", "matrix"])
+@pytest.mark.parametrize("scheme", SCHEMES)
+def test_acceleration_is_derivative_of_velocity(rng, scheme, group):
+    n = 3 if scheme == "quadratic" else 5
+    times, K = keys_for(rng, group, n)
+    p = garotor.Path(times, K, scheme=scheme, group=group)
+    seg = rng.integers(0, n - 1, size=30)
+    t = times[seg] + rng.uniform(0.2, 0.8, size=30) * (times[seg + 1] - times[seg])
+    h = 1e-5
+    fd = (p.velocity(t + h) - p.velocity(t - h)) / (2 * h)
+    a = p.acceleration(t)
+    assert a.shape == (30, 6)
+    tol = 1e-6 * (1 + np.abs(a).max()) + 10 * EPS / h * (1 + np.abs(p.velocity(t)).max())
+    assert np.abs(fd - a).max() < tol
+    # the screw's body velocity is constant on a segment
+    if scheme == "screw":
+        assert np.abs(a).max() < 1e-12 * (1 + np.abs(p.velocity(t)).max())
+
+
 # ---- the group operations -------------------------------------------------
 
 def test_compose_inverse_apply(rng):
@@ -367,6 +386,7 @@ def test_refcounts_and_leaks(rng):
         garotor.to_pose(T)
         p.sample(t)
         p.velocity(t)
+        p.acceleration(t)
         garotor.Path(times, K, scheme="smooth")
         m = garotor.Multivector(np.arange(32.0))
         repr(m * m ^ m | ~m)
