@@ -8,7 +8,7 @@
  * every kind are built from commuting basis blades and conjugated by a
  * random conformal rotor (rigid x dilation x transversion), so every
  * coefficient is in play. Tolerance: the 1e-13 relative (max norm) that
- * issue 14 asks of the closed form; the long-double reference is good to
+ * the closed form promises (docs/versors.md); the long-double reference is good to
  * ~1e-17 on these sizes (|B| <= ~10 after conjugation), so the figure
  * measures the closed form alone.
  *
@@ -260,7 +260,7 @@ int main(int argc, char **argv)
         tk_end(&el);
     }
 
-    /* 2b. exp(log R) = R beyond the principal domain (issue 14): rotors
+    /* 2b. exp(log R) = R beyond the principal domain: rotors
           whose two rotation parts have cos t1 = -cos t2 (R0 <= 0, where the
           m form divided by m1 - m2 = 0 and reported GA_ERR_DOMAIN), the
           conjugate point t1 + t2 = pi, and -R of every kind. Each is a
