@@ -24,14 +24,16 @@ enum {
     OPT_RATE = 1 << 17,
     OPT_TIMES = 1 << 18,
     OPT_EXTRAPOLATE = 1 << 19,
-    OPT_VERB = 1 << 20 /* not an option: the command takes an operation word first */
+    OPT_VERB = 1 << 20, /* not an option: the command takes an operation word first */
+    OPT_TIME_UNIT = 1 << 21
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view;
     const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
-    const char *verb; /* `versor exp`: the operation word */
+    const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
+    const char *verb;                  /* `versor exp`: the operation word */
     double rate;
     int header, normalize;
     long samples;
