@@ -24,7 +24,8 @@
  *   - the exit status is 0 or 2;
  *   - status 2 leaves no output file, no picture and no temporary file;
  *   - status 0 leaves the output file, every number in it finite, lines of
- *     one width (6, 16, 8 or 17 numbers);
+ *     one width (6 or 16 numbers; for interp 8 or 17, plus 6, 12, 16 or 32
+ *     with --with velocity[,acceleration]);
  *   - exp (cga, matrix) writes rigid motions: last row exactly 0 0 0 1,
  *     rotation part orthonormal to 1e-9; log (cga, matrix) writes twists with
  *     rotation angle in [0, pi]; interp --format mat on cga/matrix writes
@@ -116,7 +117,7 @@ static void check_output(int kind, int affine, int pose)
     long lineno = 0;
     while (getline(&line, &cap, f) >= 0) {
         lineno++;
-        double v[32];
+        double v[64];
         int k = 0;
         char *s = line, *end;
         for (;;) {
@@ -126,17 +127,22 @@ static void check_output(int kind, int affine, int pose)
             double x = strtod(s, &end);
             FZ_CHECK(end != s, "output line %ld: not a number: %.40s", lineno, s);
             FZ_CHECK(isfinite(x), "output line %ld, number %d is %g", lineno, k + 1, x);
-            FZ_CHECK(k < 32, "output line %ld has more than 32 numbers", lineno);
+            FZ_CHECK(k < 64, "output line %ld has more than 64 numbers", lineno);
             v[k++] = x;
             s = end;
         }
-        FZ_CHECK(k == 6 || k == 16 || k == 8 || k == 17, "output line %ld has %d numbers", lineno, k);
+        /* interp: t and the pose (8 or 17), then with --with the velocity and
+           acceleration: 6 numbers each (a twist), or 16 each on affine */
+        int base = kind == K_INTERP ? (k >= 17 && !pose ? 17 : 8) : k, extra = k - base;
+        FZ_CHECK(kind == K_INTERP ? extra == 0 || extra == 6 || extra == 12 || extra == 16 || extra == 32
+                                  : k == 6 || k == 16,
+                 "output line %ld has %d numbers", lineno, k);
         FZ_CHECK(width < 0 || k == width, "output line %ld: %d numbers after %d", lineno, k, width);
         width = k;
         const double *m = NULL;
         if (kind == K_EXP && !affine && k == 16)
             m = v;
-        if (kind == K_INTERP && !affine && k == 17)
+        if (kind == K_INTERP && !affine && base == 17)
             m = v + 1;
         if (m) {
             FZ_CHECK(m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1,
@@ -148,14 +154,14 @@ static void check_output(int kind, int affine, int pose)
                              lineno, fabs(d - (r == c)));
                 }
         }
-        if (kind == K_INTERP && affine && k == 17)
+        if (kind == K_INTERP && affine && base == 17)
             FZ_CHECK(v[13] == 0 && v[14] == 0 && v[15] == 0 && v[16] == 1,
                      "output line %ld: affine sample's last row not 0 0 0 1", lineno);
         if (kind == K_LOG && !affine && k == 6) {
             double th = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
             FZ_CHECK(th <= 3.141592653589793 * (1 + 1e-15), "output line %ld: angle %.17g > pi", lineno, th);
         }
-        if (kind == K_INTERP && pose && k == 8) {
+        if (kind == K_INTERP && pose && base == 8) {
             double qn = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
             FZ_CHECK(fabs(qn - 1) <= 1e-9, "output line %ld: quaternion norm %.17g", lineno, qn);
         }

@@ -231,6 +231,19 @@ TOOL = {
     "interp-at-outside": "interp --scheme screw --at 5\n" + KEYS,
     "interp-velocities-short": "interp --scheme lihao3 --samples 3 --velocities v\n" + KEYS + "%%\n0 0 0 1 0 0\n",
     "interp-bad-option": "interp --scheme spline --samples 3\n" + KEYS,
+    # exact times (docs/tool.md, "Times"): epoch stamps, integer nanoseconds
+    "interp-epoch-rate": "interp --format pose --rate 100\n"
+                         "1305031102.1758 %s\n1305031102.2758 %s\n1305031102.30 %s\n" % (P1, P2, P3),
+    "interp-epoch-at": "interp --format pose --at 1305031102.2758,1305031102.2,0x1.37p30 --extrapolate hold\n"
+                       "1305031102.1758 %s\n1305031102.2758 %s\n1305031102.30 %s\n" % (P1, P2, P3),
+    "interp-ns-rate": "interp --format pose --time-unit ns --rate 30\n"
+                      "1305031102175800000 %s\n1305031102275800000 %s\n1305031102300000000 %s\n" % (P1, P2, P3),
+    "interp-ns-samples": "interp --time-unit ns --samples 4 --eval exact\n"
+                         "1.3e18 %s\n1300000000000000100 %s\n" % (M1, M2),
+    "interp-ns-not-whole": "interp --format pose --time-unit ns --samples 3\n0.5 %s\n1 %s\n" % (P1, P2),
+    "interp-time-unit-bad": "interp --format pose --time-unit ms --samples 3\n" + POSES,
+    "interp-long-decimal": "interp --format pose --samples 3\n1e-700 %s\n0.%s1 %s\n1e300 %s\n"
+                           % (P1, "0" * 500, P2, P3),
 }
 for name, text in TOOL.items():
     write("tool", name, text)

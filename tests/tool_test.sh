@@ -199,6 +199,130 @@ expect_error "interp: --times outside" "--times time -1 is outside the keys' ran
 "$G" interp --format pose --in "$d/k3" --at -1 --extrapolate extend >"$d/ext" || fail "--extrapolate extend"
 [ "$(cut -d' ' -f1-4 "$d/ext")" = "-1 -0.28000000000000003 0.95999999999999996 0" ] ||
     fail "--extrapolate extend: $(cat "$d/ext")"
+# ---- exact times: a TUM-like file (4-decimal epoch stamps and quaternions,
+# irregular spacing, q/-q flips), the same keys with stamps shifted to 0, and
+# in integer nanoseconds: the same samples, keys hit, stamps as written ----
+cat >"$d/gen.awk" <<'EOF'
+BEGIN { split("1000 1500 1333 2000 667 1250 1250", inc, " ")
+    for (i = 0; i < 36; i++) {
+        if (i) ticks += inc[(i - 1) % 7 + 1]
+        t = ticks / 10000; ang = 0.4 * t + 0.2 * sin(t); ay = 0.5 * cos(0.3 * t)
+        s = sin(ang / 2) / sqrt(0.09 + ay * ay + 0.64); qw = cos(ang / 2); sg = i % 7 == 3 ? -1 : 1
+        tot = 1758 + ticks
+        if (mode == "epoch") st = sprintf("%d.%04d", 1305031102 + int(tot / 10000), tot % 10000)
+        else if (mode == "ns") st = sprintf("%d%04d00000", 1305031102 + int(tot / 10000), tot % 10000)
+        else st = sprintf("%d.%04d", int(ticks / 10000), ticks % 10000)
+        printf "%s %.6f %.6f %.6f %.4f %.4f %.4f %.4f\n", st, 0.5 * sin(0.7 * t), 0.3 * cos(0.5 * t) - 0.3,
+            0.1 * t, sg * 0.3 * s, sg * ay * s, sg * 0.8 * s, sg * qw
+    } }
+EOF
+for m in epoch shifted ns; do
+    awk -v mode=$m -f "$d/gen.awk" >"$d/tum.$m"
+    "$G" interp --format pose --normalize --scheme lihao3 --rate 100 --with velocity,acceleration \
+        --in "$d/tum.$m" --time-unit "$([ $m = ns ] && echo ns || echo s)" >"$d/tum.$m.out" 2>"$d/err" ||
+        fail "exact times, $m: $(cat "$d/err")"
+done
+[ "$(wc -l <"$d/tum.epoch.out")" -eq 451 ] || fail "exact times: $(wc -l <"$d/tum.epoch.out") samples at 100 Hz over 4.5 s, not 451"
+# every number but the stamp: the same to 1e-12 relative (they are the same doubles)
+for m in shifted ns; do
+    paste -d' ' "$d/tum.epoch.out" "$d/tum.$m.out" | awk '{ for (i = 2; i <= 20; i++) { e = $i - $(i + 20)
+        s = $i < 0 ? -$i : $i; if (s < 1) s = 1; if (e < 0) e = -e; if (e > 1e-12 * s) bad = 1 } } END { exit bad }' ||
+        fail "exact times: the samples of the epoch stamps and the $m ones differ by more than 1e-12"
+done
+# the stamps: epoch = 1305031102.1758 + shifted, and ns = epoch with the point moved 9 places
+paste -d' ' "$d/tum.epoch.out" "$d/tum.shifted.out" "$d/tum.ns.out" | awk '
+    function strip(x) { if (index(x, ".")) { sub(/0+$/, "", x); sub(/[.]$/, "", x) } return x }
+    { split($21, a, "."); f = a[2]; while (length(f) < 4) f = f "0"; tot = 1758 + a[1] * 10000 + f
+      if (strip($1) != strip(sprintf("%d.%04d", 1305031102 + int(tot / 10000), tot % 10000))) { print "line " NR ": " $1 " after " $21; bad = 1 }
+      split($1, b, "."); g = b[2]; while (length(g) < 9) g = g "0"
+      if ($41 != b[1] g) { print "line " NR ": " $41 " for " $1; bad = 1 } }
+    END { exit bad }' >"$d/err" || fail "exact times: stamps are not t0 + k/100 exactly: $(head -3 "$d/err")"
+[ "$(sed -n 2p "$d/tum.epoch.out" | cut -d' ' -f1)" = 1305031102.1858 ] || fail "exact times: stamp $(sed -n 2p "$d/tum.epoch.out" | cut -d' ' -f1)"
+# keys hit: each key on the 100 Hz grid (its offset a whole number of 1/100 s:
+# 21 of the 36) has a sample stamped with the key's own text, whose pose is the
+# normalised key to 1e-15 (4.5 ulp of 1: quaternion -> matrix -> rotor -> matrix
+# -> quaternion, a few roundings each; measured 3.3e-16)
+for m in epoch shifted ns; do
+    awk 'FNR == 1 { f++ }
+         f == 1 { split($1, a, "."); grid[FNR] = a[2] % 100 == 0; next }
+         f == 2 { if (grid[FNR]) want[$1] = $0; next }
+         ($1 in want) { split(want[$1], k, " "); hit++
+             nq = sqrt(k[5] ^ 2 + k[6] ^ 2 + k[7] ^ 2 + k[8] ^ 2); sg = k[5] * $5 + k[6] * $6 + k[7] * $7 + k[8] * $8 < 0 ? -1 : 1
+             for (i = 2; i <= 8; i++) { e = $i - (i < 5 ? k[i] : sg * k[i] / nq); if (e < 0) e = -e; if (e > 1e-15) bad = 1 } }
+         END { if (hit != 21) print "hit " hit " keys of 21"; exit bad || hit != 21 }' \
+        "$d/tum.shifted" "$d/tum.$m" "$d/tum.$m.out" >"$d/err" ||
+        fail "exact times, $m: keys on the grid not hit, or not stamped as written: $(cat "$d/err")"
+done
+# velocity and acceleration against central differences of the poses, with
+# steps h = 0.01 and 2h, on the samples whose stencil (t +- 4h) has no key
+# inside (lihao3 is C1: the acceleration jumps at keys). The differences
+# converge as h^2 (err(h) <= 0.3 err(2h)), and their Richardson limit
+# (4 D(h) - D(2h))/3 agrees with the analytic value to 1% of err(h): an error
+# in the analytic value would stay in that limit. (measured: velocity err(h)
+# 1.1e-4, limit 7.3e-9; acceleration 2.8e-4, 2.5e-7.)
+awk '
+function vfd(k, m, out,   a, b, w, x, y, z, s, f) {
+    a = k - m; b = k + m
+    w = qw[a] * qw[b] + qx[a] * qx[b] + qy[a] * qy[b] + qz[a] * qz[b]
+    x = qw[a] * qx[b] - qx[a] * qw[b] - qy[a] * qz[b] + qz[a] * qy[b]
+    y = qw[a] * qy[b] + qx[a] * qz[b] - qy[a] * qw[b] - qz[a] * qx[b]
+    z = qw[a] * qz[b] - qx[a] * qy[b] + qy[a] * qx[b] - qz[a] * qw[b]
+    if (w < 0) { w = -w; x = -x; y = -y; z = -z }
+    s = sqrt(x * x + y * y + z * z); f = s > 0 ? 2 * atan2(s, w) / s / (2 * m * h) : 0
+    out[1] = f * x; out[2] = f * y; out[3] = f * z
+    rotT(k, (px[b] - px[a]) / (2 * m * h), (py[b] - py[a]) / (2 * m * h), (pz[b] - pz[a]) / (2 * m * h), out)
+}
+function rotT(k, dx, dy, dz, out,   w, x, y, z) {
+    w = qw[k]; x = qx[k]; y = qy[k]; z = qz[k]
+    out[4] = (1 - 2 * (y * y + z * z)) * dx + 2 * (x * y + w * z) * dy + 2 * (x * z - w * y) * dz
+    out[5] = 2 * (x * y - w * z) * dx + (1 - 2 * (x * x + z * z)) * dy + 2 * (y * z + w * x) * dz
+    out[6] = 2 * (x * z + w * y) * dx + 2 * (y * z - w * x) * dy + (1 - 2 * (x * x + y * y)) * dz
+}
+function afd(k, m, out,   u, l, i) { vfd(k + m, m, u); vfd(k - m, m, l); for (i = 1; i <= 6; i++) out[i] = (u[i] - l[i]) / (2 * m * h) }
+function ab(x) { return x < 0 ? -x : x }
+FNR == NR { key[++nk] = $1 + 0; next }
+{ n++; t[n] = $1 + 0; px[n] = $2; py[n] = $3; pz[n] = $4; qx[n] = $5; qy[n] = $6; qz[n] = $7; qw[n] = $8
+  for (i = 1; i <= 6; i++) { v[n, i] = $(8 + i); a[n, i] = $(14 + i) } }
+END {
+    h = 0.01
+    for (k = 5; k + 4 <= n; k++) {
+        ok = 1
+        for (j = 1; j <= nk; j++) if (key[j] > t[k - 4] && key[j] < t[k + 4]) ok = 0
+        if (!ok) continue
+        used++
+        vfd(k, 1, v1); vfd(k, 2, v2); afd(k, 1, a1); afd(k, 2, a2)
+        for (i = 1; i <= 6; i++) {
+            if (ab(v1[i] - v[k, i]) > ev1) ev1 = ab(v1[i] - v[k, i]); if (ab(v2[i] - v[k, i]) > ev2) ev2 = ab(v2[i] - v[k, i])
+            if (ab(a1[i] - a[k, i]) > ea1) ea1 = ab(a1[i] - a[k, i]); if (ab(a2[i] - a[k, i]) > ea2) ea2 = ab(a2[i] - a[k, i])
+            e = ab((4 * v1[i] - v2[i]) / 3 - v[k, i]); if (e > rv) rv = e
+            e = ab((4 * a1[i] - a2[i]) / 3 - a[k, i]); if (e > ra) ra = e
+        }
+    }
+    printf "%d samples; velocity err(h) %.3g, err(2h) %.3g, limit %.3g; acceleration %.3g, %.3g, %.3g\n", used, ev1, ev2, rv, ea1, ea2, ra
+    exit !(used >= 150 && ev1 <= 0.3 * ev2 && ea1 <= 0.3 * ea2 && rv <= 0.01 * ev1 && ra <= 0.01 * ea1 && ev1 > 0)
+}' "$d/tum.shifted" "$d/tum.shifted.out" >"$d/fd" || fail "exact times: velocity and acceleration against finite differences: $(cat "$d/fd")"
+# given times are written as given, but one equal to a key's as the key was
+# written; a computed stamp reads back (relative to the same first key) as the
+# time it was taken at: --rate 3's stamps given back as --times give the same
+printf '1305031102.2000\n1305031102.27580\n' >"$d/tum.times"
+"$G" interp --format pose --normalize --in "$d/tum.epoch" --times "$d/tum.times" | cut -d' ' -f1 | tr '\n' ' ' >"$d/st"
+[ "$(cat "$d/st")" = "1305031102.2000 1305031102.2758 " ] || fail "--times stamps: $(cat "$d/st")"
+[ "$("$G" interp --format pose --normalize --in "$d/tum.ns" --time-unit ns --at 1305031102175800000,13050311022e8 | cut -d' ' -f1 | tr '\n' ' ')" = \
+    "1305031102175800000 13050311022e8 " ] || fail "--at with --time-unit ns: stamps not as given"
+"$G" interp --format pose --normalize --in "$d/tum.epoch" --rate 3 >"$d/r3"
+[ "$(sed -n 2p "$d/r3" | cut -d' ' -f1)" = 1305031102.5091333333333333 ] || fail "--rate 3: stamp $(sed -n 2p "$d/r3" | cut -d' ' -f1)"
+cut -d' ' -f1 "$d/r3" >"$d/r3.times"
+"$G" interp --format pose --normalize --in "$d/tum.epoch" --times "$d/r3.times" | cmp -s - "$d/r3" ||
+    fail "--rate 3: its stamps read back as --times do not give the same samples"
+"$G" interp --format pose --normalize --in "$d/tum.ns" --time-unit ns --samples 4 | cut -d' ' -f1 | tr '\n' ' ' >"$d/st"
+[ "$(cat "$d/st")" = "1305031102175800000 1305031103675800000 1305031105175800000 1305031106675800000 " ] ||
+    fail "--samples with --time-unit ns: $(cat "$d/st")"
+expect_error "interp: --time-unit" "--time-unit must be s or ns, not 'ms'" \
+    "$G" interp --format pose --normalize --in "$d/tum.epoch" --rate 1 --time-unit ms --out "$d/out"
+expect_error "interp: --time-unit ns, a decimal key" "tum.epoch:1: --time-unit ns takes whole nanoseconds, not '1305031102.1758'" \
+    "$G" interp --format pose --normalize --in "$d/tum.epoch" --rate 1 --time-unit ns --out "$d/out"
+expect_error "interp: --time-unit ns, a decimal --at" "--at: --time-unit ns takes whole nanoseconds, not '1.5'" \
+    "$G" interp --format pose --normalize --in "$d/tum.ns" --at 1.5 --time-unit ns --out "$d/out"
 printf '1 2\n' >"$d/tt2"
 expect_error "interp: --times two numbers" "tt2:1: expected 1 number (a time), found 2" \
     "$G" interp --format pose --in "$d/k3" --times "$d/tt2" --out "$d/out"

@@ -25,14 +25,16 @@ enum {
     OPT_TIMES = 1 << 18,
     OPT_EXTRAPOLATE = 1 << 19,
     OPT_HTML = 1 << 20,
-    OPT_VERB = 1 << 21 /* not an option: the command takes an operation word first */
+    OPT_VERB = 1 << 21, /* not an option: the command takes an operation word first */
+    OPT_TIME_UNIT = 1 << 22
 };
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view, *html;
     const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
-    const char *verb; /* `versor exp`: the operation word */
+    const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
+    const char *verb;                  /* `versor exp`: the operation word */
     double rate;
     int header, normalize;
     long samples;

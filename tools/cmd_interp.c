@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "html.h"
 #include "svg.h"
+#include "timetext.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -81,32 +82,152 @@ static int mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
     return GA_OK;
 }
 
-/* --at t1,t2,...: parse into a new array; -1 after a message. */
-static int parse_times(const char *s, double **out, size_t *n)
+/* --at t1,t2,...: the texts of the times, checked to be finite numbers, as
+ * pointers into *buf (a copy of s); -1 after a message. */
+static int parse_times(const char *s, char **buf, char ***out, size_t *n)
 {
     size_t cap = 1;
     for (const char *c = s; *c; c++) cap += *c == ',';
-    double *t = malloc(cap * sizeof *t);
-    if (!t)
+    char *b = malloc(strlen(s) + 1);
+    char **t = malloc(cap * sizeof *t);
+    if (!b || !t) {
+        free(b);
+        free(t);
+        fprintf(stderr, "garotor interp: out of memory\n");
         return -1;
+    }
+    strcpy(b, s);
     size_t k = 0;
-    const char *c = s;
+    char *c = b;
     for (;;) {
         char *end;
         double x = strtod(c, &end);
         if (end == c || !isfinite(x) || (*end != ',' && *end != '\0')) {
             fprintf(stderr, "garotor interp: --at needs finite times separated by commas: '%s'\n", s);
+            free(b);
             free(t);
             return -1;
         }
-        t[k++] = x;
-        if (*end == '\0')
+        while (*c == ' ' || *c == '\t' || *c == '\n' || *c == '\r' || *c == '\f' || *c == '\v') c++;
+        t[k++] = c;
+        int last = *end == '\0';
+        *end = '\0';
+        if (last)
             break;
         c = end + 1;
     }
+    *buf = b;
     *out = t;
     *n = k;
     return 0;
+}
+
+/* Times (docs/tool.md, "Times"): each read exactly from its text
+ * (timetext.h) and taken relative to the first key's, exactly, before it is
+ * rounded to a double: so the path sees the same doubles whatever constant
+ * every time is shifted by. With --time-unit ns the relative times are
+ * converted to seconds (exactly, rounded once). */
+typedef struct {
+    tt_dec ref; /* the first key's time, exactly */
+    int ns;     /* --time-unit ns */
+} timebase;
+
+/* The time of text relative to the reference, in seconds, as a double. */
+static double rel_time(const timebase *tb, const char *text)
+{
+    tt_dec t;
+    tt_parse(text, &t);
+    if (tt_add(&t, &tb->ref, 1, &t)) /* cannot happen (timetext.h) */
+        return (strtod(text, NULL) - tt_to_double(&tb->ref, 0)) * (tb->ns ? 1e-9 : 1.0);
+    return tt_to_double(&t, tb->ns ? -9 : 0);
+}
+
+static int whole(const char *text)
+{
+    tt_dec t;
+    tt_parse(text, &t);
+    return tt_is_integer(&t);
+}
+
+/* --rate HZ as P x 10^q, P a whole number below 2^53 (15 digits): 1, or 0
+ * if HZ has more digits. */
+static int rate_parts(const char *text, uint64_t *p, int *q)
+{
+    tt_dec h;
+    tt_parse(text, &h);
+    if (h.n == 0 || h.n > 15)
+        return 0;
+    uint64_t v = 0;
+    for (int i = 0; i < h.n; i++) v = v * 10 + h.d[i];
+    *p = v;
+    *q = h.exp;
+    return 1;
+}
+
+/* k/HZ in seconds, correctly rounded where k and the digits of HZ allow one
+ * exact division (numerator and denominator whole numbers below 2^53). */
+static double rate_seconds(uint64_t k, int exact, uint64_t p, int q, double hz)
+{
+    const double two53 = 9007199254740992.0;
+    if (exact) {
+        double num = (double)k, den = (double)p;
+        for (int e = q; e > 0 && den < two53; e--) den *= 10.0;
+        for (int e = q; e < 0 && num < two53; e++) num *= 10.0;
+        if (num < two53 && den < two53)
+            return num / den;
+    }
+    return (double)k / hz;
+}
+
+/* round(k 10^9 / HZ), whole nanoseconds, in exact integer arithmetic where
+ * it fits in 64 bits (ties away from zero). */
+static double rate_nanoseconds(uint64_t k, int exact, uint64_t p, int q, double hz)
+{
+    if (exact) {
+        uint64_t num = k, den = p;
+        int ok = 1;
+        for (int e = 9 - q; e > 0 && ok; e--) ok = num <= UINT64_MAX / 20 ? (num *= 10, 1) : 0;
+        for (int e = 9 - q; e < 0 && ok; e++) ok = den <= UINT64_MAX / 20 ? (den *= 10, 1) : 0;
+        if (ok)
+            return (double)((num + den / 2) / den);
+    }
+    return floor((double)k * (1e9 / hz) + 0.5);
+}
+
+/* The key whose (relative) time is t, if any: 1 and *key, else 0. */
+static int key_at(const double *times, size_t n, double t, size_t *key)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (times[mid] < t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo < n && times[lo] == t) {
+        *key = lo;
+        return 1;
+    }
+    return 0;
+}
+
+/* The stamp of a computed sample: the reference plus the shortest decimal
+ * that reads back as its relative time rel (seconds), or plus its whole
+ * nanoseconds off (--time-unit ns). */
+static void computed_stamp(const timebase *tb, double rel, double off, char *buf)
+{
+    tt_dec o;
+    if (tb->ns) {
+        char b[400];
+        snprintf(b, sizeof b, "%.0f", off);
+        tt_parse(b, &o);
+    } else
+        tt_shortest(rel, &o);
+    if (tt_add(&tb->ref, &o, 0, &o)) /* cannot happen (timetext.h) */
+        snprintf(buf, 32, "%.17g", tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel));
+    else
+        tt_format(&o, buf);
 }
 
 /* A velocity as the tool reads it: 6 numbers, a twist (on every group: its
@@ -307,19 +428,28 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: --frame applies only with --with velocity[,acceleration]\n");
         return 2;
     }
+    static timebase tb; /* static: a tt_dec is large */
+    memset(&tb, 0, sizeof tb);
+    if (o->time_unit && strcmp(o->time_unit, "ns") == 0)
+        tb.ns = 1;
+    else if (o->time_unit && strcmp(o->time_unit, "s") != 0) {
+        fprintf(stderr, "garotor interp: --time-unit must be s or ns, not '%s'\n", o->time_unit);
+        return 2;
+    }
     svg_view view;
     if (svg_options(cmd, o->svg, o->view, &view) || html_options(cmd, o->html))
         return 2;
 
     tio_items in = {0}, vin = {0}, tin = {0};
-    double *times = NULL, *at = NULL, *vel = NULL, *samples = NULL, *res = NULL;
+    double *times = NULL, *at = NULL, *vel = NULL, *samples = NULL, *res = NULL, *off = NULL, *key_t = NULL;
+    char *at_buf = NULL, **at_arg = NULL, **at_text = NULL;
     ga_mat4 *keys = NULL;
     void *work = NULL;
     int rc = 2;
     size_t nat = 0;
-    if (o->at && parse_times(o->at, &at, &nat))
+    if (o->at && parse_times(o->at, &at_buf, &at_arg, &nat))
         goto done;
-    if (tio_read(o->in, o->header, &in))
+    if (tio_read_first(o->in, o->header, &in))
         goto done;
     int want = pose ? 8 : 17;
     size_t n = in.n;
@@ -338,9 +468,15 @@ int cmd_interp(const cli_opts *o)
                       pose ? "x y z qx qy qz qw" : "a 4x4 matrix", in.item[i].count);
             goto done;
         }
-        times[i] = v[0];
+        if (tb.ns && !whole(in.first[i])) {
+            tio_error(&in, i, "--time-unit ns takes whole nanoseconds, not '%s'", in.first[i]);
+            goto done;
+        }
+        if (i == 0)
+            tt_parse(in.first[0], &tb.ref);
+        times[i] = rel_time(&tb, in.first[i]);
         if (i > 0 && !(times[i] > times[i - 1])) {
-            tio_error(&in, i, "key times must increase strictly: %.17g after %.17g", times[i], times[i - 1]);
+            tio_error(&in, i, "key times must increase strictly: %s after %s", in.first[i], in.first[i - 1]);
             goto done;
         }
         if (pose ? pose_to_mat4(&in, i, v + 1, o->normalize, &keys[i]) : 0)
@@ -360,49 +496,95 @@ int cmd_interp(const cli_opts *o)
         goto done;
     }
     if (o->times) { /* --times FILE: one time a line */
-        if (tio_read(o->times, 0, &tin))
+        if (tio_read_first(o->times, 0, &tin))
             goto done;
         nat = tin.n;
-        at = malloc((nat ? nat : 1) * sizeof *at);
-        if (!at)
-            goto oom;
-        for (size_t k = 0; k < nat; k++) {
+        for (size_t k = 0; k < nat; k++)
             if (tin.item[k].count != 1) {
                 tio_error(&tin, k, "expected 1 number (a time), found %d", tin.item[k].count);
                 goto done;
+            } else if (tb.ns && !whole(tin.first[k])) {
+                tio_error(&tin, k, "--time-unit ns takes whole nanoseconds, not '%s'", tin.first[k]);
+                goto done;
             }
-            at[k] = tin.value[tin.item[k].first];
-        }
         if (nat == 0) {
             fprintf(stderr, "garotor interp: %s: no times\n", tin.name);
             goto done;
         }
+        at_text = tin.first;
+    }
+    if (o->at) {
+        for (size_t k = 0; k < nat; k++)
+            if (tb.ns && !whole(at_arg[k])) {
+                fprintf(stderr, "garotor interp: --at: --time-unit ns takes whole nanoseconds, not '%s'\n",
+                        at_arg[k]);
+                goto done;
+            }
+        at_text = at_arg;
+    }
+    if (at_text) { /* given times, relative to the first key's */
+        at = malloc(nat * sizeof *at);
+        if (!at)
+            goto oom;
+        for (size_t k = 0; k < nat; k++) at[k] = rel_time(&tb, at_text[k]);
     }
     if (o->given & OPT_RATE) { /* t0 + k/HZ, each from k, while <= t_last */
-        double span = (times[n - 1] - times[0]) * o->rate;
+        double span = times[n - 1] * o->rate;
         if (!(span < 1e9)) {
             fprintf(stderr, "garotor interp: --rate %.17g gives more than 1e9 samples\n", o->rate);
             goto done;
         }
         nat = (size_t)floor(span) + 2;
         at = malloc(nat * sizeof *at);
-        if (!at)
+        off = tb.ns ? malloc(nat * sizeof *off) : NULL;
+        if (!at || (tb.ns && !off))
             goto oom;
+        uint64_t p = 0;
+        int q = 0, exact = rate_parts(o->rate_text, &p, &q);
         size_t k = 0;
         for (; k < nat; k++) {
-            double t = times[0] + (double)k / o->rate;
+            double t;
+            if (tb.ns) {
+                off[k] = rate_nanoseconds(k, exact, p, q, o->rate);
+                char b[400];
+                snprintf(b, sizeof b, "%.0f", off[k]);
+                tt_dec d;
+                tt_parse(b, &d);
+                t = tt_to_double(&d, -9);
+            } else
+                t = rate_seconds(k, exact, p, q, o->rate);
             if (!(t <= times[n - 1]))
                 break;
             at[k] = t;
         }
         nat = k;
     }
-    for (size_t k = 0; k < nat && !extrap; k++)
+    if (tb.ns && (o->given & OPT_SAMPLES)) { /* whole nanoseconds: t0 + round(k span/(N - 1)) */
+        nat = (size_t)o->samples;
+        at = malloc(nat * sizeof *at);
+        off = malloc(nat * sizeof *off);
+        if (!at || !off)
+            goto oom;
+        tt_dec span;
+        tt_parse(in.first[n - 1], &span);
+        if (tt_add(&span, &tb.ref, 1, &span)) /* cannot happen (timetext.h) */
+            goto oom;
+        double sp = tt_to_double(&span, 0);
+        for (size_t k = 0; k < nat; k++) {
+            off[k] = k + 1 == nat ? sp : floor((double)k * sp / (double)(nat - 1) + 0.5);
+            char b[400];
+            snprintf(b, sizeof b, "%.0f", off[k]);
+            tt_dec d;
+            tt_parse(b, &d);
+            at[k] = k + 1 == nat ? times[n - 1] : tt_to_double(&d, -9);
+        }
+    }
+    for (size_t k = 0; k < nat && !extrap && at_text; k++)
         if (!(at[k] >= times[0] && at[k] <= times[n - 1])) {
             fprintf(stderr,
-                    "garotor interp: %s time %.17g is outside the keys' range [%.17g, %.17g] (see "
+                    "garotor interp: %s time %s is outside the keys' range [%s, %s] (see "
                     "--extrapolate)\n",
-                    o->times ? "--times" : "--at", at[k], times[0], times[n - 1]);
+                    o->times ? "--times" : "--at", at_text[k], in.first[0], in.first[n - 1]);
             goto done;
         }
 
@@ -461,7 +643,7 @@ int cmd_interp(const cli_opts *o)
     res = malloc(ns * (size_t)width * sizeof *res);
     if (!samples || !res)
         goto oom;
-    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, times[0], times[n - 1], samples)
+    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, 0.0, times[n - 1], samples)
        : !extrap ? ga_path_sample(&path, ev, step, ns, at, samples)
                  : sample_extrapolated(&path, ev, step, extrap, ns, at, samples);
     if (st != GA_OK) {
@@ -469,11 +651,12 @@ int cmd_interp(const cli_opts *o)
         goto done;
     }
     ga_quat prev = {1, 0, 0, 0};
+    double dt = ns > 1 ? times[n - 1] / (double)(ns - 1) : 0.0;
     for (size_t k = 0; k < ns; k++) {
         double *row = res + k * (size_t)width;
-        row[0] = nat ? at[k]
-                     : (k + 1 == ns ? times[n - 1]
-                                    : times[0] + (double)k * (times[n - 1] - times[0]) / (double)(ns - 1));
+        /* the time the sample was taken at: ga_path_sample_uniform's
+           t0 + k dt, the last exactly t1 (t0 = 0, the first key) */
+        row[0] = nat ? at[k] : (k + 1 == ns ? times[n - 1] : 0.0 + (double)k * dt);
         ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
         if (pose && (st = mat4_to_pose(m, &prev, row + 1)) != GA_OK) {
             fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name, k + 1,
@@ -498,12 +681,32 @@ int cmd_interp(const cli_opts *o)
     /* open the samples' output, draw the picture, then write the samples:
      * if they cannot be written, the picture is removed again */
     tio_out out;
+    if (o->svg) { /* the picture labels the keys with their times as read */
+        key_t = malloc(n * sizeof *key_t);
+        if (!key_t)
+            goto oom;
+        for (size_t i = 0; i < n; i++) key_t[i] = strtod(in.first[i], NULL);
+    }
     if (tio_out_open(&out, o->out) == 0) {
-        if ((o->svg || o->html) && draw(o, g, scheme, ev, view, keys, times, n, samples, ns)) {
+        if ((o->svg || o->html) && draw(o, g, scheme, ev, view, keys, key_t, n, samples, ns)) {
             tio_out_close(&out, 0);
             goto done;
         }
-        for (size_t k = 0; k < ns; k++) tio_out_line(&out, res + k * (size_t)width, width);
+        static char stamp[TT_DIG + 16];
+        for (size_t k = 0; k < ns; k++) {
+            /* a sample at a key's time is stamped as the key was written;
+               a given one as given; a computed one from the reference */
+            const double *row = res + k * (size_t)width;
+            size_t key;
+            const char *text = stamp;
+            if (key_at(times, n, row[0], &key))
+                text = in.first[key];
+            else if (at_text)
+                text = at_text[k];
+            else
+                computed_stamp(&tb, row[0], off ? off[k] : 0.0, stamp);
+            tio_out_stamped(&out, text, row + 1, width - 1);
+        }
         if (tio_out_close(&out, 1) == 0)
             rc = 0;
         else if (o->svg || o->html) {
@@ -520,6 +723,10 @@ done:
     free(times);
     free(keys);
     free(at);
+    free(off);
+    free(key_t);
+    free(at_buf);
+    free(at_arg);
     free(vel);
     free(samples);
     free(res);

@@ -45,7 +45,7 @@ static const command commands[] = {
     {"interp", cmd_interp,
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
-         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML,
+         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -66,6 +66,9 @@ static const command commands[] = {
      "  --extrapolate error|hold|extend   a sample time outside the keys: an error\n"
      "                      (default), the end key with zero velocity, or the end\n"
      "                      segment's formula continued\n"
+     "  --time-unit s|ns    times in seconds (default) or whole nanoseconds; read\n"
+     "                      exactly from their text, and a sample at a key's time\n"
+     "                      is stamped as the key was (velocities: per second)\n"
      "  --format mat|pose   a pose is 16 numbers (4x4, default) or x y z qx qy qz qw\n"
      "  --group cga|matrix|affine   rotors (default), SE(3) matrices, or general\n"
      "                      homogeneous matrices (keys in --format mat)\n"
@@ -137,6 +140,7 @@ static const struct {
     {"--times", OPT_TIMES, 1},
     {"--extrapolate", OPT_EXTRAPOLATE, 1},
     {"--html", OPT_HTML, 1},
+    {"--time-unit", OPT_TIME_UNIT, 1},
 };
 
 static int usage_error(const char *cmd, const char *what, const char *arg)
@@ -187,9 +191,11 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
         case OPT_FRAME: o->frame = v; break;
         case OPT_TIMES: o->times = v; break;
         case OPT_EXTRAPOLATE: o->extrapolate = v; break;
+        case OPT_TIME_UNIT: o->time_unit = v; break;
         case OPT_RATE:
             if (parse_double(v, &o->rate) || !(o->rate > 0.0))
                 return usage_error(c->name, "--rate needs a number > 0, not", v);
+            o->rate_text = v;
             break;
         case OPT_SAMPLES: {
             char *end;

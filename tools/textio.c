@@ -37,15 +37,19 @@ int tio_error(const tio_items *items, size_t i, const char *fmt, ...)
 
 void tio_free(tio_items *items)
 {
+    if (items->first)
+        for (size_t i = 0; i < items->n; i++) free(items->first[i]);
+    free(items->first);
     free(items->value);
     free(items->item);
     memset(items, 0, sizeof *items);
 }
 
-int tio_read(const char *path, int skip_header, tio_items *out)
+static int read_items(const char *path, int skip_header, int keep_first, tio_items *out)
 {
     int from_stdin = !path || strcmp(path, "-") == 0;
-    tio_items it = {from_stdin ? "<stdin>" : path, NULL, NULL, 0};
+    tio_items it = {from_stdin ? "<stdin>" : path, NULL, NULL, 0, NULL};
+    size_t fcap = 0;
     FILE *fp = from_stdin ? stdin : fopen(path, "r");
     if (!fp) {
         fprintf(stderr, "garotor: %s: cannot open: %s\n", path, strerror(errno));
@@ -73,6 +77,13 @@ int tio_read(const char *path, int skip_header, tio_items *out)
             status = -1;
             break;
         }
+        if (keep_first && grow((void **)&it.first, &fcap, it.n + 1, sizeof *it.first)) {
+            fprintf(stderr, "garotor: %s:%ld: out of memory\n", it.name, lineno);
+            status = -1;
+            break;
+        }
+        if (keep_first)
+            it.first[it.n] = NULL;
         tio_item *cur = &it.item[it.n++];
         cur->first = nval;
         cur->count = 0;
@@ -126,6 +137,18 @@ int tio_read(const char *path, int skip_header, tio_items *out)
                 status = tio_error(&it, it.n - 1, "out of memory");
                 break;
             }
+            if (keep_first && cur->count == 0) {
+                const char *w = s;
+                while (*w == ' ' || *w == '\t' || *w == '\r' || *w == '\n' || *w == '\f' || *w == '\v') w++;
+                char *t = malloc((size_t)(end - w) + 1);
+                if (!t) {
+                    status = tio_error(&it, it.n - 1, "out of memory");
+                    break;
+                }
+                memcpy(t, w, (size_t)(end - w));
+                t[end - w] = '\0';
+                it.first[it.n - 1] = t;
+            }
             it.value[nval++] = x;
             cur->count++;
             s = end;
@@ -146,6 +169,16 @@ int tio_read(const char *path, int skip_header, tio_items *out)
     }
     *out = it;
     return 0;
+}
+
+int tio_read(const char *path, int skip_header, tio_items *out)
+{
+    return read_items(path, skip_header, 0, out);
+}
+
+int tio_read_first(const char *path, int skip_header, tio_items *out)
+{
+    return read_items(path, skip_header, 1, out);
 }
 
 static void tio_out_release(tio_out *o)
@@ -205,6 +238,13 @@ int tio_out_open(tio_out *o, const char *path)
         return -1;
     }
     return 0;
+}
+
+void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n)
+{
+    fputs(stamp, o->fp);
+    for (int i = 0; i < n; i++) fprintf(o->fp, " %.17g", v[i] == 0.0 ? 0.0 : v[i]);
+    fputc('\n', o->fp);
 }
 
 void tio_out_line(tio_out *o, const double *v, int n)

@@ -30,12 +30,17 @@ typedef struct {
     const char *name; /* file name for messages ("<stdin>" for standard input) */
     double *value;    /* all numbers, item after item */
     tio_item *item;
-    size_t n; /* number of items */
+    size_t n;     /* number of items */
+    char **first; /* tio_read_first: the text of each item's first number
+                     (NULL for an item of none); else NULL */
 } tio_items;
 
 /** Read every item of `path` (NULL or "-" for standard input). On error prints
  *  "garotor: FILE:LINE: what" to stderr and returns -1; 0 on success. */
 int tio_read(const char *path, int skip_header, tio_items *out);
+/** The same, also keeping the text of each item's first number (a time, read
+ *  exactly from it: timetext.h) in out->first. */
+int tio_read_first(const char *path, int skip_header, tio_items *out);
 void tio_free(tio_items *items);
 
 /** Print "garotor: FILE:LINE: message" for item i to stderr; returns -1. */
@@ -58,6 +63,8 @@ typedef struct {
 int tio_out_open(tio_out *o, const char *path);
 /** Write n numbers as one line with %.17g. */
 void tio_out_line(tio_out *o, const double *v, int n);
+/** Write a time stamp (as text) and n numbers as one line. */
+void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n);
 /** Finish: flush, and rename the temporary file onto the target when ok;
  *  when !ok remove it. Returns 0 or -1 (message printed). */
 int tio_out_close(tio_out *o, int ok);

@@ -58,7 +58,11 @@ def test_affine_exp_log_equal_tool(tool, rng):
 
 
 def keys_for(rng, group, n):
-    times = np.cumsum(rng.uniform(0.5, 1.5, size=n))
+    # the first key at t = 0: the tool builds its path on each time minus the
+    # first key's, subtracted exactly in decimal from the text (docs/tool.md,
+    # "Times"), and a Path on the doubles it is given; with t_0 = 0 both see
+    # the same doubles, so their samples can be compared bit for bit
+    times = np.concatenate([[0.0], np.cumsum(rng.uniform(0.5, 1.5, size=n - 1))])
     K = garotor.exp(0.8 * rng.normal(size=(n, 6)))
     if group == "affine":  # scalings and shears too, small enough that every
         # scheme's logs exist (lihao2 takes logs of extrapolated motions)
