@@ -142,6 +142,7 @@ static int rel_log(const ga_group *g, const void *a, const void *b, double *x, d
 #define DS 21
 #define DX 12
 
+static size_t scheme_doubles(ga_scheme s, size_t N, size_t D);
 static int is_decoupled(ga_scheme s) { return s == GA_SCHEME_DECOUPLED || s == GA_SCHEME_DECOUPLED_C2; }
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -482,6 +483,9 @@ static int build_decoupled(ga_path *p)
     const ga_group *g = p->group;
     size_t n = p->n;
     int c2 = p->scheme == GA_SCHEME_DECOUPLED_C2;
+    /* every slot defined (the linear scheme leaves slopes and scratch unused,
+       and build() checks the whole block for finiteness) */
+    memset(p->dec, 0, scheme_doubles(p->scheme, n, g->dim) * sizeof(double));
     for (size_t i = 0; i < n; ++i) g->to_qt(key_of(p, i), dkey(p, i), dkey(p, i) + 4);
     /* relative rotation vectors theta_i = plog(R_i^-1 R_{i+1}), through the
        group's half-turn rule as a twist (theta, 0), parked in slot a */
