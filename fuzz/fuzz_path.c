@@ -123,7 +123,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_reader rd = fz_begin(data, size);
     uint8_t b0 = fz_byte(&rd), b1 = fz_byte(&rd), flags = fz_byte(&rd);
     const ga_group *g = groups[b0 % 3];
-    ga_scheme scheme = (ga_scheme)((b0 / 3) % 6);
+    ga_scheme scheme = (ga_scheme)((b0 / 3) % GA_SCHEME_COUNT);
     ga_eval ev = (ga_eval)(b1 % 3);
     int n = 2 + (b1 / 3) % (MAXK - 1);
     int dim = g->dim;
@@ -221,6 +221,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                      : ga_path_init(g, scheme, n, times, keybuf, velp, work, wbytes, &p);
     FZ_CHECK(is_status(st), "init status %d", st);
     /* one key is the constant path on every scheme */
+    /* rotation and translation apart: rigid groups only (path.h) */
+    int decoupled = scheme == GA_SCHEME_DECOUPLED || scheme == GA_SCHEME_DECOUPLED_C2;
+    if (decoupled && affine) {
+        FZ_CHECK(st == GA_ERR_ARG && wbytes == 0, "%s on affine: status %d", ga_scheme_name(scheme), st);
+        valid = 0;
+    }
+    /* decoupled-c2's Newton sweeps are documented to converge for neighbouring
+       spacings within a factor 3 (docs/schemes.md); beyond, GA_ERR_DOMAIN may
+       come instead */
+    if (scheme == GA_SCHEME_DECOUPLED_C2)
+        for (int i = 2; i < n; i++) {
+            double ra = (times[i] - times[i - 1]) / (times[i - 1] - times[i - 2]);
+            if (!(ra >= 1.0 / 3 && ra <= 3.0))
+                valid = 0;
+        }
     int count_ok = n == 1 ||
                    ((size_t)n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3));
     if (!count_ok)

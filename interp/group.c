@@ -252,6 +252,25 @@ static void cga_adjoint(const void *g, const double *x, double *out)
     ga_generator o = {s.e12, s.e13, s.e23, s.e1n, s.e2n, s.e3n};
     twist_put(ga_generator_to_twist(o), out);
 }
+/* (quaternion, translation) of a rotor: r = T_t q (rotor.h) */
+static void cga_to_qt(const void *g, double q[4], double p[3])
+{
+    ga_rotor r = *(const ga_rotor *)g;
+    ga_quat a = ga_rotor_to_quat(r);
+    ga_vec3 t = ga_rotor_to_translation(r);
+    q[0] = a.w;
+    q[1] = a.x;
+    q[2] = a.y;
+    q[3] = a.z;
+    p[0] = t.x;
+    p[1] = t.y;
+    p[2] = t.z;
+}
+static void cga_from_qt(const double q[4], const double p[3], void *out)
+{
+    ga_quat a = {q[0], q[1], q[2], q[3]};
+    *(ga_rotor *)out = ga_rotor_from_quat(a, v3(p[0], p[1], p[2]));
+}
 static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (ga_rotor *)out); }
 static ga_mat4 cga_to_mat4(const void *g) { return ga_rotor_to_mat4(*(const ga_rotor *)g); }
 
@@ -273,6 +292,8 @@ const ga_group ga_group_cga = {
     .vee = twist_vee,
     .half_turn = twist_half_turn,
     .branch = twist_branch,
+    .to_qt = cga_to_qt,
+    .from_qt = cga_from_qt,
 };
 
 /* ---- se3: rigid-motion matrices ----------------------------------------- */
@@ -316,6 +337,44 @@ static int se3_from_mat4(ga_mat4 m, void *out)
 }
 static ga_mat4 m4_to_mat4(const void *g) { return *(const ga_mat4 *)g; }
 
+/* The quaternion of the rotation block by Shepperd's method (the largest of
+ * 1 + trace, 1 + 2 m_kk - trace gives the divisor; Shepperd 1978), written
+ * here for the matrix group on its own, not through the rotor bridge, so that
+ * cga and matrix stay two computations (group.h). */
+static void se3_to_qt(const void *g, double q[4], double p[3])
+{
+    const double *m = ((const ga_mat4 *)g)->m;
+    double tr = m[0] + m[5] + m[10],
+           c[4] = {1.0 + tr, 1.0 + 2 * m[0] - tr, 1.0 + 2 * m[5] - tr, 1.0 + 2 * m[10] - tr};
+    int k = 0;
+    for (int i = 1; i < 4; ++i)
+        if (c[i] > c[k])
+            k = i;
+    double s = 0.5 * sqrt(c[k]), f = 0.25 / s;
+    /* 4 w x = m21 - m12, 4 w y = m02 - m20, 4 w z = m10 - m01,
+       4 x y = m01 + m10, 4 x z = m02 + m20, 4 y z = m12 + m21 */
+    double wx = m[9] - m[6], wy = m[2] - m[8], wz = m[4] - m[1], xy = m[1] + m[4], xz = m[2] + m[8],
+           yz = m[6] + m[9];
+    switch (k) {
+    case 0: q[0] = s, q[1] = wx * f, q[2] = wy * f, q[3] = wz * f; break;
+    case 1: q[0] = wx * f, q[1] = s, q[2] = xy * f, q[3] = xz * f; break;
+    case 2: q[0] = wy * f, q[1] = xy * f, q[2] = s, q[3] = yz * f; break;
+    default: q[0] = wz * f, q[1] = xz * f, q[2] = yz * f, q[3] = s; break;
+    }
+    p[0] = m[3];
+    p[1] = m[7];
+    p[2] = m[11];
+}
+/* [Rot(q), p; 0 0 0 1] with Rot(q) the usual rotation matrix of a unit quaternion */
+static void se3_from_qt(const double q[4], const double p[3], void *out)
+{
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    ga_mat4 m = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), p[0],
+                  2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), p[1],
+                  2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), p[2], 0, 0, 0, 1}};
+    *(ga_mat4 *)out = m;
+}
+
 const ga_group ga_group_se3 = {
     .name = "matrix",
     .elem_size = sizeof(ga_mat4),
@@ -334,6 +393,8 @@ const ga_group ga_group_se3 = {
     .vee = twist_vee,
     .half_turn = twist_half_turn,
     .branch = twist_branch,
+    .to_qt = se3_to_qt,
+    .from_qt = se3_from_qt,
 };
 
 /* ---- affine: homogeneous matrices, general expm/logm ------------------------ */
@@ -483,6 +544,8 @@ const ga_group ga_group_affine = {
     .vee = aff_vee_checked,
     .half_turn = NULL,
     .branch = NULL,
+    .to_qt = NULL,
+    .from_qt = NULL,
 };
 
 static const ga_group *const groups[] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};

@@ -2,6 +2,7 @@
  * the group interface (group.h). See path.h for the mathematics and the
  * paper equations; each function below cites the ones it implements.
  */
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -13,14 +14,15 @@
 
 /* ---- names ---------------------------------------------------------------- */
 
-static const char *const scheme_names[] = {"screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3"};
+static const char *const scheme_names[GA_SCHEME_COUNT] = {"screw",  "bivector", "quadratic", "smooth",
+                                                          "lihao2", "lihao3",   "decoupled", "decoupled-c2"};
 static const char *const eval_names[] = {"direct", "euler", "exact"};
 
-const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < 6 ? scheme_names[s] : "?"; }
+const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < GA_SCHEME_COUNT ? scheme_names[s] : "?"; }
 
 int ga_scheme_by_name(const char *name, ga_scheme *out)
 {
-    for (unsigned i = 0; name && i < 6; ++i)
+    for (unsigned i = 0; name && i < GA_SCHEME_COUNT; ++i)
         if (strcmp(name, scheme_names[i]) == 0) {
             *out = (ga_scheme)i;
             return GA_OK;
@@ -129,6 +131,476 @@ static int rel_log(const ga_group *g, const void *a, const void *b, double *x, d
     return plog(g, rel, x);
 }
 
+/* ---- decoupled schemes: rotation and translation apart ------------------------ */
+
+/* Layout of p->dec: per key DK doubles (q (w, x, y, z), p, the body angular
+ * rate w at the key, the position slope s), then per segment DS doubles (the
+ * rotation vector's cubic a, b, c: r(tau) = a tau + b tau^2 + c tau^3; the
+ * position's cubic y, s, c2, c3, as scipy's PPoly: y + s tau + c2 tau^2 +
+ * c3 tau^3; tau = t - t_i), then per key DX doubles of solver scratch. */
+#define DK 13
+#define DS 21
+#define DX 12
+
+static size_t scheme_doubles(ga_scheme s, size_t N, size_t D);
+static int is_decoupled(ga_scheme s) { return s == GA_SCHEME_DECOUPLED || s == GA_SCHEME_DECOUPLED_C2; }
+
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static void cross3(const double *a, const double *b, double *o)
+{
+    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    o[0] = x;
+    o[1] = y;
+    o[2] = z;
+}
+
+/* The coefficient functions of the SO(3) right Jacobian J_r(r) = I - k0 [r]x
+ * + k1 [r]x^2, k0 = (1 - cos th)/th^2, k1 = (th - sin th)/th^3, and of its
+ * inverse J_r^-1(r) = I + [r]x/2 + ki [r]x^2, ki = (1 - (th/2) cot(th/2))/th^2
+ * (Sola, Deray, Atchuthan 2018, "A micro Lie theory for state estimation in
+ * robotics", the right Jacobian of SO(3) and its inverse), and of
+ * d/dt(J_r(r)) r' = (r.r')(n1 (r x r') + n2 r x (r x r')) + k1 r' x (r x r'),
+ * n1 = (2 - 2 cos th - th sin th)/th^4, n2 = (3 sin th - 2 th - th cos th)/th^5:
+ * the product rule on J_r(r) r' with d th/dt = r.r'/th (scipy's
+ * RotationSpline, _angular_acceleration_nonlinear_term, has the same).
+ * Below th = 1 (ki: 1/2) by their Taylor series, where the closed forms
+ * cancel: 2 - 2 cos th - th sin th is th^4/12 formed from terms of size 2
+ * (scipy switches at 1e-4, where this loses up to 5e-3 relative). */
+static void so3_coef(double th, double *k0, double *k1, double *n1, double *n2, double *ki)
+{
+    double x = th * th;
+    if (th < 1.0) {
+        /* k0 = sum_{m>=1} (-1)^(m+1) x^(m-1)/(2m)!, k1 the same over (2m+1)!,
+           n1 = sum_{m>=2} (-1)^m (2m-2)/(2m)! x^(m-2),
+           n2 = sum_{m>=2} (-1)^m (2-2m)/(2m+1)! x^(m-2); 14 terms leave under
+           1/28! at x = 1 */
+        double a = 0, b = 0, c = 0, d = 0, f2 = 2.0, f3 = 6.0, xp = 1.0, xq = 1.0, sg = 1.0;
+        for (int m = 1; m <= 14; ++m) {
+            a += sg * xp / f2; /* xp = x^(m-1) */
+            b += sg * xp / f3;
+            if (m >= 2) { /* xq = x^(m-2) */
+                c += -sg * (2.0 * m - 2.0) / f2 * xq;
+                d += -sg * (2.0 - 2.0 * m) / f3 * xq;
+                xq *= x;
+            }
+            sg = -sg;
+            xp *= x;
+            f2 *= (2.0 * m + 1) * (2.0 * m + 2);
+            f3 *= (2.0 * m + 2) * (2.0 * m + 3);
+        }
+        *k0 = a;
+        *k1 = b;
+        *n1 = c;
+        *n2 = d;
+    } else {
+        double s = sin(th), co = cos(th);
+        *k0 = (1.0 - co) / x;
+        *k1 = (th - s) / (x * th);
+        *n1 = (2.0 - 2.0 * co - th * s) / (x * x);
+        *n2 = (3.0 * s - 2.0 * th - th * co) / (x * x * th);
+    }
+    if (th < 0.5) {
+        /* (th/2) cot(th/2) = sum_n (-1)^n B_2n th^2n/(2n)!: ki = 1/12 + x/720 +
+           x^2/30240 + x^3/1209600 + x^4/47900160 + 691 x^5/1307674368000
+           (Bernoulli numbers; the next term is below 1e-17 of the first) */
+        *ki = 1.0 / 12 +
+              x * (1.0 / 720 + x * (1.0 / 30240 + x * (1.0 / 1209600 +
+                                                       x * (1.0 / 47900160 + x * 691.0 / 1307674368000.0))));
+    } else {
+        *ki = (1.0 - 0.5 * th / tan(0.5 * th)) / x;
+    }
+}
+
+/* out = J_r(r) y */
+static void jr_apply(const double *r, const double *y, double *out)
+{
+    double k0, k1, n1, n2, ki, c[3], cc[3];
+    so3_coef(sqrt(dot3(r, r)), &k0, &k1, &n1, &n2, &ki);
+    cross3(r, y, c);
+    cross3(r, c, cc);
+    for (int k = 0; k < 3; ++k) out[k] = y[k] - k0 * c[k] + k1 * cc[k];
+}
+/* out = J_r(r)^-1 y */
+static void jrinv_apply(const double *r, const double *y, double *out)
+{
+    double k0, k1, n1, n2, ki, c[3], cc[3];
+    so3_coef(sqrt(dot3(r, r)), &k0, &k1, &n1, &n2, &ki);
+    cross3(r, y, c);
+    cross3(r, c, cc);
+    for (int k = 0; k < 3; ++k) out[k] = y[k] + 0.5 * c[k] + ki * cc[k];
+}
+/* out = d/dt(J_r(r(t))) r'(t), the angular acceleration's term beyond J_r r'' */
+static void jr_nonlin(const double *r, const double *rd, double *out)
+{
+    double k0, k1, n1, n2, ki, cp[3], ccp[3], dccp[3], dp = dot3(r, rd);
+    so3_coef(sqrt(dot3(r, r)), &k0, &k1, &n1, &n2, &ki);
+    cross3(r, rd, cp);
+    cross3(r, cp, ccp);
+    cross3(rd, cp, dccp);
+    for (int k = 0; k < 3; ++k) out[k] = dp * (n1 * cp[k] + n2 * ccp[k]) + k1 * dccp[k];
+}
+
+/* Hamilton product and the unit quaternion's exp and principal log (angle in
+ * [0, pi], the sign with w >= 0). */
+static void qmul(const double *a, const double *b, double *o)
+{
+    double w = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    double x = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    double y = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    double z = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+    o[0] = w;
+    o[1] = x;
+    o[2] = y;
+    o[3] = z;
+}
+/* exp of the rotation vector r: (cos(th/2), sin(th/2) r/th) */
+static void qexp(const double *r, double *q)
+{
+    double th = sqrt(dot3(r, r)), f = th < 1e-4 ? 0.5 - th * th / 48.0 : sin(0.5 * th) / th;
+    q[0] = cos(0.5 * th);
+    for (int k = 0; k < 3; ++k) q[k + 1] = f * r[k];
+}
+/* the rotation vector of q: 2 atan2(|v|, w) v/|v| with w >= 0 */
+static void qlog(const double *q, double *r)
+{
+    double sg = q[0] < 0 ? -1.0 : 1.0, w = sg * q[0], v[3] = {sg * q[1], sg * q[2], sg * q[3]};
+    double s = sqrt(dot3(v, v)), f = s > 0 ? 2.0 * atan2(s, w) / s : 2.0 / w;
+    for (int k = 0; k < 3; ++k) r[k] = f * v[k];
+}
+/* out = R(q)^T x = x - 2w (u x x) + 2 u x (u x x), q = (w, u) unit */
+static void qrot_inv(const double *q, const double *x, double *out)
+{
+    double c[3], cc[3];
+    cross3(q + 1, x, c);
+    cross3(q + 1, c, cc);
+    for (int k = 0; k < 3; ++k) out[k] = x[k] - 2.0 * q[0] * c[k] + 2.0 * cc[k];
+}
+
+static double *dkey(const ga_path *p, size_t i) { return p->dec + i * DK; }
+static double *dseg(const ga_path *p, size_t i) { return p->dec + p->n * DK + i * DS; }
+static double *dscr(const ga_path *p, size_t i) { return p->dec + p->n * DK + (p->n - 1) * DS + i * DX; }
+
+/* 3x3 helpers for the block-tridiagonal solve (row-major) */
+static void m3_of_jr(const double *r, int inv, double *m)
+{
+    for (int j = 0; j < 3; ++j) {
+        double e[3] = {j == 0, j == 1, j == 2}, c[3];
+        if (inv)
+            jrinv_apply(r, e, c);
+        else
+            jr_apply(r, e, c);
+        for (int i = 0; i < 3; ++i) m[3 * i + j] = c[i];
+    }
+}
+static void m3_mul(const double *a, const double *b, double *o)
+{
+    double t[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            t[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+    memcpy(o, t, sizeof t);
+}
+static void m3_vec(const double *a, const double *x, double *o)
+{
+    double t[3];
+    for (int i = 0; i < 3; ++i) t[i] = a[3 * i] * x[0] + a[3 * i + 1] * x[1] + a[3 * i + 2] * x[2];
+    memcpy(o, t, sizeof t);
+}
+/* the inverse by the adjugate; the matrices here are diagonally dominant */
+static void m3_inv(const double *a, double *o)
+{
+    double c[9] = {a[4] * a[8] - a[5] * a[7], a[2] * a[7] - a[1] * a[8], a[1] * a[5] - a[2] * a[4],
+                   a[5] * a[6] - a[3] * a[8], a[0] * a[8] - a[2] * a[6], a[2] * a[3] - a[0] * a[5],
+                   a[3] * a[7] - a[4] * a[6], a[1] * a[6] - a[0] * a[7], a[0] * a[4] - a[1] * a[3]};
+    double det = a[0] * c[0] + a[1] * c[3] + a[2] * c[6];
+    for (int k = 0; k < 9; ++k) o[k] = c[k] / det;
+}
+
+/* The not-a-knot slopes s_i of the cubic spline through (t_i, y_i), one
+ * coordinate (stride DK in y and s), as scipy's CubicSpline has them: the
+ * interior rows h_i s_{i-1} + 2(h_{i-1} + h_i) s_i + h_{i-1} s_{i+1} =
+ * 3(h_i m_{i-1} + h_{i-1} m_i), m_i = (y_{i+1} - y_i)/h_i (de Boor ch. IV),
+ * and the not-a-knot rows h_1 s_0 + (h_0 + h_1) s_1 = ((h_0 + 2(h_0 + h_1))
+ * h_1 m_0 + h_0^2 m_1)/(h_0 + h_1) and its mirror (scipy's b[0], b[-1]). Each
+ * end row is used to eliminate s_0 (s_{n-1}) from its neighbour, leaving a
+ * strictly diagonally dominant tridiagonal system in s_1..s_{n-2} (rows:
+ * (h_0 + h_1) s_1 + h_0 s_2 = r_1 - r_0, ...), solved by Thomas' algorithm.
+ * 2 keys: the line; 3 keys: the parabola (scipy's special cases). */
+static void notaknot(const ga_path *p, const double *y, double *s, double *cp, double *rp)
+{
+    size_t n = p->n;
+#define Y(i) y[(i)*DK]
+#define S(i) s[(i)*DK]
+    double h0 = seg_len(p, 0), m0 = (Y(1) - Y(0)) / h0;
+    if (n == 2) {
+        S(0) = S(1) = m0;
+        return;
+    }
+    double h1 = seg_len(p, 1), m1 = (Y(2) - Y(1)) / h1;
+    if (n == 3) { /* the parabola: its slope at t_1, and 2 m - s at the ends */
+        S(1) = (h1 * m0 + h0 * m1) / (h0 + h1);
+        S(0) = 2.0 * m0 - S(1);
+        S(2) = 2.0 * m1 - S(1);
+        return;
+    }
+    double r0 = ((h0 + 2.0 * (h0 + h1)) * h1 * m0 + h0 * h0 * m1) / (h0 + h1);
+    double ha = seg_len(p, n - 3), hb = seg_len(p, n - 2);
+    double ma = (Y(n - 2) - Y(n - 3)) / ha, mb = (Y(n - 1) - Y(n - 2)) / hb;
+    double rl = (hb * hb * ma + (2.0 * (ha + hb) + hb) * ha * mb) / (ha + hb);
+    /* forward sweep over rows k = 1..n-2 (cp: modified upper diagonal, rp: rhs) */
+    for (size_t k = 1; k + 1 < n; ++k) {
+        double hl = seg_len(p, k - 1), hr = seg_len(p, k);
+        double ml = (Y(k) - Y(k - 1)) / hl, mr = (Y(k + 1) - Y(k)) / hr;
+        double lo = hr, di = 2.0 * (hl + hr), up = hl, r = 3.0 * (hr * ml + hl * mr);
+        if (k == 1) { /* s_0 eliminated */
+            lo = 0.0;
+            di -= hl + hr;
+            r -= r0;
+        }
+        if (k == n - 2) { /* s_{n-1} eliminated */
+            up = 0.0;
+            di -= hl + hr;
+            r -= rl;
+        }
+        if (k > 1) {
+            di -= lo * cp[k - 1];
+            r -= lo * rp[k - 1];
+        }
+        cp[k] = up / di;
+        rp[k] = r / di;
+    }
+    S(n - 2) = rp[n - 2];
+    for (size_t k = n - 2; k-- > 1;) S(k) = rp[k] - cp[k] * S(k + 1);
+    S(0) = (r0 - (h0 + h1) * S(1)) / h1;
+    S(n - 1) = (rl - (ha + hb) * S(n - 2)) / ha;
+#undef Y
+#undef S
+}
+
+/* Newton sweeps of the C2 rotation system (path.h, docs/schemes.md). Row k
+ * (interior key), the angular accelerations of segments k-1 (at its end) and
+ * k (at its start) equal, with r'(h) = J_r^-1(theta) w_{k}:
+ *   2/h_{k-1} J_r(theta_{k-1}) w_{k-1} + (4/h_{k-1} + 4/h_k) w_k
+ *     + 2/h_k J_r^-1(theta_k) w_{k+1}
+ *   = 6 theta_{k-1}/h_{k-1}^2 + 6 theta_k/h_k^2 - N(theta_{k-1}, r'_{k-1}(h))
+ * (scipy's RotationSpline._solve_for_angular_rates, which iterates it as a
+ * fixed point, 10 sweeps at most). Each sweep here linearises N at the
+ * current rates and solves the block-tridiagonal system by block Thomas
+ * (without N it is block diagonally dominant: |J_r| <= 1, |J_r^-1| <= pi/2).
+ * At most DEC_SWEEPS; converged when no rate moves by more than
+ * 4 DBL_EPSILON of the largest, or the change stops shrinking once it is
+ * below 1e-12 of it. */
+#define DEC_SWEEPS 200
+
+static int solve_rates(ga_path *p)
+{
+    size_t n = p->n;
+    double prev = INFINITY;
+    for (int it = 0; it < DEC_SWEEPS; ++it) {
+        double big = 0.0, delta = 0.0;
+        for (size_t k = 1; k + 1 < n; ++k) {
+            const double *rl = dseg(p, k - 1), *rr = dseg(p, k); /* theta in slot a (build) */
+            double hl = seg_len(p, k - 1), hr = seg_len(p, k);
+            double L[9], U[9], D[9], rhs[3], rde[3], nl[3], t3[3], *C = dscr(p, k), *y = C + 9;
+            m3_of_jr(rl, 0, L);
+            m3_of_jr(rr, 1, U);
+
+            /* N(theta_{k-1}, J_r^-1(theta_{k-1}) w_k), linearised at the current
+               w_k: N + Jn (w - w_k), Jn = dN/dr' J_r^-1, dN/dr' by polarisation
+               (N is quadratic in r': dN/dr' e = (N(r' + s e) - N(r' - s e))/(2s),
+               exact for any s; s = |r'| keeps the rounding relative) */
+            const double *wk = dkey(p, k) + 7;
+            double Jn[9], Ji[9], sc, jw[3];
+            jrinv_apply(rl, wk, rde);
+            jr_nonlin(rl, rde, nl);
+            sc = sqrt(dot3(rde, rde));
+            if (!(sc > 0))
+                sc = 1.0;
+            for (int c = 0; c < 3; ++c) {
+                double xp[3], xm[3], np[3], nm[3];
+                for (int j = 0; j < 3; ++j) {
+                    xp[j] = rde[j] + (j == c ? sc : 0.0);
+                    xm[j] = rde[j] - (j == c ? sc : 0.0);
+                }
+                jr_nonlin(rl, xp, np);
+                jr_nonlin(rl, xm, nm);
+                for (int j = 0; j < 3; ++j) Jn[3 * j + c] = (np[j] - nm[j]) / (2.0 * sc);
+            }
+            m3_of_jr(rl, 1, Ji);
+            m3_mul(Jn, Ji, Jn);
+            m3_vec(Jn, wk, jw);
+            for (int j = 0; j < 3; ++j)
+                rhs[j] = 6.0 * rl[j] / (hl * hl) + 6.0 * rr[j] / (hr * hr) - nl[j] + jw[j];
+            for (int j = 0; j < 9; ++j) {
+                L[j] *= 2.0 / hl;
+                U[j] *= 2.0 / hr;
+                D[j] = (j % 4 == 0 ? 4.0 / hl + 4.0 / hr : 0.0) + Jn[j];
+            }
+            if (k == 1) {
+                m3_vec(L, dkey(p, 0) + 7, t3);
+                for (int j = 0; j < 3; ++j) rhs[j] -= t3[j];
+            } else {
+                double LC[9];
+                const double *Cp = dscr(p, k - 1), *yp = Cp + 9;
+                m3_mul(L, Cp, LC);
+                for (int j = 0; j < 9; ++j) D[j] -= LC[j];
+                m3_vec(L, yp, t3);
+                for (int j = 0; j < 3; ++j) rhs[j] -= t3[j];
+            }
+            if (k == n - 2) {
+                m3_vec(U, dkey(p, n - 1) + 7, t3);
+                for (int j = 0; j < 3; ++j) rhs[j] -= t3[j];
+                for (int j = 0; j < 9; ++j) U[j] = 0.0;
+            }
+            double Di[9];
+            m3_inv(D, Di);
+            m3_mul(Di, U, C);
+            m3_vec(Di, rhs, y);
+        }
+        double nxt[3] = {0, 0, 0};
+        for (size_t k = n - 1; k-- > 1;) {
+            double *C = dscr(p, k), *y = C + 9, *w = dkey(p, k) + 7, nw[3];
+            m3_vec(C, nxt, nw);
+            for (int j = 0; j < 3; ++j) {
+                nw[j] = y[j] - nw[j];
+                delta = fmax(delta, fabs(nw[j] - w[j]));
+                big = fmax(big, fabs(nw[j]));
+            }
+            memcpy(w, nw, sizeof nw);
+            memcpy(nxt, nw, sizeof nw);
+        }
+        if (!isfinite(delta))
+            return GA_ERR_DOMAIN;
+        if (delta <= 4 * DBL_EPSILON * big || (delta <= 1e-12 * big && delta >= prev))
+            return GA_OK;
+        prev = delta;
+    }
+    return GA_ERR_DOMAIN;
+}
+
+static int build_decoupled(ga_path *p)
+{
+    const ga_group *g = p->group;
+    size_t n = p->n;
+    int c2 = p->scheme == GA_SCHEME_DECOUPLED_C2;
+    /* every slot defined (the linear scheme leaves slopes and scratch unused,
+       and build() checks the whole block for finiteness) */
+    memset(p->dec, 0, scheme_doubles(p->scheme, n, g->dim) * sizeof(double));
+    for (size_t i = 0; i < n; ++i) g->to_qt(key_of(p, i), dkey(p, i), dkey(p, i) + 4);
+    /* relative rotation vectors theta_i = plog(R_i^-1 R_{i+1}), through the
+       group's half-turn rule as a twist (theta, 0), parked in slot a */
+    for (size_t i = 0; i + 1 < n; ++i) {
+        double qc[4], qr[4], x[MAXD] = {0};
+        const double *q0 = dkey(p, i), *q1 = dkey(p, i + 1);
+        qc[0] = q0[0];
+        for (int k = 1; k < 4; ++k) qc[k] = -q0[k];
+        qmul(qc, q1, qr);
+        qlog(qr, x);
+        if (g->half_turn)
+            g->half_turn(x);
+        memcpy(dseg(p, i), x, 3 * sizeof(double));
+    }
+    /* positions */
+    for (int c = 0; c < 3; ++c) {
+        if (c2) {
+            double *cp = dscr(p, 0), *rp = cp + n; /* scratch: 2n doubles of the DX n */
+            notaknot(p, dkey(p, 0) + 4 + c, dkey(p, 0) + 10 + c, cp, rp);
+        } else {
+            for (size_t i = 0; i + 1 < n; ++i)
+                dkey(p, i)[10 + c] = (dkey(p, i + 1)[4 + c] - dkey(p, i)[4 + c]) / seg_len(p, i);
+        }
+        for (size_t i = 0; i + 1 < n; ++i) {
+            /* scipy's CubicSpline coefficients: t = (s_i + s_{i+1} - 2m)/h,
+               c3 = t/h, c2 = (m - s_i)/h - t; linear: s_i the chord slope */
+            double h = seg_len(p, i), y0 = dkey(p, i)[4 + c], m = (dkey(p, i + 1)[4 + c] - y0) / h;
+            double *pc = dseg(p, i) + 9;
+            pc[c] = y0;
+            if (c2) {
+                double s0 = dkey(p, i)[10 + c], s1 = dkey(p, i + 1)[10 + c], t = (s0 + s1 - 2.0 * m) / h;
+                pc[3 + c] = s0;
+                pc[6 + c] = (m - s0) / h - t;
+                pc[9 + c] = t / h;
+            } else {
+                pc[3 + c] = m;
+                pc[6 + c] = pc[9 + c] = 0.0;
+            }
+        }
+    }
+    /* angular rates: the chord rates to start (and for good at the ends) */
+    for (size_t i = 0; i < n; ++i) {
+        size_t j = i + 1 < n ? i : i - 1;
+        double h = seg_len(p, j);
+        for (int k = 0; k < 3; ++k) dkey(p, i)[7 + k] = dseg(p, j)[k] / h;
+    }
+    if (c2 && n > 2) {
+        int st = solve_rates(p);
+        if (st != GA_OK)
+            return st;
+    }
+    /* rotation cubics: a = w_i, r'(h) = J_r^-1(theta) w_{i+1},
+       b = (3 theta - 2h a - h r'(h))/h^2, c = (-2 theta + h a + h r'(h))/h^3
+       (Hermite; scipy's RotationSpline coefficients) */
+    for (size_t i = 0; i + 1 < n; ++i) {
+        double *rc = dseg(p, i), th[3], re[3], h = seg_len(p, i);
+        const double *a = dkey(p, i) + 7;
+        memcpy(th, rc, sizeof th);
+        if (c2)
+            jrinv_apply(th, dkey(p, i + 1) + 7, re);
+        for (int k = 0; k < 3; ++k) {
+            rc[k] = c2 ? a[k] : th[k] / h;
+            rc[3 + k] = c2 ? (3.0 * th[k] - 2.0 * h * a[k] - h * re[k]) / (h * h) : 0.0;
+            rc[6 + k] = c2 ? (-2.0 * th[k] + h * a[k] + h * re[k]) / (h * h * h) : 0.0;
+        }
+    }
+    return GA_OK;
+}
+
+/* The pose on segment seg at u, and (either may be NULL) the body velocity and
+ * acceleration per unit t. */
+static int dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a)
+{
+    const double *rc = dseg(p, seg), *pc = rc + 9, *q0 = dkey(p, seg);
+    double tau = u * seg_len(p, seg), r[3], rd[3], rdd[3], pos[3], pd[3], pdd[3], qe[4], q[4];
+    for (int k = 0; k < 3; ++k) {
+        r[k] = ((rc[6 + k] * tau + rc[3 + k]) * tau + rc[k]) * tau;
+        rd[k] = (3.0 * rc[6 + k] * tau + 2.0 * rc[3 + k]) * tau + rc[k];
+        rdd[k] = 6.0 * rc[6 + k] * tau + 2.0 * rc[3 + k];
+        pos[k] = ((pc[9 + k] * tau + pc[6 + k]) * tau + pc[3 + k]) * tau + pc[k];
+        pd[k] = (3.0 * pc[9 + k] * tau + 2.0 * pc[6 + k]) * tau + pc[3 + k];
+        pdd[k] = 6.0 * pc[9 + k] * tau + 2.0 * pc[6 + k];
+    }
+    qexp(r, qe);
+    qmul(q0, qe, q);
+    if (out) {
+        p->group->from_qt(q, pos, out);
+        int st = finite_elem(p->group, out);
+        if (st != GA_OK)
+            return st;
+    }
+    if (v || a) {
+        /* w = J_r(r) r', v = R^T p'; w' = J_r(r) r'' + N(r, r'),
+           d/dt (R^T p') = R^T p'' - w x R^T p' */
+        double w[3], lv[3], wd[3], nl[3], la[3], c[3];
+        jr_apply(r, rd, w);
+        qrot_inv(q, pd, lv);
+        if (v) {
+            memcpy(v, w, sizeof w);
+            memcpy(v + 3, lv, sizeof lv);
+        }
+        if (a) {
+            jr_apply(r, rdd, wd);
+            jr_nonlin(r, rd, nl);
+            qrot_inv(q, pdd, la);
+            cross3(w, lv, c);
+            for (int k = 0; k < 3; ++k) {
+                a[k] = wd[k] + nl[k];
+                a[3 + k] = la[k] - c[k];
+            }
+        }
+    }
+    return GA_OK;
+}
+
 /* ---- workspace ---------------------------------------------------------------- */
 
 static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
@@ -141,13 +613,15 @@ static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
     case GA_SCHEME_BIVECTOR: return N * D;
     case GA_SCHEME_QUADRATIC:
     case GA_SCHEME_SMOOTH: return N * D + S * D + S;
+    case GA_SCHEME_DECOUPLED:
+    case GA_SCHEME_DECOUPLED_C2: return N * (DK + DX) + S * DS;
     }
     return 0;
 }
 
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n)
 {
-    if (!g || n < 1 || (unsigned)s > GA_SCHEME_LIHAO3)
+    if (!g || n < 1 || (unsigned)s >= GA_SCHEME_COUNT || (is_decoupled(s) && (!g->to_qt || !g->from_qt)))
         return 0;
     size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
     return sizeof(double) * (n + n * stride + scheme_doubles(s, n, g->dim));
@@ -157,8 +631,10 @@ size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n)
 static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
                   void *work, size_t bytes)
 {
-    if (!p || !g || !times || !keys || !work || (unsigned)s > GA_SCHEME_LIHAO3)
+    if (!p || !g || !times || !keys || !work || (unsigned)s >= GA_SCHEME_COUNT)
         return GA_ERR_ARG;
+    if (is_decoupled(s) && (!g->to_qt || !g->from_qt))
+        return GA_ERR_ARG; /* rotation and translation apart: rigid groups only */
     if (n != 1 && (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)))
         return GA_ERR_ARG; /* one key: the constant path, on every scheme */
     if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
@@ -196,6 +672,8 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
         p->gen = w;
         p->slope = w + n * d;
         break;
+    case GA_SCHEME_DECOUPLED:
+    case GA_SCHEME_DECOUPLED_C2: p->dec = w; break;
     }
     return GA_OK;
 }
@@ -386,6 +864,8 @@ static int build_scheme(ga_path *p, const double *vel)
             build_smooth(p);
         return st;
     }
+    case GA_SCHEME_DECOUPLED:
+    case GA_SCHEME_DECOUPLED_C2: return build_decoupled(p);
     }
     return GA_ERR_ARG;
 }
@@ -513,6 +993,8 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
     size_t d = g->dim, nf = nfac(p->scheme);
     int st;
     double x[MAXD], xd[MAXD];
+    if (is_decoupled(p->scheme))
+        return dec_eval(p, seg, u, out, NULL, NULL);
     if (nf == 0) { /* exp(X(t)) */
         gen_curve(p, seg, u, x, xd);
         return g->exp(x, out);
@@ -561,6 +1043,12 @@ static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
     size_t d = g->dim, nf = nfac(p->scheme);
     int st;
     double x[MAXD], xd[MAXD], w[MAXD];
+    if (is_decoupled(p->scheme)) {
+        if ((st = dec_eval(p, seg, u, NULL, w, NULL)))
+            return st;
+        lin(d, v, seg_len(p, seg), w, 0.0, w);
+        return GA_OK;
+    }
     if (nf == 0) { /* J_r(X) X' (group.h dexp), X' per unit t, times h */
         gen_curve(p, seg, u, x, xd);
         g->dexp(x, xd, w);
@@ -727,6 +1215,13 @@ static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
     size_t d = g->dim, nf = nfac(p->scheme);
     double h = seg_len(p, seg);
     int st;
+    if (is_decoupled(p->scheme)) {
+        if ((st = dec_eval(p, seg, u, NULL, v, a)))
+            return st;
+        lin(d, v, h, v, 0.0, v);
+        lin(d, a, h * h, a, 0.0, a);
+        return GA_OK;
+    }
     if (nf == 0) {
         /* G = exp(X(t)): the jet exp(X + e X' + e^2 X''/2) gives G' and G''/2;
          * body velocity G^-1 G', acceleration d/dt(G^-1 G') = G^-1 G'' - (G^-1 G')^2 */

@@ -381,6 +381,9 @@ expect_error "--v0 with screw" "--v0 applies only" \
     "$G" interp --format pose --samples 3 --v0 0 0 0 0 0 0 --in "$K" --out "$d/out"
 expect_error "--velocities with screw" "--velocities applies only" \
     "$G" interp --format pose --samples 3 --velocities "$d/vel2" --in "$K" --out "$d/out"
+printf '0 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n1 1 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1\n' >"$d/matkeys"
+expect_error "decoupled on affine" "--scheme decoupled is not defined on --group affine" \
+    "$G" interp --scheme decoupled --group affine --samples 3 --in "$d/matkeys" --out "$d/out"
 expect_error "--at not numbers" "--at needs finite times" \
     "$G" interp --format pose --at 0,x --in "$K" --out "$d/out"
 expect_error "--view without --svg" "--view applies only with --svg" \

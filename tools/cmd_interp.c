@@ -352,7 +352,7 @@ int cmd_interp(const cli_opts *o)
     if (o->scheme && ga_scheme_by_name(o->scheme, &scheme) != GA_OK) {
         fprintf(stderr,
                 "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
-                "lihao2 or lihao3, not '%s'\n",
+                "lihao2, lihao3, decoupled or decoupled-c2, not '%s'\n",
                 o->scheme);
         return 2;
     }
@@ -624,6 +624,11 @@ int cmd_interp(const cli_opts *o)
 
     ga_path path;
     size_t wbytes = ga_path_workspace_size(g, scheme, n);
+    if (wbytes == 0) { /* the scheme is not defined on the group (path.h) */
+        fprintf(stderr, "garotor interp: --scheme %s is not defined on --group %s\n", ga_scheme_name(scheme),
+                g->name);
+        goto done;
+    }
     work = malloc(wbytes);
     if (!work)
         goto oom;

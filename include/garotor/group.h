@@ -111,6 +111,16 @@ struct ga_group {
      *  (keys a half turn apart, where rounding would decide) and for a pure
      *  translation (th = 0, no other branch) x is kept. */
     void (*branch)(const double *prev, double *x);
+    /** The rotation and translation of a rigid element: q = (w, x, y, z) a
+     *  unit quaternion (Hamilton's convention, either sign) and p such that
+     *  the element is "rotate by q, then translate by p" (its 4x4 matrix is
+     *  [Rot(q), p; 0 0 0 1]). NULL where an element is not a rotation and a
+     *  translation (affine): the decoupled schemes (path.h), which
+     *  interpolate the two separately, are refused there with GA_ERR_ARG. */
+    void (*to_qt)(const void *g, double q[4], double p[3]);
+    /** The element "rotate by q, then translate by p" (q used as given: unit
+     *  to rounding); NULL where to_qt is. */
+    void (*from_qt)(const double q[4], const double p[3], void *out);
 };
 
 /** CGA rotors (ga_rotor, rotor.h): the closed forms of Wareham-Lasenby. */

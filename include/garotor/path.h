@@ -60,6 +60,28 @@
  *              A_i's frame. A path whose keys lie on one screw motion is then
  *              reproduced exactly (every s_i equal, so C_i = D_i = 0).
  *
+ *   DECOUPLED  rotation and translation apart (group.h to_qt/from_qt; rigid
+ *              groups only, GA_ERR_ARG on affine): A(t) = (R(t), p(t)) with
+ *              R(t) = R_i exp(u r_i), r_i = plog(R_i^-1 R_{i+1}) the principal
+ *              rotation vector (slerp: the rotation part of SCREW; scipy's
+ *              Slerp), and p(t) = p_i + (t - t_i)(p_{i+1} - p_i)/h_i.
+ *   DECOUPLED_C2  p(t): the not-a-knot cubic spline through the key
+ *              positions (de Boor, A Practical Guide to Splines, ch. IV;
+ *              scipy's CubicSpline default: a line for 2 keys, the parabola
+ *              for 3). R(t) = R_i exp(r(t - t_i)), r a cubic in the rotation
+ *              vector with r(0) = 0, r(h_i) = r_i, r'(0) = w_i and
+ *              J_r(r_i) r'(h_i) = w_{i+1}: the body angular rate is w_i at
+ *              every key (C1), and the rates w_1..w_{n-2} solve the C2
+ *              conditions, a block-tridiagonal system that is nonlinear
+ *              through the term N(r, r') = d/dt(J_r(r)) r' of the angular
+ *              acceleration J_r(r) r'' + N, solved by Newton sweeps over
+ *              its block-tridiagonal linearisation (docs/schemes.md). End
+ *              conditions: w_0 = r_0/h_0, w_{n-1} = r_{n-2}/h_{n-2} (scipy's
+ *              RotationSpline, whose construction this is). GA_ERR_DOMAIN
+ *              if the sweeps do not converge (never seen with neighbouring
+ *              spacings within a factor 3; see docs/schemes.md).
+ *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
+ *
  * Branch rule (BIVECTOR, QUADRATIC, SMOOTH): X_0 is the principal log of A_0;
  * for i >= 1, X_i is the principal log of A_i passed through the group's
  * branch rule with X_{i-1} (group.h: on cga/se3, W-L's rule that consecutive
@@ -151,8 +173,14 @@ typedef enum {
     GA_SCHEME_QUADRATIC,
     GA_SCHEME_SMOOTH,
     GA_SCHEME_LIHAO2,
-    GA_SCHEME_LIHAO3
+    GA_SCHEME_LIHAO3,
+    GA_SCHEME_DECOUPLED,
+    GA_SCHEME_DECOUPLED_C2
 } ga_scheme;
+
+/** The number of schemes: GA_SCHEME_SCREW .. GA_SCHEME_COUNT - 1 are all of
+ *  them (for loops over every scheme). */
+#define GA_SCHEME_COUNT 8
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
 
@@ -186,9 +214,12 @@ typedef struct {
     double *gen;       /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
     double *slope;     /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
     double *vel;       /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
+    double *dec;       /**< DECOUPLED/DECOUPLED_C2: per key q, p, angular rate, position slope (13
+                            doubles), then per segment the rotation and position cubics (21) */
 } ga_path;
 
-/** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3". */
+/** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3",
+ *  "decoupled", "decoupled-c2". */
 const char *ga_scheme_name(ga_scheme s);
 /** The scheme called name; GA_ERR_ARG if there is none. */
 int ga_scheme_by_name(const char *name, ga_scheme *out);
@@ -200,7 +231,9 @@ int ga_eval_by_name(const char *name, ga_eval *out);
  *  for QUADRATIC and SMOOTH). QUADRATIC takes exactly 3 (or 1). */
 size_t ga_scheme_min_keys(ga_scheme s);
 
-/** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1). */
+/** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
+ *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
+ *  without to_qt/from_qt, i.e. affine). */
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
 
 /** Build into *out a path through n keys (n group elements, each
