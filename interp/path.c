@@ -898,10 +898,12 @@ static int build(ga_path *p, const double *vel)
     return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_ERR_DOMAIN;
 }
 
-/* Both build into a local path and hand it out only on success: on an error
- * *out is untouched (the workspace is not). */
-int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
-                 const double *velocities, void *work, size_t work_bytes, ga_path *out)
+/* ga_path_init and ga_path_init_mat4: the keys are group elements, or 4x4
+ * matrices read by g->from_mat4 (mat4 != 0). The path is built locally and
+ * handed out only on success: on an error *out is untouched (the workspace
+ * is not). */
+static int init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys, int mat4,
+                const double *velocities, void *work, size_t work_bytes, ga_path *out)
 {
     ga_path p;
     if (!out)
@@ -909,28 +911,27 @@ int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, 
     int st = layout(&p, g, s, n, times, keys, work, work_bytes);
     if (st != GA_OK)
         return st;
-    for (size_t i = 0; i < n; ++i)
-        copy_elem(g, key_of(&p, i), (const unsigned char *)keys + i * g->elem_size);
+    for (size_t i = 0; i < n; ++i) {
+        if (!mat4)
+            copy_elem(g, key_of(&p, i), (const unsigned char *)keys + i * g->elem_size);
+        else if ((st = g->from_mat4(((const ga_mat4 *)keys)[i], key_of(&p, i))))
+            return st;
+    }
     if ((st = build(&p, velocities)) == GA_OK)
         *out = p;
     return st;
 }
 
+int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
+                 const double *velocities, void *work, size_t work_bytes, ga_path *out)
+{
+    return init(g, s, n, times, keys, 0, velocities, work, work_bytes, out);
+}
+
 int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times, const ga_mat4 *keys,
                       const double *velocities, void *work, size_t work_bytes, ga_path *out)
 {
-    ga_path p;
-    if (!out)
-        return GA_ERR_ARG;
-    int st = layout(&p, g, s, n, times, keys, work, work_bytes);
-    if (st != GA_OK)
-        return st;
-    for (size_t i = 0; i < n; ++i)
-        if ((st = g->from_mat4(keys[i], key_of(&p, i))))
-            return st;
-    if ((st = build(&p, velocities)) == GA_OK)
-        *out = p;
-    return st;
+    return init(g, s, n, times, keys, 1, velocities, work, work_bytes, out);
 }
 
 /* ---- evaluation ---------------------------------------------------------------- */

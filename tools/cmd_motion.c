@@ -120,13 +120,7 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
         if (st != GA_OK)
             ok = !tio_error(&in, i, "%s", ga_status_string(st));
     }
-    tio_out out;
-    if (ok && tio_out_open(&out, o->out) == 0) {
-        for (size_t i = 0; i < in.n; i++) tio_out_line(&out, res + i * (size_t)nout, nout);
-        ok = tio_out_close(&out, 1) == 0;
-    } else {
-        ok = 0;
-    }
+    ok = ok && tio_write_rows(o->out, res, in.n, nout) == 0;
     free(res);
     tio_free(&in);
     return ok ? 0 : 2;

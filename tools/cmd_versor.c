@@ -93,13 +93,7 @@ int cmd_versor(const cli_opts *o)
     }
     for (size_t i = 0; i < in.n && ok; i++)
         ok = !one(verb, in.value + in.item[i].first, res + i * (size_t)nout[verb], &in, i);
-    tio_out out;
-    if (ok && tio_out_open(&out, o->out) == 0) {
-        for (size_t i = 0; i < in.n; i++) tio_out_line(&out, res + i * (size_t)nout[verb], nout[verb]);
-        ok = tio_out_close(&out, 1) == 0;
-    } else {
-        ok = 0;
-    }
+    ok = ok && tio_write_rows(o->out, res, in.n, nout[verb]) == 0;
     free(res);
     tio_free(&in);
     return ok ? 0 : 2;

@@ -293,3 +293,12 @@ void tio_out_unwrite(const char *path)
         remove(real);
     free(real);
 }
+
+int tio_write_rows(const char *path, const double *v, size_t n, int width)
+{
+    tio_out out;
+    if (tio_out_open(&out, path))
+        return -1;
+    for (size_t i = 0; i < n; i++) tio_out_line(&out, v + i * (size_t)width, width);
+    return tio_out_close(&out, 1);
+}

@@ -68,6 +68,9 @@ void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n);
 /** Finish: flush, and rename the temporary file onto the target when ok;
  *  when !ok remove it. Returns 0 or -1 (message printed). */
 int tio_out_close(tio_out *o, int ok);
+/** The whole output at once: n rows of `width` numbers (row after row in v),
+ *  opened, written and closed as above. Returns 0 or -1 (message printed). */
+int tio_write_rows(const char *path, const double *v, size_t n, int width);
 /** Remove what a successful tio_out_open/close wrote to path: the regular
  *  file it names (through a symbolic link too), never a FIFO or a device. */
 void tio_out_unwrite(const char *path);
