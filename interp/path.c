@@ -1170,10 +1170,17 @@ static jet jet_mul(const jet *a, const jet *b)
 
 static jet jet_exp(jet z)
 {
+    /* scale by 2^-s so that ||z_0||_1 <= 1/2: nrm = f 2^e, f in [1/2, 1),
+     * s = e + 1. An infinite or NaN norm (finite input that overflowed) is not
+     * scaled: the result is then not finite, which the caller reports
+     * (found by fuzz/fuzz_path under UBSan: (int) of an infinite log2;
+     * fuzz/regress/path/jet-exp-infinite-norm) */
     double nrm = ga_mat4_norm1(z.c[0]);
     int s = 0;
-    if (nrm > 0.5)
-        s = (int)ceil(log2(nrm / 0.5));
+    if (nrm > 0.5 && isfinite(nrm)) {
+        frexp(nrm, &s);
+        s += 1;
+    }
     double sc = ldexp(1.0, -s);
     for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 16; ++k) z.c[i].m[k] *= sc;
