@@ -86,11 +86,19 @@ static void twist_other_branch(double *x)
     /* v_par = (w.v / th^2) w; where th^2 would underflow, through the unit axis */
     double vp = th >= 0x1p-500 ? (x[0] * x[3] + x[1] * x[4] + x[2] * x[5]) / (th * th)
                                : ((x[0] / th) * x[3] + (x[1] / th) * x[4] + (x[2] / th) * x[5]) / th;
+    double y[6];
     for (int i = 0; i < 3; ++i) {
         double par = vp * x[i];
-        x[3 + i] = k * (x[3 + i] - par) + par;
-        x[i] *= k;
+        y[3 + i] = k * (x[3 + i] - par) + par;
+        y[i] = k * x[i];
     }
+    /* a rotation so small that |k| ~ 2 pi/th overflows (th ~ 1e-308) has no
+     * representable other branch: x is kept (found by CI's libFuzzer run:
+     * fuzz/regress/path/smooth-branch-tiny-rotation) */
+    for (int i = 0; i < 6; ++i)
+        if (!isfinite(y[i]))
+            return;
+    memcpy(x, y, sizeof y);
 }
 
 /* The rotation quaternion (cos(th/2), sin(th/2) w/th) of a twist. */
