@@ -16,8 +16,9 @@
  * from line 1 and adds its own files in a private temporary directory
  * (--velocities and --svg only when line 1 asked for them). Resource limits,
  * so that a run measures correctness and not patience: --samples is capped at
- * 4096 and an Euler --step below 1e-3 is raised to 1e-3 (both are legal and
- * merely slow); "demo" and --help (anywhere) are skipped.
+ * 4096, --rate is lowered to give at most 4096 samples over the span of the
+ * input's first numbers, and an Euler --step below 1e-3 is raised to 1e-3
+ * (all legal and merely slow or large); "demo" and --help (anywhere) are skipped.
  *
  * Invariants (docs/tool.md, docs/errors.md), besides "no crash, no sanitizer
  * report, no leak":
@@ -215,7 +216,28 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int argc = 0;
     argv[argc++] = "garotor";
     int want_vel = 0, want_svg = 0, kind = -1, affine = 0, pose = 0;
-    static char capped[2][32];
+    static char capped[3][32];
+    /* the span of the keys' times (the first number of each input line), for
+       capping --rate below: HZ is lowered so that it gives at most 4096
+       samples over that span (the tool holds every sample in memory; a rate
+       over months of epoch stamps is legal and merely large:
+       fuzz/regress/tool/interp-rate-epoch-span-oom) */
+    double tmin = INFINITY, tmax = -INFINITY;
+    for (size_t i = 0; i < nin;) {
+        const char *ln = (const char *)rest + i, *eol = memchr(ln, '\n', nin - i);
+        size_t len = eol ? (size_t)(eol - ln) : nin - i;
+        char num[64];
+        size_t m = len < sizeof num - 1 ? len : sizeof num - 1;
+        memcpy(num, ln, m);
+        num[m] = '\0';
+        char *e;
+        double t = strtod(num, &e);
+        if (e != num && isfinite(t)) {
+            tmin = fmin(tmin, t);
+            tmax = fmax(tmax, t);
+        }
+        i += len + 1;
+    }
     char *save = NULL;
     for (char *tok = strtok_r(cmdline, " \t\r", &save); tok; tok = strtok_r(NULL, " \t\r", &save)) {
         if (argc == 1) {
@@ -256,6 +278,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (v) {
                 argv[argc++] = v;
                 pose = !strcmp(v, "pose");
+            }
+            continue;
+        }
+        if (!strcmp(tok, "--rate")) {
+            char *v = strtok_r(NULL, " \t\r", &save);
+            argv[argc++] = tok;
+            if (v) {
+                char *end;
+                double hz = strtod(v, &end), span = tmax - tmin;
+                if (*end == '\0' && hz > 0 && span > 0 && isfinite(span) && hz * span > 4096) {
+                    snprintf(capped[2], sizeof capped[2], "%.17g", 4096 / span);
+                    v = capped[2];
+                }
+                argv[argc++] = v;
             }
             continue;
         }
