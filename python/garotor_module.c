@@ -778,6 +778,11 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
                      scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, (Py_ssize_t)n);
         goto done;
     }
+    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n);
+    if (wbytes == 0) { /* the scheme is not defined on the group (path.h) */
+        PyErr_Format(PyExc_ValueError, "Path: scheme '%s' is not defined on group '%s'", sname, g->name);
+        goto done;
+    }
     const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
     for (npy_intp i = 0; i < n; i++)
         if (!isfinite(tv[i]) || (i > 0 && !(tv[i] > tv[i - 1]))) {
@@ -816,7 +821,6 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
         if (read_velocities(g, vobj, count, vel))
             goto done;
     }
-    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n);
     self->work = PyMem_Malloc(wbytes);
     if (!self->work) {
         PyErr_NoMemory();

@@ -14,7 +14,7 @@ import pytest
 import garotor
 
 EPS = np.finfo(float).eps
-SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3"]
+SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2"]
 GROUPS = ["cga", "matrix", "affine"]
 
 
@@ -77,6 +77,11 @@ def keys_for(rng, group, n):
 def test_path_sample_equals_tool(tool, rng, scheme, group):
     n = 3 if scheme == "quadratic" else 5
     times, K = keys_for(rng, group, n)
+    if scheme.startswith("decoupled") and group == "affine":
+        # a rotation and a position to interpolate apart: rigid groups only
+        with pytest.raises(ValueError, match="is not defined on group 'affine'"):
+            garotor.Path(times, K, scheme=scheme, group=group)
+        return
     p = garotor.Path(times, K, scheme=scheme, group=group)
     t = np.sort(rng.uniform(times[0], times[-1], size=40))
     t = np.concatenate([t, times])  # the keys themselves
