@@ -44,6 +44,13 @@ int ga_eval_by_name(const char *name, ga_eval *out)
 
 size_t ga_scheme_min_keys(ga_scheme s) { return (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2; }
 
+/* Schemes whose segment i depends on keys 0..i+1 only (path.h, ga_path_append). */
+int ga_scheme_can_append(ga_scheme s)
+{
+    return s == GA_SCHEME_SCREW || s == GA_SCHEME_LIHAO2 || s == GA_SCHEME_BIVECTOR ||
+           s == GA_SCHEME_DECOUPLED;
+}
+
 /* ---- small helpers ---------------------------------------------------------- */
 
 /* The exponent polynomials p_j(u) = a u + b u^2 + c u^3 of the Li-Hao factors
@@ -277,8 +284,8 @@ static void qrot_inv(const double *q, const double *x, double *out)
 }
 
 static double *dkey(const ga_path *p, size_t i) { return p->dec + i * DK; }
-static double *dseg(const ga_path *p, size_t i) { return p->dec + p->n * DK + i * DS; }
-static double *dscr(const ga_path *p, size_t i) { return p->dec + p->n * DK + (p->n - 1) * DS + i * DX; }
+static double *dseg(const ga_path *p, size_t i) { return p->dec + p->cap * DK + i * DS; }
+static double *dscr(const ga_path *p, size_t i) { return p->dec + p->cap * DK + (p->cap - 1) * DS + i * DX; }
 
 /* 3x3 helpers for the block-tridiagonal solve (row-major) */
 static void m3_of_jr(const double *r, int inv, double *m)
@@ -478,52 +485,70 @@ static int solve_rates(ga_path *p)
     return GA_ERR_DOMAIN;
 }
 
+/* The relative rotation vector theta_i = plog(R_i^-1 R_{i+1}) of segment i,
+   through the group's half-turn rule as a twist (theta, 0), parked in slot a. */
+static void dec_theta(ga_path *p, size_t i)
+{
+    double qc[4], qr[4], x[MAXD] = {0};
+    const double *q0 = dkey(p, i), *q1 = dkey(p, i + 1);
+    qc[0] = q0[0];
+    for (int k = 1; k < 4; ++k) qc[k] = -q0[k];
+    qmul(qc, q1, qr);
+    qlog(qr, x);
+    if (p->group->half_turn)
+        p->group->half_turn(x);
+    memcpy(dseg(p, i), x, 3 * sizeof(double));
+}
+
+/* DECOUPLED segment i from its theta: position slope and rotation rate the
+   chords, at key i and (for the last segment) at key i + 1 too. Depends on
+   keys i and i + 1 alone, which ga_path_append relies on. */
+static void dec_linear(ga_path *p, size_t i)
+{
+    double h = seg_len(p, i), *rc = dseg(p, i), *pc = rc + 9, th[3];
+    double *k0 = dkey(p, i), *k1 = dkey(p, i + 1);
+    memcpy(th, rc, sizeof th);
+    for (int c = 0; c < 3; ++c) {
+        double m = (k1[4 + c] - k0[4 + c]) / h;
+        k0[10 + c] = m;
+        pc[c] = k0[4 + c];
+        pc[3 + c] = m;
+        pc[6 + c] = pc[9 + c] = 0.0;
+    }
+    for (int k = 0; k < 3; ++k) {
+        k0[7 + k] = k1[7 + k] = th[k] / h; /* key i + 1: overwritten by segment i + 1 */
+        rc[k] = th[k] / h;
+        rc[3 + k] = rc[6 + k] = 0.0;
+    }
+}
+
 static int build_decoupled(ga_path *p)
 {
     const ga_group *g = p->group;
     size_t n = p->n;
-    int c2 = p->scheme == GA_SCHEME_DECOUPLED_C2;
     /* every slot defined (the linear scheme leaves slopes and scratch unused,
        and build() checks the whole block for finiteness) */
-    memset(p->dec, 0, scheme_doubles(p->scheme, n, g->dim) * sizeof(double));
+    memset(p->dec, 0, scheme_doubles(p->scheme, p->cap, g->dim) * sizeof(double));
     for (size_t i = 0; i < n; ++i) g->to_qt(key_of(p, i), dkey(p, i), dkey(p, i) + 4);
-    /* relative rotation vectors theta_i = plog(R_i^-1 R_{i+1}), through the
-       group's half-turn rule as a twist (theta, 0), parked in slot a */
-    for (size_t i = 0; i + 1 < n; ++i) {
-        double qc[4], qr[4], x[MAXD] = {0};
-        const double *q0 = dkey(p, i), *q1 = dkey(p, i + 1);
-        qc[0] = q0[0];
-        for (int k = 1; k < 4; ++k) qc[k] = -q0[k];
-        qmul(qc, q1, qr);
-        qlog(qr, x);
-        if (g->half_turn)
-            g->half_turn(x);
-        memcpy(dseg(p, i), x, 3 * sizeof(double));
+    for (size_t i = 0; i + 1 < n; ++i) dec_theta(p, i);
+    if (p->scheme == GA_SCHEME_DECOUPLED) {
+        for (size_t i = 0; i + 1 < n; ++i) dec_linear(p, i);
+        return GA_OK;
     }
-    /* positions */
+    /* DECOUPLED_C2: positions */
     for (int c = 0; c < 3; ++c) {
-        if (c2) {
-            double *cp = dscr(p, 0), *rp = cp + n; /* scratch: 2n doubles of the DX n */
-            notaknot(p, dkey(p, 0) + 4 + c, dkey(p, 0) + 10 + c, cp, rp);
-        } else {
-            for (size_t i = 0; i + 1 < n; ++i)
-                dkey(p, i)[10 + c] = (dkey(p, i + 1)[4 + c] - dkey(p, i)[4 + c]) / seg_len(p, i);
-        }
+        double *cp = dscr(p, 0), *rp = cp + n; /* scratch: 2n doubles of the DX n */
+        notaknot(p, dkey(p, 0) + 4 + c, dkey(p, 0) + 10 + c, cp, rp);
         for (size_t i = 0; i + 1 < n; ++i) {
             /* scipy's CubicSpline coefficients: t = (s_i + s_{i+1} - 2m)/h,
-               c3 = t/h, c2 = (m - s_i)/h - t; linear: s_i the chord slope */
+               c3 = t/h, c2 = (m - s_i)/h - t */
             double h = seg_len(p, i), y0 = dkey(p, i)[4 + c], m = (dkey(p, i + 1)[4 + c] - y0) / h;
             double *pc = dseg(p, i) + 9;
+            double s0 = dkey(p, i)[10 + c], s1 = dkey(p, i + 1)[10 + c], t = (s0 + s1 - 2.0 * m) / h;
             pc[c] = y0;
-            if (c2) {
-                double s0 = dkey(p, i)[10 + c], s1 = dkey(p, i + 1)[10 + c], t = (s0 + s1 - 2.0 * m) / h;
-                pc[3 + c] = s0;
-                pc[6 + c] = (m - s0) / h - t;
-                pc[9 + c] = t / h;
-            } else {
-                pc[3 + c] = m;
-                pc[6 + c] = pc[9 + c] = 0.0;
-            }
+            pc[3 + c] = s0;
+            pc[6 + c] = (m - s0) / h - t;
+            pc[9 + c] = t / h;
         }
     }
     /* angular rates: the chord rates to start (and for good at the ends) */
@@ -532,7 +557,7 @@ static int build_decoupled(ga_path *p)
         double h = seg_len(p, j);
         for (int k = 0; k < 3; ++k) dkey(p, i)[7 + k] = dseg(p, j)[k] / h;
     }
-    if (c2 && n > 2) {
+    if (n > 2) {
         int st = solve_rates(p);
         if (st != GA_OK)
             return st;
@@ -544,12 +569,11 @@ static int build_decoupled(ga_path *p)
         double *rc = dseg(p, i), th[3], re[3], h = seg_len(p, i);
         const double *a = dkey(p, i) + 7;
         memcpy(th, rc, sizeof th);
-        if (c2)
-            jrinv_apply(th, dkey(p, i + 1) + 7, re);
+        jrinv_apply(th, dkey(p, i + 1) + 7, re);
         for (int k = 0; k < 3; ++k) {
-            rc[k] = c2 ? a[k] : th[k] / h;
-            rc[3 + k] = c2 ? (3.0 * th[k] - 2.0 * h * a[k] - h * re[k]) / (h * h) : 0.0;
-            rc[6 + k] = c2 ? (-2.0 * th[k] + h * a[k] + h * re[k]) / (h * h * h) : 0.0;
+            rc[k] = a[k];
+            rc[3 + k] = (3.0 * th[k] - 2.0 * h * a[k] - h * re[k]) / (h * h);
+            rc[6 + k] = (-2.0 * th[k] + h * a[k] + h * re[k]) / (h * h * h);
         }
     }
     return GA_OK;
@@ -644,33 +668,38 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
     for (size_t i = 0; i + 1 < n; ++i)
         if (!(times[i] < times[i + 1]))
             return GA_ERR_ARG;
-    size_t d = g->dim;
+    size_t d = g->dim, m = n;
+    if (ga_scheme_can_append(s)) { /* every key the workspace has room for */
+        size_t one = ga_path_workspace_size(g, s, 1), per = ga_path_workspace_size(g, s, 2) - one;
+        m += (bytes - ga_path_workspace_size(g, s, n)) / per;
+    }
     double *w = work;
     memset(p, 0, sizeof *p);
     p->group = g;
     p->scheme = s;
     p->n = n;
+    p->cap = m;
     p->key_stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
     p->t = w;
-    w += n;
+    w += m;
     p->key = w;
-    w += n * p->key_stride;
+    w += m * p->key_stride;
     memcpy(p->t, times, n * sizeof(double));
     switch (s) {
     case GA_SCHEME_SCREW: p->coef = w; break;
     case GA_SCHEME_LIHAO2:
         p->coef = w;
-        p->vel = w + 2 * (n - 1) * d;
+        p->vel = w + 2 * (m - 1) * d;
         break;
     case GA_SCHEME_LIHAO3:
         p->coef = w;
-        p->vel = w + 3 * (n - 1) * d;
+        p->vel = w + 3 * (m - 1) * d;
         break;
     case GA_SCHEME_BIVECTOR: p->gen = w; break;
     case GA_SCHEME_QUADRATIC:
     case GA_SCHEME_SMOOTH:
         p->gen = w;
-        p->slope = w + n * d;
+        p->slope = w + m * d;
         break;
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: p->dec = w; break;
@@ -680,13 +709,50 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
 
 /* ---- building the schemes ------------------------------------------------------ */
 
+/* LIHAO2 and LIHAO3 segment i from the velocity at key i (and LIHAO3: at key
+ * i + 1); LIHAO2 writes the velocity at key i + 1. */
+static int lihao_segment(ga_path *p, size_t i)
+{
+    const ga_group *g = p->group;
+    size_t d = g->dim, nf = nfac(p->scheme);
+    double rel[MAXE], reli[MAXE], e[MAXE], m[MAXE], x[MAXD], ad[MAXD], ai[MAXE];
+    int st;
+    double h = seg_len(p, i);
+    double *B = p->coef + i * nf * d, *C = B + d, *D = C + d;
+    const double *vi = p->vel + i * d;
+    /* eq. 26: B_i = velocity at the key, per unit u */
+    lin(d, B, h, vi, 0.0, vi);
+    if (!allfinite(B, d))
+        return GA_ERR_DOMAIN;
+    /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
+    if ((st = g->inverse(key_of(p, i), ai)))
+        return st;
+    g->compose(ai, key_of(p, i + 1), rel);
+    lin(d, x, -1.0, B, 0.0, B);
+    if ((st = g->exp(x, e)))
+        return st;
+    g->compose(e, rel, m);
+    if ((st = plog(g, m, C)))
+        return st;
+    /* body velocity of exp(uB)exp(u^2 C) at u = 1: Ad_{rel^-1} B + 2 C (eqs. 15, 17) */
+    if ((st = g->inverse(rel, reli)))
+        return st;
+    g->adjoint(reli, B, ad);
+    const double *vn = p->vel + (i + 1) * d;
+    if (p->scheme == GA_SCHEME_LIHAO2) /* eq. 17, per unit t: the next key's velocity */
+        lin(d, p->vel + (i + 1) * d, 1.0 / h, ad, 2.0 / h, C);
+    else /* eq. 28: D_i = h V_{i+1} - Ad_{rel^-1} B_i - 2 C_i */
+        for (size_t k = 0; k < d; ++k) D[k] = h * vn[k] - ad[k] - 2.0 * C[k];
+    return GA_OK;
+}
+
 /* SCREW (Li-Hao eq. 10), LIHAO2 (eqs. 14-17), LIHAO3 (eqs. 21-28), all in u
  * units on each segment: B_i = h_i V_i where V_i is a velocity per unit t. */
 static int build_lihao(ga_path *p, const double *vel)
 {
     const ga_group *g = p->group;
-    size_t n = p->n, d = g->dim, nf = nfac(p->scheme);
-    double rel[MAXE], reli[MAXE], e[MAXE], m[MAXE], x[MAXD], ad[MAXD];
+    size_t n = p->n, d = g->dim;
+    double rel[MAXE];
     int st;
     if (p->scheme == GA_SCHEME_SCREW) {
         for (size_t i = 0; i + 1 < n; ++i)
@@ -737,39 +803,9 @@ static int build_lihao(ga_path *p, const double *vel)
        (fuzz/regress/path/lihao3-default-velocity-overflow-status) */
     if (!allfinite(p->vel, (p->scheme == GA_SCHEME_LIHAO3 ? n : 1) * d))
         return GA_ERR_DOMAIN;
-    for (size_t i = 0; i + 1 < n; ++i) {
-        double h = seg_len(p, i);
-        double *B = p->coef + i * nf * d, *C = B + d, *D = C + d;
-        const double *vi = p->vel + i * d;
-        /* eq. 26: B_i = velocity at the key, per unit u */
-        lin(d, B, h, vi, 0.0, vi);
-        if (!allfinite(B, d))
-            return GA_ERR_DOMAIN;
-        /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
-        double ai[MAXE];
-        if ((st = g->inverse(key_of(p, i), ai)))
+    for (size_t i = 0; i + 1 < n; ++i)
+        if ((st = lihao_segment(p, i)))
             return st;
-        g->compose(ai, key_of(p, i + 1), rel);
-        lin(d, x, -1.0, B, 0.0, B);
-        if ((st = g->exp(x, e)))
-            return st;
-        g->compose(e, rel, m);
-        if ((st = plog(g, m, C)))
-            return st;
-        /* body velocity of exp(uB)exp(u^2 C) at u = 1: Ad_{rel^-1} B + 2 C (eqs. 15, 17) */
-        if ((st = g->inverse(rel, reli)))
-            return st;
-        g->adjoint(reli, B, ad);
-        if (p->scheme == GA_SCHEME_LIHAO2) {
-            /* eq. 17, per unit t: the next key's velocity */
-            double *vn = p->vel + (i + 1) * d;
-            lin(d, vn, 1.0 / h, ad, 2.0 / h, C);
-        } else {
-            /* eq. 28: D_i = h V_{i+1} - Ad_{rel^-1} B_i - 2 C_i */
-            const double *vn = p->vel + (i + 1) * d;
-            for (size_t k = 0; k < d; ++k) D[k] = h * vn[k] - ad[k] - 2.0 * C[k];
-        }
-    }
     return GA_OK;
 }
 
@@ -885,8 +921,17 @@ static int build(ga_path *p, const double *vel)
     size_t nv = p->scheme == GA_SCHEME_LIHAO3 ? p->n : p->scheme == GA_SCHEME_LIHAO2 ? 1 : 0;
     if (vel && !allfinite(vel, nv * g->dim))
         return GA_ERR_NOTFINITE;
-    if (p->n == 1) { /* the constant path: no segment, nothing to build */
-        memset(p->key + p->key_stride, 0, scheme_doubles(p->scheme, 1, g->dim) * sizeof(double));
+    /* the scheme's block, laid out for p->cap keys: defined everywhere (room
+       for keys to come included), so that it can be checked whole */
+    double *c = p->key + p->cap * p->key_stride;
+    size_t nc = scheme_doubles(p->scheme, p->cap, g->dim);
+    if (p->n == 1 || p->cap > p->n)
+        memset(c, 0, nc * sizeof(double));
+    if (p->n == 1) {                                /* the constant path: no segment, nothing to build */
+        if (p->scheme == GA_SCHEME_LIHAO2 && vel) { /* kept for ga_path_append */
+            memcpy(p->vel, vel, g->dim * sizeof(double));
+            p->v0_given = 1;
+        }
         return GA_OK;
     }
     int st = build_scheme(p, vel);
@@ -894,8 +939,7 @@ static int build(ga_path *p, const double *vel)
         return GA_ERR_DOMAIN;
     if (st != GA_OK)
         return st;
-    const double *c = p->key + p->n * p->key_stride;
-    return allfinite(c, scheme_doubles(p->scheme, p->n, p->group->dim)) ? GA_OK : GA_ERR_DOMAIN;
+    return allfinite(c, nc) ? GA_OK : GA_ERR_DOMAIN;
 }
 
 /* ga_path_init and ga_path_init_mat4: the keys are group elements, or 4x4
@@ -933,6 +977,87 @@ int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *ti
 {
     return init(g, s, n, times, keys, 1, velocities, work, work_bytes, out);
 }
+
+/* Key n goes into the room layout() left for it; segment n - 1 is built from
+ * keys n - 1 and n (and LIHAO2: the velocity at key n - 1) by the same code
+ * as ga_path_init, so the result is the path ga_path_init would build from
+ * all n + 1 keys, bit for bit (tests/test_interp.c). Nothing is visible
+ * before p->n grows, so an error leaves the path as it was. */
+static int append(ga_path *p, double t, const void *key, int mat4)
+{
+    if (!p || !key || !p->group)
+        return GA_ERR_ARG;
+    if (!ga_scheme_can_append(p->scheme) || p->n >= p->cap)
+        return GA_ERR_ARG;
+    if (!isfinite(t))
+        return GA_ERR_NOTFINITE;
+    if (!(t > p->t[p->n - 1]))
+        return GA_ERR_ARG;
+    const ga_group *g = p->group;
+    ga_path q = *p; /* the path with the new key, handed out on success */
+    size_t i = q.n - 1, d = g->dim;
+    double *k = key_of(&q, i + 1), rel[MAXE];
+    int st = GA_OK;
+    if (!mat4)
+        copy_elem(g, k, key);
+    else if ((st = g->from_mat4(*(const ga_mat4 *)key, k)))
+        return st;
+    if (!allfinite(k, g->elem_size / sizeof(double)))
+        return GA_ERR_NOTFINITE;
+    q.t[i + 1] = t;
+    q.n = i + 2;
+    switch (q.scheme) {
+    case GA_SCHEME_SCREW:
+        st = rel_log(g, key_of(&q, i), k, q.coef + i * d, rel);
+        if (st == GA_OK && !allfinite(q.coef + i * d, d))
+            st = GA_ERR_DOMAIN;
+        break;
+    case GA_SCHEME_LIHAO2:
+        if (i == 0 && !q.v0_given) { /* the default first velocity (path.h) */
+            if ((st = rel_log(g, key_of(&q, 0), k, q.vel, rel)))
+                break;
+            lin(d, q.vel, 1.0 / seg_len(&q, 0), q.vel, 0.0, q.vel);
+        }
+        if (!allfinite(q.vel + i * d, d))
+            st = GA_ERR_DOMAIN;
+        else if ((st = lihao_segment(&q, i)) == GA_OK &&
+                 !(allfinite(q.coef + 2 * i * d, 2 * d) && allfinite(q.vel + (i + 1) * d, d)))
+            st = GA_ERR_DOMAIN;
+        break;
+    case GA_SCHEME_BIVECTOR:
+        if (i == 0 && (st = plog(g, key_of(&q, 0), q.gen))) /* one key: nothing was built */
+            break;
+        if ((st = plog(g, k, q.gen + (i + 1) * d)) == GA_OK && g->branch)
+            g->branch(q.gen + i * d, q.gen + (i + 1) * d);
+        if (st == GA_OK && !allfinite(q.gen + (i + 1) * d, d))
+            st = GA_ERR_DOMAIN;
+        break;
+    case GA_SCHEME_DECOUPLED: {
+        double *k0 = dkey(&q, i), saved[6];
+        memcpy(saved, k0 + 7, sizeof saved); /* key i's rate and slope, restored on failure */
+        if (i == 0)                          /* one key: nothing was built */
+            g->to_qt(key_of(&q, 0), k0, k0 + 4);
+        g->to_qt(k, dkey(&q, i + 1), dkey(&q, i + 1) + 4);
+        dec_theta(&q, i);
+        dec_linear(&q, i);
+        if (!allfinite(dkey(&q, i), 2 * DK) || !allfinite(dseg(&q, i), DS)) {
+            memcpy(k0 + 7, saved, sizeof saved);
+            st = GA_ERR_DOMAIN;
+        }
+        break;
+    }
+    default: st = GA_ERR_ARG;
+    }
+    if (st == GA_ERR_NOTFINITE)
+        st = GA_ERR_DOMAIN; /* finite input overflowing, as in build() */
+    if (st == GA_OK)
+        *p = q;
+    return st;
+}
+
+int ga_path_append(ga_path *p, double t, const void *key) { return append(p, t, key, 0); }
+
+int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key) { return append(p, t, &key, 1); }
 
 /* ---- evaluation ---------------------------------------------------------------- */
 

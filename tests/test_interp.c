@@ -1499,6 +1499,101 @@ static void test_errors(void)
     tk_expect(ga_group_by_name("matrix") == &ga_group_se3 && ga_group_by_name("x") == NULL, "group by name");
 }
 
+/* ---- appending keys ------------------------------------------------------------ */
+
+/* The path grown key by key by ga_path_append equals the path built from all
+ * the keys at once, bit for bit (pose, velocity and acceleration at sample
+ * times and at the keys), for every scheme that can append, on every group;
+ * errors leave the path untouched. */
+static int same_bits(const ga_path *a, const ga_path *b, const keyset *k, int N)
+{
+    size_t ed = a->group->elem_size;
+    for (int j = 0; j <= N + k->n - 1; ++j) {
+        double t = j <= N ? tgrid(k, j, N) : k->t[j - N - 1];
+        double ea[16], eb[16], va[12], vb[12], aa[12], ab[12];
+        int sa = ga_path_eval(a, t, ea), sb = ga_path_eval(b, t, eb);
+        if (sa != sb || (sa == GA_OK && memcmp(ea, eb, ed)))
+            return 0;
+        sa = ga_path_differentiate(a, t, GA_FRAME_BODY, va, aa);
+        sb = ga_path_differentiate(b, t, GA_FRAME_BODY, vb, ab);
+        size_t d = a->group->dim * sizeof(double);
+        if (sa != sb || (sa == GA_OK && (memcmp(va, vb, d) || memcmp(aa, ab, d))))
+            return 0;
+    }
+    return 1;
+}
+
+static void test_append(tk_rng *r)
+{
+    const ga_group *groups[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
+    tk_check c_same = tk_begin("appended key by key = built at once, bit for bit", 0);
+    tk_check c_cap = tk_begin("cap: the keys the workspace holds; no room: GA_ERR_ARG, path unchanged", 0);
+    tk_check c_err = tk_begin("append errors: status, and the path unchanged", 0);
+    tk_check c_no = tk_begin("schemes that cannot append: GA_ERR_ARG, cap = n, path unchanged", 0);
+    static pathbuf all, grown;
+    for (int gi = 0; gi < 3; ++gi) {
+        const ga_group *g = groups[gi];
+        for (int s = 0; s < GA_SCHEME_COUNT; ++s) {
+            size_t need = ga_path_workspace_size(g, (ga_scheme)s, 8);
+            if (need == 0)
+                continue; /* not defined on g */
+            for (int rep = 0; rep < 4; ++rep) {
+                keyset k;
+                if (g->rigid)
+                    random_keys(r, &k, 8, rep);
+                else
+                    affine_keys(r, &k, 8);
+                double v0[12];
+                for (int i = 0; i < 12; ++i) v0[i] = tk_range(r, -1, 1);
+                const double *vel = s == GA_SCHEME_LIHAO2 && rep % 2 ? v0 : NULL;
+                size_t start = (size_t)rep % 3 + 1; /* 1, 2 or 3 keys, then appends */
+                if (!ga_scheme_can_append((ga_scheme)s)) {
+                    start = 3; /* every scheme takes 3 keys */
+                    int st = ga_path_init_mat4(g, (ga_scheme)s, start, k.t, k.m, NULL, grown.work, need,
+                                               &grown.p);
+                    tk_add_status(&c_no, st, GA_OK);
+                    if (st)
+                        continue;
+                    ga_path before = grown.p;
+                    tk_add_status(&c_no, ga_path_append_mat4(&grown.p, k.t[start], k.m[start]), GA_ERR_ARG);
+                    tk_add_bool(&c_no, grown.p.cap == start && !memcmp(&before, &grown.p, sizeof before));
+                    continue;
+                }
+                int sa = ga_path_init_mat4(g, (ga_scheme)s, 8, k.t, k.m, vel, all.work, need, &all.p);
+                int sg = ga_path_init_mat4(g, (ga_scheme)s, start, k.t, k.m, vel, grown.work, need, &grown.p);
+                if (s == GA_SCHEME_LIHAO2 && !g->rigid && sa == GA_ERR_DOMAIN)
+                    continue; /* the recurrence grew until logm failed (see test_affine) */
+                tk_add_status(&c_same, sa, GA_OK);
+                tk_add_status(&c_same, sg, GA_OK);
+                if (sa || sg)
+                    continue;
+                tk_add_bool(&c_cap, grown.p.cap == 8 && all.p.cap == 8);
+                for (size_t i = start; i < 8; ++i) {
+                    ga_path before = grown.p;
+                    /* errors first: each must leave the path as it was */
+                    ga_mat4 bad = k.m[i];
+                    bad.m[5] = INFINITY;
+                    tk_add_status(&c_err, ga_path_append_mat4(&grown.p, k.t[i - 1], k.m[i]), GA_ERR_ARG);
+                    tk_add_status(&c_err, ga_path_append_mat4(&grown.p, NAN, k.m[i]), GA_ERR_NOTFINITE);
+                    tk_add_status(&c_err, ga_path_append_mat4(&grown.p, k.t[i], bad), GA_ERR_NOTFINITE);
+                    tk_add_status(&c_err, ga_path_append(NULL, k.t[i], &k.m[i]), GA_ERR_ARG);
+                    tk_add_bool(&c_err, !memcmp(&before, &grown.p, sizeof before) &&
+                                            same_bits(&before, &grown.p, &k, 8));
+                    tk_add_status(&c_same, ga_path_append_mat4(&grown.p, k.t[i], k.m[i]), GA_OK);
+                }
+                tk_add_bool(&c_same, grown.p.n == 8 && same_bits(&all.p, &grown.p, &k, 40));
+                ga_path before = grown.p;
+                tk_add_status(&c_cap, ga_path_append_mat4(&grown.p, k.t[7] + 1, k.m[0]), GA_ERR_ARG);
+                tk_add_bool(&c_cap, !memcmp(&before, &grown.p, sizeof before));
+            }
+        }
+    }
+    tk_end(&c_same);
+    tk_end(&c_cap);
+    tk_end(&c_err);
+    tk_end(&c_no);
+}
+
 int main(void)
 {
     tk_rng r = {20240607u};
@@ -1514,6 +1609,7 @@ int main(void)
     test_affine(&r);
     test_euler(&r);
     test_exact(&r);
+    test_append(&r);
     test_errors();
     printf("(%.2f s)\n", (double)(clock() - c0) / CLOCKS_PER_SEC);
     return tk_finish("test_interp");

@@ -207,6 +207,7 @@ typedef struct {
     const ga_group *group;
     ga_scheme scheme;
     size_t n;          /**< number of keys */
+    size_t cap;        /**< keys the workspace holds (ga_path_append); n where the scheme cannot append */
     double *t;         /**< the n key times */
     double *key;       /**< the n keys, each group->elem_size bytes, padded to doubles */
     size_t key_stride; /**< doubles from one key to the next */
@@ -216,6 +217,7 @@ typedef struct {
     double *vel;       /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
     double *dec;       /**< DECOUPLED/DECOUPLED_C2: per key q, p, angular rate, position slope (13
                             doubles), then per segment the rotation and position cubics (21) */
+    int v0_given;      /**< LIHAO2 built from one key: its velocity was given (ga_path_append) */
 } ga_path;
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3",
@@ -230,6 +232,13 @@ int ga_eval_by_name(const char *name, ga_eval *out);
 /** Fewest keys the scheme takes beyond the constant path of one key (2, or 3
  *  for QUADRATIC and SMOOTH). QUADRATIC takes exactly 3 (or 1). */
 size_t ga_scheme_min_keys(ga_scheme s);
+
+/** 1 if paths of scheme s can grow by ga_path_append: SCREW, LIHAO2,
+ *  BIVECTOR, DECOUPLED, whose segment i depends on keys 0..i+1 only. The
+ *  others cannot: LIHAO3's default velocity at a key and the splines
+ *  (QUADRATIC, SMOOTH, DECOUPLED_C2) depend on every key, so a new key
+ *  changes segments already built; rebuild them with ga_path_init. */
+int ga_scheme_can_append(ga_scheme s);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
  *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
@@ -248,6 +257,21 @@ int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, 
  *  returned: GA_ERR_NOTRIGID for a non-rigid matrix on cga/se3, ...). */
 int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times, const ga_mat4 *keys,
                       const double *velocities, void *work, size_t work_bytes, ga_path *out);
+
+/** Add a key at time t > the last key's to a path of a scheme that can append
+ *  (ga_scheme_can_append), building its one new segment: the result is the
+ *  path ga_path_init builds from all the keys, bit for bit, at the cost of
+ *  one segment. Room: a path built in a workspace of
+ *  ga_path_workspace_size(g, s, m) bytes holds up to m keys (p->cap).
+ *  LIHAO2: the new segment continues the velocity recurrence; a path of one
+ *  key takes the velocity given to ga_path_init, else the default rule.
+ *  GA_ERR_ARG: no room, a scheme that cannot append, t not after the last
+ *  key; GA_ERR_NOTFINITE: t or the key; GA_ERR_DOMAIN: the segment
+ *  overflows. On an error *p is unchanged. */
+int ga_path_append(ga_path *p, double t, const void *key);
+/** The same with the key a 4x4 matrix, read by g->from_mat4 (its status is
+ *  returned). */
+int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key);
 
 /** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
  *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_ERR_ARG outside. */
