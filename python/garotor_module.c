@@ -678,13 +678,11 @@ typedef struct {
     ga_scheme scheme;
     ga_path path;
     void *work;
-    PyObject *times; /* a read-only copy of the key times */
 } PathObject;
 
 static void Path_dealloc(PathObject *self)
 {
     PyMem_Free(self->work);
-    Py_XDECREF(self->times);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -727,10 +725,11 @@ static int read_velocities(const ga_group *g, PyObject *obj, size_t count, doubl
 
 static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"times", "poses", "scheme", "group", "velocities", NULL};
-    PyObject *tobj, *pobj, *vobj = Py_None;
+    static char *kwlist[] = {"times", "poses", "scheme", "group", "velocities", "capacity", NULL};
+    PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None;
     const char *sname = "screw", *gname = "cga";
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj))
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$O:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
+                                     &cobj))
         return -1;
     if (self->work) {
         PyErr_SetString(PyExc_TypeError, "Path: already initialised");
@@ -741,17 +740,18 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
         return -1;
     ga_scheme scheme;
     if (ga_scheme_by_name(sname, &scheme) != GA_OK) {
-        PyErr_Format(
-            PyExc_ValueError,
-            "Path: scheme must be 'screw', 'bivector', 'quadratic', 'smooth', 'lihao2' or 'lihao3', not '%s'",
-            sname);
+        char names[256] = "";
+        for (int i = 0; i < GA_SCHEME_COUNT; i++) {
+            size_t len = strlen(names);
+            snprintf(names + len, sizeof names - len, "%s'%s'", i ? ", " : "", ga_scheme_name((ga_scheme)i));
+        }
+        PyErr_Format(PyExc_ValueError, "Path: scheme must be one of %s, not '%s'", names, sname);
         return -1;
     }
     int rc = -1;
     double *vel = NULL;
     ga_mat4 *keys = NULL;
-    PyArrayObject *t = (PyArrayObject *)PyArray_FROM_OTF(tobj, NPY_DOUBLE,
-                                                         NPY_ARRAY_IN_ARRAY | NPY_ARRAY_ENSURECOPY);
+    PyArrayObject *t = (PyArrayObject *)PyArray_FROM_OTF(tobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
     PyArrayObject *p = t ? (PyArrayObject *)PyArray_FROM_OTF(pobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY) : NULL;
     if (!p)
         goto done;
@@ -782,6 +782,22 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
     if (wbytes == 0) { /* the scheme is not defined on the group (path.h) */
         PyErr_Format(PyExc_ValueError, "Path: scheme '%s' is not defined on group '%s'", sname, g->name);
         goto done;
+    }
+    if (cobj != Py_None) { /* room for keys to come (Path.append) */
+        Py_ssize_t cap = PyNumber_AsSsize_t(cobj, PyExc_OverflowError);
+        if (cap == -1 && PyErr_Occurred())
+            goto done;
+        if (!ga_scheme_can_append(scheme)) {
+            PyErr_Format(PyExc_ValueError,
+                         "Path: capacity: scheme '%s' cannot append keys (build a new Path)", sname);
+            goto done;
+        }
+        if (cap < n) {
+            PyErr_Format(PyExc_ValueError, "Path: capacity %zd is less than the %zd keys given", cap,
+                         (Py_ssize_t)n);
+            goto done;
+        }
+        wbytes = ga_path_workspace_size(g, scheme, (size_t)cap);
     }
     const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
     for (npy_intp i = 0; i < n; i++)
@@ -835,9 +851,6 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
     }
     self->group = g;
     self->scheme = scheme;
-    PyArray_CLEARFLAGS(t, NPY_ARRAY_WRITEABLE);
-    self->times = (PyObject *)t;
-    t = NULL;
     rc = 0;
 done:
     PyMem_Free(keys);
@@ -937,8 +950,74 @@ static PyObject *Path_get_times(PathObject *self, void *c)
     (void)c;
     if (!path_ready(self))
         return NULL;
-    Py_INCREF(self->times);
-    return self->times;
+    npy_intp n = (npy_intp)self->path.n;
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (!a)
+        return NULL;
+    memcpy(PyArray_DATA(a), self->path.t, (size_t)n * sizeof(double));
+    PyArray_CLEARFLAGS(a, NPY_ARRAY_WRITEABLE);
+    return (PyObject *)a;
+}
+
+static PyObject *Path_get_capacity(PathObject *self, void *c)
+{
+    (void)c;
+    return path_ready(self) ? PyLong_FromSize_t(self->path.cap) : NULL;
+}
+
+/* append(t, pose): one key, a (4, 4) matrix or a (7,) row */
+static PyObject *Path_append(PathObject *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"t", "pose", NULL};
+    double t;
+    PyObject *pobj;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "dO:append", kwlist, &t, &pobj) || !path_ready(self))
+        return NULL;
+    if (!ga_scheme_can_append(self->scheme)) {
+        PyErr_Format(PyExc_ValueError, "Path.append: scheme '%s' cannot append keys (build a new Path)",
+                     ga_scheme_name(self->scheme));
+        return NULL;
+    }
+    if (self->path.n >= self->path.cap) {
+        PyErr_Format(PyExc_ValueError,
+                     "Path.append: the path is full (capacity %zu; give Path a larger capacity=)",
+                     self->path.cap);
+        return NULL;
+    }
+    if (!isfinite(t) || !(t > self->path.t[self->path.n - 1])) {
+        char buf[128];
+        snprintf(buf, sizeof buf, "t = %.17g must be finite and after the last key's time %.17g", t,
+                 self->path.t[self->path.n - 1]);
+        PyErr_Format(PyExc_ValueError, "Path.append: %s", buf);
+        return NULL;
+    }
+    PyArrayObject *p = (PyArrayObject *)PyArray_FROM_OTF(pobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    if (!p)
+        return NULL;
+    int pose = PyArray_NDIM(p) == 1 && PyArray_DIM(p, 0) == 7 && self->group->rigid;
+    int mat = PyArray_NDIM(p) == 2 && PyArray_DIM(p, 0) == 4 && PyArray_DIM(p, 1) == 4;
+    ga_mat4 m;
+    int st = GA_OK;
+    if (!pose && !mat) {
+        PyErr_SetString(PyExc_ValueError, self->group->rigid
+                                              ? "Path.append: pose must have shape (4, 4) or (7,)"
+                                              : "Path.append: pose must have shape (4, 4)");
+        Py_DECREF(p);
+        return NULL;
+    }
+    if (pose)
+        st = pose_to_mat(PyArray_DATA(p), &m);
+    else
+        m = mat_get(PyArray_DATA(p));
+    Py_DECREF(p);
+    if (st == GA_OK)
+        st = ga_path_append_mat4(&self->path, t, m);
+    if (st != GA_OK) {
+        PyErr_Format(st == GA_ERR_DOMAIN ? garotor_error : PyExc_ValueError, "Path.append: %s",
+                     ga_status_string(st));
+        return NULL;
+    }
+    Py_RETURN_NONE;
 }
 static PyObject *Path_get_scheme(PathObject *self, void *c)
 {
@@ -969,10 +1048,15 @@ static PyMethodDef Path_methods[] = {
     {"acceleration", (PyCFunction)(void (*)(void))Path_acceleration, METH_VARARGS | METH_KEYWORDS,
      "acceleration(t, *, out=None): the body acceleration d/dt (A^-1 dA/dt) per unit time^2 at the times t: "
      "(..., 6) (affine: (..., 4, 4))."},
+    {"append", (PyCFunction)(void (*)(void))Path_append, METH_VARARGS | METH_KEYWORDS,
+     "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled), building one "
+     "new segment; the Path then equals one built from all the keys, bit for bit. Room: Path(..., "
+     "capacity=m)."},
     {NULL, NULL, 0, NULL}};
 
 static PyGetSetDef Path_getset[] = {
-    {"times", (getter)Path_get_times, NULL, "the key times (read-only)", NULL},
+    {"times", (getter)Path_get_times, NULL, "the key times (a read-only copy)", NULL},
+    {"capacity", (getter)Path_get_capacity, NULL, "the keys the Path has room for (Path.append)", NULL},
     {"scheme", (getter)Path_get_scheme, NULL, "the scheme's name", NULL},
     {"group", (getter)Path_get_group, NULL, "the group's name", NULL},
     {NULL, NULL, NULL, NULL, NULL}};
@@ -986,8 +1070,9 @@ static PyTypeObject PathType = {
     .tp_doc =
         "Path(times, poses, scheme='screw', group='cga', velocities=None): a path through key poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
-        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3; group: cga, matrix, affine;\n"
-        "velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6).",
+        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2;\n"
+        "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
+        "capacity: room for keys to come (append), for the schemes that can append.",
     .tp_methods = Path_methods,
     .tp_getset = Path_getset,
     .tp_init = (initproc)Path_init,

@@ -451,3 +451,56 @@ def test_group_cga_matrix_agree_property(xi):
     for fn in (lambda g: garotor.compose(garotor.exp(xi[0], g), garotor.exp(xi[1], g), g),):
         a, b = fn("cga"), fn("matrix")
         assert np.allclose(a, b, rtol=0, atol=1e-12 * (1 + np.abs(xi).max()) ** 2)
+
+
+# ---- appending keys -----------------------------------------------------------
+
+@pytest.mark.parametrize("group", GROUPS)
+@pytest.mark.parametrize("scheme", ["screw", "bivector", "lihao2", "decoupled"])
+def test_path_append_equals_built(rng, scheme, group):
+    """A Path grown by append equals the Path built from all the keys, bit for bit."""
+    if scheme == "decoupled" and group == "affine":
+        return  # not defined there (test_path_sample_equals_tool)
+    times, K = keys_for(rng, group, 6)
+    full = garotor.Path(times, K, scheme=scheme, group=group)
+    grown = garotor.Path(times[:2], K[:2], scheme=scheme, group=group, capacity=6)
+    assert grown.capacity == 6 and full.capacity == 6
+    for i in range(2, 6):
+        grown.append(times[i], K[i])
+    assert np.array_equal(grown.times, times)
+    t = np.concatenate([np.linspace(times[0], times[-1], 101), times])
+    assert np.array_equal(grown.sample(t), full.sample(t))
+    assert np.array_equal(grown.velocity(t), full.velocity(t))
+    assert np.array_equal(grown.acceleration(t), full.acceleration(t))
+
+
+def test_path_append_errors(rng):
+    times, K = keys_for(rng, "cga", 4)
+    p = garotor.Path(times[:2], garotor.to_pose(K[:2]), capacity=3)
+    p.append(times[2], garotor.to_pose(K[2]))  # a (7,) row
+    before = p.sample(times[:3])
+    with pytest.raises(ValueError, match="full"):
+        p.append(times[3], K[3])
+    q = garotor.Path(times[:2], K[:2], capacity=4)
+    with pytest.raises(ValueError, match="after the last key"):
+        q.append(times[0], K[2])
+    with pytest.raises(ValueError, match="after the last key"):
+        q.append(np.nan, K[2])
+    with pytest.raises(ValueError, match=r"shape \(4, 4\) or \(7,\)"):
+        q.append(times[2], K[2][:3])
+    bad = K[2].copy()
+    bad[0, 0] = 2.0
+    with pytest.raises(ValueError, match="not a rigid motion"):
+        q.append(times[2], bad)
+    assert len(q.times) == 2  # nothing was added by the failures
+    q.append(times[2], K[2])
+    assert len(q.times) == 3
+    assert np.array_equal(p.sample(times[:3]), before)
+    with pytest.raises(ValueError, match="cannot append"):
+        garotor.Path(times, K, scheme="lihao3", capacity=8)
+    with pytest.raises(ValueError, match="cannot append"):
+        garotor.Path(times, K, scheme="lihao3").append(times[-1] + 1, K[0])
+    with pytest.raises(ValueError, match="capacity 3 is less than the 4 keys"):
+        garotor.Path(times, K, capacity=3)
+    with pytest.raises(ValueError, match="scheme must be one of 'screw', "):
+        garotor.Path(times, K, scheme="spline")
