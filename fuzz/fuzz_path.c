@@ -258,6 +258,44 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     double t0 = times[0], t1 = times[n - 1];
 
+    /* appending: the path grown from its first k keys by ga_path_append is
+       the path built at once, bit for bit (path.h), and it can always be
+       grown where the whole path was built */
+    if (ga_scheme_can_append(scheme) && n >= 2) {
+        size_t k = 1 + (size_t)(flags >> 4) % (size_t)(n - 1); /* 1 .. n-1 keys first */
+        void *w2 = malloc(wbytes);
+        ga_path q;
+        if (!w2) {
+            free(work);
+            return 0;
+        }
+        int s2 = via_mat ? ga_path_init_mat4(g, scheme, k, times, mkeys, velp, w2, wbytes, &q)
+                         : ga_path_init(g, scheme, k, times, keybuf, velp, w2, wbytes, &q);
+        FZ_CHECK(s2 == GA_OK, "%s on %s: the first %zu keys fail to build (%d)", ga_scheme_name(scheme),
+                 g->name, k, s2);
+        FZ_CHECK(q.cap == (size_t)n, "cap %zu, want %d", q.cap, n);
+        for (size_t i = k; i < (size_t)n && s2 == GA_OK; i++) {
+            s2 = via_mat ? ga_path_append_mat4(&q, times[i], mkeys[i]) : ga_path_append(&q, times[i], KEY(i));
+            FZ_CHECK(s2 == GA_OK, "%s on %s: append of key %zu fails (%d)", ga_scheme_name(scheme), g->name,
+                     i, s2);
+        }
+        s2 = via_mat ? ga_path_append_mat4(&q, t1 + 1.0, mkeys[0]) : ga_path_append(&q, t1 + 1.0, KEY(0));
+        FZ_CHECK(s2 == GA_ERR_ARG, "append beyond cap: status %d", s2);
+        for (int i = 0; i < 2 * n - 1; i++) { /* the keys and the segment midpoints */
+            double t = i % 2 ? 0.5 * (times[i / 2] + times[i / 2 + 1]) : times[i / 2];
+            double ea[GA_GROUP_MAX_ELEM], eb[GA_GROUP_MAX_ELEM], va[GA_GROUP_MAX_DIM], vb[GA_GROUP_MAX_DIM];
+            int sa = ga_path_eval(&p, t, ea), sb = ga_path_eval(&q, t, eb);
+            FZ_CHECK(sa == sb && (sa != GA_OK || !memcmp(ea, eb, g->elem_size)),
+                     "%s on %s: appended path differs at t = %.17g", ga_scheme_name(scheme), g->name, t);
+            sa = ga_path_velocity(&p, t, va);
+            sb = ga_path_velocity(&q, t, vb);
+            FZ_CHECK(sa == sb && (sa != GA_OK || !memcmp(va, vb, (size_t)dim * sizeof(double))),
+                     "%s on %s: appended path's velocity differs at t = %.17g", ga_scheme_name(scheme),
+                     g->name, t);
+        }
+        free(w2);
+    }
+
     /* closed form and velocity at a few times, inside and outside */
     for (int k = 0; k < 3; k++) {
         double t = fz_double(&rd);
