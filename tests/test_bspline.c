@@ -205,7 +205,8 @@ static void test_c2(tk_rng *r)
     tk_check c_acc = tk_begin("knots: acceleration s at u=1 = s+1 at u=0, / vscale^2", 1e-13);
     tk_check c_shr = tk_begin("knots: |a(t+e) - a(t-e)| / vscale^2 at e = 1e-6", 1e-5);
     tk_check c_lin = tk_begin("knots: that jump halves with e (ratio in [1.8, 2.2], e = 1e-3 .. 1e-6)", 0);
-    tk_check c_c1 = tk_begin_least("lihao3 on the same keys: acceleration jump at e = 1e-6, / vscale^2", 1e-3);
+    tk_check c_c1 = tk_begin_least("lihao3 on the same keys: acceleration jump at e = 1e-6, / vscale^2",
+                                   1e-3);
     for (int trial = 0; trial < 9; ++trial) {
         const ga_group *g = groups[trial % 3];
         size_t d = g->dim;
@@ -270,7 +271,8 @@ static void test_cga_matrix(tk_rng *r)
         keyset k;
         random_keys(r, &ga_group_se3, &k, 4 + trial % 5, tk_range(r, -5, 5), tk_range(r, 0.1, 3.0));
         pathbuf bc, bm;
-        if (mkpath(&bc, &ga_group_cga, GA_SCHEME_BSPLINE, &k) || mkpath(&bm, &ga_group_se3, GA_SCHEME_BSPLINE, &k)) {
+        if (mkpath(&bc, &ga_group_cga, GA_SCHEME_BSPLINE, &k) ||
+            mkpath(&bm, &ga_group_se3, GA_SCHEME_BSPLINE, &k)) {
             tk_add(&c_p, INFINITY);
             continue;
         }
@@ -423,20 +425,23 @@ static void test_errors(tk_rng *r)
     for (int n = 2; n <= 3; ++n) {
         keyset kk = k;
         kk.n = n;
-        tk_expect_status("bspline: 2 or 3 keys -> GA_ERR_ARG", mkpath(&b, &ga_group_cga, GA_SCHEME_BSPLINE, &kk),
-                         GA_ERR_ARG);
+        tk_expect_status("bspline: 2 or 3 keys -> GA_ERR_ARG",
+                         mkpath(&b, &ga_group_cga, GA_SCHEME_BSPLINE, &kk), GA_ERR_ARG);
     }
     tk_expect_status("bspline: 6 even keys -> ok", mkpath(&b, &ga_group_cga, GA_SCHEME_BSPLINE, &k), GA_OK);
     double t0 = 0, t1 = 0, e[16], v[6];
     ga_path_range(&b.p, &t0, &t1);
-    tk_expect(t0 == k.t[1] && t1 == k.t[4] && ga_path_segments(&b.p) == 3, "bspline: range [t_1, t_{n-2}], n-3 segments");
-    tk_expect_status("bspline: eval before t_1 -> GA_ERR_ARG", ga_path_eval(&b.p, k.t[1] - 1e-9, e), GA_ERR_ARG);
-    tk_expect_status("bspline: eval after t_{n-2} -> GA_ERR_ARG", ga_path_eval(&b.p, k.t[4] + 1e-9, e), GA_ERR_ARG);
+    tk_expect(t0 == k.t[1] && t1 == k.t[4] && ga_path_segments(&b.p) == 3,
+              "bspline: range [t_1, t_{n-2}], n-3 segments");
+    tk_expect_status("bspline: eval before t_1 -> GA_ERR_ARG", ga_path_eval(&b.p, k.t[1] - 1e-9, e),
+                     GA_ERR_ARG);
+    tk_expect_status("bspline: eval after t_{n-2} -> GA_ERR_ARG", ga_path_eval(&b.p, k.t[4] + 1e-9, e),
+                     GA_ERR_ARG);
     tk_expect_status("bspline: velocity at t_0 -> GA_ERR_ARG", ga_path_velocity(&b.p, k.t[0], v), GA_ERR_ARG);
     tk_expect_status("bspline: eval at t_{n-2} -> ok", ga_path_eval(&b.p, k.t[4], e), GA_OK);
     tk_expect_status("bspline: segment n-3 -> GA_ERR_ARG", ga_path_eval_segment(&b.p, 3, 0.5, e), GA_ERR_ARG);
-    tk_expect_status("bspline: segment 2 extrapolated to u = 1.5 -> ok", ga_path_eval_segment(&b.p, 2, 1.5, e),
-                     GA_OK);
+    tk_expect_status("bspline: segment 2 extrapolated to u = 1.5 -> ok",
+                     ga_path_eval_segment(&b.p, 2, 1.5, e), GA_OK);
     double sm[3 * 8];
     tk_expect_status("bspline: samples from t_0 -> GA_ERR_ARG",
                      ga_path_sample_uniform(&b.p, GA_EVAL_DIRECT, 1.0, 3, k.t[0], k.t[4], sm), GA_ERR_ARG);
