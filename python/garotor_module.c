@@ -741,10 +741,11 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
         return -1;
     ga_scheme scheme;
     if (ga_scheme_by_name(sname, &scheme) != GA_OK) {
-        PyErr_Format(
-            PyExc_ValueError,
-            "Path: scheme must be 'screw', 'bivector', 'quadratic', 'smooth', 'lihao2' or 'lihao3', not '%s'",
-            sname);
+        PyErr_Format(PyExc_ValueError,
+                     "Path: scheme must be 'screw', 'bivector', 'quadratic', 'smooth', 'lihao2', 'lihao3', "
+                     "'decoupled', "
+                     "'decoupled-c2' or 'bspline', not '%s'",
+                     sname);
         return -1;
     }
     int rc = -1;
@@ -784,6 +785,15 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
             raise_status("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE);
             goto done;
         }
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, tv) : 0;
+    if (bad) {
+        PyErr_Format(
+            PyExc_ValueError,
+            "Path: scheme 'bspline' needs evenly spaced times (to 1e-9 of the spacing): index %zu is off "
+            "the even grid of the first and last",
+            bad);
+        goto done;
+    }
     keys = PyMem_Malloc((size_t)n * sizeof *keys);
     if (!keys) {
         PyErr_NoMemory();
@@ -941,6 +951,15 @@ static PyObject *Path_get_scheme(PathObject *self, void *c)
     (void)c;
     return path_ready(self) ? PyUnicode_FromString(ga_scheme_name(self->scheme)) : NULL;
 }
+static PyObject *Path_get_range(PathObject *self, void *c)
+{
+    (void)c;
+    double t0, t1;
+    if (!path_ready(self))
+        return NULL;
+    ga_path_range(&self->path, &t0, &t1);
+    return Py_BuildValue("(dd)", t0, t1);
+}
 static PyObject *Path_get_group(PathObject *self, void *c)
 {
     (void)c;
@@ -970,6 +989,10 @@ static PyMethodDef Path_methods[] = {
 static PyGetSetDef Path_getset[] = {
     {"times", (getter)Path_get_times, NULL, "the key times (read-only)", NULL},
     {"scheme", (getter)Path_get_scheme, NULL, "the scheme's name", NULL},
+    {"range", (getter)Path_get_range, NULL,
+     "(t0, t1), the times the path is defined on: the first and last key's (bspline: the second and the last "
+     "but one's)",
+     NULL},
     {"group", (getter)Path_get_group, NULL, "the group's name", NULL},
     {NULL, NULL, NULL, NULL, NULL}};
 
@@ -982,7 +1005,8 @@ static PyTypeObject PathType = {
     .tp_doc =
         "Path(times, poses, scheme='screw', group='cga', velocities=None): a path through key poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
-        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3; group: cga, matrix, affine;\n"
+        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline;\n"
+        "group: cga, matrix, affine;\n"
         "velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6).",
     .tp_methods = Path_methods,
     .tp_getset = Path_getset,
