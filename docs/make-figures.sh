@@ -103,6 +103,11 @@ for s in screw bivector smooth lihao2 lihao3; do
         --out "$tmp/samples" --svg "$out/scheme-$s.svg"
 done
 
+# bspline needs even times: the same five poses at t = 0, 1, 2, 3, 4
+awk '/^#/ { next } { $1 = n++; print }' "$src/schemes.keys" >"$tmp/even.keys"
+"$G" interp --scheme bspline --format pose --samples 201 --in "$tmp/even.keys" --out "$tmp/samples" \
+    --svg "$out/scheme-bspline.svg"
+
 # ---- the tutorial: one screw, a robot's tool poses from a CSV file, the demo -
 "$G" interp --format pose --samples 21 --in "$src/two-poses.keys" --out "$tmp/samples" \
     --svg "$out/two-poses.svg"

@@ -123,7 +123,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_reader rd = fz_begin(data, size);
     uint8_t b0 = fz_byte(&rd), b1 = fz_byte(&rd), flags = fz_byte(&rd);
     const ga_group *g = groups[b0 % 3];
-    ga_scheme scheme = (ga_scheme)((b0 / 3) % GA_SCHEME_COUNT);
+    /* b0 / 3 is 0..85: below 80 the first 8 schemes as before more came, so
+       that the regression inputs keep theirs; 80..85 the later ones */
+    unsigned sb = b0 / 3u;
+    ga_scheme scheme = (ga_scheme)(sb < 80 ? sb % 8 : 8 + (sb - 80) % (GA_SCHEME_COUNT - 8));
     ga_eval ev = (ga_eval)(b1 % 3);
     int n = 2 + (b1 / 3) % (MAXK - 1);
     int dim = g->dim;
@@ -141,6 +144,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             double h = fz_double(&rd);
             times[i] = times[i - 1] + fabs(h);
         }
+        /* bspline needs even times: the first spacing throughout, from t_0
+           (each t_i formed from t_0, not by summing) */
+        if (scheme == GA_SCHEME_BSPLINE && n > 1)
+            for (int i = 2; i < n; i++) times[i] = times[0] + (double)i * (times[1] - times[0]);
     }
     int times_finite = fz_all_finite(times, n), increasing = 1;
     double hmax = 0.0;
@@ -236,6 +243,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (!(ra >= 1.0 / 3 && ra <= 3.0))
                 valid = 0;
         }
+    /* bspline: evenly spaced times (ga_times_uneven), else GA_ERR_ARG */
+    int uneven = scheme == GA_SCHEME_BSPLINE && ga_times_uneven(n, times) != 0;
     int count_ok = n == 1 ||
                    ((size_t)n >= ga_scheme_min_keys(scheme) && (scheme != GA_SCHEME_QUADRATIC || n == 3));
     if (!count_ok)
@@ -249,20 +258,28 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* GA_ERR_NOTFINITE means NaN/Inf input; finite input that overflows is GA_ERR_DOMAIN */
     if (times_finite && keys_finite && vel_finite)
         FZ_CHECK(st != GA_ERR_NOTFINITE, "finite input, GA_ERR_NOTFINITE from init");
-    valid = valid && count_ok && times_finite && increasing;
+    if (uneven && count_ok && times_finite && increasing)
+        FZ_CHECK(st == GA_ERR_ARG, "bspline on uneven times: status %d", st);
+    valid = valid && count_ok && times_finite && increasing && !uneven;
     if (valid)
         FZ_CHECK(st == GA_OK, "valid %s path on %s fails to build: %d", ga_scheme_name(scheme), g->name, st);
     if (st != GA_OK) {
         free(work);
         return 0;
     }
+    /* the range the path is defined on: the keys' times, bspline [t_1, t_{n-2}] */
     double t0 = times[0], t1 = times[n - 1];
+    FZ_CHECK(ga_path_range(&p, &t0, &t1) == GA_OK, "range");
+    if (scheme != GA_SCHEME_BSPLINE)
+        FZ_CHECK(t0 == times[0] && t1 == times[n - 1], "range [%.17g, %.17g] not the keys'", t0, t1);
+    int nseg = (int)ga_path_segments(&p);
 
     /* appending: the path grown from its first k keys by ga_path_append is
        the path built at once, bit for bit (path.h), and it can always be
        grown where the whole path was built */
-    if (ga_scheme_can_append(scheme) && n >= 2) {
-        size_t k = 1 + (size_t)(flags >> 4) % (size_t)(n - 1); /* 1 .. n-1 keys first */
+    int bsp = scheme == GA_SCHEME_BSPLINE; /* 4 keys at least, to begin with */
+    if (ga_scheme_can_append(scheme) && n >= (bsp ? 5 : 2)) {
+        size_t k0 = bsp ? 4 : 1, k = k0 + (size_t)(flags >> 4) % ((size_t)n - k0); /* k0 .. n-1 keys first */
         void *w2 = malloc(wbytes);
         ga_path q;
         if (!w2) {
@@ -325,14 +342,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     /* one segment formula at an arbitrary u (extrapolation beyond [0, 1]) */
     {
-        int seg = fz_byte(&rd) % n; /* n - 1 is out of range */
+        int seg = fz_byte(&rd) % n; /* nseg (n - 1; bspline n - 3) and above are out of range */
         double u = fz_double(&rd);
         double A[GA_GROUP_MAX_ELEM], v[GA_GROUP_MAX_DIM];
         int est = ga_path_eval_segment(&p, seg, u, A), vst = ga_path_velocity_segment(&p, seg, u, v);
         FZ_CHECK(is_status(est) && is_status(vst), "eval_segment %d velocity_segment %d", est, vst);
-        if (seg == n - 1 || !isfinite(u))
+        if (seg >= nseg || !isfinite(u))
             FZ_CHECK(est != GA_OK, "eval_segment seg %d u %.17g accepted", seg, u);
-        int u_ok = valid && seg < n - 1 && fabs(u) <= 4;
+        int u_ok = valid && seg < nseg && fabs(u) <= 4;
         if (u_ok)
             FZ_CHECK(est == GA_OK && vst == GA_OK, "valid path: segment %d u %.17g: %d %d", seg, u, est, vst);
         if (est == GA_OK)

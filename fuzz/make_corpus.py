@@ -120,13 +120,14 @@ write("numeric", "points-nan", bytes([OPS["points"]]) + doubles([NAN] + PTS[1:] 
 
 # ---- path: fuzz_path.c ---------------------------------------------------------
 GROUPS = ["cga", "matrix", "affine"]
-SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2"]
+SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "bspline"]
 EVALS = ["direct", "euler", "exact"]
 
 
 def path_seed(group, scheme, ev, n, flags, times, keys, vel=None, extra=b""):
     g, s, e = GROUPS.index(group), SCHEMES.index(scheme), EVALS.index(ev)
-    head = bytes([g + 3 * s, e + 3 * (n - 2), flags])
+    # fuzz_path.c: b0 / 3 below 80 is one of the first 8 schemes, from 80 the later ones
+    head = bytes([g + 3 * (s if s < 8 else 80 + s - 8), e + 3 * (n - 2), flags])
     body = doubles(times) + b"".join(doubles(k) for k in keys)
     if vel is not None:
         body += doubles(vel)
@@ -154,6 +155,8 @@ for group in GROUPS:
         n = 3 if scheme in ("quadratic", "smooth") else 4 if scheme == "lihao3" else 2
         if scheme in ("smooth", "decoupled-c2"):
             n = 5
+        if scheme == "bspline":
+            n = 6
         keys = affine_keys(n) if group == "affine" else twist_keys(n)
         times = [0.0] + [1.0] * (n - 1)  # t0, then spacings
         vel = None
@@ -222,6 +225,11 @@ TOOL = {
     "interp-decoupled": "interp --scheme decoupled --samples 5 --format pose\n" + POSES,
     "interp-decoupled-c2": "interp --scheme decoupled-c2 --samples 7 --group matrix\n" + KEYS,
     "interp-decoupled-affine": "interp --scheme decoupled --group affine --samples 3\n0 %s\n1 %s\n" % (M1, AFF),
+    "interp-bspline-epoch": "interp --scheme bspline --format pose --rate 250 --with velocity,acceleration"
+    " --extrapolate hold\n" + "".join("1305031102.%02d %s\n" % (17 + i, p) for i, p in enumerate(
+        [P1, P2, P3, "2 1 1 0 0.6 0 0.8", "3 1 0 0.6 0 0 0.8"])),
+    "interp-bspline-ns-exact": "interp --scheme bspline --eval exact --time-unit ns --samples 7 --extrapolate extend\n"
+    + "".join("%d %s\n" % (1305031102170000000 + 10000000 * i, m) for i, m in enumerate([M1, M2, M3, M1])),
     "interp-euler": "interp --scheme lihao3 --samples 5 --eval euler --step 0.1\n" + KEYS,
     "interp-exact": "interp --scheme lihao2 --samples 9 --eval exact\n" + KEYS,
     "interp-affine": "interp --scheme screw --group affine --samples 4\n0 %s\n1 %s\n" % (M1, AFF),

@@ -14,8 +14,8 @@
 
 /* ---- names ---------------------------------------------------------------- */
 
-static const char *const scheme_names[GA_SCHEME_COUNT] = {"screw",  "bivector", "quadratic", "smooth",
-                                                          "lihao2", "lihao3",   "decoupled", "decoupled-c2"};
+static const char *const scheme_names[GA_SCHEME_COUNT] = {
+    "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "bspline"};
 static const char *const eval_names[] = {"direct", "euler", "exact"};
 
 const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < GA_SCHEME_COUNT ? scheme_names[s] : "?"; }
@@ -42,25 +42,56 @@ int ga_eval_by_name(const char *name, ga_eval *out)
     return GA_ERR_ARG;
 }
 
-size_t ga_scheme_min_keys(ga_scheme s) { return (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2; }
+size_t ga_scheme_min_keys(ga_scheme s)
+{
+    return s == GA_SCHEME_BSPLINE ? 4 : (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_SMOOTH) ? 3 : 2;
+}
 
-/* Schemes whose segment i depends on keys 0..i+1 only (path.h, ga_path_append). */
+size_t ga_times_uneven(size_t n, const double *times)
+{
+    if (!times || n <= 2)
+        return 0;
+    double t0 = times[0], span = times[n - 1] - t0, h = span / (double)(n - 1);
+    double tol = GA_PATH_SPACING_TOL * fabs(h) + 4 * DBL_EPSILON * fmax(fabs(t0), fabs(times[n - 1]));
+    for (size_t i = 1; i + 1 < n; ++i) {
+        /* t_0 + i h formed as a weighted mean of the ends: no error growing with i */
+        double w = (double)i / (double)(n - 1), grid = t0 + w * span;
+        if (!(fabs(times[i] - grid) <= tol))
+            return i;
+    }
+    return 0;
+}
+
+/* Schemes whose segment i depends on keys 0..i+1 only, BSPLINE's on keys
+ * i..i+3 (path.h, ga_path_append). */
 int ga_scheme_can_append(ga_scheme s)
 {
     return s == GA_SCHEME_SCREW || s == GA_SCHEME_LIHAO2 || s == GA_SCHEME_BIVECTOR ||
-           s == GA_SCHEME_DECOUPLED;
+           s == GA_SCHEME_DECOUPLED || s == GA_SCHEME_BSPLINE;
 }
 
 /* ---- small helpers ---------------------------------------------------------- */
 
-/* The exponent polynomials p_j(u) = a u + b u^2 + c u^3 of the Li-Hao factors
- * exp(p_j(u) X_j): u (eq. 9), u^2 (eq. 14), u^3 - u^2 (eq. 21). Factor j has
- * degree j + 1. */
-static const double fac_poly[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, -1, 1}};
+/* The exponent polynomials p_j(u) = c0 + c1 u + c2 u^2 + c3 u^3 of the
+ * factors exp(p_j(u) X_j). Li-Hao: u (eq. 9), u^2 (eq. 14), u^3 - u^2
+ * (eq. 21); factor j has degree j + 1. BSPLINE: the cumulative cubic basis
+ * (path.h), each of degree 3. */
+static const double lihao_poly[3][4] = {{0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, -1, 1}};
+static const double bspline_poly[3][4] = {
+    {5.0 / 6, 0.5, -0.5, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -1.0 / 3}, {0, 0, 0, 1.0 / 6}};
+
+static const double *fac_poly(ga_scheme s, size_t j)
+{
+    return s == GA_SCHEME_BSPLINE ? bspline_poly[j] : lihao_poly[j];
+}
+static size_t fac_deg(ga_scheme s, size_t j) { return s == GA_SCHEME_BSPLINE ? 3 : j + 1; }
 
 static size_t nfac(ga_scheme s)
 {
-    return s == GA_SCHEME_SCREW ? 1 : s == GA_SCHEME_LIHAO2 ? 2 : s == GA_SCHEME_LIHAO3 ? 3 : 0;
+    return s == GA_SCHEME_SCREW                            ? 1
+         : s == GA_SCHEME_LIHAO2                           ? 2
+         : s == GA_SCHEME_LIHAO3 || s == GA_SCHEME_BSPLINE ? 3
+                                                           : 0;
 }
 
 /* The order-m forward difference of p with step d at u (m = 0: p(u) itself),
@@ -68,17 +99,29 @@ static size_t nfac(ga_scheme s)
 static double poly_diff(const double *c, size_t m, double u, double d)
 {
     switch (m) {
-    case 0: return u * (c[0] + u * (c[1] + u * c[2]));
-    case 1: return c[0] * d + c[1] * d * (2 * u + d) + c[2] * d * (3 * u * u + 3 * u * d + d * d);
-    case 2: return c[1] * 2 * d * d + c[2] * 6 * d * d * (u + d);
-    default: return c[2] * 6 * d * d * d;
+    case 0: return c[0] + u * (c[1] + u * (c[2] + u * c[3]));
+    case 1: return c[1] * d + c[2] * d * (2 * u + d) + c[3] * d * (3 * u * u + 3 * u * d + d * d);
+    case 2: return c[2] * 2 * d * d + c[3] * 6 * d * d * (u + d);
+    default: return c[3] * 6 * d * d * d;
     }
 }
 
-static double poly_deriv(const double *c, double u) { return c[0] + u * (2 * c[1] + 3 * u * c[2]); }
+static double poly_deriv(const double *c, double u) { return c[1] + u * (2 * c[2] + 3 * u * c[3]); }
+static double poly_deriv2(const double *c, double u) { return 2 * c[2] + 6 * c[3] * u; }
 
 static double *key_of(const ga_path *p, size_t i) { return p->key + i * p->key_stride; }
-static double seg_len(const ga_path *p, size_t i) { return p->t[i + 1] - p->t[i]; }
+/* Segment i runs from knot i to knot i + 1: the key times, except BSPLINE,
+ * whose segment i is [t_{i+1}, t_{i+2}] (path.h). */
+static size_t knot_off(const ga_path *p) { return p->scheme == GA_SCHEME_BSPLINE && p->n > 1; }
+static double knot(const ga_path *p, size_t i) { return p->t[i + knot_off(p)]; }
+static size_t nseg(const ga_path *p) { return p->n > 1 ? p->n - 1 - 2 * knot_off(p) : 0; }
+static double seg_len(const ga_path *p, size_t i) { return knot(p, i + 1) - knot(p, i); }
+/* X_1 of segment seg; X_2, X_3 follow at strides of dim. Li-Hao: B, C, D per
+ * segment; BSPLINE: the n - 1 relative logs d_i, shared by the segments. */
+static const double *seg_coef(const ga_path *p, size_t seg)
+{
+    return p->coef + seg * (p->scheme == GA_SCHEME_BSPLINE ? 1 : nfac(p->scheme)) * p->group->dim;
+}
 
 /* Element sizes of 8 and 16 doubles (a rotor, a 4x4 matrix) get a memcpy of
  * constant size, which the compiler turns into a few moves (a call to memcpy
@@ -631,7 +674,8 @@ static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
 {
     size_t S = N - 1;
     switch (s) {
-    case GA_SCHEME_SCREW: return S * D;
+    case GA_SCHEME_SCREW:
+    case GA_SCHEME_BSPLINE: return S * D;
     case GA_SCHEME_LIHAO2: return 2 * S * D + N * D;
     case GA_SCHEME_LIHAO3: return 3 * S * D + N * D;
     case GA_SCHEME_BIVECTOR: return N * D;
@@ -668,6 +712,8 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
     for (size_t i = 0; i + 1 < n; ++i)
         if (!(times[i] < times[i + 1]))
             return GA_ERR_ARG;
+    if (s == GA_SCHEME_BSPLINE && ga_times_uneven(n, times))
+        return GA_ERR_ARG;
     size_t d = g->dim, m = n;
     if (ga_scheme_can_append(s)) { /* every key the workspace has room for */
         size_t one = ga_path_workspace_size(g, s, 1), per = ga_path_workspace_size(g, s, 2) - one;
@@ -686,7 +732,8 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
     w += m * p->key_stride;
     memcpy(p->t, times, n * sizeof(double));
     switch (s) {
-    case GA_SCHEME_SCREW: p->coef = w; break;
+    case GA_SCHEME_SCREW:
+    case GA_SCHEME_BSPLINE: p->coef = w; break;
     case GA_SCHEME_LIHAO2:
         p->coef = w;
         p->vel = w + 2 * (m - 1) * d;
@@ -754,7 +801,8 @@ static int build_lihao(ga_path *p, const double *vel)
     size_t n = p->n, d = g->dim;
     double rel[MAXE];
     int st;
-    if (p->scheme == GA_SCHEME_SCREW) {
+    if (p->scheme == GA_SCHEME_SCREW || p->scheme == GA_SCHEME_BSPLINE) {
+        /* BSPLINE: the d_i of path.h, as SCREW's B_i */
         for (size_t i = 0; i + 1 < n; ++i)
             if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + i * d, rel)))
                 return st;
@@ -890,6 +938,7 @@ static int build_scheme(ga_path *p, const double *vel)
 {
     switch (p->scheme) {
     case GA_SCHEME_SCREW:
+    case GA_SCHEME_BSPLINE:
     case GA_SCHEME_LIHAO2:
     case GA_SCHEME_LIHAO3: return build_lihao(p, vel);
     case GA_SCHEME_BIVECTOR: return build_generators(p);
@@ -1006,7 +1055,11 @@ static int append(ga_path *p, double t, const void *key, int mat4)
         return GA_ERR_NOTFINITE;
     q.t[i + 1] = t;
     q.n = i + 2;
+    /* BSPLINE: at least 4 keys before and after, evenly spaced (path.h) */
+    if (q.scheme == GA_SCHEME_BSPLINE && (i + 1 < 4 || ga_times_uneven(i + 2, q.t)))
+        return GA_ERR_ARG;
     switch (q.scheme) {
+    case GA_SCHEME_BSPLINE: /* d_i of keys i, i + 1, as SCREW's B_i */
     case GA_SCHEME_SCREW:
         st = rel_log(g, key_of(&q, i), k, q.coef + i * d, rel);
         if (st == GA_OK && !allfinite(q.coef + i * d, d))
@@ -1061,26 +1114,46 @@ int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key) { return append(p, t,
 
 /* ---- evaluation ---------------------------------------------------------------- */
 
+size_t ga_path_segments(const ga_path *p) { return p ? nseg(p) : 0; }
+
+int ga_path_range(const ga_path *p, double *t0, double *t1)
+{
+    if (!p || !t0 || !t1)
+        return GA_ERR_ARG;
+    *t0 = knot(p, 0);
+    *t1 = knot(p, nseg(p));
+    return GA_OK;
+}
+
+int ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1)
+{
+    if (!p || !t0 || !t1 || seg >= nseg(p))
+        return GA_ERR_ARG;
+    *t0 = knot(p, seg);
+    *t1 = knot(p, seg + 1);
+    return GA_OK;
+}
+
 int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
 {
-    size_t n = p->n;
-    if (!(t >= p->t[0] && t <= p->t[n - 1]))
+    size_t m = nseg(p);
+    if (!(t >= knot(p, 0) && t <= knot(p, m)))
         return GA_ERR_ARG; /* also NaN */
-    if (n == 1) {          /* the constant path: its key, "segment 0" at u = 0 */
+    if (m == 0) {          /* the constant path: its key, "segment 0" at u = 0 */
         *seg = 0;
         *u = 0.0;
         return GA_OK;
     }
-    size_t lo = 0, hi = n - 2; /* largest i <= n-2 with t_i <= t */
+    size_t lo = 0, hi = m - 1; /* largest i <= m-1 with knot i <= t */
     while (lo < hi) {
         size_t mid = (lo + hi + 1) / 2;
-        if (p->t[mid] <= t)
+        if (knot(p, mid) <= t)
             lo = mid;
         else
             hi = mid - 1;
     }
     *seg = lo;
-    *u = (t - p->t[lo]) / seg_len(p, lo);
+    *u = (t - knot(p, lo)) / seg_len(p, lo);
     return GA_OK;
 }
 
@@ -1113,7 +1186,7 @@ static void gen_curve(const ga_path *p, size_t j, double u, double *x, double *x
 
 int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
 {
-    if (!p || !out || seg + 2 > p->n || !isfinite(u))
+    if (!p || !out || seg >= nseg(p) || !isfinite(u))
         return GA_ERR_ARG;
     const ga_group *g = p->group;
     size_t d = g->dim, nf = nfac(p->scheme);
@@ -1125,13 +1198,14 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
         gen_curve(p, seg, u, x, xd);
         return g->exp(x, out);
     }
-    /* A_i exp(p_1(u) B) exp(p_2(u) C) exp(p_3(u) D) (Li-Hao eqs. 8, 14, 21),
-     * the partial products alternating between two buffers, the last one
-     * composed straight into out */
+    /* A_i exp(p_1(u) B) exp(p_2(u) C) exp(p_3(u) D) (Li-Hao eqs. 8, 14, 21;
+     * BSPLINE: A_s and the d_j with the cumulative basis), the partial
+     * products alternating between two buffers, the last one composed
+     * straight into out */
     double acc[2][MAXE], e[MAXE];
-    const double *left = key_of(p, seg), *X = p->coef + seg * nf * d;
+    const double *left = key_of(p, seg), *X = seg_coef(p, seg);
     for (size_t j = 0; j < nf; ++j, X += d) {
-        lin(d, x, poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
+        lin(d, x, poly_diff(fac_poly(p->scheme, j), 0, u, 0.0), X, 0.0, X);
         if ((st = g->exp(x, e)))
             return st;
         double *dst = j + 1 == nf ? out : acc[j & 1];
@@ -1142,10 +1216,11 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
     return finite_elem(g, out);
 }
 
-/* DIRECT at (seg, u): at a key time the key itself, not its rounding. */
+/* DIRECT at (seg, u): at a key time the key itself, not its rounding (not
+ * BSPLINE, whose knots are no keys; its one-key path is the key). */
 static int eval_direct(const ga_path *p, size_t seg, double u, void *out)
 {
-    if (u == 0.0 || u == 1.0) {
+    if ((u == 0.0 || u == 1.0) && (p->scheme != GA_SCHEME_BSPLINE || p->n == 1)) {
         copy_elem(p->group, out, key_of(p, seg + (u == 1.0)));
         return GA_OK;
     }
@@ -1183,25 +1258,26 @@ static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
     }
     /* M = F_1 F_2 F_3, F_j = exp(p_j X_j): M^-1 M' = Ad_{F_3^-1}(Ad_{F_2^-1}(p_1' X_1)
      * + p_2' X_2) + p_3' X_3 (product rule; Li-Hao eqs. 15, 25, 34) */
-    const double *X = p->coef + seg * nf * d;
+    const double *X = seg_coef(p, seg);
     for (size_t j = 0; j < nf; ++j, X += d) {
+        const double *cp = fac_poly(p->scheme, j);
         if (j > 0) {
             double fi[MAXE];
-            lin(d, x, -poly_diff(fac_poly[j], 0, u, 0.0), X, 0.0, X);
+            lin(d, x, -poly_diff(cp, 0, u, 0.0), X, 0.0, X);
             if ((st = g->exp(x, fi)))
                 return st;
             g->adjoint(fi, v, w);
         } else {
             for (size_t k = 0; k < d; ++k) w[k] = 0.0;
         }
-        lin(d, v, 1.0, w, poly_deriv(fac_poly[j], u), X);
+        lin(d, v, 1.0, w, poly_deriv(cp, u), X);
     }
     return GA_OK;
 }
 
 int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v)
 {
-    if (!p || !v || seg + 2 > p->n || !isfinite(u))
+    if (!p || !v || seg >= nseg(p) || !isfinite(u))
         return GA_ERR_ARG;
     size_t d = p->group->dim;
     double w[MAXD];
@@ -1381,12 +1457,12 @@ static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
      * + p'' X (F = F_{j+1}, X = X_{j+1}): the product rule of velocity_u
      * differentiated once more, the recursion of Sommer et al. 2020 (eqs. for
      * the cumulative B-spline's acceleration) */
-    const double *X = p->coef + seg * nf * d;
+    const double *X = seg_coef(p, seg);
     double w[MAXD], b[MAXD], c[MAXD], x[MAXD], fi[MAXE];
     for (size_t k = 0; k < d; ++k) v[k] = a[k] = 0.0;
     for (size_t j = 0; j < nf; ++j, X += d) {
-        const double *cp = fac_poly[j];
-        double d1 = poly_deriv(cp, u), d2 = 2 * cp[1] + 6 * cp[2] * u;
+        const double *cp = fac_poly(p->scheme, j);
+        double d1 = poly_deriv(cp, u), d2 = poly_deriv2(cp, u);
         if (j > 0) {
             lin(d, x, -poly_diff(cp, 0, u, 0.0), X, 0.0, X);
             if ((st = g->exp(x, fi)))
@@ -1407,7 +1483,7 @@ static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
 
 int ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a)
 {
-    if (!p || !a || seg + 2 > p->n || !isfinite(u))
+    if (!p || !a || seg >= nseg(p) || !isfinite(u))
         return GA_ERR_ARG;
     size_t d = p->group->dim;
     double v[MAXD], w[MAXD], h = seg_len(p, seg);
@@ -1428,7 +1504,7 @@ int ga_path_acceleration(const ga_path *p, double t, double *a)
 
 int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a)
 {
-    if (!p || seg + 2 > p->n || !isfinite(u) || (unsigned)f > GA_FRAME_SPATIAL)
+    if (!p || seg >= nseg(p) || !isfinite(u) || (unsigned)f > GA_FRAME_SPATIAL)
         return GA_ERR_ARG;
     const ga_group *g = p->group;
     size_t d = g->dim;
@@ -1491,7 +1567,11 @@ static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, d
     int st;
     double v[MAXD], e[MAXE], tmp[MAXE];
     if (*cur != seg || (double)*grid * h > u) {
-        copy_elem(g, A, key_of(p, seg));
+        if (p->scheme == GA_SCHEME_BSPLINE) { /* the knot's pose, no key */
+            if ((st = ga_path_eval_segment(p, seg, 0.0, A)))
+                return st;
+        } else
+            copy_elem(g, A, key_of(p, seg));
         *grid = 0;
         *cur = seg;
     }
@@ -1526,7 +1606,12 @@ static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, d
  * for 0 < m < deg, then E = exp(D^deg p X), constant on a segment. Degrees 1,
  * 2, 3 use 2, 3, 4 slots. The key is folded into the first factor's G_0
  * (A_i exp(u B)), so SCREW costs one product per sample. */
-static size_t slot_base(size_t j) { return j * (j + 3) / 2; }
+static size_t slot_base(ga_scheme s, size_t j)
+{
+    size_t b = 0;
+    for (size_t i = 0; i < j; ++i) b += fac_deg(s, i) + 1;
+    return b; /* Li-Hao: j (j + 3)/2; BSPLINE: 4 j */
+}
 
 static int exact_anchor(ga_path_stepper *s, size_t seg, double u)
 {
@@ -1535,13 +1620,13 @@ static int exact_anchor(ga_path_stepper *s, size_t seg, double u)
     size_t d = g->dim, nf = nfac(p->scheme);
     int st, newseg = seg != s->seg;
     double delta = s->dt / seg_len(p, seg), x[MAXD], e[MAXE];
-    const double *X = p->coef + seg * nf * d;
+    const double *X = seg_coef(p, seg);
     for (size_t j = 0; j < nf; ++j, X += d)
-        for (size_t m = 0; m <= j + 1; ++m) {
-            if (m == j + 1 && !newseg)
+        for (size_t m = 0, deg = fac_deg(p->scheme, j); m <= deg; ++m) {
+            if (m == deg && !newseg)
                 break; /* E is kept for the segment */
-            lin(d, x, poly_diff(fac_poly[j], m, u, delta), X, 0.0, X);
-            if ((st = g->exp(x, m == 0 && j == 0 ? e : s->slot[slot_base(j) + m])))
+            lin(d, x, poly_diff(fac_poly(p->scheme, j), m, u, delta), X, 0.0, X);
+            if ((st = g->exp(x, m == 0 && j == 0 ? e : s->slot[slot_base(p->scheme, j) + m])))
                 return st;
             if (m == 0 && j == 0)
                 g->compose(key_of(p, seg), e, s->slot[0]);
@@ -1557,9 +1642,9 @@ static void exact_advance(ga_path_stepper *s)
     size_t nf = nfac(s->path->scheme);
     double tmp[MAXE];
     for (size_t j = 0; j < nf; ++j)
-        for (size_t m = 0; m <= j; ++m) {
-            double *a = s->slot[slot_base(j) + m];
-            g->compose(a, s->slot[slot_base(j) + m + 1], tmp);
+        for (size_t m = 0, b = slot_base(s->path->scheme, j); m < fac_deg(s->path->scheme, j); ++m) {
+            double *a = s->slot[b + m];
+            g->compose(a, s->slot[b + m + 1], tmp);
             copy_elem(g, a, tmp);
         }
 }
@@ -1574,9 +1659,9 @@ static void exact_output(const ga_path_stepper *s, void *out)
         copy_elem(g, out, s->slot[0]);
         return;
     }
-    g->compose(s->slot[0], s->slot[slot_base(1)], acc);
+    g->compose(s->slot[0], s->slot[slot_base(s->path->scheme, 1)], acc);
     if (nf == 3) {
-        g->compose(acc, s->slot[slot_base(2)], tmp);
+        g->compose(acc, s->slot[slot_base(s->path->scheme, 2)], tmp);
         copy_elem(g, acc, tmp);
     }
     copy_elem(g, out, acc);
@@ -1591,7 +1676,7 @@ int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, do
         return GA_ERR_ARG;
     if (!isfinite(t0) || !isfinite(t1))
         return GA_ERR_NOTFINITE;
-    if (!(t0 >= p->t[0] && t1 <= p->t[p->n - 1] && t0 <= t1))
+    if (!(t0 >= knot(p, 0) && t1 <= knot(p, nseg(p)) && t0 <= t1))
         return GA_ERR_ARG;
     if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0))
         return GA_ERR_ARG;
@@ -1617,10 +1702,11 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
     double t = s->k + 1 == s->n ? s->t1 : s->t0 + (double)s->k * s->dt, u;
     size_t seg = s->seg;
     int st;
-    if (seg != SIZE_MAX && p->t[seg] <= t && (t < p->t[seg + 1] || (seg == p->n - 2 && t == p->t[seg + 1]))) {
+    if (seg != SIZE_MAX && knot(p, seg) <= t &&
+        (t < knot(p, seg + 1) || (seg + 1 == nseg(p) && t == knot(p, seg + 1)))) {
         /* the running segment again (t is inside [t_0, t_{n-1}] by the init):
            what ga_path_locate would find, without its search */
-        u = (t - p->t[seg]) / seg_len(p, seg);
+        u = (t - knot(p, seg)) / seg_len(p, seg);
     } else if ((st = ga_path_locate(p, t, &seg, &u))) {
         return st;
     }

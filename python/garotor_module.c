@@ -773,8 +773,8 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
         goto done;
     }
     size_t min = ga_scheme_min_keys(scheme);
-    if ((size_t)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3)) {
-        PyErr_Format(PyExc_ValueError, "Path: scheme '%s' needs %s %zu keys, got %zd", sname,
+    if (n != 1 && ((size_t)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) { /* 1: constant */
+        PyErr_Format(PyExc_ValueError, "Path: scheme '%s' needs one key or %s %zu, got %zd", sname,
                      scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, (Py_ssize_t)n);
         goto done;
     }
@@ -805,6 +805,15 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
             raise_status("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE);
             goto done;
         }
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, tv) : 0;
+    if (bad) {
+        PyErr_Format(
+            PyExc_ValueError,
+            "Path: scheme 'bspline' needs evenly spaced times (to 1e-9 of the spacing): index %zu is off "
+            "the even grid of the first and last",
+            bad);
+        goto done;
+    }
     keys = PyMem_Malloc((size_t)n * sizeof *keys);
     if (!keys) {
         PyErr_NoMemory();
@@ -1012,6 +1021,11 @@ static PyObject *Path_append(PathObject *self, PyObject *args, PyObject *kw)
     Py_DECREF(p);
     if (st == GA_OK)
         st = ga_path_append_mat4(&self->path, t, m);
+    if (st == GA_ERR_ARG && self->scheme == GA_SCHEME_BSPLINE) {
+        PyErr_Format(PyExc_ValueError, "Path.append: scheme 'bspline' takes a key %s",
+                     self->path.n < 4 ? "only after 4 keys or more" : "only at evenly spaced times");
+        return NULL;
+    }
     if (st != GA_OK) {
         PyErr_Format(st == GA_ERR_DOMAIN ? garotor_error : PyExc_ValueError, "Path.append: %s",
                      ga_status_string(st));
@@ -1023,6 +1037,15 @@ static PyObject *Path_get_scheme(PathObject *self, void *c)
 {
     (void)c;
     return path_ready(self) ? PyUnicode_FromString(ga_scheme_name(self->scheme)) : NULL;
+}
+static PyObject *Path_get_range(PathObject *self, void *c)
+{
+    (void)c;
+    double t0, t1;
+    if (!path_ready(self))
+        return NULL;
+    ga_path_range(&self->path, &t0, &t1);
+    return Py_BuildValue("(dd)", t0, t1);
 }
 static PyObject *Path_get_group(PathObject *self, void *c)
 {
@@ -1058,6 +1081,10 @@ static PyGetSetDef Path_getset[] = {
     {"times", (getter)Path_get_times, NULL, "the key times (a read-only copy)", NULL},
     {"capacity", (getter)Path_get_capacity, NULL, "the keys the Path has room for (Path.append)", NULL},
     {"scheme", (getter)Path_get_scheme, NULL, "the scheme's name", NULL},
+    {"range", (getter)Path_get_range, NULL,
+     "(t0, t1), the times the path is defined on: the first and last key's (bspline: the second and the last "
+     "but one's)",
+     NULL},
     {"group", (getter)Path_get_group, NULL, "the group's name", NULL},
     {NULL, NULL, NULL, NULL, NULL}};
 
@@ -1068,9 +1095,11 @@ static PyTypeObject PathType = {
     .tp_repr = (reprfunc)Path_repr,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc =
-        "Path(times, poses, scheme='screw', group='cga', velocities=None): a path through key poses.\n\n"
+        "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None): a path through "
+        "key "
+        "poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
-        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2;\n"
+        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline;\n"
         "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
         "capacity: room for keys to come (append), for the schemes that can append.",
     .tp_methods = Path_methods,

@@ -199,6 +199,48 @@ expect_error "interp: --times outside" "--times time -1 is outside the keys' ran
 "$G" interp --format pose --in "$d/k3" --at -1 --extrapolate extend >"$d/ext" || fail "--extrapolate extend"
 [ "$(cut -d' ' -f1-4 "$d/ext")" = "-1 -0.28000000000000003 0.95999999999999996 0" ] ||
     fail "--extrapolate extend: $(cat "$d/ext")"
+# ---- --scheme bspline: 12 keys at 100 Hz with epoch stamps; its range is
+# the second key's time to the last but one's ----
+awk 'BEGIN { for (i = 0; i < 12; i++) { t = i / 100; a = 3 * t + sin(9 * t); b = cos(7 * t)
+    s = sin(a / 2) / sqrt(0.25 + b * b); printf "1305031102.%02d %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n",
+    17 + i, sin(5 * t), cos(4 * t), 2 * t, 0.5 * s, b * s, 0, cos(a / 2) } }' >"$d/bs"
+"$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --samples 4 >"$d/bs.s" || fail "bspline --samples"
+[ "$(cut -d' ' -f1 "$d/bs.s" | tr '\n' ' ')" = "1305031102.18 1305031102.21 1305031102.24 1305031102.27 " ] ||
+    fail "bspline --samples: not over [t_1, t_{n-2}]: $(cut -d' ' -f1 "$d/bs.s" | tr '\n' ' ')"
+"$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --rate 100 >"$d/bs.r" || fail "bspline --rate"
+[ "$(wc -l <"$d/bs.r")" -eq 10 ] && [ "$(sed -n 1p "$d/bs.r" | cut -d' ' -f1)" = 1305031102.18 ] ||
+    fail "bspline --rate 100: $(wc -l <"$d/bs.r") samples from $(sed -n 1p "$d/bs.r" | cut -d' ' -f1), want 10 from the second key"
+for gr in cga matrix; do
+    "$G" interp --scheme bspline --group $gr --format pose --normalize --in "$d/bs" --rate 1000 \
+        --with velocity,acceleration >"$d/bs.$gr" || fail "bspline --group $gr"
+done
+"$G" interp --scheme bspline --eval exact --format pose --normalize --in "$d/bs" --rate 1000 >"$d/bs.exact" ||
+    fail "bspline --eval exact"
+# cga = matrix and exact = direct, to 1e-12 of the scales: 1 for a pose,
+# |d|/h for a velocity and |d|/h^2 for an acceleration (h = 0.01 s, the
+# relative motions |d| between keys below 1: 1e2 and 1e4)
+paste -d' ' "$d/bs.cga" "$d/bs.matrix" | awk '{ for (i = 2; i <= 20; i++) { e = $i - $(i + 20)
+    s = i <= 8 ? 1 : i <= 14 ? 1e2 : 1e4; if (e < 0) e = -e; if (e / s > w) w = e / s } }
+    END { exit !(NR == 91 && w <= 1e-12) }' || fail "bspline: cga and matrix differ by more than 1e-12"
+cut -d' ' -f1-8 "$d/bs.cga" | paste -d' ' - "$d/bs.exact" | awk '{ for (i = 2; i <= 8; i++) { e = $i - $(i + 8)
+    if (e < 0) e = -e; if (e > w) w = e } } END { exit !(NR == 91 && w <= 1e-12) }' || fail "bspline: exact and direct differ by more than 1e-12"
+# hold before the range: the pose at the range's start, velocity zero
+"$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --at 1305031102.17 --extrapolate hold >"$d/bs.h" ||
+    fail "bspline --extrapolate hold"
+[ "$(cut -d' ' -f2- "$d/bs.h")" = "$(sed -n 1p "$d/bs.s" | cut -d' ' -f2-)" ] || fail "bspline hold: not the pose at t_1"
+"$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --at 1305031102.17 --extrapolate extend >/dev/null ||
+    fail "bspline --extrapolate extend"
+expect_error "interp: bspline outside" "--at time 1305031102.17 is outside the B-spline's range \\[1305031102.18, 1305031102.27\\]" \
+    "$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --at 1305031102.17 --out "$d/out"
+expect_error "interp: --scheme unknown" "--scheme must be screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2 or bspline, not 'spline'" \
+    "$G" interp --scheme spline --format pose --in "$d/k3" --samples 3 --out "$d/out"
+expect_error "interp: bspline, 3 keys" "--scheme bspline needs at least 4 keys, found 3" \
+    "$G" interp --scheme bspline --format pose --in "$d/k3" --samples 3 --out "$d/out"
+sed 's/^1305031102.22 /1305031102.2201 /' "$d/bs" >"$d/bs.uneven"
+expect_error "interp: bspline uneven" "bs.uneven:6: --scheme bspline needs evenly spaced key times (to 1e-9 of the spacing): 1305031102.2201 is 0.0001 s off" \
+    "$G" interp --scheme bspline --format pose --normalize --in "$d/bs.uneven" --samples 3 --out "$d/out"
+expect_error "interp: bspline, --rate below the range" "--rate 5: no sample time in the path's range \\[1305031102.18, 1305031102.27\\]" \
+    "$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --rate 5 --out "$d/out"
 # ---- exact times: a TUM-like file (4-decimal epoch stamps and quaternions,
 # irregular spacing, q/-q flips), the same keys with stamps shifted to 0, and
 # in integer nanoseconds: the same samples, keys hit, stamps as written ----

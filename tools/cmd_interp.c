@@ -257,21 +257,25 @@ static void put_algebra(const ga_group *g, const double *x, double *row)
     memcpy(row, h.m, sizeof h.m);
 }
 
-/* Where a time outside the keys goes (--extrapolate): hold, the end key
- * (segment SIZE_MAX); extend, the end segment at its u outside [0, 1]. 0 for
- * a time inside, 1 outside. */
+/* Where a time outside the path's range (ga_path_range: the keys' times,
+ * bspline [t_1, t_{n-2}]) goes (--extrapolate): hold, the pose at the range's
+ * end (segment SIZE_MAX, u 0 before, 1 after); extend, the end segment at its
+ * u outside [0, 1]. 0 for a time inside, 1 outside. */
 static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *u)
 {
-    size_t n = p->n;
-    if (t >= p->t[0] && t <= p->t[n - 1])
+    size_t m = ga_path_segments(p);
+    double r0, r1, s0, s1;
+    ga_path_range(p, &r0, &r1);
+    if (t >= r0 && t <= r1)
         return 0;
-    int after = t > p->t[n - 1];
-    if (extrap == 1 || n == 1) {
+    int after = t > r1;
+    if (extrap == 1 || m == 0) {
         *seg = SIZE_MAX;
         *u = after;
     } else {
-        *seg = after ? n - 2 : 0;
-        *u = (t - p->t[*seg]) / (p->t[*seg + 1] - p->t[*seg]);
+        *seg = after ? m - 1 : 0;
+        ga_path_segment_range(p, *seg, &s0, &s1);
+        *u = (t - s0) / (s1 - s0);
     }
     return 1;
 }
@@ -288,9 +292,10 @@ static int sample_extrapolated(const ga_path *p, ga_eval ev, double step, int ex
         int st;
         if (!outside(p, extrap, at[k], &seg, &u))
             st = ga_path_sample(p, ev, step, 1, at + k, o);
-        else if (seg == SIZE_MAX) {
-            memcpy(o, p->key + (u > 0 ? p->n - 1 : 0) * p->key_stride, g->elem_size);
-            st = GA_OK;
+        else if (seg == SIZE_MAX) { /* the range's end: the end key, or bspline's end pose */
+            double r0, r1;
+            ga_path_range(p, &r0, &r1);
+            st = ga_path_eval(p, u > 0 ? r1 : r0, o);
         } else
             st = ga_path_eval_segment(p, seg, u, o);
         if (st != GA_OK)
@@ -352,7 +357,7 @@ int cmd_interp(const cli_opts *o)
     if (o->scheme && ga_scheme_by_name(o->scheme, &scheme) != GA_OK) {
         fprintf(stderr,
                 "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
-                "lihao2, lihao3, decoupled or decoupled-c2, not '%s'\n",
+                "lihao2, lihao3, decoupled, decoupled-c2 or bspline, not '%s'\n",
                 o->scheme);
         return 2;
     }
@@ -495,6 +500,19 @@ int cmd_interp(const cli_opts *o)
                 ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
         goto done;
     }
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven(n, times) : 0;
+    if (bad) {
+        double grid = times[0] + (times[n - 1] - times[0]) * (double)bad / (double)(n - 1);
+        tio_error(&in, bad,
+                  "--scheme bspline needs evenly spaced key times (to 1e-9 of the spacing): %s is %.3g s "
+                  "off the even grid of the first and last key (spacing %.17g s)",
+                  in.first[bad], (times[bad] - grid) * (tb.ns ? 1e9 : 1.0),
+                  (times[n - 1] - times[0]) / (double)(n - 1));
+        goto done;
+    }
+    /* the path's range (ga_path_range): from key i0 to key i1, the first
+       and last key, but for bspline the second and the last but one */
+    size_t i0 = scheme == GA_SCHEME_BSPLINE && n > 1, i1 = n - 1 - i0;
     if (o->times) { /* --times FILE: one time a line */
         if (tio_read_first(o->times, 0, &tin))
             goto done;
@@ -528,7 +546,7 @@ int cmd_interp(const cli_opts *o)
             goto oom;
         for (size_t k = 0; k < nat; k++) at[k] = rel_time(&tb, at_text[k]);
     }
-    if (o->given & OPT_RATE) { /* t0 + k/HZ, each from k, while <= t_last */
+    if (o->given & OPT_RATE) { /* t0 + k/HZ, each from k, those in the range [t_i0, t_i1] */
         double span = times[n - 1] * o->rate;
         if (!(span < 1e9)) {
             fprintf(stderr, "garotor interp: --rate %.17g gives more than 1e9 samples\n", o->rate);
@@ -541,50 +559,59 @@ int cmd_interp(const cli_opts *o)
             goto oom;
         uint64_t p = 0;
         int q = 0, exact = rate_parts(o->rate_text, &p, &q);
-        size_t k = 0;
-        for (; k < nat; k++) {
+        size_t j = 0;
+        for (size_t k = 0; k < nat; k++) {
             double t;
             if (tb.ns) {
-                off[k] = rate_nanoseconds(k, exact, p, q, o->rate);
+                off[j] = rate_nanoseconds(k, exact, p, q, o->rate);
                 char b[400];
-                snprintf(b, sizeof b, "%.0f", off[k]);
+                snprintf(b, sizeof b, "%.0f", off[j]);
                 tt_dec d;
                 tt_parse(b, &d);
                 t = tt_to_double(&d, -9);
             } else
                 t = rate_seconds(k, exact, p, q, o->rate);
-            if (!(t <= times[n - 1]))
+            if (!(t <= times[i1]))
                 break;
-            at[k] = t;
+            if (t >= times[i0])
+                at[j++] = t;
         }
-        nat = k;
+        nat = j;
+        if (nat == 0) {
+            fprintf(stderr, "garotor interp: --rate %s: no sample time in the path's range [%s, %s]\n",
+                    o->rate_text, in.first[i0], in.first[i1]);
+            goto done;
+        }
     }
-    if (tb.ns && (o->given & OPT_SAMPLES)) { /* whole nanoseconds: t0 + round(k span/(N - 1)) */
+    if (tb.ns && (o->given & OPT_SAMPLES)) {
+        /* whole nanoseconds: t_i0 + round(k span/(N - 1)), span = t_i1 - t_i0 */
         nat = (size_t)o->samples;
         at = malloc(nat * sizeof *at);
         off = malloc(nat * sizeof *off);
         if (!at || !off)
             goto oom;
-        tt_dec span;
-        tt_parse(in.first[n - 1], &span);
-        if (tt_add(&span, &tb.ref, 1, &span)) /* cannot happen (timetext.h) */
+        tt_dec span, start;
+        tt_parse(in.first[n - 1 - i0], &span);
+        tt_parse(in.first[i0], &start);
+        if (tt_add(&span, &tb.ref, 1, &span) || tt_add(&start, &tb.ref, 1, &start)) /* cannot happen */
             goto oom;
-        double sp = tt_to_double(&span, 0);
+        double s0 = tt_to_double(&start, 0), sp = tt_to_double(&span, 0) - s0; /* whole ns below 2^53 */
         for (size_t k = 0; k < nat; k++) {
-            off[k] = k + 1 == nat ? sp : floor((double)k * sp / (double)(nat - 1) + 0.5);
+            off[k] = s0 + (k + 1 == nat ? sp : floor((double)k * sp / (double)(nat - 1) + 0.5));
             char b[400];
             snprintf(b, sizeof b, "%.0f", off[k]);
             tt_dec d;
             tt_parse(b, &d);
-            at[k] = k + 1 == nat ? times[n - 1] : tt_to_double(&d, -9);
+            at[k] = k + 1 == nat ? times[i1] : tt_to_double(&d, -9);
         }
     }
     for (size_t k = 0; k < nat && !extrap && at_text; k++)
-        if (!(at[k] >= times[0] && at[k] <= times[n - 1])) {
+        if (!(at[k] >= times[i0] && at[k] <= times[i1])) {
             fprintf(stderr,
-                    "garotor interp: %s time %s is outside the keys' range [%s, %s] (see "
+                    "garotor interp: %s time %s is outside the %s range [%s, %s] (see "
                     "--extrapolate)\n",
-                    o->times ? "--times" : "--at", at_text[k], in.first[0], in.first[n - 1]);
+                    o->times ? "--times" : "--at", at_text[k], i0 ? "B-spline's" : "keys'", in.first[i0],
+                    in.first[i1]);
             goto done;
         }
 
@@ -648,7 +675,7 @@ int cmd_interp(const cli_opts *o)
     res = malloc(ns * (size_t)width * sizeof *res);
     if (!samples || !res)
         goto oom;
-    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, 0.0, times[n - 1], samples)
+    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, times[i0], times[i1], samples)
        : !extrap ? ga_path_sample(&path, ev, step, ns, at, samples)
                  : sample_extrapolated(&path, ev, step, extrap, ns, at, samples);
     if (st != GA_OK) {
@@ -656,12 +683,12 @@ int cmd_interp(const cli_opts *o)
         goto done;
     }
     ga_quat prev = {1, 0, 0, 0};
-    double dt = ns > 1 ? times[n - 1] / (double)(ns - 1) : 0.0;
+    double dt = ns > 1 ? (times[i1] - times[i0]) / (double)(ns - 1) : 0.0;
     for (size_t k = 0; k < ns; k++) {
         double *row = res + k * (size_t)width;
         /* the time the sample was taken at: ga_path_sample_uniform's
-           t0 + k dt, the last exactly t1 (t0 = 0, the first key) */
-        row[0] = nat ? at[k] : (k + 1 == ns ? times[n - 1] : 0.0 + (double)k * dt);
+           t0 + k dt, the last exactly t1 (t0 = t_i0: 0 for the first key) */
+        row[0] = nat ? at[k] : (k + 1 == ns ? times[i1] : times[i0] + (double)k * dt);
         ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
         if (pose && (st = mat4_to_pose(m, &prev, row + 1)) != GA_OK) {
             fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name, k + 1,

@@ -82,6 +82,25 @@
  *              spacings within a factor 3; see docs/schemes.md).
  *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
  *
+ *   BSPLINE    the uniform cumulative cubic B-spline with the keys as control
+ *              poses (approximating: the keys are not hit). Needs n >= 4 keys
+ *              at evenly spaced times (ga_times_uneven); defined on
+ *              [t_1, t_{n-2}] only (ga_path_range), in n - 3 segments: segment
+ *              s is [t_{s+1}, t_{s+2}], u = (t - t_{s+1})/(t_{s+2} - t_{s+1}),
+ *                A(t) = A_s exp(b_1(u) d_1) exp(b_2(u) d_2) exp(b_3(u) d_3),
+ *              d_j = plog(A_{s+j-1}^-1 A_{s+j}), with the cumulative basis
+ *              b_1 = (5 + 3u - 3u^2 + u^3)/6, b_2 = (1 + 3u + 3u^2 - 2u^3)/6,
+ *              b_3 = u^3/6 (Sommer, Usenko, Schubert, Demmel, Cremers 2020,
+ *              "Efficient derivative computation for cumulative B-splines on
+ *              Lie groups", eqs. for k = 4; Kim, Kim, Shin 1995). C2: the
+ *              pieces meet with equal pose, velocity and acceleration at the
+ *              knots t_2 .. t_{n-3}. Velocity and acceleration by the
+ *              recursion below (Sommer et al.'s, body frame). A motion whose
+ *              keys lie on one screw motion A_i = A_0 exp(i X) is reproduced as
+ *              that motion: A(t) = A_0 exp(((t - t_0)/h) X), as
+ *              b_1 + b_2 + b_3 = 1 + u. Appending a key adds a segment and
+ *              changes none before it (local support: 4 keys a segment).
+ *
  * Branch rule (BIVECTOR, QUADRATIC, SMOOTH): X_0 is the principal log of A_0;
  * for i >= 1, X_i is the principal log of A_i passed through the group's
  * branch rule with X_{i-1} (group.h: on cga/se3, W-L's rule that consecutive
@@ -96,7 +115,8 @@
  *
  * Evaluators:
  *   DIRECT  each sample in closed form.
- *   EULER   Li-Hao §5 (eqs. 32-42) in group form: from the segment start,
+ *   EULER   Li-Hao §5 (eqs. 32-42) in group form: from the segment start
+ *           (its key; BSPLINE: the closed form at the knot, which is no key),
  *           A(u + h) = A(u) exp(h V_u(u)), V_u the analytic body velocity per
  *           unit u, step h in u units on the grid u = 0, h, 2h, ... of each
  *           segment; a sample between grid points takes one partial step from
@@ -105,7 +125,8 @@
  *           group; the product with exp keeps every sample on it, and is exact
  *           for SCREW, whose body velocity is constant.)
  *   EXACT   exact incremental stepping of uniformly spaced samples: each
- *           factor exp(p(u) X) (p = u, u^2 or u^3 - u^2) is advanced by
+ *           factor exp(p(u) X) (p = u, u^2 or u^3 - u^2; BSPLINE: the
+ *           three cubics b_j, 4 slots each) is advanced by
  *           exp(p(u+d) X) = exp(p(u) X) exp(Dp(u) X), the finite difference
  *           Dp itself advanced by products with exp(D^2 p X), and so on down
  *           to the constant exp(D^deg p X): deg products per factor and sample,
@@ -113,8 +134,9 @@
  *           GA_PATH_EXACT_REANCHOR samples (and at each new segment) the
  *           factors are re-anchored by a direct evaluation, so rounding cannot
  *           build up (the cubic factor's rounding grows like the cube of the
- *           samples since the anchor). The generator-space schemes are not
- *           products of fixed-X factors: for them EXACT is DIRECT. So is EXACT
+ *           samples since the anchor). The generator-space and decoupled
+ *           schemes are not products of fixed-X factors: for them EXACT is
+ *           DIRECT. So is EXACT
  *           for samples at arbitrary times (ga_path_sample). Its sample
  *           times are the anchor's t_k = t0 + k dt (rounded to a double) plus
  *           whole steps of dt, not each t_k rounded as DIRECT takes them: the
@@ -149,7 +171,8 @@
  * caller's workspace of ga_path_workspace_size() bytes (aligned for double),
  * which must outlive the path. Functions returning int give GA_OK or a GA_E*
  * code (types.h): GA_ERR_ARG for no key or too few (one key is always enough), times not strictly increasing,
- * a bad count, a t outside [t_0, t_{n-1}], a small or misaligned workspace; GA_ERR_NOTFINITE for NaN/Inf
+ * a bad count, a t outside the path's range (ga_path_range), a small or misaligned workspace,
+ * BSPLINE key times not evenly spaced (ga_times_uneven); GA_ERR_NOTFINITE for NaN/Inf
  * input; a failing log (GA_ERR_DOMAIN for an affine key with no real principal log) is passed on;
  * GA_ERR_DOMAIN when finite input overflows (a coefficient, sample or velocity would be Inf or NaN: keys near
  * DBL_MAX, a segment of subnormal length, spacings whose ratio overflows).
@@ -175,12 +198,13 @@ typedef enum {
     GA_SCHEME_LIHAO2,
     GA_SCHEME_LIHAO3,
     GA_SCHEME_DECOUPLED,
-    GA_SCHEME_DECOUPLED_C2
+    GA_SCHEME_DECOUPLED_C2,
+    GA_SCHEME_BSPLINE
 } ga_scheme;
 
 /** The number of schemes: GA_SCHEME_SCREW .. GA_SCHEME_COUNT - 1 are all of
  *  them (for loops over every scheme). */
-#define GA_SCHEME_COUNT 8
+#define GA_SCHEME_COUNT 9
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
 
@@ -221,7 +245,7 @@ typedef struct {
 } ga_path;
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3",
- *  "decoupled", "decoupled-c2". */
+ *  "decoupled", "decoupled-c2", "bspline". */
 const char *ga_scheme_name(ga_scheme s);
 /** The scheme called name; GA_ERR_ARG if there is none. */
 int ga_scheme_by_name(const char *name, ga_scheme *out);
@@ -230,15 +254,27 @@ const char *ga_eval_name(ga_eval e);
 /** The evaluator called name; GA_ERR_ARG if there is none. */
 int ga_eval_by_name(const char *name, ga_eval *out);
 /** Fewest keys the scheme takes beyond the constant path of one key (2, or 3
- *  for QUADRATIC and SMOOTH). QUADRATIC takes exactly 3 (or 1). */
+ *  for QUADRATIC and SMOOTH, 4 for BSPLINE). QUADRATIC takes exactly 3 (or 1). */
 size_t ga_scheme_min_keys(ga_scheme s);
 
 /** 1 if paths of scheme s can grow by ga_path_append: SCREW, LIHAO2,
- *  BIVECTOR, DECOUPLED, whose segment i depends on keys 0..i+1 only. The
+ *  BIVECTOR, DECOUPLED, whose segment i depends on keys 0..i+1 only, and
+ *  BSPLINE (keys i..i+3; a path of at least 4 keys, the new key on the even
+ *  grid of them all, as ga_times_uneven says, else GA_ERR_ARG). The
  *  others cannot: LIHAO3's default velocity at a key and the splines
  *  (QUADRATIC, SMOOTH, DECOUPLED_C2) depend on every key, so a new key
  *  changes segments already built; rebuild them with ga_path_init. */
 int ga_scheme_can_append(ga_scheme s);
+
+/** Relative tolerance of even spacing (BSPLINE): key i may be off the even
+ *  grid t_0 + i h, h = (t_{n-1} - t_0)/(n - 1), by GA_PATH_SPACING_TOL h plus
+ *  4 DBL_EPSILON max(|t_0|, |t_{n-1}|) (the rounding of the times themselves:
+ *  at t ~ 1.3e9 a double is 2.4e-7 apart from the next). */
+#define GA_PATH_SPACING_TOL 1e-9
+/** The first key (1 .. n-2) whose time is off the even grid by more than the
+ *  tolerance above, or 0 when the n times are evenly spaced (n <= 2: always;
+ *  NaN counts as off). */
+size_t ga_times_uneven(size_t n, const double *times);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
  *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
@@ -275,6 +311,19 @@ int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key);
 
 /** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
  *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_ERR_ARG outside. */
+
+/** The number of segments: n - 1, BSPLINE n - 3 (0 for the one-key path). */
+size_t ga_path_segments(const ga_path *p);
+/** The times [*t0, *t1] the path is defined on: [t_0, t_{n-1}], BSPLINE
+ *  [t_1, t_{n-2}] (one key: [t_0, t_0]). */
+int ga_path_range(const ga_path *p, double *t0, double *t1);
+/** The times [*t0, *t1] of segment seg (u = 0 and u = 1): [t_seg, t_{seg+1}],
+ *  BSPLINE [t_{seg+1}, t_{seg+2}]. GA_ERR_ARG for seg >= ga_path_segments. */
+int ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1);
+
+/** The segment and u of time t (t in ga_path_range; t at the start of a
+ *  segment gives that segment, u = 0, except the range's end: the last
+ *  segment, u = 1). GA_ERR_ARG outside. */
 int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u);
 
 /** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
@@ -306,7 +355,7 @@ int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, dou
 int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a);
 
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
-#define GA_PATH_STEP_SLOTS 9
+#define GA_PATH_STEP_SLOTS 12
 typedef struct {
     const ga_path *path;
     ga_eval eval;
@@ -320,7 +369,7 @@ typedef struct {
 } ga_path_stepper;
 
 /** Prepare n >= 1 samples at t_k = t0 + k (t1 - t0)/(n - 1), the last exactly
- *  t1, t_0 <= t0 <= t1 <= t_{n-1} (n = 1: t0 alone), each rounded to a double
+ *  t1, [t0, t1] inside ga_path_range (n = 1: t0 alone), each rounded to a double
  *  (EXACT: only at its anchors, whole steps from there; see EXACT above).
  *  step: the Euler step in u units (> 0), ignored by the other evaluators. */
 int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,

@@ -304,8 +304,15 @@ def test_path_errors(rng):
     bad[3, 0, 1] += 0.1
     with pytest.raises(ValueError, match="poses: index 3: not a rigid motion"):
         garotor.Path(times, bad)
-    with pytest.raises(ValueError, match="exactly 3 keys"):
+    with pytest.raises(ValueError, match="needs one key or exactly 3, got 4"):
         garotor.Path(times, K, scheme="quadratic")
+    with pytest.raises(ValueError, match="needs one key or at least 4, got 2"):
+        garotor.Path(times[:2], K[:2], scheme="bspline")
+    key0 = garotor.Path(times, K).sample(times[0])  # the first key, as the group holds it
+    for scheme in ["screw", "quadratic", "bspline", "lihao3"]:  # one key: the constant path
+        one = garotor.Path(times[:1], K[:1], scheme=scheme)
+        assert np.array_equal(one.sample(times[0]), key0)
+        assert np.array_equal(one.velocity(times[0]), np.zeros(6))
     with pytest.raises(ValueError, match="scheme"):
         garotor.Path(times, K, scheme="spline")
     with pytest.raises(ValueError, match="velocities apply only"):
@@ -456,19 +463,23 @@ def test_group_cga_matrix_agree_property(xi):
 # ---- appending keys -----------------------------------------------------------
 
 @pytest.mark.parametrize("group", GROUPS)
-@pytest.mark.parametrize("scheme", ["screw", "bivector", "lihao2", "decoupled"])
+@pytest.mark.parametrize("scheme", ["screw", "bivector", "lihao2", "decoupled", "bspline"])
 def test_path_append_equals_built(rng, scheme, group):
     """A Path grown by append equals the Path built from all the keys, bit for bit."""
     if scheme == "decoupled" and group == "affine":
         return  # not defined there (test_path_sample_equals_tool)
-    times, K = keys_for(rng, group, 6)
+    times, K = keys_for(rng, group, 7)
+    first = 2
+    if scheme == "bspline":  # evenly spaced, from 4 keys on
+        times, first = 0.5 * np.arange(7.0), 4
     full = garotor.Path(times, K, scheme=scheme, group=group)
-    grown = garotor.Path(times[:2], K[:2], scheme=scheme, group=group, capacity=6)
-    assert grown.capacity == 6 and full.capacity == 6
-    for i in range(2, 6):
+    grown = garotor.Path(times[:first], K[:first], scheme=scheme, group=group, capacity=7)
+    assert grown.capacity == 7 and full.capacity == 7
+    for i in range(first, 7):
         grown.append(times[i], K[i])
     assert np.array_equal(grown.times, times)
-    t = np.concatenate([np.linspace(times[0], times[-1], 101), times])
+    t0, t1 = full.range
+    t = np.concatenate([np.linspace(t0, t1, 101), times[(times >= t0) & (times <= t1)]])
     assert np.array_equal(grown.sample(t), full.sample(t))
     assert np.array_equal(grown.velocity(t), full.velocity(t))
     assert np.array_equal(grown.acceleration(t), full.acceleration(t))
@@ -504,3 +515,9 @@ def test_path_append_errors(rng):
         garotor.Path(times, K, capacity=3)
     with pytest.raises(ValueError, match="scheme must be one of 'screw', "):
         garotor.Path(times, K, scheme="spline")
+    even = 0.5 * np.arange(6.0)
+    b = garotor.Path(even[:4], K[:4], scheme="bspline", capacity=6)
+    with pytest.raises(ValueError, match="only at evenly spaced times"):
+        b.append(even[4] + 1e-3, K[0])
+    b.append(even[4], K[0])
+    assert b.range == (even[1], even[3])
