@@ -7,6 +7,7 @@
  * (svg.h); a failure then leaves neither the samples' file nor the picture. */
 #include "cli.h"
 #include "html.h"
+#include "numtext.h"
 #include "svg.h"
 #include "timetext.h"
 
@@ -225,7 +226,7 @@ static void computed_stamp(const timebase *tb, double rel, double off, char *buf
     } else
         tt_shortest(rel, &o);
     if (tt_add(&tb->ref, &o, 0, &o)) /* cannot happen (timetext.h) */
-        snprintf(buf, 32, "%.17g", tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel));
+        nt_write(tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel), buf);
     else
         tt_format(&o, buf);
 }
@@ -697,7 +698,7 @@ int cmd_interp(const cli_opts *o)
             tio_out_close(&out, 0);
             goto done;
         }
-        static char stamp[TT_DIG + 16];
+        static char stamp[TT_DIG + 32];
         for (size_t k = 0; k < ns; k++) {
             /* a sample at a key's time is stamped as the key was written;
                a given one as given; a computed one from the reference */
