@@ -86,6 +86,11 @@ static void check(double x, int most_digits, tk_check *trip, tk_check *shortest,
     uint64_t g = 0;
     for (int i = 0; i < k && i < 19; i++) g = g * 10 + (uint64_t)(sig[i] - '0');
     tk_add_bool(trip, x == 0.0 ? f == 0 && n == 1 && k == 0 : k == n && g == f && n <= 17 && f % 10 != 0);
+    /* nt_write lays the digits out as nt_layout does */
+    char dig[24], lay[NT_BUF + 8];
+    snprintf(dig, sizeof dig, "%llu", (unsigned long long)f);
+    nt_layout(signbit(x) != 0, dig, f ? n : 0, e, lay);
+    tk_add_bool(trip, strcmp(lay, buf) == 0 || (x == 0.0 && signbit(x) && strcmp(buf, "-0") == 0));
     if (x == 0.0)
         return;
     tk_add_bool(shortest, n <= most_digits && (n == 1 || !round_trips(x, n - 1, ref, sizeof ref)));
@@ -116,17 +121,36 @@ int main(int argc, char **argv)
     if (scale < 1)
         scale = 1;
     tk_rng rng = {20261201};
-    tk_check trip = tk_begin("numtext: the text reads back as x, with nt_shortest's digits", 0);
+    tk_check trip =
+        tk_begin("numtext: the text reads back as x, has nt_shortest's digits, nt_layout's layout", 0);
     tk_check shortest = tk_begin("numtext: no decimal of one digit fewer reads back", 0);
     tk_check nearest = tk_begin("numtext: the nearest of its length (or a binade's bottom)", 0);
     tk_check reference = tk_begin("numtext: no longer than the least %.{p-1}e that reads back", 0);
 #define CHECK(x, most) check((x), (most), &trip, &shortest, &nearest, &reference)
 
     /* the extremes, and a few by hand */
-    const double fixed[] = {0.0,       -0.0,          DBL_MAX,        -DBL_MAX, DBL_MIN, DBL_TRUE_MIN,
-                            0x1p-1022 - 0x1p-1074,    1.0,            0.1,      0.3,     1.0 / 3.0,
-                            2.0 / 3.0, 9007199254740992.0, 9007199254740993.0, 1e21, 1e22,
-                            1e23,      5e-324,        1e-7,           1.5e-8,   123.456, 1e308};
+    const double fixed[] = {0.0,
+                            -0.0,
+                            DBL_MAX,
+                            -DBL_MAX,
+                            DBL_MIN,
+                            DBL_TRUE_MIN,
+                            0x1p-1022 - 0x1p-1074,
+                            1.0,
+                            0.1,
+                            0.3,
+                            1.0 / 3.0,
+                            2.0 / 3.0,
+                            9007199254740992.0,
+                            9007199254740993.0,
+                            1e21,
+                            1e22,
+                            1e23,
+                            5e-324,
+                            1e-7,
+                            1.5e-8,
+                            123.456,
+                            1e308};
     for (size_t i = 0; i < sizeof fixed / sizeof *fixed; i++) CHECK(fixed[i], 17);
     /* every power of two, and its neighbours */
     for (int p = -1074; p <= 1023; p++) {

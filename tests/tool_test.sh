@@ -199,6 +199,42 @@ expect_error "interp: --times outside" "--times time -1 is outside the keys' ran
 "$G" interp --format pose --in "$d/k3" --at -1 --extrapolate extend >"$d/ext" || fail "--extrapolate extend"
 [ "$(cut -d' ' -f1-4 "$d/ext")" = "-1 -0.28 0.96 0" ] ||
     fail "--extrapolate extend: $(cat "$d/ext")"
+# ---- streaming: samples are written a chunk (512) at a time, yet a failure
+# after thousands of good samples still writes nothing (standard output: every
+# sample is checked before the first line; a file: the temporary is removed) ----
+awk 'BEGIN { for (i = 0; i < 3000; i++) print i / 3000; print "1e300" }' >"$d/late"
+expect_error "interp: a sample fails after 3000 (stdout)" "sampling failed" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend
+expect_error "interp: a sample fails after 3000 (--out)" "sampling failed" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend --out "$d/out"
+# the chunked samples are those of one call: the same lines to standard output,
+# to a file and to a FIFO, for every kind of sample time and evaluator
+mkfifo "$d/fifo" 2>/dev/null || :
+for args in "--samples 2000" "--samples 1500 --eval exact" "--samples 1300 --eval euler --step 0.01" \
+    "--rate 1000 --with velocity,acceleration" "--times $d/late --extrapolate hold"; do
+    # shellcheck disable=SC2086 # $args is several words
+    "$G" interp --format pose --in "$d/k3" $args >"$d/s1" 2>/dev/null
+    # shellcheck disable=SC2086
+    "$G" interp --format pose --in "$d/k3" $args --out "$d/s2" 2>/dev/null
+    if [ -p "$d/fifo" ]; then
+        cat "$d/fifo" >"$d/s3" &
+        # shellcheck disable=SC2086
+        "$G" interp --format pose --in "$d/k3" $args --out "$d/fifo" 2>/dev/null
+        wait
+    else
+        cp "$d/s1" "$d/s3"
+    fi
+    [ -s "$d/s1" ] && cmp -s "$d/s1" "$d/s2" && cmp -s "$d/s1" "$d/s3" ||
+        fail "interp $args: standard output, --out and a FIFO differ (or are empty)"
+done
+# the samples of one chunk and of many agree: euler's running state, rebuilt
+# from the key at a chunk's start (sample 513 of 700), is the one carried
+# from the sample before (sample 113 of the last 300, one chunk)
+head -n 700 "$d/late" >"$d/t700"
+"$G" interp --format pose --in "$d/k3" --times "$d/t700" --eval euler --step 0.01 >"$d/e700"
+tail -n 300 "$d/t700" >"$d/t300"
+"$G" interp --format pose --in "$d/k3" --times "$d/t300" --eval euler --step 0.01 >"$d/e300"
+tail -n 300 "$d/e700" | cmp -s - "$d/e300" || fail "interp --eval euler: chunked samples differ from one call's"
 # ---- exact times: a TUM-like file (4-decimal epoch stamps and quaternions,
 # irregular spacing, q/-q flips), the same keys with stamps shifted to 0, and
 # in integer nanoseconds: the same samples, keys hit, stamps as written ----

@@ -97,6 +97,41 @@ static void to_decimal(int q, uint64_t c, uint64_t *f, int *e)
     *f = vb < mid || (vb == mid && (s & 1) == 0) ? s : t;
 }
 
+static const uint64_t pow10[20] = {1u,
+                                   10u,
+                                   100u,
+                                   1000u,
+                                   10000u,
+                                   100000u,
+                                   1000000u,
+                                   10000000u,
+                                   100000000u,
+                                   1000000000u,
+                                   10000000000u,
+                                   100000000000u,
+                                   1000000000000u,
+                                   10000000000000u,
+                                   100000000000000u,
+                                   1000000000000000u,
+                                   10000000000000000u,
+                                   100000000000000000u,
+                                   1000000000000000000u,
+                                   10000000000000000000u};
+
+/* The number of decimal digits of f > 0. */
+static inline int digit_count(uint64_t f)
+{
+#if defined(__GNUC__)
+    int bits = 64 - __builtin_clzll(f);   /* 2^(bits-1) <= f < 2^bits */
+    int n = (bits * 1233) >> 12;          /* floor(bits log10 2), 0..19 */
+    return n + (n < 20 && f >= pow10[n]); /* pow10[n] <= 2^bits: one step up at most */
+#else
+    int n = 1;
+    while (n < 20 && f >= pow10[n]) n++;
+    return n;
+#endif
+}
+
 int nt_shortest(double x, uint64_t *digits, int *exp)
 {
     uint64_t bits;
@@ -131,16 +166,15 @@ int nt_shortest(double x, uint64_t *digits, int *exp)
         f /= 10;
         e++;
     }
-    int n = 1;
-    for (uint64_t p = 10; n < 20 && f >= p; p *= 10) n++;
     *digits = f;
     *exp = e;
-    return n;
+    return digit_count(f);
 }
 
-static const char pairs[201] = "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-                               "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-                               "8081828384858687888990919293949596979899";
+static const char pairs[201] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
 
 size_t nt_layout(int neg, const char *dig, int n, int exp, char *buf)
 {
@@ -198,29 +232,83 @@ static int bits_negative(double x)
     return (int)(bits >> 63);
 }
 
+/* The 8 digits of v < 10^8 written to p[0..7]; two independent halves. */
+static inline void put8(uint32_t v, char *p)
+{
+    uint32_t a = v / 10000, b = v % 10000;
+    memcpy(p, pairs + 2 * (a / 100), 2);
+    memcpy(p + 2, pairs + 2 * (a % 100), 2);
+    memcpy(p + 4, pairs + 2 * (b / 100), 2);
+    memcpy(p + 6, pairs + 2 * (b % 100), 2);
+}
+
+/* The n digits of f written to p[0..n-1]. */
+static inline void put_digits(uint64_t f, int n, char *p)
+{
+    char *d = p + n;
+    while (f >= 100000000u) {
+        d -= 8;
+        put8((uint32_t)(f % 100000000u), d);
+        f /= 100000000u;
+    }
+    uint32_t v = (uint32_t)f;
+    while (v >= 100) {
+        d -= 2;
+        memcpy(d, pairs + 2 * (v % 100), 2);
+        v /= 100;
+    }
+    if (v >= 10)
+        memcpy(d - 2, pairs + 2 * v, 2);
+    else
+        d[-1] = (char)('0' + v);
+}
+
 size_t nt_write(double x, char *buf)
 {
     uint64_t f;
     int e, n = nt_shortest(x, &f, &e);
-    char dig[20];
+    char *p = buf;
+    if (bits_negative(x))
+        *p++ = '-';
     if (f == 0) {
-        if (bits_negative(x)) {
-            memcpy(buf, "-0", 3);
-            return 2;
+        memcpy(p, "0", 2);
+        return (size_t)(p + 1 - buf);
+    }
+    /* nt_layout's rule, with the digits written in place */
+    int xp = e + n - 1;
+    if (xp >= -7 && xp <= 20) {
+        if (xp < 0) {
+            memcpy(p, "0.000000", 8);
+            p += 1 - xp;
+            put_digits(f, n, p);
+            p += n;
+        } else if (n <= xp + 1) {
+            put_digits(f, n, p);
+            p += n;
+            for (int i = n; i <= xp; i++) *p++ = '0';
+        } else {
+            put_digits(f, n, p + 1);
+            for (int i = 0; i <= xp; i++) p[i] = p[i + 1];
+            p[xp + 1] = '.';
+            p += n + 1;
         }
-        memcpy(buf, "0", 2);
-        return 1;
+        *p = '\0';
+        return (size_t)(p - buf);
     }
-    char *d = dig + n;
-    while (f >= 100) {
-        d -= 2;
-        memcpy(d, pairs + 2 * (f % 100), 2);
-        f /= 100;
-    }
-    if (f >= 10) {
-        d -= 2;
-        memcpy(d, pairs + 2 * f, 2);
+    put_digits(f, n, p + 1);
+    p[0] = p[1];
+    if (n > 1) {
+        p[1] = '.';
+        p += n + 1;
     } else
-        *--d = (char)('0' + f);
-    return nt_layout(bits_negative(x), dig, n, e, buf);
+        p += 1;
+    *p++ = 'e';
+    *p++ = xp < 0 ? '-' : '+';
+    int ax = xp < 0 ? -xp : xp;
+    if (ax >= 100)
+        *p++ = (char)('0' + ax / 100);
+    memcpy(p, pairs + 2 * (ax % 100), 2);
+    p += 2;
+    *p = '\0';
+    return (size_t)(p - buf);
 }
