@@ -17,7 +17,9 @@
  * (--velocities and --svg only when line 1 asked for them). Resource limits,
  * so that a run measures correctness and not patience: --samples is capped at
  * 4096, --rate is lowered to give at most 4096 samples over the span of the
- * input's first numbers, and an Euler --step below 1e-3 is raised to 1e-3
+ * input's first numbers (the tool streams its samples in constant memory,
+ * but the time of a run and of reading its output back grows with them, and
+ * --svg holds them), and an Euler --step below 1e-3 is raised to 1e-3
  * (all legal and merely slow or large); "demo" and --help (anywhere) are skipped.
  *
  * Invariants (docs/tool.md, docs/errors.md), besides "no crash, no sanitizer
@@ -219,9 +221,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     static char capped[3][32];
     /* the span of the keys' times (the first number of each input line), for
        capping --rate below: HZ is lowered so that it gives at most 4096
-       samples over that span (the tool holds every sample in memory; a rate
-       over months of epoch stamps is legal and merely large:
-       fuzz/regress/tool/interp-rate-epoch-span-oom) */
+       samples over that span (a rate over months of epoch stamps is legal
+       and merely large: streamed in constant memory, but slow, and held with
+       --svg: fuzz/regress/tool/interp-rate-epoch-span-oom) */
     double tmin = INFINITY, tmax = -INFINITY;
     for (size_t i = 0; i < nin;) {
         const char *ln = (const char *)rest + i, *eol = memchr(ln, '\n', nin - i);

@@ -3,10 +3,13 @@
  * Reads keyframes (t, then a pose: 16 numbers with --format mat, 7 with
  * --format pose), builds the path of --scheme on --group (path.h), and writes
  * t and the pose of each sample in the same format. Everything is read and
- * checked before anything is written. With --svg FILE it also draws the path
- * (svg.h); a failure then leaves neither the samples' file nor the picture. */
+ * checked before anything is written; the samples are then made and written
+ * a chunk at a time, never all held (see run() below), and a failure still
+ * leaves no output. With --svg FILE it also draws the path (svg.h); a failure
+ * then leaves neither the samples' file nor the picture. */
 #include "cli.h"
 #include "html.h"
+#include "numtext.h"
 #include "svg.h"
 #include "timetext.h"
 
@@ -225,7 +228,7 @@ static void computed_stamp(const timebase *tb, double rel, double off, char *buf
     } else
         tt_shortest(rel, &o);
     if (tt_add(&tb->ref, &o, 0, &o)) /* cannot happen (timetext.h) */
-        snprintf(buf, 32, "%.17g", tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel));
+        nt_write(tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel), buf);
     else
         tt_format(&o, buf);
 }
@@ -319,18 +322,12 @@ static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, dou
     return ga_path_differentiate_segment(p, seg, u, f, v, a);
 }
 
-/* The picture of the path: the keys, the samples (in the order sampled) and,
- * for the screw scheme on keys that follow one screw motion, its axis.
- * 0, or -1 after a message. */
+/* The picture of the path: the keys, the samples m[0..ns-1] (in the order
+ * sampled) and, for the screw scheme on keys that follow one screw motion,
+ * its axis. 0, or -1 after a message. */
 static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval ev, svg_view view,
-                const ga_mat4 *keys, const double *times, size_t n, const void *samples, size_t ns)
+                const ga_mat4 *keys, const double *times, size_t n, const ga_mat4 *m, size_t ns)
 {
-    ga_mat4 *m = malloc(ns * sizeof *m);
-    if (!m) {
-        fprintf(stderr, "garotor interp: out of memory\n");
-        return -1;
-    }
-    for (size_t k = 0; k < ns; k++) m[k] = g->to_mat4((const char *)samples + k * g->elem_size);
     char title[256], step[64] = "";
     if (ev == GA_EVAL_EULER)
         snprintf(step, sizeof step, ", step %g", o->step);
@@ -343,8 +340,165 @@ static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval 
     int st = o->svg ? svg_write(o->svg, &pic) : 0;
     if (st == 0 && o->html && (st = html_write(o->html, &pic)) != 0 && o->svg)
         tio_out_unwrite(o->svg);
-    free(m);
     return st;
+}
+
+/* ---- the samples, made and written a chunk at a time ------------------------
+ * Nothing but the keys (and given times) is held: each chunk of CHUNK sample
+ * times is made, sampled, turned into rows and written before the next, so
+ * memory does not grow with the number of samples. */
+enum { CHUNK = 512 };
+typedef enum { UNIFORM, GIVEN, RATE, NS_SAMPLES } when_kind;
+
+typedef struct {
+    const cli_opts *o;
+    const ga_group *g;
+    const ga_path *path;
+    const tio_items *in;
+    const timebase *tb;
+    ga_eval ev;
+    double step;
+    int extrap, pose, with_v, with_a, spatial;
+    int pw, dw, width;   /* pose, algebra element and row widths */
+    const double *times; /* the keys' relative times */
+    size_t n;            /* keys */
+    size_t i0, i1;       /* the path's range: from key i0 to key i1 (bspline: 1 and n - 2) */
+    when_kind kind;
+    size_t ns;            /* samples (RATE: the most there can be) */
+    const double *at;     /* GIVEN: the times, relative */
+    char *const *at_text; /* GIVEN: as written */
+    uint64_t rp;          /* RATE: HZ = rp 10^rq when rexact */
+    int rq, rexact;
+    size_t k0;     /* RATE: the first k in the range */
+    double s0, sp; /* NS_SAMPLES: the range's start and span in nanoseconds */
+} sampler;
+
+/* t0 + off, off whole nanoseconds, in seconds relative to the first key. */
+static double ns_seconds(double off)
+{
+    char b[400];
+    snprintf(b, sizeof b, "%.0f", off);
+    tt_dec d;
+    tt_parse(b, &d);
+    return tt_to_double(&d, -9);
+}
+
+/* The time of sample k relative to the first key, and with --time-unit ns
+ * its whole nanoseconds *off; 0 when there is no sample k. */
+static int sample_time(const sampler *s, size_t k, double *t, double *off)
+{
+    double first = s->times[s->i0], last = s->times[s->i1];
+    *off = 0.0;
+    if (k >= s->ns)
+        return 0;
+    switch (s->kind) {
+    case UNIFORM: /* ga_path_sample_uniform's t0 + k dt, the last exactly t1 */
+        *t = k + 1 == s->ns ? last
+                            : first + (double)k * (s->ns > 1 ? (last - first) / (double)(s->ns - 1) : 0.0);
+        return 1;
+    case GIVEN: *t = s->at[k]; return 1;
+    case RATE: /* t_0 + k/HZ, each from k, those in the range (from k0 on, while <= its end) */
+        k += s->k0;
+        if (s->tb->ns) {
+            *off = rate_nanoseconds(k, s->rexact, s->rp, s->rq, s->o->rate);
+            *t = ns_seconds(*off);
+        } else
+            *t = rate_seconds(k, s->rexact, s->rp, s->rq, s->o->rate);
+        return *t <= last;
+    case NS_SAMPLES: /* whole nanoseconds: t_i0 + round(k span/(N - 1)), span = t_i1 - t_i0 */
+        *off = s->s0 + (k + 1 == s->ns ? s->sp : floor((double)k * s->sp / (double)(s->ns - 1) + 0.5));
+        *t = k + 1 == s->ns ? last : ns_seconds(*off);
+        return 1;
+    }
+    return 0;
+}
+
+/* The stamp of sample k, taken at t: a key's time as the key was written; a
+ * given one as given; a computed one from the reference. */
+static const char *stamp_of(const sampler *s, size_t k, double t, double off, char *buf)
+{
+    size_t key;
+    if (key_at(s->times, s->n, t, &key))
+        return s->in->first[key];
+    if (s->kind == GIVEN)
+        return s->at_text[k];
+    if (s->tb->ref.n == 0 && !s->tb->ns) /* the reference is 0: t itself */
+        nt_write(t == 0.0 ? 0.0 : t, buf);
+    else
+        computed_stamp(s->tb, t, off, buf);
+    return buf;
+}
+
+/* Every sample: made, checked, written to out (NULL: not written) and kept as
+ * a matrix in keep (NULL: not kept); *count is the number of samples.
+ * 0, or -1 after a message. */
+static int run(const sampler *s, tio_out *out, ga_mat4 *keep, size_t *count)
+{
+    const ga_group *g = s->g;
+    const char *name = s->in->name;
+    double t[CHUNK], off[CHUNK], row[17 + 2 * 16];
+    static char stamp[TT_DIG + 32];
+    unsigned char *buf = malloc(CHUNK * g->elem_size);
+    ga_path_stepper stepper;
+    ga_quat prev = {1, 0, 0, 0};
+    size_t k = 0;
+    int st = buf ? GA_OK : GA_ERR_ARG, rc = -1;
+    if (!buf) {
+        fprintf(stderr, "garotor interp: out of memory\n");
+        return -1;
+    }
+    if (s->kind == UNIFORM)
+        st = ga_path_stepper_init(s->path, s->ev, s->step, s->ns, s->times[s->i0], s->times[s->i1], &stepper);
+    for (int more = 1; st == GA_OK && more;) {
+        size_t m = 0;
+        while (m < CHUNK && (more = sample_time(s, k + m, &t[m], &off[m]))) m++;
+        if (m == 0)
+            break;
+        if (s->kind == UNIFORM)
+            for (size_t j = 0; j < m && st == GA_OK; j++)
+                st = ga_path_stepper_next(&stepper, buf + j * g->elem_size);
+        else if (!s->extrap)
+            st = ga_path_sample(s->path, s->ev, s->step, m, t, buf);
+        else
+            st = sample_extrapolated(s->path, s->ev, s->step, s->extrap, m, t, buf);
+        if (st != GA_OK)
+            break;
+        for (size_t j = 0; j < m; j++, k++) {
+            ga_mat4 mat = g->to_mat4(buf + j * g->elem_size);
+            if (keep)
+                keep[k] = mat;
+            if (s->pose && (st = mat4_to_pose(mat, &prev, row + 1)) != GA_OK) {
+                fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", name, k + 1,
+                        ga_status_string(st));
+                goto done;
+            }
+            if (!s->pose)
+                memcpy(row + 1, mat.m, sizeof mat.m);
+            if (s->with_v) {
+                double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
+                st = differentiate(s->path, s->extrap, t[j], s->spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY,
+                                   dv, da);
+                if (st != GA_OK) {
+                    fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", name, k + 1,
+                            ga_status_string(st));
+                    goto done;
+                }
+                put_algebra(g, dv, row + s->pw);
+                if (s->with_a)
+                    put_algebra(g, da, row + s->pw + s->dw);
+            }
+            if (out)
+                tio_out_stamped(out, stamp_of(s, k, t[j], off[j], stamp), row + 1, s->width - 1);
+        }
+    }
+    if (st != GA_OK)
+        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", name, ga_status_string(st));
+    else
+        rc = 0;
+done:
+    free(buf);
+    *count = k;
+    return rc;
 }
 
 int cmd_interp(const cli_opts *o)
@@ -446,7 +600,8 @@ int cmd_interp(const cli_opts *o)
         return 2;
 
     tio_items in = {0}, vin = {0}, tin = {0};
-    double *times = NULL, *at = NULL, *vel = NULL, *samples = NULL, *res = NULL, *off = NULL, *key_t = NULL;
+    double *times = NULL, *at = NULL, *vel = NULL, *key_t = NULL;
+    ga_mat4 *kept = NULL;
     char *at_buf = NULL, **at_arg = NULL, **at_text = NULL;
     ga_mat4 *keys = NULL;
     void *work = NULL;
@@ -546,38 +701,38 @@ int cmd_interp(const cli_opts *o)
             goto oom;
         for (size_t k = 0; k < nat; k++) at[k] = rel_time(&tb, at_text[k]);
     }
+    sampler smp = {.o = o,
+                   .g = g,
+                   .in = &in,
+                   .tb = &tb,
+                   .ev = ev,
+                   .step = ev == GA_EVAL_EULER ? o->step : 1.0,
+                   .extrap = extrap,
+                   .pose = pose,
+                   .with_v = with_v,
+                   .with_a = with_a,
+                   .spatial = spatial,
+                   .times = times,
+                   .n = n,
+                   .i0 = i0,
+                   .i1 = i1,
+                   .kind = UNIFORM,
+                   .ns = (size_t)o->samples};
     if (o->given & OPT_RATE) { /* t0 + k/HZ, each from k, those in the range [t_i0, t_i1] */
         double span = times[n - 1] * o->rate;
         if (!(span < 1e9)) {
             fprintf(stderr, "garotor interp: --rate %.17g gives more than 1e9 samples\n", o->rate);
             goto done;
         }
-        nat = (size_t)floor(span) + 2;
-        at = malloc(nat * sizeof *at);
-        off = tb.ns ? malloc(nat * sizeof *off) : NULL;
-        if (!at || (tb.ns && !off))
-            goto oom;
-        uint64_t p = 0;
-        int q = 0, exact = rate_parts(o->rate_text, &p, &q);
-        size_t j = 0;
-        for (size_t k = 0; k < nat; k++) {
-            double t;
-            if (tb.ns) {
-                off[j] = rate_nanoseconds(k, exact, p, q, o->rate);
-                char b[400];
-                snprintf(b, sizeof b, "%.0f", off[j]);
-                tt_dec d;
-                tt_parse(b, &d);
-                t = tt_to_double(&d, -9);
-            } else
-                t = rate_seconds(k, exact, p, q, o->rate);
-            if (!(t <= times[i1]))
-                break;
-            if (t >= times[i0])
-                at[j++] = t;
+        smp.kind = RATE;
+        smp.ns = (size_t)floor(span) + 2;
+        smp.rexact = rate_parts(o->rate_text, &smp.rp, &smp.rq);
+        double t, off;
+        while (sample_time(&smp, 0, &t, &off) && t < times[i0]) { /* bspline: its range starts at t_1 */
+            smp.k0++;
+            smp.ns--;
         }
-        nat = j;
-        if (nat == 0) {
+        if (!sample_time(&smp, 0, &t, &off)) {
             fprintf(stderr, "garotor interp: --rate %s: no sample time in the path's range [%s, %s]\n",
                     o->rate_text, in.first[i0], in.first[i1]);
             goto done;
@@ -585,25 +740,20 @@ int cmd_interp(const cli_opts *o)
     }
     if (tb.ns && (o->given & OPT_SAMPLES)) {
         /* whole nanoseconds: t_i0 + round(k span/(N - 1)), span = t_i1 - t_i0 */
-        nat = (size_t)o->samples;
-        at = malloc(nat * sizeof *at);
-        off = malloc(nat * sizeof *off);
-        if (!at || !off)
-            goto oom;
         tt_dec span, start;
-        tt_parse(in.first[n - 1 - i0], &span);
+        tt_parse(in.first[i1], &span);
         tt_parse(in.first[i0], &start);
         if (tt_add(&span, &tb.ref, 1, &span) || tt_add(&start, &tb.ref, 1, &start)) /* cannot happen */
             goto oom;
-        double s0 = tt_to_double(&start, 0), sp = tt_to_double(&span, 0) - s0; /* whole ns below 2^53 */
-        for (size_t k = 0; k < nat; k++) {
-            off[k] = s0 + (k + 1 == nat ? sp : floor((double)k * sp / (double)(nat - 1) + 0.5));
-            char b[400];
-            snprintf(b, sizeof b, "%.0f", off[k]);
-            tt_dec d;
-            tt_parse(b, &d);
-            at[k] = k + 1 == nat ? times[i1] : tt_to_double(&d, -9);
-        }
+        smp.kind = NS_SAMPLES;
+        smp.s0 = tt_to_double(&start, 0); /* whole ns below 2^53 */
+        smp.sp = tt_to_double(&span, 0) - smp.s0;
+    }
+    if (at_text) {
+        smp.kind = GIVEN;
+        smp.ns = nat;
+        smp.at = at;
+        smp.at_text = at_text;
     }
     for (size_t k = 0; k < nat && !extrap && at_text; k++)
         if (!(at[k] >= times[i0] && at[k] <= times[i1])) {
@@ -666,87 +816,47 @@ int cmd_interp(const cli_opts *o)
         goto done;
     }
 
-    size_t ns = nat ? nat : (size_t)o->samples;
-    double step = ev == GA_EVAL_EULER ? o->step : 1.0;
-    samples = malloc(ns * g->elem_size);
     /* an algebra element as the tool writes it: a twist (6) on a rigid group,
        else its hat, a 4x4 with zero last row (16) */
-    int dw = g->rigid ? 6 : 16, pw = pose ? 8 : 17, width = pw + (with_v + with_a) * dw;
-    res = malloc(ns * (size_t)width * sizeof *res);
-    if (!samples || !res)
-        goto oom;
-    st = !nat    ? ga_path_sample_uniform(&path, ev, step, ns, times[i0], times[i1], samples)
-       : !extrap ? ga_path_sample(&path, ev, step, ns, at, samples)
-                 : sample_extrapolated(&path, ev, step, extrap, ns, at, samples);
-    if (st != GA_OK) {
-        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", in.name, ga_status_string(st));
-        goto done;
-    }
-    ga_quat prev = {1, 0, 0, 0};
-    double dt = ns > 1 ? (times[i1] - times[i0]) / (double)(ns - 1) : 0.0;
-    for (size_t k = 0; k < ns; k++) {
-        double *row = res + k * (size_t)width;
-        /* the time the sample was taken at: ga_path_sample_uniform's
-           t0 + k dt, the last exactly t1 (t0 = t_i0: 0 for the first key) */
-        row[0] = nat ? at[k] : (k + 1 == ns ? times[i1] : times[i0] + (double)k * dt);
-        ga_mat4 m = g->to_mat4((const char *)samples + k * g->elem_size);
-        if (pose && (st = mat4_to_pose(m, &prev, row + 1)) != GA_OK) {
-            fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", in.name, k + 1,
-                    ga_status_string(st));
-            goto done;
-        }
-        if (!pose)
-            memcpy(row + 1, m.m, sizeof m.m);
-        if (with_v) {
-            double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
-            st = differentiate(&path, extrap, row[0], spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY, dv, da);
-            if (st != GA_OK) {
-                fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", in.name, k + 1,
-                        ga_status_string(st));
-                goto done;
-            }
-            put_algebra(g, dv, row + pw);
-            if (with_a)
-                put_algebra(g, da, row + pw + dw);
-        }
-    }
-    /* open the samples' output, draw the picture, then write the samples:
-     * if they cannot be written, the picture is removed again */
-    tio_out out;
-    if (o->svg) { /* the picture labels the keys with their times as read */
+    smp.path = &path;
+    smp.dw = g->rigid ? 6 : 16;
+    smp.pw = pose ? 8 : 17;
+    smp.width = smp.pw + (with_v + with_a) * smp.dw;
+    /* A regular --out file is written beside its name and renamed onto it
+     * only when every sample was written, so the samples are made once. To
+     * standard output or a FIFO, whatever is written stays written: every
+     * sample is made and checked first, without a line written, and made
+     * again as it is written. The picture (--svg, --html) needs the samples'
+     * matrices, held in memory (128 bytes a sample), before the samples are
+     * written: they are kept in that first pass. */
+    int drawn = o->svg || o->html;
+    if (drawn) { /* the picture labels the keys with their times as read */
         key_t = malloc(n * sizeof *key_t);
-        if (!key_t)
+        kept = malloc(smp.ns * sizeof *kept);
+        if (!key_t || !kept)
             goto oom;
         for (size_t i = 0; i < n; i++) key_t[i] = strtod(in.first[i], NULL);
     }
-    if (tio_out_open(&out, o->out) == 0) {
-        if ((o->svg || o->html) && draw(o, g, scheme, ev, view, keys, key_t, n, samples, ns)) {
-            tio_out_close(&out, 0);
-            goto done;
-        }
-        static char stamp[TT_DIG + 16];
-        for (size_t k = 0; k < ns; k++) {
-            /* a sample at a key's time is stamped as the key was written;
-               a given one as given; a computed one from the reference */
-            const double *row = res + k * (size_t)width;
-            size_t key;
-            const char *text = stamp;
-            if (key_at(times, n, row[0], &key))
-                text = in.first[key];
-            else if (at_text)
-                text = at_text[k];
-            else
-                computed_stamp(&tb, row[0], off ? off[k] : 0.0, stamp);
-            tio_out_stamped(&out, text, row + 1, width - 1);
-        }
-        if (tio_out_close(&out, 1) == 0)
-            rc = 0;
-        else if (o->svg || o->html) {
-            if (o->svg)
-                tio_out_unwrite(o->svg);
-            if (o->html)
-                tio_out_unwrite(o->html);
-        }
+    tio_out out;
+    if (tio_out_open(&out, o->out))
+        goto done;
+    size_t ns = 0;
+    if ((drawn || !out.path || out.direct) && run(&smp, NULL, kept, &ns)) {
+        tio_out_close(&out, 0);
+        goto done;
+    }
+    if (drawn && draw(o, g, scheme, ev, view, keys, key_t, n, kept, ns)) {
+        tio_out_close(&out, 0);
+        goto done;
+    }
+    int ok = run(&smp, &out, NULL, &ns) == 0;
+    if (tio_out_close(&out, ok) == 0)
+        rc = 0;
+    else if (drawn) {
+        if (o->svg)
+            tio_out_unwrite(o->svg);
+        if (o->html)
+            tio_out_unwrite(o->html);
     }
     goto done;
 oom:
@@ -755,13 +865,11 @@ done:
     free(times);
     free(keys);
     free(at);
-    free(off);
     free(key_t);
     free(at_buf);
     free(at_arg);
     free(vel);
-    free(samples);
-    free(res);
+    free(kept);
     free(work);
     tio_free(&in);
     tio_free(&vin);

@@ -6,7 +6,8 @@
  * is read and checked before anything is written, so an error leaves neither
  * partial output on standard output nor an output file behind.
  *
- * Output: to standard output, or to a temporary file beside --out that is
+ * Output: numbers as the shortest decimal that reads back as the same double
+ * (numtext.h); to standard output, or to a temporary file beside --out that is
  * renamed onto it only when everything succeeded; the file keeps the mode of
  * the one it replaces (a new one gets 0666 less the umask), and a symbolic
  * link is followed, not replaced. An --out that exists and is not a regular
@@ -61,9 +62,10 @@ typedef struct {
 
 /** Open the output (path NULL or "-" for standard output). Returns 0 or -1 (message printed). */
 int tio_out_open(tio_out *o, const char *path);
-/** Write n numbers as one line with %.17g. */
+/** Write n numbers as one line, each the shortest decimal that reads back
+ *  as it (numtext.h), a negative zero as 0. */
 void tio_out_line(tio_out *o, const double *v, int n);
-/** Write a time stamp (as text) and n numbers as one line. */
+/** Write a time stamp (as text) and n numbers as one line, as above. */
 void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n);
 /** Finish: flush, and rename the temporary file onto the target when ok;
  *  when !ok remove it. Returns 0 or -1 (message printed). */

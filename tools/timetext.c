@@ -1,6 +1,8 @@
 /* tools/timetext.c: see timetext.h. */
 #include "timetext.h"
 
+#include "numtext.h"
+
 #include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -168,45 +170,19 @@ double tt_to_double(const tt_dec *a, int shift)
 
 void tt_shortest(double x, tt_dec *out)
 {
-    char buf[64];
-    for (int p = 15; p <= 17; p++) {
-        snprintf(buf, sizeof buf, "%.*e", p - 1, x);
-        if (p == 17 || strtod(buf, NULL) == x)
-            break;
-    }
-    parse_decimal(buf, out);
+    uint64_t f;
+    int e, n = nt_shortest(x, &f, &e);
+    out->neg = f != 0 && x < 0.0;
+    out->n = f ? n : 0;
+    out->exp = f ? e : 0;
+    for (int i = n - 1; f && i >= 0; i--, f /= 10) out->d[i] = (unsigned char)(f % 10);
 }
 
 int tt_is_integer(const tt_dec *a) { return a->n == 0 || a->exp >= 0; }
 
 void tt_format(const tt_dec *a, char *buf)
 {
-    int k = 0;
-    if (a->n == 0) {
-        strcpy(buf, "0");
-        return;
-    }
-    if (a->neg)
-        buf[k++] = '-';
-    int x = a->exp + a->n - 1; /* place of the leading digit */
-    if (x >= -7 && x <= 20) {
-        if (x < 0) {
-            buf[k++] = '0';
-            buf[k++] = '.';
-            for (int i = -1; i > x; i--) buf[k++] = '0';
-        }
-        for (int i = 0; i < a->n; i++) {
-            if (x >= 0 && i == x + 1)
-                buf[k++] = '.';
-            buf[k++] = (char)('0' + a->d[i]);
-        }
-        for (int i = a->n; i <= x; i++) buf[k++] = '0';
-        buf[k] = '\0';
-        return;
-    }
-    buf[k++] = (char)('0' + a->d[0]);
-    if (a->n > 1)
-        buf[k++] = '.';
-    for (int i = 1; i < a->n; i++) buf[k++] = (char)('0' + a->d[i]);
-    sprintf(buf + k, "e%c%02d", x < 0 ? '-' : '+', x < 0 ? -x : x);
+    char dig[TT_DIG];
+    for (int i = 0; i < a->n; i++) dig[i] = (char)('0' + a->d[i]);
+    nt_layout(a->neg, dig, a->n, a->exp, buf);
 }

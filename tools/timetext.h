@@ -33,13 +33,14 @@ void tt_parse(const char *text, tt_dec *out);
 int tt_add(const tt_dec *a, const tt_dec *b, int sub, tt_dec *out);
 /** a x 10^shift, correctly rounded to a double (may be +-inf). */
 double tt_to_double(const tt_dec *a, int shift);
-/** The shortest decimal that reads back as x (x finite). */
+/** The shortest decimal that reads back as x (x finite; numtext.h). */
 void tt_shortest(double x, tt_dec *out);
 /** 1 if a is a whole number. */
 int tt_is_integer(const tt_dec *a);
-/** a written out: positional (1305031102.1858, 0.001) when its leading digit
- *  is between the places 10^20 and 10^-7, else d.ddde+XX; buf holds at least
- *  TT_DIG + 16 bytes. */
+/** a written out in the layout of every number the tool writes (nt_layout:
+ *  positional, 1305031102.1858 or 0.001, when its leading digit is between
+ *  the places 10^20 and 10^-7, else d.ddde+XX); buf holds at least
+ *  TT_DIG + 32 bytes. */
 void tt_format(const tt_dec *a, char *buf);
 
 #endif

@@ -1,4 +1,4 @@
-"""Shared fixtures: the built tool, and a runner that parses its %.17g output."""
+"""Shared fixtures: the built tool, and a runner that parses its output."""
 import os
 import shutil
 import subprocess

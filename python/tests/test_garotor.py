@@ -2,7 +2,8 @@
 behaviour: broadcasting, dtypes and layouts, out=, errors, leaks.
 
 Every random input is seeded (conftest.rng). Agreement with the tool is
-exact: the tool's %.17g output is parsed back to the same doubles.
+exact: the tool's output (the shortest decimal of each double) is parsed back
+to the same doubles.
 """
 import gc
 import sys
