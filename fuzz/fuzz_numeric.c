@@ -38,6 +38,9 @@
  *                     where every rotation half-angle is at most 1.5 and
  *                     their sum at most 2.8 (the bound is derived at
  *                     mv_exp_log), to log's own 1e-9 elsewhere.
+ *   mv text           (op "mv") ga_mv_format then ga_mv_parse gives the same
+ *                     doubles; the bytes after the op's doubles are parsed
+ *                     as text: a status, and what it reads round-trips.
  */
 #include <math.h>
 #include <stddef.h>
@@ -569,12 +572,48 @@ static void mv_exp_log(const ga_mv *X)
     }
 }
 
+/* Text: X written and read back to the same doubles (a -0 reads as 0), or
+   GA_ERR_NOTFINITE for NaN/Inf; then the rest of the input read as text:
+   GA_OK, GA_ERR_ARG or GA_ERR_NOTFINITE, and what it reads writes and reads
+   back the same. */
+static void mv_text(const ga_mv *X, const uint8_t *rest, size_t nrest)
+{
+    char buf[GA_MV_TEXT_MAX], text[1024];
+    size_t len = 0;
+    ga_mv Y;
+    int st = ga_mv_format(*X, buf, sizeof buf, &len);
+    if (!fz_all_finite(X->c, 32)) {
+        FZ_CHECK(st == GA_ERR_NOTFINITE, "mv_format of NaN/Inf: %d", st);
+    } else {
+        FZ_CHECK(st == GA_OK && len == strlen(buf), "mv_format: %d", st);
+        st = ga_mv_parse(buf, &Y);
+        FZ_CHECK(st == GA_OK, "mv_parse(mv_format(X)): %d on '%s'", st, buf);
+        for (int i = 0; i < 32; i++)
+            FZ_CHECK(Y.c[i] == X->c[i], "mv_parse(mv_format(X)): coefficient %d %.17g, not %.17g", i, Y.c[i],
+                     X->c[i]);
+    }
+    size_t n = nrest < sizeof text - 1 ? nrest : sizeof text - 1;
+    memcpy(text, rest, n);
+    text[n] = '\0';
+    st = ga_mv_parse(text, &Y);
+    FZ_CHECK(st == GA_OK || st == GA_ERR_ARG || st == GA_ERR_NOTFINITE, "mv_parse status %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(fz_all_finite(Y.c, 32), "mv_parse: GA_OK with a non-finite coefficient");
+        ga_mv Z;
+        if (ga_mv_format(Y, buf, sizeof buf, &len) == GA_OK && ga_mv_parse(buf, &Z) == GA_OK)
+            for (int i = 0; i < 32; i++) FZ_CHECK(Z.c[i] == Y.c[i], "mv text round trip, coefficient %d", i);
+        else
+            FZ_CHECK(0, "mv_parse read a text that does not write and read back");
+    }
+}
+
 static void op_mv_any(fz_reader *rd)
 {
     ga_mv X;
     fz_doubles(rd, X.c, 32);
     mv_any(&X, fz_double(rd));
     mv_exp_log(&X);
+    mv_text(&X, rd->p + (rd->k < rd->n ? rd->k : rd->n), rd->k < rd->n ? rd->n - rd->k : 0);
 }
 
 /* Objects built from points, read back; points up and down. */

@@ -122,6 +122,11 @@ for k, b in {"rotation": [1.2, 0, 0, 0, 0, 0, 0, 0, 0, 0], "dilation": [0] * 9 +
              "big": [8, 0, 0, 0, 0, 0, 0, 0, 0, -8]}.items():
     write("numeric", "mv-exp-log-" + k, bytes([OPS["mv"]]) + doubles([0] * 6 + b + [0] * 16 + [1]))
 write("numeric", "mv-log-rotor", bytes([OPS["mv"]]) + doubles([0.6] + [0] * 5 + [0.8] + [0] * 25 + [1]))
+# text after the doubles: ga_mv_parse (docs/conventions.md, "Multivectors as text")
+for k, t in {"text": "1 + 2e12 - 0.5e1234", "text-python-repr": "3 + e12 - 0.5*e12345",
+             "text-exponents": "-1e+20e12345 + 2.5E-3 - .5e1 + 1e-5", "text-bad-name": "2e21",
+             "text-overflow": "1e+999e1"}.items():
+    write("numeric", "mv-" + k, bytes([OPS["mv"]]) + doubles([0.5] * 32 + [1]) + t.encode())
 PTS = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
 for which in range(8):
     write("numeric", "points-object-%d" % which, bytes([OPS["points"]]) +
