@@ -167,12 +167,9 @@ ga_mv ga_mv_lc(ga_mv a, ga_mv b)
    not a hot path). */
 static ga_mv dot_product(ga_mv a, ga_mv b, int hestenes)
 {
-    static signed char index_of[32];
-    static int ready;
-    if (!ready) { /* the inverse of blade_mask (idempotent: a race writes the same bytes) */
-        for (int i = 0; i < 32; i++) index_of[blade_mask[i]] = (signed char)i;
-        ready = 1;
-    }
+    /* the inverse of blade_mask: the index of each mask */
+    static const unsigned char index_of[32] = {0, 1, 2,  6,  3,  7,  10, 16, 4,  8,  11, 17, 13, 19, 22, 26,
+                                               5, 9, 12, 18, 14, 20, 23, 27, 15, 21, 24, 28, 25, 29, 30, 31};
     ga_mv r = {{0}};
     for (int i = 0; i < 32; i++) {
         unsigned ma = blade_mask[i];

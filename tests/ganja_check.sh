@@ -24,5 +24,6 @@ if [ ! -f "$dir/package.json" ]; then
     echo "skip: no ganja.js at $dir (npm install --prefix $build ganja.js)"
     exit 77
 fi
+dir=$(cd "$dir" && pwd)
 echo "ganja.js $(node -e "console.log(require('$dir/package.json').version)"), node $(node --version)"
 "$dump" 500 14 | node "$src/ganja_check.js" "$dir"

@@ -66,8 +66,7 @@ int main(int argc, char **argv)
         int nv = 1 + (int)(tk_next(&r) % 4);
         for (int j = 0; j < nv; j++) {
             ga_mv v;
-            do
-                v = ga_mv_grade(random_mv(&r, 0), 1);
+            do v = ga_mv_grade(random_mv(&r, 0), 1);
             while (fabs(ga_mv_sp(v, v)) < 0.1);
             V = ga_mv_gp(V, v);
         }
