@@ -33,6 +33,14 @@
  *   expm              ||a||_1 <= 100: GA_OK and finite (e^100 ~ 3e43).
  *   logm round trip   logm(expm(X)) = X for ||X||_1 <= 1 (all eigenvalues
  *                     well inside the principal strip), to 1e-9.
+ *   mv exp/log        (op "mv", on the bivector part) exp of a bivector up
+ *                     to 8 is a finite rotor; exp(log R) = R to 1e-12 |R|
+ *                     where every rotation half-angle is at most 1.5 and
+ *                     their sum at most 2.8 (the bound is derived at
+ *                     mv_exp_log), to log's own 1e-9 elsewhere.
+ *   mv text           (op "mv") ga_mv_format then ga_mv_parse gives the same
+ *                     doubles; the bytes after the op's doubles are parsed
+ *                     as text: a status, and what it reads round-trips.
  */
 #include <math.h>
 #include <stddef.h>
@@ -476,11 +484,136 @@ static void mv_any(const ga_mv *X, double lambda)
         FZ_CHECK(rotor_finite(R) && ga_rotor_check(R, 1e-12) == GA_OK, "from_mv: GA_OK with a bad rotor");
 }
 
+/* exp and log of the general algebra (versor.h), on B = the bivector part of
+ * X, and log on X itself.
+ *
+ * Bounds. ga_mv_exp writes each coefficient of R = exp(B) as a short sum of
+ * products of the coefficients of B, B^2 and B B^2 with the closed-form
+ * functions of the parts' squares l1, l2 (versor.c), every term at most
+ * |R| = max |coefficient| in size, so that R is within a few dozen roundings,
+ * k u |R| with k ~ 60 (u = 1.1e-16; measured 1.4e-14 |R|, docs/versors.md).
+ * On the principal domain kept here (every elliptic half-angle t_i <= 1.5,
+ * t1 + t2 <= 2.8, |B| <= 8) log is the inverse of exp with condition number
+ * below 1 / sinc(1.5) ~ 1.5 times 1 / (pi - t1 - t2) <= 3 (the conjugate
+ * point of Spin(4), docs/versors.md), so log's own few dozen roundings and
+ * R's, carried through log and back through exp, leave exp(log R) within
+ * about 60 u (1 + 3 * 1.5) |R| ~ 4e-14 |R| of R. 1e-12 |R| is 25 times that:
+ * a net for lost digits, not a precision test (tests/test_versor.c is).
+ * Outside that domain log's contract is only its own check: GA_OK means
+ * exp(log R) = R to 1e-9 relative (versor.h), which is asserted as such. */
+#define MV_LOG_TOL 1e-12
+
+static ga_mv mv_sub(ga_mv a, ga_mv b)
+{
+    for (int i = 0; i < 32; i++) a.c[i] -= b.c[i];
+    return a;
+}
+static ga_mv mv_biv(ga_mv X)
+{
+    ga_mv B = ga_mv_zero();
+    for (int i = GA_BLADE_E12; i <= GA_BLADE_E45; i++) B.c[i] = X.c[i];
+    return B;
+}
+
+/* The largest elliptic half-angle of B and the sum of both (0 for
+   hyperbolic and null parts): l1, l2 the roots of l^2 - s l + qq/4 as in
+   versor.c, an elliptic part l < 0 of half-angle sqrt(-l). */
+static void mv_angles(ga_mv B, double *tmax, double *tsum)
+{
+    ga_mv b2 = ga_mv_gp(B, B), q = ga_mv_grade(b2, 4);
+    double sq = b2.c[0], qq = ga_mv_sp(q, q), d = fmax(sq * sq - qq, 0.0);
+    double l1 = 0.5 * (sq + copysign(sqrt(d), sq)), l2 = l1 != 0.0 ? 0.25 * qq / l1 : 0.0;
+    double t1 = l1 < 0 ? sqrt(-l1) : 0.0, t2 = l2 < 0 ? sqrt(-l2) : 0.0;
+    *tmax = fmax(t1, t2);
+    *tsum = t1 + t2;
+}
+
+static void mv_exp_log(const ga_mv *X)
+{
+    ga_mv B = mv_biv(*X), R = ga_mv_exp(*X), L;
+    int bfin = fz_all_finite(B.c, 32);
+    /* NaN in, NaN out; exp reads the bivector part only */
+    if (!bfin)
+        FZ_CHECK(!fz_all_finite(R.c, 32), "mv_exp: NaN/Inf in, finite out");
+    FZ_CHECK(ga_mv_maxabs(mv_sub(R, ga_mv_exp(B))) == 0.0, "mv_exp reads more than the bivector part");
+    /* log of anything: GA_OK, GA_ERR_DOMAIN, or NOTFINITE exactly for NaN/Inf */
+    int st = ga_mv_log(*X, &L);
+    FZ_CHECK(fz_all_finite(X->c, 32) ? (st == GA_OK || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE,
+             "mv_log status %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(fz_all_finite(L.c, 32), "mv_log: GA_OK with a non-finite result");
+        FZ_CHECK(ga_mv_maxabs(mv_sub(L, mv_biv(L))) == 0.0, "mv_log: not a bivector");
+        double d = ga_mv_maxabs(mv_sub(ga_mv_exp(L), *X)) / fmax(1.0, ga_mv_maxabs(*X));
+        FZ_CHECK(d <= 1e-9, "mv_log: GA_OK but exp(log X) misses X by %.3g", d);
+    }
+    if (!bfin || ga_mv_maxabs(B) > 8.0)
+        return;
+    /* exp of a finite bivector up to 8 is finite and a rotor: even, R ~R = 1 */
+    double sc = fmax(1.0, ga_mv_maxabs(R));
+    FZ_CHECK(fz_all_finite(R.c, 32), "mv_exp of a bivector up to 8 is not finite");
+    for (int g = 1; g <= 5; g += 2)
+        FZ_CHECK(ga_mv_maxabs(ga_mv_grade(R, g)) == 0.0, "mv_exp: odd grade %d", g);
+    ga_mv rr = ga_mv_gp(R, ga_mv_reverse(R));
+    rr.c[0] -= 1.0;
+    FZ_CHECK(ga_mv_maxabs(rr) <= 1e-12 * sc * sc, "mv_exp: R ~R - 1 = %.3g (|R| = %.3g)", ga_mv_maxabs(rr),
+             sc);
+    /* every exp(B) has a log; within the principal domain exp(log R) = R to
+       MV_LOG_TOL, elsewhere (when log finds one) to its own 1e-9 */
+    double tmax, tsum;
+    mv_angles(B, &tmax, &tsum);
+    st = ga_mv_log(R, &L);
+    int principal = tmax <= 1.5 && tsum <= 2.8;
+    if (principal)
+        FZ_CHECK(st == GA_OK, "mv_log(exp(B)), half-angles %.17g (sum %.17g): status %d", tmax, tsum, st);
+    if (st == GA_OK) {
+        double d = ga_mv_maxabs(mv_sub(ga_mv_exp(L), R)) / sc;
+        FZ_CHECK(d <= (principal ? MV_LOG_TOL : 1e-9),
+                 "exp(log R) = R, half-angles %.3g (sum %.3g): off by %.3g", tmax, tsum, d);
+    }
+}
+
+/* Text: X written and read back to the same doubles (a -0 reads as 0), or
+   GA_ERR_NOTFINITE for NaN/Inf; then the rest of the input read as text:
+   GA_OK, GA_ERR_ARG or GA_ERR_NOTFINITE, and what it reads writes and reads
+   back the same. */
+static void mv_text(const ga_mv *X, const uint8_t *rest, size_t nrest)
+{
+    char buf[GA_MV_TEXT_MAX], text[1024];
+    size_t len = 0;
+    ga_mv Y;
+    int st = ga_mv_format(*X, buf, sizeof buf, &len);
+    if (!fz_all_finite(X->c, 32)) {
+        FZ_CHECK(st == GA_ERR_NOTFINITE, "mv_format of NaN/Inf: %d", st);
+    } else {
+        FZ_CHECK(st == GA_OK && len == strlen(buf), "mv_format: %d", st);
+        st = ga_mv_parse(buf, &Y);
+        FZ_CHECK(st == GA_OK, "mv_parse(mv_format(X)): %d on '%s'", st, buf);
+        for (int i = 0; i < 32; i++)
+            FZ_CHECK(Y.c[i] == X->c[i], "mv_parse(mv_format(X)): coefficient %d %.17g, not %.17g", i, Y.c[i],
+                     X->c[i]);
+    }
+    size_t n = nrest < sizeof text - 1 ? nrest : sizeof text - 1;
+    memcpy(text, rest, n);
+    text[n] = '\0';
+    st = ga_mv_parse(text, &Y);
+    FZ_CHECK(st == GA_OK || st == GA_ERR_ARG || st == GA_ERR_NOTFINITE, "mv_parse status %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(fz_all_finite(Y.c, 32), "mv_parse: GA_OK with a non-finite coefficient");
+        ga_mv Z;
+        if (ga_mv_format(Y, buf, sizeof buf, &len) == GA_OK && ga_mv_parse(buf, &Z) == GA_OK)
+            for (int i = 0; i < 32; i++) FZ_CHECK(Z.c[i] == Y.c[i], "mv text round trip, coefficient %d", i);
+        else
+            FZ_CHECK(0, "mv_parse read a text that does not write and read back");
+    }
+}
+
 static void op_mv_any(fz_reader *rd)
 {
     ga_mv X;
     fz_doubles(rd, X.c, 32);
     mv_any(&X, fz_double(rd));
+    mv_exp_log(&X);
+    mv_text(&X, rd->p + (rd->k < rd->n ? rd->k : rd->n), rd->k < rd->n ? rd->n - rd->k : 0);
 }
 
 /* Objects built from points, read back; points up and down. */

@@ -7,7 +7,7 @@
  * Input (text, so the seed corpus in fuzz/corpus/tool/ reads as examples):
  *
  *     line 1     the command line after "garotor": a command (exp, log,
- *                interp) and its options, e.g.
+ *                interp, versor exp|log|apply) and its options, e.g.
  *                "interp --scheme lihao3 --format pose --samples 5"
  *     the rest   the input file (twists, matrices, keyframes, CSV...); a line
  *                "%%" splits off a velocity file (for --velocities)
@@ -32,7 +32,11 @@
  *   - exp (cga, matrix) writes rigid motions: last row exactly 0 0 0 1,
  *     rotation part orthonormal to 1e-9; log (cga, matrix) writes twists with
  *     rotation angle in [0, pi]; interp --format mat on cga/matrix writes
- *     rigid motions, --format pose unit quaternions (to 1e-9).
+ *     rigid motions, --format pose unit quaternions (to 1e-9);
+ *   - versor exp writes 32 numbers, an even multivector with R ~R = 1 to
+ *     1e-9 |R|^2; versor log writes 10 numbers (a bivector) whose exp is the
+ *     line read, to 1e-9 |R| (ga_mv_log's own check: versor.h); versor apply
+ *     writes 3 numbers.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -45,6 +49,7 @@
 #include <unistd.h>
 
 #include "fuzz_check.h"
+#include <garotor/garotor.h>
 
 int garotor_main(int argc, char **argv);
 
@@ -107,10 +112,84 @@ static void check_no_stray_files(int allow_out)
     closedir(d);
 }
 
-enum { K_EXP, K_LOG, K_INTERP };
+enum { K_EXP, K_LOG, K_INTERP, K_VERSOR };
+enum { V_EXP, V_LOG, V_APPLY };
+
+/* The numbers of item `want` (0-based) of the input file, as textio.c reads
+   them (the first line skipped with --header, a byte-order mark, '#' lines
+   and blank lines skipped, whitespace or a comma between numbers): k numbers
+   into v, or -1 when it is not there, not k numbers, or too long to read here. */
+static int input_line(const uint8_t *p, size_t n, int header, long want, double *v, int k)
+{
+    long line = -1, phys = 0;
+    for (size_t i = 0; i < n;) {
+        const char *ln = (const char *)p + i, *eol = memchr(ln, '\n', n - i);
+        size_t len = eol ? (size_t)(eol - ln) : n - i;
+        i += len + 1;
+        if (++phys == 1 && header)
+            continue;
+        char buf[4096];
+        if (len >= sizeof buf)
+            return -1;
+        memcpy(buf, ln, len);
+        buf[len] = '\0';
+        char *s = buf;
+        if (phys == 1 && strncmp(s, "\xEF\xBB\xBF", 3) == 0)
+            s += 3;
+        while (*s == ' ' || *s == '\t' || *s == '\r') s++;
+        if (!*s || *s == '#')
+            continue;
+        if (++line < want)
+            continue;
+        int m = 0;
+        for (char *e; *s; s = e) {
+            while (*s == ' ' || *s == '\t' || *s == '\r' || *s == ',') s++;
+            if (!*s)
+                break;
+            double x = strtod(s, &e);
+            if (e == s || m >= k)
+                return -1;
+            v[m++] = x;
+        }
+        return m == k ? 0 : -1;
+    }
+    return -1;
+}
+
+/* versor: what a line of output says about its line of input. */
+static void check_versor(int verb, const double *v, int k, long lineno, const uint8_t *in, size_t nin,
+                         int header)
+{
+    static const int width[] = {32, 10, 3};
+    FZ_CHECK(k == width[verb], "versor: output line %ld has %d numbers", lineno, k);
+    ga_mv R = ga_mv_zero();
+    if (verb == V_EXP) {
+        memcpy(R.c, v, 32 * sizeof *v);
+        double sc = fmax(1.0, ga_mv_maxabs(R));
+        for (int i = 0; i < 32; i++)
+            if (ga_blade_grade(i) % 2)
+                FZ_CHECK(R.c[i] == 0.0, "versor exp: output line %ld has an odd part", lineno);
+        /* scaled by a power of two first, so that R ~R cannot overflow */
+        int e;
+        frexp(sc, &e);
+        ga_mv Rs = ga_mv_scale(R, ldexp(1.0, -e)), rr = ga_mv_gp(Rs, ga_mv_reverse(Rs));
+        rr.c[0] -= ldexp(1.0, -2 * e);
+        FZ_CHECK(ga_mv_maxabs(rr) <= 1e-9 * ldexp(sc, -e) * ldexp(sc, -e),
+                 "versor exp: output line %ld: R ~R - 1 = %.3g relative", lineno, ga_mv_maxabs(rr));
+    } else if (verb == V_LOG) {
+        double r[32];
+        if (input_line(in, nin, header, lineno - 1, r, 32) != 0)
+            return; /* a line too long to read back here */
+        ga_mv B = ga_mv_zero(), X = ga_mv_zero();
+        memcpy(B.c + GA_BLADE_E12, v, 10 * sizeof *v);
+        memcpy(X.c, r, sizeof r);
+        double d = ga_mv_maxabs(ga_mv_sub(ga_mv_exp(B), X)) / fmax(1.0, ga_mv_maxabs(X));
+        FZ_CHECK(d <= 1e-9, "versor log: output line %ld: exp(log R) misses R by %.3g", lineno, d);
+    }
+}
 
 /* Read the output back and check it. */
-static void check_output(int kind, int affine, int pose)
+static void check_output(int kind, int affine, int pose, int verb, const uint8_t *in, size_t nin, int header)
 {
     FILE *f = fopen(out_path, "r");
     FZ_CHECK(f != NULL, "exit status 0 but no output file");
@@ -136,6 +215,12 @@ static void check_output(int kind, int affine, int pose)
         }
         /* interp: t and the pose (8 or 17), then with --with the velocity and
            acceleration: 6 numbers each (a twist), or 16 each on affine */
+        if (kind == K_VERSOR) {
+            FZ_CHECK(width < 0 || k == width, "output line %ld: %d numbers after %d", lineno, k, width);
+            width = k;
+            check_versor(verb, v, k, lineno, in, nin, header);
+            continue;
+        }
         int base = kind == K_INTERP ? (k >= 17 && !pose ? 17 : 8) : k, extra = k - base;
         FZ_CHECK(kind == K_INTERP ? extra == 0 || extra == 6 || extra == 12 || extra == 16 || extra == 32
                                   : k == 6 || k == 16,
@@ -217,7 +302,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char *argv[MAXARG + 12];
     int argc = 0;
     argv[argc++] = "garotor";
-    int want_vel = 0, want_svg = 0, kind = -1, affine = 0, pose = 0;
+    int want_vel = 0, want_svg = 0, kind = -1, affine = 0, pose = 0, verb = -1, header = 0;
     static char capped[3][32];
     /* the span of the keys' times (the first number of each input line), for
        capping --rate below: HZ is lowered so that it gives at most 4096
@@ -249,11 +334,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 kind = K_LOG;
             else if (!strcmp(tok, "interp"))
                 kind = K_INTERP;
+            else if (!strcmp(tok, "versor"))
+                kind = K_VERSOR;
             else
                 return 0;
             argv[argc++] = tok;
             continue;
         }
+        if (kind == K_VERSOR && argc == 2) /* the operation, as given */
+            verb = !strcmp(tok, "exp")   ? V_EXP
+                 : !strcmp(tok, "log")   ? V_LOG
+                 : !strcmp(tok, "apply") ? V_APPLY
+                                         : -1;
+        header |= !strcmp(tok, "--header");
         if (argc >= MAXARG)
             return 0;
         if (!strcmp(tok, "--help") || !strcmp(tok, "-h"))
@@ -344,7 +437,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (rc == 2) {
         check_no_stray_files(0);
     } else {
-        check_output(kind, affine, pose);
+        FZ_CHECK(kind != K_VERSOR || verb >= 0, "versor: exit status 0 for an unknown operation");
+        check_output(kind, affine, pose, verb, rest, nin, header);
         check_no_stray_files(1);
     }
     unlink(out_path);

@@ -111,6 +111,22 @@ for k, b in {"identity": [1, 0, 0, 0, 0, 0, 0], "general": [0.5, 0.5, -0.5, 0.5,
 for k, c in {"point": [0, 1, 2, 3, -0.5, 0.5] + [0] * 26, "zero": [0] * 32,
              "nan": [NAN] + [0] * 31, "huge": [1e308] * 32}.items():
     write("numeric", "mv-" + k, bytes([OPS["mv"]]) + doubles(c + [1]))
+# exp and log of the general algebra (on the bivector part, and log of X):
+# a rotor's coefficients, then bivectors of each kind (indices 6..15 = e12..e45)
+for k, b in {"rotation": [1.2, 0, 0, 0, 0, 0, 0, 0, 0, 0], "dilation": [0] * 9 + [0.7],
+             "translation": [0, 0, 0.5, 0.5, 0, 0, 0, 0, 0, 0],
+             "rotation-transversion": [0, 0, 0.25, -0.25, 0.5, 0, 0, 0, 0, 0],
+             "two-rotations": [1.4, 0, 0, 0, 0, 0, 0, 1.3, 0, 0],
+             "near-half-turn": ["pi-", 0, 0, 0, 0, 0, 0, 0, 0, 0],
+             "dense": [0.2, -0.3, 0.4, 0.1, 0.25, -0.6, 0.35, 0.15, -0.2, 0.45],
+             "big": [8, 0, 0, 0, 0, 0, 0, 0, 0, -8]}.items():
+    write("numeric", "mv-exp-log-" + k, bytes([OPS["mv"]]) + doubles([0] * 6 + b + [0] * 16 + [1]))
+write("numeric", "mv-log-rotor", bytes([OPS["mv"]]) + doubles([0.6] + [0] * 5 + [0.8] + [0] * 25 + [1]))
+# text after the doubles: ga_mv_parse (docs/conventions.md, "Multivectors as text")
+for k, t in {"text": "1 + 2e12 - 0.5e1234", "text-python-repr": "3 + e12 - 0.5*e12345",
+             "text-exponents": "-1e+20e12345 + 2.5E-3 - .5e1 + 1e-5", "text-bad-name": "2e21",
+             "text-overflow": "1e+999e1"}.items():
+    write("numeric", "mv-" + k, bytes([OPS["mv"]]) + doubles([0.5] * 32 + [1]) + t.encode())
 PTS = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
 for which in range(8):
     write("numeric", "points-object-%d" % which, bytes([OPS["points"]]) +
@@ -195,6 +211,20 @@ P1, P2, P3 = "0 0 0 0 0 0 1", "1 2 0 0 0 0.7071067811865476 0.7071067811865476",
 KEYS = "0 %s\n1 %s\n2.5 %s\n" % (M1, M2, M3)
 POSES = "0 %s\n1 %s\n2.5 %s\n" % (P1, P2, P3)
 VEL = "0.1 0 0 1 0 0\n0 0.2 0 0 1 0\n0 0 0 0 0 1\n"
+
+
+def mv32(nz):
+    """32 coefficients in canonical order, nz: index -> value."""
+    return " ".join(repr(float(nz[i])) if i in nz else "0" for i in range(32))
+
+
+# bivectors e12 e13 e14 e15 e23 e24 e25 e34 e35 e45: a rotation, a dilation,
+# a translation (null), a rotation with a transversion, dense, zero
+BIVS = [[0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0, 0, 0, 0, -0.4],
+        [0, 0, 0.5, 0.5, 0, 0, 0, 0, 0, 0], [0, 0, 0.25, -0.25, 0.5, 0, 0, 0, 0, 0],
+        [0.2, -0.3, 0.4, 0.1, 0.25, -0.6, 0.35, 0.15, -0.2, 0.45], [0] * 10]
+ROT = mv32({0: 0.6, 6: 0.8})                                   # cos + sin e12
+DIL = mv32({0: 1.0810723718384549, 15: -0.41075232580281562})  # exp(-0.4 e45): x e^0.8
 TOOL = {
     "exp-cga": "exp\n" + TW,
     "exp-matrix": "exp --group matrix\n" + TW,
@@ -255,6 +285,22 @@ TOOL = {
     "interp-time-unit-bad": "interp --format pose --time-unit ms --samples 3\n" + POSES,
     "interp-long-decimal": "interp --format pose --samples 3\n1e-700 %s\n0.%s1 %s\n1e300 %s\n"
                            % (P1, "0" * 500, P2, P3),
+    # versor (docs/tool.md, "garotor versor"): 10 numbers, 32, 32 + 3
+    "versor-exp": "versor exp\n" + "\n".join(" ".join(map(str, b)) for b in BIVS) + "\n",
+    "versor-exp-overflow": "versor exp\n0 0 0 0 0 0 0 0 0 800\n",
+    "versor-exp-short": "versor exp\n0 0 0 0 0 0 0 0 0\n",
+    "versor-log": "versor log\n%s\n%s\n%s\n" % (mv32({0: 1}), ROT, DIL),
+    "versor-log-csv-header": "versor log --header\n" + ",".join("c%d" % i for i in range(32)) + "\n"
+                             + ROT.replace(" ", ",") + "\n",
+    "versor-log-not-rotor": "versor log\n%s\n" % mv32({0: 2}),
+    "versor-log-odd": "versor log\n%s\n" % mv32({1: 1}),
+    "versor-log-drifted": "versor log\n%s\n" % mv32({0: 0.6, 6: 0.80000002}),
+    "versor-apply": "versor apply\n%s 1 2 3\n%s 2 0 0\n%s -1 0.5 4\n" % (DIL, mv32({4: 1}), ROT),
+    "versor-apply-to-infinity": "versor apply\n%s 0 0 0\n" % mv32({4: 1}),
+    "versor-apply-mixed": "versor apply\n%s 1 2 3\n" % mv32({0: 1, 1: 1}),
+    "versor-apply-zero": "versor apply\n%s 1 2 3\n" % mv32({}),
+    "versor-apply-nan": "versor apply\n%s 1 nan 3\n" % mv32({0: 1}),
+    "versor-unknown": "versor sqrt\n%s\n" % mv32({0: 1}),
 }
 for name, text in TOOL.items():
     write("tool", name, text)

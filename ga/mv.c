@@ -9,6 +9,9 @@
 #include <garotor/mv.h>
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* The canonical order of docs/conventions.md, as bit masks (grade first, then lexicographic). */
 static const unsigned char blade_mask[32] = {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x03, 0x05, 0x09, 0x11, 0x06,
@@ -157,6 +160,36 @@ ga_mv ga_mv_lc(ga_mv a, ga_mv b)
     return r;
 }
 
+/* The terms <A_r B_s>_|r-s| of the geometric product, with (hestenes) or
+   without the terms where r or s is 0. Blade by blade, the 32 x 32 pairs: a
+   product of basis blades is one basis blade, of grade |r - s| exactly when
+   one blade's vectors are all in the other (the blade table is small; this is
+   not a hot path). */
+static ga_mv dot_product(ga_mv a, ga_mv b, int hestenes)
+{
+    /* the inverse of blade_mask: the index of each mask */
+    static const unsigned char index_of[32] = {0, 1, 2,  6,  3,  7,  10, 16, 4,  8,  11, 17, 13, 19, 22, 26,
+                                               5, 9, 12, 18, 14, 20, 23, 27, 15, 21, 24, 28, 25, 29, 30, 31};
+    ga_mv r = {{0}};
+    for (int i = 0; i < 32; i++) {
+        unsigned ma = blade_mask[i];
+        int ga = popcount5(ma);
+        if (hestenes && ga == 0)
+            continue;
+        for (int j = 0; j < 32; j++) {
+            unsigned mb = blade_mask[j];
+            int gb = popcount5(mb);
+            if ((hestenes && gb == 0) || ((ma & mb) != ma && (ma & mb) != mb))
+                continue;
+            r.c[index_of[ma ^ mb]] += blade_sign(ma, mb) * a.c[i] * b.c[j];
+        }
+    }
+    return r;
+}
+
+ga_mv ga_mv_dot(ga_mv a, ga_mv b) { return dot_product(a, b, 0); }
+ga_mv ga_mv_ip(ga_mv a, ga_mv b) { return dot_product(a, b, 1); }
+
 double ga_mv_sp(ga_mv a, ga_mv b)
 {
     /* <ab>_0 pairs each blade with itself */
@@ -237,6 +270,132 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
     for (int i = 0; i < 32; i++) r.c[i] = ldexp(r.c[i], -e);
     if (!ga_mv_isfinite(r))
         return GA_ERR_SINGULAR; /* the inverse overflows, as ga_mat4_inverse */
+    *out = r;
+    return GA_OK;
+}
+
+/* ---- text ------------------------------------------------------------------ */
+
+/* One term: " - " / " + " between terms ("-" first), the coefficient with
+   %.17g unless it is +-1 on a blade, then the blade's name. */
+int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
+{
+    if (!ga_mv_isfinite(a))
+        return GA_ERR_NOTFINITE;
+    char tmp[GA_MV_TEXT_MAX];
+    size_t n = 0;
+    for (int i = 0; i < 32; i++) {
+        double v = a.c[i];
+        if (v == 0.0)
+            continue;
+        const char *sep = signbit(v) ? (n ? " - " : "-") : (n ? " + " : "");
+        int k = i > 0 && fabs(v) == 1.0
+                  ? snprintf(tmp + n, sizeof tmp - n, "%s%s", sep, blade_names[i])
+                  : snprintf(tmp + n, sizeof tmp - n, "%s%.17g%s", sep, fabs(v), i > 0 ? blade_names[i] : "");
+        if (k < 0 || (size_t)k >= sizeof tmp - n)
+            return GA_ERR_ARG; /* cannot happen: GA_MV_TEXT_MAX is the longest text */
+        n += (size_t)k;
+    }
+    if (n == 0)
+        tmp[n++] = '0', tmp[n] = '\0';
+    if (!buf || n + 1 > cap)
+        return GA_ERR_ARG;
+    memcpy(buf, tmp, n + 1);
+    *len = n;
+    return GA_OK;
+}
+
+static const char *skip_blanks(const char *s)
+{
+    while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
+    return s;
+}
+
+/* A blade name at s ("e" and its digits): its index, or -1. */
+static int read_blade(const char **s)
+{
+    const char *p = *s;
+    if (*p != 'e' || !(p[1] >= '0' && p[1] <= '9'))
+        return -1;
+    size_t k = 1;
+    while (p[k] >= '0' && p[k] <= '9') k++;
+    for (int i = 1; i < 32; i++)
+        if (strlen(blade_names[i]) == k && strncmp(blade_names[i], p, k) == 0) {
+            *s = p + k;
+            return i;
+        }
+    return -1;
+}
+
+/* A decimal number at s: digits, an optional fraction, and an exponent only
+   as 'e' or 'E' with a sign, or 'E' with digits ("e" and a digit begins a
+   blade name). 1 and its value, or 0. */
+static int read_number(const char **s, double *out)
+{
+    const char *p = *s;
+    size_t k = 0, digits = 0;
+    while (p[k] >= '0' && p[k] <= '9') k++, digits++;
+    if (p[k] == '.') {
+        k++;
+        while (p[k] >= '0' && p[k] <= '9') k++, digits++;
+    }
+    if (digits == 0)
+        return 0;
+    if ((p[k] == 'e' || p[k] == 'E') && (p[k + 1] == '+' || p[k + 1] == '-') && p[k + 2] >= '0' &&
+        p[k + 2] <= '9') {
+        k += 2;
+        while (p[k] >= '0' && p[k] <= '9') k++;
+    } else if (p[k] == 'E' && p[k + 1] >= '0' && p[k + 1] <= '9') {
+        k++;
+        while (p[k] >= '0' && p[k] <= '9') k++;
+    }
+    char tmp[400];
+    if (k >= sizeof tmp)
+        return 0;
+    memcpy(tmp, p, k);
+    tmp[k] = '\0';
+    *out = strtod(tmp, NULL);
+    *s = p + k;
+    return 1;
+}
+
+int ga_mv_parse(const char *text, ga_mv *out)
+{
+    if (!text)
+        return GA_ERR_ARG;
+    ga_mv r = ga_mv_zero();
+    const char *s = skip_blanks(text);
+    int terms = 0, finite = 1;
+    while (*s) {
+        double sign = 1.0, v = 1.0;
+        if (*s == '+' || *s == '-') {
+            sign = *s == '-' ? -1.0 : 1.0;
+            s = skip_blanks(s + 1);
+        } else if (terms > 0)
+            return GA_ERR_ARG; /* two terms need a sign between them */
+        int has_num = read_number(&s, &v), i = 0;
+        if (has_num) {
+            const char *t = skip_blanks(s);
+            if (*t == '*')
+                t = skip_blanks(t + 1);
+            else if (*t != 'e')
+                t = s;
+            i = read_blade(&t);
+            if (i < 0 && t != s)
+                return GA_ERR_ARG; /* "2 *" or "2 e9" */
+            i = i < 0 ? 0 : i;
+            s = t;
+        } else if ((i = read_blade(&s)) < 0)
+            return GA_ERR_ARG;
+        finite &= isfinite(v);
+        r.c[i] += sign * v;
+        terms++;
+        s = skip_blanks(s);
+    }
+    if (terms == 0)
+        return GA_ERR_ARG;
+    if (!finite)
+        return GA_ERR_NOTFINITE;
     *out = r;
     return GA_OK;
 }

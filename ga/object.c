@@ -249,11 +249,92 @@ int ga_point_distance(ga_vec3 x, ga_mv O, double *out)
     return st;
 }
 
-/* The angle in [0, pi/2] between two lines of directions a and b. */
+/* The angle in [0, pi/2] between two lines of directions a and b:
+   atan2(|a ^ b|, |a . b|), the sine from the wedge (cross product) and the
+   cosine from the inner product, accurate near 0 and near pi/2 alike (acos of
+   the cosine alone loses half the digits near 0). */
 static double line_angle(ga_vec3 a, ga_vec3 b)
 {
     ga_vec3 x = cross3(a, b);
     return atan2(sqrt(dot3(x, x)), fabs(dot3(a, b)));
+}
+
+/* Double-double arithmetic (Dekker, Knuth): a value hi + lo with |lo| <= u |hi|,
+   for the differences of squares in the angle of rounds, which cancel. */
+typedef struct {
+    double hi, lo;
+} dd;
+static dd dd_norm(double s, double e) /* |s| >= |e| */
+{
+    double h = s + e;
+    return (dd){h, e - (h - s)};
+}
+static dd dd_sum(double a, double b)
+{
+    double s = a + b, bb = s - a;
+    return dd_norm(s, (a - (s - bb)) + (b - bb));
+}
+static dd dd_prod(double a, double b)
+{
+    double p = a * b;
+    return dd_norm(p, fma(a, b, -p));
+}
+static dd dd_add(dd x, dd y)
+{
+    dd s = dd_sum(x.hi, y.hi);
+    return dd_norm(s.hi, s.lo + (x.lo + y.lo));
+}
+static dd dd_neg(dd x) { return (dd){-x.hi, -x.lo}; }
+static dd dd_mul(dd x, dd y)
+{
+    dd p = dd_prod(x.hi, y.hi);
+    return dd_norm(p.hi, p.lo + (x.hi * y.lo + x.lo * y.hi));
+}
+static dd dd_dot3(ga_vec3 a, ga_vec3 b)
+{
+    return dd_add(dd_add(dd_prod(a.x, b.x), dd_prod(a.y, b.y)), dd_prod(a.z, b.z));
+}
+
+/* The angle between a sphere (centre c, squared radius r2) and a plane (unit
+   normal m through q), or two spheres, as atan2(sine, cosine) of the normals
+   where they cross: the norm of the wedge of the normalised dual vectors and
+   their inner product, written out Euclidean. With p = m.(c - q) the distance
+   of the centre from the plane, cos = |p| / r and sin = sqrt(r^2 - p^2) / r; for
+   two spheres, with X = r1^2 + r2^2 - |c1 - c2|^2, cos = |X| / (2 r1 r2) and
+   sin = sqrt(4 r1^2 r2^2 - X^2) / (2 r1 r2) (the triangle of the radii and the
+   centres' distance). The differences of squares are taken in double-double,
+   so that the sine keeps its digits where the objects nearly touch or nearly
+   coincide. GA_ERR_DOMAIN where the sine's square is negative: no crossing. */
+static dd dd_scale(dd x, int e) { return (dd){ldexp(x.hi, e), ldexp(x.lo, e)}; }
+static int round_angle(const ga_object *a, const ga_object *b, double *out)
+{
+    dd x, n;
+    int e;
+    /* every length scaled by 2^-e (exactly) to about 1, so that no square
+       overflows or underflows: the angle does not depend on the scale */
+    if (a->kind == GA_OBJECT_SPHERE && b->kind == GA_OBJECT_SPHERE) {
+        dd d[3] = {dd_sum(a->centre.x, -b->centre.x), dd_sum(a->centre.y, -b->centre.y),
+                   dd_sum(a->centre.z, -b->centre.z)};
+        frexp(fmax(fmax(fmax(fabs(d[0].hi), fabs(d[1].hi)), fabs(d[2].hi)), sqrt(fmax(a->r2, b->r2))), &e);
+        dd D = {0.0, 0.0};
+        for (int i = 0; i < 3; i++) {
+            dd di = dd_scale(d[i], -e);
+            D = dd_add(D, dd_mul(di, di));
+        }
+        double r1 = ldexp(a->r2, -2 * e), r2 = ldexp(b->r2, -2 * e);
+        x = dd_add(dd_sum(r1, r2), dd_neg(D));
+        n = dd_add(dd_prod(4.0 * r1, r2), dd_neg(dd_mul(x, x)));
+    } else {
+        const ga_object *sp = a->kind == GA_OBJECT_SPHERE ? a : b, *pl = a->kind == GA_OBJECT_SPHERE ? b : a;
+        x = dd_add(dd_dot3(pl->direction, sp->centre), dd_neg(dd_dot3(pl->direction, pl->centre)));
+        frexp(fmax(fabs(x.hi), sqrt(sp->r2)), &e);
+        x = dd_scale(x, -e);
+        n = dd_add((dd){ldexp(sp->r2, -2 * e), 0.0}, dd_neg(dd_mul(x, x)));
+    }
+    if (!(n.hi >= 0.0))
+        return GA_ERR_DOMAIN; /* they do not cross */
+    *out = atan2(sqrt(n.hi), fabs(x.hi));
+    return GA_OK;
 }
 
 int ga_object_angle(ga_mv A, ga_mv B, double *out)
@@ -267,27 +348,15 @@ int ga_object_angle(ga_mv A, ga_mv B, double *out)
     int fa = a.kind == GA_OBJECT_PLANE || a.kind == GA_OBJECT_LINE;
     int fb = b.kind == GA_OBJECT_PLANE || b.kind == GA_OBJECT_LINE;
     if (fa && fb) {
-        double t = line_angle(a.direction, b.direction);
-        *out = (a.kind == b.kind) ? t : 0.5 * 3.14159265358979323846 - t;
+        ga_vec3 u = a.direction, v = b.direction, x = cross3(u, v);
+        /* a line and a plane: the complement of the angle of direction and
+           normal, atan2(|u . v|, |u ^ v|) with no subtraction from pi/2 */
+        *out = a.kind == b.kind ? line_angle(u, v) : atan2(fabs(dot3(u, v)), sqrt(dot3(x, x)));
         return GA_OK;
     }
     if ((a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_PLANE) &&
-        (b.kind == GA_OBJECT_SPHERE || b.kind == GA_OBJECT_PLANE)) {
-        /* the normalised dual vectors' product, written out: two spheres,
-           (r1^2 + r2^2 - |c1 - c2|^2) / (2 r1 r2); a sphere and a plane, m.(c - d m) / r */
-        double cosv;
-        if (a.kind == GA_OBJECT_SPHERE && b.kind == GA_OBJECT_SPHERE) {
-            ga_vec3 d = sub3(a.centre, b.centre);
-            cosv = (a.r2 + b.r2 - dot3(d, d)) / (2.0 * sqrt(a.r2 * b.r2));
-        } else {
-            ga_object sp = a.kind == GA_OBJECT_SPHERE ? a : b, pl = a.kind == GA_OBJECT_SPHERE ? b : a;
-            cosv = dot3(pl.direction, sub3(sp.centre, pl.centre)) / sqrt(sp.r2);
-        }
-        if (!(fabs(cosv) <= 1.0))
-            return GA_ERR_DOMAIN; /* they do not cross */
-        *out = acos(fabs(cosv));
-        return GA_OK;
-    }
+        (b.kind == GA_OBJECT_SPHERE || b.kind == GA_OBJECT_PLANE))
+        return round_angle(&a, &b, out);
     return GA_ERR_NOTBLADE;
 }
 

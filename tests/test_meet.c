@@ -308,6 +308,59 @@ int main(void)
                   GA_ERR_DOMAIN);
     tk_add_status(tk_get("angles: statuses"),
                   ga_object_angle(ga_sphere_dual(z, 1), ga_line_from_points(z, ez), &ang), GA_ERR_NOTBLADE);
+    /* accuracy of the angle near 0 and near pi/2, against constructions whose
+       angle is known in closed form from their (exact) doubles; each case
+       builds angles e and pi/2 - e, e = 1e-8. The sine comes from a wedge
+       and the cosine from an inner product, so the relative error is a few
+       roundings: of the constructor and read-back (a unit vector, a centre,
+       r^2, each within 2 u relative), of the sine and cosine (a few u), of
+       atan2 (1 u). 16 u covers them; acos of the cosine alone is off by
+       about sqrt(u) ~ 1.5e-8 absolute, which is 100% relative at 1e-8. */
+    const double e = 1e-8, rtol = 16 * DBL_EPSILON;
+    tk_check *acc_ang = tk_get("angle near 0 and pi/2: relative error <= 16 u");
+    for (int k = 0; k < 2; k++) {
+        /* k = 0: the angle near 0; k = 1: near pi/2 */
+        double want;
+        /* planes: normals ez and (e, 0, 1) meet at atan(e); ez and (1, 0, e) at atan2(1, e) */
+        ga_vec3 n2 = k ? (ga_vec3){1, 0, e} : (ga_vec3){e, 0, 1};
+        want = k ? atan2(1.0, e) : atan(e);
+        tk_add_status(tk_get("angles: statuses"),
+                      ga_object_angle(ga_plane_dual(ez, 0), ga_plane_dual(n2, 3), &ang), GA_OK);
+        tk_add_tol(acc_ang, fabs(ang - want) / want, rtol);
+        /* lines: directions ex and (1, e, 0), or (e, 1, 0) */
+        ga_vec3 d2 = k ? (ga_vec3){e, 1, 0} : (ga_vec3){1, e, 0};
+        tk_add_status(tk_get("angles: statuses"),
+                      ga_object_angle(ga_line_from_points(z, ex), ga_line_from_points(ez, add(ez, d2)), &ang),
+                      GA_OK);
+        tk_add_tol(acc_ang, fabs(ang - want) / want, rtol);
+        /* a line and the plane z = 0: direction (1, 0, e) is atan(e) out of it,
+           (e, 0, 1) is atan2(1, e) */
+        tk_add_status(
+            tk_get("angles: statuses"),
+            ga_object_angle(ga_line_from_points(ex, add(ex, k ? (ga_vec3){e, 0, 1} : (ga_vec3){1, 0, e})),
+                            ga_plane_dual(ez, 0), &ang),
+            GA_OK);
+        tk_add_tol(acc_ang, fabs(ang - want) / want, rtol);
+        /* a sphere of radius 3 centred at (0, 0, h) and the plane z = 0 cross
+           at acos(h / 3) = atan2(sqrt((3 - h)(3 + h)), h): h the double below 3
+           gives about 1.7e-8 (h / 3 is no double: acos of it rounded is off by
+           13%), h = 3e-8 about pi/2 - 1e-8 */
+        double h = k ? 3 * e : nextafter(3.0, 0.0);
+        want = atan2(sqrt((3 - h) * (3 + h)), h);
+        tk_add_status(tk_get("angles: statuses"),
+                      ga_object_angle(ga_sphere_dual((ga_vec3){0, 0, h}, 3), ga_plane_dual(ez, 0), &ang),
+                      GA_OK);
+        tk_add_tol(acc_ang, fabs(ang - want) / want, rtol);
+        /* unit spheres d apart: the triangle of radii 1, 1 and d has the angle
+           2 asin(d / 2) between the normals where they cross; d = e, or the d
+           of the angle pi/2 - e (the angle taken for the double d) */
+        double d = k ? 2 * sin(TK_PI / 4 - e / 2) : e;
+        want = 2 * asin(d / 2);
+        tk_add_status(tk_get("angles: statuses"),
+                      ga_object_angle(ga_sphere_dual(z, 1), ga_sphere_dual((ga_vec3){0, 0, d}, 1), &ang),
+                      GA_OK);
+        tk_add_tol(acc_ang, fabs(ang - want) / want, rtol);
+    }
     /* antiparallel planes: a half turn about a perpendicular axis */
     ga_rotor H;
     ga_vec3 mz = {0, 0, -1};

@@ -595,8 +595,84 @@ svg_ok "demo --svg" "$d/demo.svg"
 "$G" --svg "$d/demo3.svg" --view yz >/dev/null || fail "garotor --svg (the demo, options only)"
 svg_ok "garotor --svg" "$d/demo3.svg"
 
+# ---- versor: exp, log and apply of the general algebra (docs/versors.md) ---
+# mv32 K=V ...: a line of 32 coefficients, V at canonical index K, 0 elsewhere
+mv32() {
+    awk -v set="$*" 'BEGIN { for (i = 0; i < 32; i++) c[i] = 0
+        n = split(set, kv, " "); for (j = 1; j <= n; j++) { split(kv[j], p, "="); c[p[1]] = p[2] }
+        for (i = 0; i < 32; i++) printf "%s%s", (i ? " " : ""), c[i]; printf "\n" }'
+}
+# bivectors (e12 e13 e14 e15 e23 e24 e25 e34 e35 e45) with every rotation part
+# below a half-angle of pi/2: a rotation, a dilation, a translation (null), a
+# transversion (null), a rotation with a dilation, a mixture, zero
+cat >"$d/biv" <<'B'
+0.7 0 0 0 0 0 0 0 0 0
+0 0 0 0 0 0 0 0 0 -0.4
+0 0 0.5 0.5 0 0 0 0 0 0
+0 0 0.25 -0.25 0.5 0 0 0 0 0
+0 0 0 0 0 0 0 0 0 0.3
+0.2 -0.3 0.4 0.1 0.25 -0.6 0.35 0.15 -0.2 0.45
+0 0 0 0 0 0 0 0 0 0
+B
+"$G" versor exp --in "$d/biv" --out "$d/rot" || fail "versor exp"
+[ "$(wc -l <"$d/rot")" -eq 7 ] && [ "$(awk '{ print NF }' "$d/rot" | sort -u)" = 32 ] ||
+    fail "versor exp writes 32 numbers a line, one line per bivector"
+"$G" versor log --in "$d/rot" --out "$d/biv2" || fail "versor log"
+paste -d ' ' "$d/biv" "$d/biv2" | awk '{ for (i = 1; i <= 10; i++) { e = $i - $(i + 10)
+    if (e < 0) e = -e; if (e > 1e-13) { printf "versor log(exp B) line %d: %g\n", NR, e; bad = 1 } } }
+    END { exit bad }' || fail "versor: log(exp(B)) = B to 1e-13"
+# the dilation exp(a e45) scales by e^(-2a) about the origin: (1, 2, 3) by e^0.8
+printf '0 0 0 0 0 0 0 0 0 -0.4\n' | "$G" versor exp | awk '{ print $0, 1, 2, 3 }' >"$d/dil"
+"$G" versor apply --in "$d/dil" | awk '{ k = exp(0.8); e = 0
+    for (i = 1; i <= 3; i++) { x = $i - i * k; if (x < 0) x = -x; if (x > e) e = x }
+    if (NF != 3 || e > 4e-15 * 3 * k) { printf "dilation: %s (error %g)\n", $0, e; exit 1 } }' ||
+    fail "versor apply: a dilation by e^0.8"
+# errors: counts, no rotor, no versor, a point at infinity, overflow, NaN
+printf '0 0 0 0 0 0 0 0 0\n' >"$d/v9"
+expect_error "versor exp: wrong count" "v9:1: expected 10 numbers (a bivector: e12 " \
+    "$G" versor exp --in "$d/v9" --out "$d/out"
+head -n 1 "$d/biv" >"$d/v10"
+expect_error "versor log: wrong count" "v10:1: expected 32 numbers (a rotor" \
+    "$G" versor log --in "$d/v10" --out "$d/out"
+{ head -n 1 "$d/rot"; mv32 0=1; } >"$d/v32"
+expect_error "versor apply: wrong count" "v32:1: expected 35 numbers (a versor (32 coefficients) then a point (3)), found 32" \
+    "$G" versor apply --in "$d/v32" --out "$d/out"
+{ head -n 1 "$d/rot"; mv32 0=2; } >"$d/notrotor"
+expect_error "versor log: R ~R = 4" "notrotor:2: no real logarithm: not a rotor" \
+    "$G" versor log --in "$d/notrotor" --out "$d/out"
+mv32 1=1 >"$d/odd"
+expect_error "versor log: an odd versor" "odd:1: no real logarithm: not a rotor" \
+    "$G" versor log --in "$d/odd" --out "$d/out"
+# 0.8 + 0.6 e1234 (R ~R = 1 + 0.96 e1234), and cos + sin e12 off unit norm by
+# 3.2e-8 (the tolerance is 1e-9)
+mv32 0=0.8 26=0.6 >"$d/quad"
+mv32 0=0.6 6=0.80000002 >"$d/drift"
+for f in quad drift; do
+    expect_error "versor log: $f" "$f:1: no real logarithm" "$G" versor log --in "$d/$f" --out "$d/out"
+done
+{ head -n 1 "$d/rot"; mv32 0=0.6 6=0.8 | sed 's/^0.6 0/0.6 nan/'; } >"$d/vnan"
+expect_error "versor log: NaN" "vnan:2: number 2 is not finite" "$G" versor log --in "$d/vnan" --out "$d/out"
+printf '0 0 0 0 0 0 0 0 0 800\n' >"$d/huge"
+expect_error "versor exp: cosh overflows" "huge:1: outside the domain" "$G" versor exp --in "$d/huge" --out "$d/out"
+printf '%s 1 2 3\n' "$(mv32 0=1 1=1)" >"$d/mixed"
+expect_error "versor apply: even and odd" "mixed:1: not a versor: it has both even and odd parts" \
+    "$G" versor apply --in "$d/mixed" --out "$d/out"
+printf '%s 1 2 3\n' "$(mv32)" >"$d/zero"
+expect_error "versor apply: V = 0" "zero:1: not a versor: not invertible" \
+    "$G" versor apply --in "$d/zero" --out "$d/out"
+# the inversion in the unit sphere (the odd versor e4) sends the origin to infinity
+printf '%s 1 1 1\n%s 0 0 0\n' "$(mv32 4=1)" "$(mv32 4=1)" >"$d/toinf"
+expect_error "versor apply: the centre of an inversion" "toinf:2: the point goes to infinity" \
+    "$G" versor apply --in "$d/toinf" --out "$d/out"
+printf '%s 1 inf 3\n' "$(mv32 0=1)" >"$d/pinf"
+expect_error "versor apply: an infinite point" "pinf:1: number 34 is not finite" \
+    "$G" versor apply --in "$d/pinf" --out "$d/out"
+expect_error "versor: no operation" "garotor versor: which one: exp, log or apply?" "$G" versor
+expect_error "versor: unknown operation" "garotor versor: unknown operation 'sqrt' (exp, log or apply)" \
+    "$G" versor sqrt
+
 # --help of every command exits 0 and names it
-for c in demo exp log interp; do
+for c in demo exp log interp versor; do
     "$G" "$c" --help | grep -q "usage: garotor" || fail "$c --help"
 done
 

@@ -26,6 +26,8 @@ static int one(int verb, const double *v, double *r, const tio_items *in, size_t
     case VERB_EXP:
         memcpy(X.c + GA_BLADE_E12, v, 10 * sizeof *v);
         X = ga_mv_exp(X);
+        if (!ga_mv_isfinite(X)) /* a hyperbolic part too large: cosh overflows */
+            return tio_error(in, i, "%s", ga_status_string(GA_ERR_DOMAIN));
         memcpy(r, X.c, 32 * sizeof *r);
         return 0;
     case VERB_LOG:

@@ -19,6 +19,8 @@
 
 #include "types.h"
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -73,6 +75,13 @@ ga_mv ga_mv_op(ga_mv a, ga_mv b);
 ga_mv ga_mv_lc(ga_mv a, ga_mv b);
 /** Scalar product <a b>_0. For vectors it is the inner product a.b. */
 double ga_mv_sp(ga_mv a, ga_mv b);
+/** The "fat dot" a . b = sum over grades r, s of <<a>_r <b>_s>_|r-s|, scalars
+ *  included (2 . x = 2 x): the inner product of Dorst-Fontijne-Mann §B.1 and
+ *  ganja.js's `|` (docs/conventions.md, "Inner products"). */
+ga_mv ga_mv_dot(ga_mv a, ga_mv b);
+/** Hestenes' inner product: the fat dot without the terms where r or s is 0
+ *  (a scalar's inner product with anything is 0); clifford's (Python) `|`. */
+ga_mv ga_mv_ip(ga_mv a, ga_mv b);
 
 /* ---- involutions and grades ------------------------------------------- */
 /** Reverse ~a: a grade-k part is multiplied by (-1)^(k(k-1)/2). */
@@ -89,6 +98,33 @@ ga_mv ga_mv_grade(ga_mv a, int k);
 ga_mv ga_mv_dual(ga_mv a);
 /** Undual a I, the inverse of ga_mv_dual. */
 ga_mv ga_mv_undual(ga_mv a);
+
+/* ---- text --------------------------------------------------------------- */
+/** Bytes that ga_mv_format may need, with the terminating NUL: the longest
+ *  text has 32 terms, each a %.17g number of 23 bytes ("1.7976931348623157e+308"),
+ *  "-" before the first and " - " before the others, and the 31 names (111
+ *  bytes): 24 + 31 * 26 + 111 + 1. */
+#define GA_MV_TEXT_MAX 942
+/** a as text, the nonzero terms in canonical order with the blade names of
+ *  docs/conventions.md: "1 + 2e12 - 0.5e1234", "-e1 + 1.0000000000000001e-05e2",
+ *  "0" for zero. Coefficients are written with %.17g (they read back as the
+ *  same doubles; an exponent always has its sign), +-1 on a blade as the name
+ *  alone. Writes the text and its NUL into buf and its length (without the
+ *  NUL) to *len; GA_ERR_ARG if cap is too small (GA_MV_TEXT_MAX always
+ *  suffices) or buf is NULL, GA_ERR_NOTFINITE for NaN or Inf; nothing written
+ *  then. Uses the C library's number formatting: the "C" locale's '.' unless
+ *  the program has called setlocale. */
+int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len);
+/** Reads what ga_mv_format writes, and a little more: terms separated by + or
+ *  -, each a decimal number, a blade name (e1, ..., e12345, in canonical
+ *  order only) or a number and a name, optionally with blanks or '*' between
+ *  ("2e12", "2 e12", "2*e12"); a blade given twice adds up. A number's
+ *  exponent is written with its sign ("1e+12", "2.5e-3") or with 'E'
+ *  ("1E12"): 'e' followed by a digit begins a blade name, so "2e12" is 2 e12,
+ *  as ganja.js prints it. GA_ERR_ARG for anything else (an empty text, an
+ *  unknown name, "e21", "nan"), GA_ERR_NOTFINITE for a number that
+ *  overflows; *out untouched then. */
+int ga_mv_parse(const char *text, ga_mv *out);
 
 /* ---- norm and inverse ------------------------------------------------- */
 /** The signed squared norm <a ~a>_0 (negative for some blades of G(4,1)). */

@@ -118,8 +118,10 @@ int ga_point_distance(ga_vec3 x, ga_mv O, double *out);
  *  planes (between normals), lines (between directions), a line and a plane
  *  (pi/2 - the angle of direction and normal), and spheres or a sphere and a
  *  plane (the angle of their tangent planes where they cross: cos = |s1.s2| /
- *  sqrt(s1^2 s2^2) for the dual vectors, DFM §14.3). GA_ERR_NOTBLADE for other
- *  pairs, GA_ERR_IMAGINARY for an imaginary sphere. */
+ *  sqrt(s1^2 s2^2) for the dual vectors, DFM §14.3). Taken as atan2(sine,
+ *  cosine), the sine from the wedge, so that angles near 0 and near pi/2 keep
+ *  their relative accuracy. GA_ERR_DOMAIN for rounds that do not cross,
+ *  GA_ERR_NOTBLADE for other pairs, GA_ERR_IMAGINARY for an imaginary sphere. */
 int ga_object_angle(ga_mv A, ga_mv B, double *out);
 
 /** A rigid motion taking A to B, two objects of the same kind (planes, lines,
