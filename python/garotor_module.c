@@ -741,10 +741,11 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
         return -1;
     ga_scheme scheme;
     if (ga_scheme_by_name(sname, &scheme) != GA_OK) {
-        PyErr_Format(
-            PyExc_ValueError,
-            "Path: scheme must be 'screw', 'bivector', 'quadratic', 'smooth', 'lihao2' or 'lihao3', not '%s'",
-            sname);
+        PyErr_Format(PyExc_ValueError,
+                     "Path: scheme must be 'screw', 'bivector', 'quadratic', 'smooth', 'lihao2', 'lihao3', "
+                     "'decoupled', "
+                     "'decoupled-c2' or 'c2', not '%s'",
+                     sname);
         return -1;
     }
     int rc = -1;
@@ -982,7 +983,8 @@ static PyTypeObject PathType = {
     .tp_doc =
         "Path(times, poses, scheme='screw', group='cga', velocities=None): a path through key poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
-        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3; group: cga, matrix, affine;\n"
+        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, c2 (the last\n"
+        "three on cga and matrix); group: cga, matrix, affine;\n"
         "velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6).",
     .tp_methods = Path_methods,
     .tp_getset = Path_getset,

@@ -86,7 +86,7 @@ cat >"$d/keys" <<'K'
 1  1 0 0  0 0 0.7071067811865476 0.7071067811865476
 3  2 1 0  0 0 1 0
 K
-for s in screw bivector quadratic smooth lihao2 lihao3; do
+for s in screw bivector quadratic smooth lihao2 lihao3 c2; do
     for group in cga matrix; do
         "$G" interp --scheme "$s" --group "$group" --format pose --samples 7 --in "$d/keys" \
             --out "$d/s.$s.$group" || fail "interp $s $group"
@@ -384,6 +384,23 @@ expect_error "--velocities with screw" "--velocities applies only" \
 printf '0 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n1 1 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1\n' >"$d/matkeys"
 expect_error "decoupled on affine" "--scheme decoupled is not defined on --group affine" \
     "$G" interp --scheme decoupled --group affine --samples 3 --in "$d/matkeys" --out "$d/out"
+expect_error "c2 on affine" "--scheme c2 is not defined on --group affine" \
+    "$G" interp --scheme c2 --group affine --samples 3 --in "$d/matkeys" --out "$d/out"
+# c2 on keys that lie on one screw motion exp(t xi), at uneven times: that
+# motion, to 1e-13 (the samples against `garotor exp` of t xi)
+printf '%s\n' -0.7 0.4 0.9 2.6 3.1 4.4 >"$d/st"
+awk '{ t = $1; print t * 0.3, t * -0.5, t * 0.4, t * 1.2, t * 0.2, t * -0.7 }' "$d/st" | "$G" exp >"$d/sm" &&
+    paste -d ' ' "$d/st" "$d/sm" >"$d/skeys" || fail "c2 screw keys"
+awk 'BEGIN { for (k = 0; k <= 50; k++) printf "%.17g\n", -0.7 + 5.1 * k / 50 }' >"$d/stimes"
+awk '{ t = $1; printf "%.17g %.17g %.17g %.17g %.17g %.17g\n", t * 0.3, t * -0.5, t * 0.4, t * 1.2, t * 0.2, t * -0.7 }' \
+    "$d/stimes" | "$G" exp >"$d/sexp"
+for group in cga matrix; do
+    "$G" interp --scheme c2 --group "$group" --times "$d/stimes" --in "$d/skeys" >"$d/sc2" 2>"$d/err" ||
+        fail "c2 on one screw motion, $group: $(cat "$d/err")"
+    cut -d ' ' -f 2- "$d/sc2" | paste -d ' ' - "$d/sexp" | awk '{ for (i = 1; i <= 16; i++) { e = $i - $(i + 16)
+        if (e < 0) e = -e; if (e > m) m = e } } END { if (NR != 51 || m > 1e-13) { print NR, m; exit 1 } }' >"$d/err" ||
+        fail "c2 does not reproduce the screw motion on $group: $(cat "$d/err")"
+done
 expect_error "--at not numbers" "--at needs finite times" \
     "$G" interp --format pose --at 0,x --in "$K" --out "$d/out"
 expect_error "--view without --svg" "--view applies only with --svg" \

@@ -352,7 +352,7 @@ int cmd_interp(const cli_opts *o)
     if (o->scheme && ga_scheme_by_name(o->scheme, &scheme) != GA_OK) {
         fprintf(stderr,
                 "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
-                "lihao2, lihao3, decoupled or decoupled-c2, not '%s'\n",
+                "lihao2, lihao3, decoupled, decoupled-c2 or c2, not '%s'\n",
                 o->scheme);
         return 2;
     }

@@ -62,6 +62,8 @@ static const command commands[] = {
      "  --scheme decoupled  position linear, rotation by slerp (cga, matrix)\n"
      "  --scheme decoupled-c2   position by the not-a-knot cubic spline, rotation\n"
      "                      by a C2 cubic in the rotation vector (cga, matrix)\n"
+     "  --scheme c2         C2 through every key from screw motions: a cubic in the\n"
+     "                      twist on each segment (cga, matrix)\n"
      "  --samples N         N >= 2 samples from the first key's t to the last's\n"
      "  --at T1,T2,...      samples at these times instead\n"
      "  --rate HZ           samples at t0 + k/HZ, k = 0, 1, ... up to the last key\n"

@@ -175,12 +175,13 @@ typedef enum {
     GA_SCHEME_LIHAO2,
     GA_SCHEME_LIHAO3,
     GA_SCHEME_DECOUPLED,
-    GA_SCHEME_DECOUPLED_C2
+    GA_SCHEME_DECOUPLED_C2,
+    GA_SCHEME_C2
 } ga_scheme;
 
 /** The number of schemes: GA_SCHEME_SCREW .. GA_SCHEME_COUNT - 1 are all of
  *  them (for loops over every scheme). */
-#define GA_SCHEME_COUNT 8
+#define GA_SCHEME_COUNT 9
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
 

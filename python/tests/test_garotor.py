@@ -154,6 +154,38 @@ def test_acceleration_is_derivative_of_velocity(rng, scheme, group):
         assert np.abs(a).max() < 1e-12 * (1 + np.abs(p.velocity(t)).max())
 
 
+@pytest.mark.parametrize("group", ["cga", "matrix"])
+def test_c2_path(tool, rng, group):
+    """c2: the tool's samples, velocity and acceleration against differences,
+    the acceleration continuous at the keys, cga and matrix alike."""
+    n = 6
+    times, K = keys_for(rng, group, n)
+    p = garotor.Path(times, K, scheme="c2", group=group)
+    assert p.scheme == "c2"
+    t = np.concatenate([np.sort(rng.uniform(times[0], times[-1], size=30)), times])
+    rows = np.column_stack([times, K.reshape(n, 16)])
+    out = tool(["interp", "--scheme", "c2", "--group", group, "--at", ",".join("%.17g" % v for v in t)], rows)
+    assert np.array_equal(p.sample(t).reshape(-1, 16), out[:, 1:])
+    h = 1e-5
+    seg = rng.integers(0, n - 1, size=30)
+    s = times[seg] + rng.uniform(0.2, 0.8, size=30) * (times[seg + 1] - times[seg])
+    rel = garotor.compose(garotor.inverse(p.sample(s - h)), p.sample(s + h))
+    v = p.velocity(s)
+    assert np.abs(garotor.log(rel) / (2 * h) - v).max() < 1e-7 * (1 + np.abs(v).max())
+    a = p.acceleration(s)
+    fd = (p.velocity(s + h) - p.velocity(s - h)) / (2 * h)
+    assert np.abs(fd - a).max() < 1e-6 * (1 + np.abs(a).max())
+    # at an interior key, the acceleration arriving (just before) and leaving
+    ak = p.acceleration(times[1:-1])
+    e = 1e-6
+    before = p.acceleration(times[1:-1] - e)
+    assert np.abs(before - ak).max() < 1e-4 * (1 + np.abs(ak).max())
+    other = garotor.Path(times, K, scheme="c2", group="matrix" if group == "cga" else "cga")
+    assert np.abs(other.sample(t) - p.sample(t)).max() < 1e-12 * (1 + np.abs(K).max())
+    with pytest.raises(ValueError, match="cannot build"):
+        garotor.Path(times, K, scheme="c2", group="affine")
+
+
 # ---- the group operations -------------------------------------------------
 
 def test_compose_inverse_apply(rng):
