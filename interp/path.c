@@ -140,7 +140,7 @@ static int rel_log(const ga_group *g, const void *a, const void *b, double *x, d
  * c3 tau^3; tau = t - t_i), then per key DX doubles of solver scratch. */
 #define DK 13
 #define DS 21
-#define DX 15
+#define DX 12
 
 static size_t scheme_doubles(ga_scheme s, size_t N, size_t D);
 static int is_decoupled(ga_scheme s) { return s == GA_SCHEME_DECOUPLED || s == GA_SCHEME_DECOUPLED_C2; }
@@ -431,9 +431,9 @@ static void notaknot(const ga_path *p, const double *y, double *s, double *cp, d
  * it as a fixed point, 10 sweeps at most). Each sweep here linearises N at
  * the current rates (Newton) and solves the block-tridiagonal system by block
  * Thomas (without N it is block diagonally dominant: |J_r| <= 1,
- * |J_r^-1| <= pi/2 on SO(3)). A step that does not lower the largest residual
- * is halved, down to 1/64 (a damped Newton, docs/schemes.md). At most
- * C2_SWEEPS; converged when no rate moves by more than 4 DBL_EPSILON of the
+ * |J_r^-1| <= pi/2 on SO(3)); the full Newton step is taken (halving steps
+ * that raise the largest residual failed more often: docs/schemes.md). At
+ * most C2_SWEEPS; converged when no rate moves by more than 4 DBL_EPSILON of the
  * largest, or the change stops shrinking once it is below 1e-12 of it. */
 #define C2_SWEEPS 200
 
@@ -442,51 +442,19 @@ typedef struct {
     size_t d;
     const double *(*theta)(const ga_path *p, size_t seg); /* theta_i */
     double *(*rate)(const ga_path *p, size_t key);        /* w_i */
-    double *(*scratch)(const ga_path *p, size_t key);     /* d*d + 2d doubles */
+    double *(*scratch)(const ga_path *p, size_t key);     /* d*d + d doubles */
     /* m = the d x d matrix of J_r(th) (inv = 0) or of J_r(th)^-1 (inv = 1) */
     int (*jr)(const ga_path *p, const double *th, int inv, double *m);
     /* o = N(th, y) */
     int (*nonlin)(const ga_path *p, const double *th, const double *y, double *o);
 } c2_sys;
 
-/* The largest |residual| of the rows at the current rates (see above). */
-static int c2_residual(const c2_sys *s, double *res)
-{
-    ga_path *p = s->p;
-    size_t n = p->n, d = s->d;
-    double worst = 0.0, M[MAXD * MAXD], y[MAXD], t[MAXD], nl[MAXD];
-    int st;
-    for (size_t k = 1; k + 1 < n; ++k) {
-        const double *tl = s->theta(p, k - 1), *tr = s->theta(p, k), *wk = s->rate(p, k);
-        double hl = seg_len(p, k - 1), hr = seg_len(p, k);
-        if ((st = s->jr(p, tl, 1, M)))
-            return st;
-        md_vec(d, M, wk, y);
-        if ((st = s->nonlin(p, tl, y, nl)))
-            return st;
-        for (size_t j = 0; j < d; ++j)
-            nl[j] += (4.0 / hl + 4.0 / hr) * wk[j] - 6.0 * tl[j] / (hl * hl) - 6.0 * tr[j] / (hr * hr);
-        if ((st = s->jr(p, tl, 0, M)))
-            return st;
-        md_vec(d, M, s->rate(p, k - 1), t);
-        for (size_t j = 0; j < d; ++j) nl[j] += 2.0 / hl * t[j];
-        if ((st = s->jr(p, tr, 1, M)))
-            return st;
-        md_vec(d, M, s->rate(p, k + 1), t);
-        for (size_t j = 0; j < d; ++j) worst = fmax(worst, fabs(nl[j] + 2.0 / hr * t[j]));
-    }
-    *res = isfinite(worst) ? worst : INFINITY;
-    return GA_OK;
-}
-
 static int c2_solve(const c2_sys *s)
 {
     ga_path *p = s->p;
     size_t n = p->n, d = s->d, dd = d * d;
-    double prev = INFINITY, res0;
-    int st = c2_residual(s, &res0);
-    if (st != GA_OK)
-        return st;
+    double prev = INFINITY;
+    int st;
     for (int it = 0; it < C2_SWEEPS; ++it) {
         double big = 0.0, delta = 0.0;
         for (size_t k = 1; k + 1 < n; ++k) {
@@ -551,37 +519,18 @@ static int c2_solve(const c2_sys *s)
             md_mul(d, Di, U, C);
             md_vec(d, Di, rhs, y);
         }
-        /* back substitution into the step (scratch slot y + d holds the old
-           rates), then halve it while the residual grows */
         double nxt[MAXD] = {0};
         for (size_t k = n - 1; k-- > 1;) {
-            double *C = s->scratch(p, k), *y = C + dd, *old = y + d, *w = s->rate(p, k), nw[MAXD];
+            double *C = s->scratch(p, k), *y = C + dd, *w = s->rate(p, k), nw[MAXD];
             md_vec(d, C, nxt, nw);
             for (size_t j = 0; j < d; ++j) {
                 nw[j] = y[j] - nw[j];
+                delta = fmax(delta, fabs(nw[j] - w[j]));
                 big = fmax(big, fabs(nw[j]));
             }
-            memcpy(old, w, d * sizeof(double));
             memcpy(w, nw, d * sizeof(double));
             memcpy(nxt, nw, d * sizeof(double));
         }
-        double res, lam = 1.0;
-        if ((st = c2_residual(s, &res)))
-            return st;
-        while (!(res <= res0) && lam > 1.0 / 64) {
-            lam *= 0.5;
-            for (size_t k = 1; k + 1 < n; ++k) {
-                double *old = s->scratch(p, k) + dd + d, *w = s->rate(p, k);
-                for (size_t j = 0; j < d; ++j) w[j] = old[j] + 0.5 * (w[j] - old[j]);
-            }
-            if ((st = c2_residual(s, &res)))
-                return st;
-        }
-        for (size_t k = 1; k + 1 < n; ++k) {
-            const double *old = s->scratch(p, k) + dd + d, *w = s->rate(p, k);
-            for (size_t j = 0; j < d; ++j) delta = fmax(delta, fabs(w[j] - old[j]));
-        }
-        res0 = res;
         if (!isfinite(delta) || !isfinite(big))
             return GA_ERR_DOMAIN;
         if (delta <= 4 * DBL_EPSILON * big || (delta <= 1e-12 * big && delta >= prev))
@@ -746,7 +695,7 @@ static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
     case GA_SCHEME_SMOOTH: return N * D + S * D + S;
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: return N * (DK + DX) + S * DS;
-    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + 2 * D);
+    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + D);
     }
     return 0;
 }
@@ -995,7 +944,7 @@ static double *c2_rate(const ga_path *p, size_t i) { return p->vel + i * p->grou
 static double *c2_scratch(const ga_path *p, size_t i)
 {
     size_t d = p->group->dim;
-    return p->vel + p->n * d + i * (d * d + 2 * d);
+    return p->vel + p->n * d + i * (d * d + d);
 }
 static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
 {
@@ -1348,6 +1297,55 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
         return GA_OK;
     }
     return st ? st : ga_path_velocity_segment(p, seg, u, v);
+}
+
+/* ---- the growth rule (path.h) ------------------------------------------------------- */
+
+/* The Euclidean norms of the parts of x: rotation and translation on the
+ * rigid groups, the whole element on affine; returns the number of parts. */
+static size_t part_norms(const ga_group *g, const double *x, double *nrm)
+{
+    size_t parts = g->rigid ? 2 : 1, w = g->dim / parts;
+    for (size_t q = 0; q < parts; ++q) {
+        double s = 0.0;
+        for (size_t k = 0; k < w; ++k) s = hypot(s, x[q * w + k]);
+        nrm[q] = s;
+    }
+    return parts;
+}
+
+int ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
+{
+    if (!p || !out)
+        return GA_ERR_ARG;
+    const ga_group *g = p->group;
+    size_t n = p->n, parts = 1;
+    ga_path_growth r = {0.0, 0, n};
+    double chord[2] = {0.0, 0.0}, x[MAXD], rel[MAXE], nrm[2];
+    int st;
+    for (size_t j = 0; j + 1 < n; ++j) {
+        if ((st = rel_log(g, key_of(p, j), key_of(p, j + 1), x, rel)))
+            return st;
+        parts = part_norms(g, x, nrm);
+        for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / seg_len(p, j));
+    }
+    for (size_t i = 0; n > 1 && i < n; ++i) {
+        if ((st = ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x)))
+            return st;
+        part_norms(g, x, nrm);
+        double ratio = 0.0;
+        for (size_t q = 0; q < parts; ++q)
+            if (chord[q] > 0.0)
+                ratio = fmax(ratio, nrm[q] / chord[q]);
+        if (ratio > r.ratio) {
+            r.ratio = ratio;
+            r.key = i;
+        }
+        if (r.first == n && ratio > GA_PATH_GROWTH_MAX)
+            r.first = i;
+    }
+    *out = r;
+    return GA_OK;
 }
 
 /* ---- acceleration ------------------------------------------------------------------ */

@@ -282,6 +282,33 @@ int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, dou
  *  formula continued, as ga_path_eval_segment). */
 int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a);
 
+/** The growth rule (docs/schemes.md, "lihao2: growth"): a path whose
+ *  velocity at some key exceeds GA_PATH_GROWTH_MAX times the fastest chord of
+ *  the path. The chord speed of segment j is its screw velocity
+ *  s_j = plog(A_j^-1 A_{j+1})/h_j; on the rigid groups the rotation (first
+ *  three) and translation (last three) parts of a twist are measured apart
+ *  (Euclidean norms), on affine the whole algebra element. Key i's ratio is
+ *  the largest over the parts of |part of V_i| / max_j |part of s_j|, V_i
+ *  the body velocity at t_i (the segment starting there; the last key: the
+ *  one ending there); a part whose chords are all zero is not measured.
+ *  Schemes whose key velocities are averages of chords (screw, lihao3 by
+ *  default) have ratios of at most 1; lihao2's recurrence
+ *  V_{i+1} = (Ad B_i + 2 C_i)/h_i can grow along the keys without bound. */
+#define GA_PATH_GROWTH_MAX 10.0
+
+/** What ga_path_measure_growth found. */
+typedef struct {
+    double ratio; /**< the largest ratio over the keys (0 for one key) */
+    size_t key;   /**< the key where it is largest */
+    size_t first; /**< the first key whose ratio exceeds GA_PATH_GROWTH_MAX; n if none: the velocity that
+                       the segment first - 1 (from t_{first-1} to t_first) carried to it, or for key 0 the
+                       velocity given there (lihao2's v0), is the first past the rule */
+} ga_path_growth;
+
+/** Measure the growth rule on p (any scheme); GA_ERR_ARG for NULL; a failing
+ *  log or velocity is passed on. */
+int ga_path_measure_growth(const ga_path *p, ga_path_growth *out);
+
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 9
 typedef struct {
