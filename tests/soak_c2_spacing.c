@@ -44,7 +44,8 @@ int main(int argc, char **argv)
                 }
                 for (int q = 0; q < 2; ++q) {
                     ga_path p;
-                    int st = ga_path_init_mat4(&ga_group_se3, sc[q], (size_t)n, t, k, NULL, work, sizeof work, &p);
+                    int st = ga_path_init_mat4(&ga_group_se3, sc[q], (size_t)n, t, k, NULL, work, sizeof work,
+                                               &p);
                     fail[q] += st != GA_OK;
                 }
             }

@@ -1586,6 +1586,74 @@ static void test_c2(tk_rng *r)
     tk_end(&c_aff);
 }
 
+/* ---- 2e. the growth rule -------------------------------------------------------------- */
+
+/* ga_path_measure_growth (path.h): averages of chords (screw, lihao3 by
+ * default) stay at ratio <= 1; lihao2 given a first velocity far from the
+ * chords breaks the rule at key 0; one key, NULL. (The TUM-like file where
+ * lihao2's recurrence grows by itself is tests/tool_test.sh's.) */
+static void test_growth(tk_rng *r)
+{
+    tk_check c_avg = tk_begin("growth: screw and lihao3 key velocities <= the fastest chord (ratio - 1)",
+                              1e-12);
+    tk_check c_avgf = tk_begin("growth: ... so no key of theirs is flagged", 0);
+    tk_check c_l2 = tk_begin("growth: lihao2 with v0 = 5x the fastest chord flagged at key 0", 0);
+    tk_check c_arg = tk_begin("growth: NULL is GA_ERR_ARG; one key: ratio 0, none flagged", 0);
+    double c2max = 0.0;
+    for (int trial = 0; trial < 12; ++trial) {
+        keyset k;
+        random_keys(r, &k, 3 + trial % 6, 0);
+        const ga_group *g = trial % 2 ? &ga_group_se3 : &ga_group_cga;
+        const ga_scheme av[2] = {GA_SCHEME_SCREW, GA_SCHEME_LIHAO3};
+        pathbuf b;
+        ga_path_growth gr;
+        for (int si = 0; si < 2; ++si) {
+            int st = mkpath(&b, g, av[si], &k, NULL);
+            if (st == GA_OK)
+                st = ga_path_measure_growth(&b.p, &gr);
+            tk_add(&c_avg, st ? NAN : fmax(0.0, gr.ratio - 1.0));
+            tk_add_bool(&c_avgf, st == GA_OK && gr.first == (size_t)k.n && gr.key < (size_t)k.n);
+        }
+        if (mkpath(&b, g, GA_SCHEME_C2, &k, NULL) == GA_OK && ga_path_measure_growth(&b.p, &gr) == GA_OK)
+            c2max = fmax(c2max, gr.ratio);
+        /* the first chord's velocity, each part scaled to 5 times the
+           fastest chord's part */
+        double v0[6], mx[2] = {0, 0};
+        int st = mkpath(&b, g, GA_SCHEME_SCREW, &k, NULL);
+        for (int j = 0; j + 1 < k.n; ++j)
+            for (int q = 0; q < 2; ++q) {
+                const double *x = b.p.coef + 6 * j + 3 * q;
+                mx[q] = fmax(mx[q], sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) / (k.t[j + 1] - k.t[j]));
+            }
+        for (int q = 0; q < 2; ++q) {
+            const double *x = b.p.coef + 3 * q;
+            double nx = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+            for (int i = 0; i < 3; ++i) v0[3 * q + i] = 5.0 * mx[q] * x[i] / nx;
+        }
+        if (st == GA_OK)
+            st = mkpath(&b, g, GA_SCHEME_LIHAO2, &k, v0);
+        if (st == GA_OK)
+            st = ga_path_measure_growth(&b.p, &gr);
+        tk_add_bool(&c_l2, st == GA_OK && gr.first == 0 && gr.ratio >= 5.0 - 1e-12);
+    }
+    pathbuf b;
+    keyset k;
+    ga_path_growth gr;
+    k.n = 1;
+    k.t[0] = 0.5;
+    k.m[0] = rand_rigid(r, 0.1, 3.0, 2.0);
+    tk_add_status(&c_arg, ga_path_measure_growth(NULL, &gr), GA_ERR_ARG);
+    tk_add_status(&c_arg, mkpath(&b, &ga_group_se3, GA_SCHEME_LIHAO2, &k, NULL), GA_OK);
+    tk_add_status(&c_arg, ga_path_measure_growth(&b.p, NULL), GA_ERR_ARG);
+    tk_add_status(&c_arg, ga_path_measure_growth(&b.p, &gr), GA_OK);
+    tk_add_bool(&c_arg, gr.ratio == 0.0 && gr.first == 1);
+    tk_end(&c_avg);
+    tk_end(&c_avgf);
+    tk_end(&c_l2);
+    tk_end(&c_arg);
+    printf("     c2 on the same random keys: largest ratio %.3g\n", c2max);
+}
+
 static void test_errors(void)
 {
     keyset k;
@@ -1660,6 +1728,7 @@ int main(void)
     test_accel(&r);
     test_decoupled(&r);
     test_c2(&r);
+    test_growth(&r);
     test_cga_se3(&r);
     test_screw(&r);
     test_identities(&r);

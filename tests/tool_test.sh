@@ -102,6 +102,28 @@ for s in screw bivector quadratic smooth lihao2 lihao3 c2; do
         END { exit bad }' || fail "interp $s: cga and matrix agree"
 done
 
+# ---- the growth rule of lihao2 (docs/schemes.md, "lihao2: growth") on a
+# TUM-like file (tests/tum_like.awk, seeded): lihao2 gets a warning naming
+# two consecutive keys by their times as written and their lines, and
+# writes its samples (exit 0); lihao3 and c2 on the same file no warning ----
+awk -v n=300 -v seed=7 -f "$(dirname "$0")/tum_like.awk" >"$d/tum300"
+[ "$(wc -l <"$d/tum300")" -eq 300 ] || fail "tum_like.awk: not 300 keys"
+"$G" interp --format pose --normalize --scheme lihao2 --samples 50 --in "$d/tum300" >"$d/g.out" 2>"$d/g.err" ||
+    fail "lihao2 growth: exit status $? (a warning must not fail the run)"
+[ "$(wc -l <"$d/g.out")" -eq 50 ] || fail "lihao2 growth: samples not written"
+sed -n 's/.*on the segment t = \([0-9.]*\) to \([0-9.]*\) (lines \([0-9]*\) to \([0-9]*\)).*/\1 \2 \3 \4/p' "$d/g.err" >"$d/g.seg"
+grep -q "warning: .*tum300: the lihao2 path's velocity grows past 3 times the fastest chord" "$d/g.err" &&
+    [ -s "$d/g.seg" ] || fail "lihao2 growth: no warning: $(cat "$d/g.err")"
+read -r ta tb la lb <"$d/g.seg" || :
+# the segment's keys: lines la and la + 1 of the file, stamped as written
+[ "$lb" = $((la + 1)) ] && [ "$(sed -n "${la}p" "$d/tum300" | cut -d ' ' -f 1)" = "$ta" ] &&
+    [ "$(sed -n "${lb}p" "$d/tum300" | cut -d ' ' -f 1)" = "$tb" ] || fail "lihao2 growth: the segment named is not two keys: $(cat "$d/g.seg")"
+for s in lihao3 c2; do
+    "$G" interp --format pose --normalize --scheme "$s" --samples 50 --in "$d/tum300" >"$d/g.out" 2>"$d/g.err" ||
+        fail "$s on the TUM-like file: $(cat "$d/g.err")"
+    [ -s "$d/g.err" ] && fail "$s on the TUM-like file: a warning: $(cat "$d/g.err")"
+done
+
 # ---- the error table ------------------------------------------------------
 printf '0 0 0 0 0\n' >"$d/short"
 expect_error "exp: wrong count" "short:1: expected 6 numbers" "$G" exp --in "$d/short" --out "$d/out"

@@ -638,6 +638,19 @@ int cmd_interp(const cli_opts *o)
                 ga_status_string(st));
         goto done;
     }
+    /* the growth rule (path.h, docs/schemes.md "lihao2"): a warning, the
+       samples are written all the same (exit status 0) */
+    ga_path_growth gr;
+    if (ga_path_measure_growth(&path, &gr) == GA_OK && gr.first < n) {
+        size_t f = gr.first, a = f ? f - 1 : 0, b = f ? f : 1;
+        fprintf(
+            stderr,
+            "garotor interp: warning: %s: the %s path's velocity grows past %g times the fastest chord on "
+            "the segment t = %s to %s (lines %ld to %ld), up to %.3g times at t = %s; --scheme lihao3 or c2 "
+            "follow the chords (docs/schemes.md)\n",
+            in.name, ga_scheme_name(scheme), GA_PATH_GROWTH_MAX, in.first[a], in.first[b], in.item[a].line,
+            in.item[b].line, gr.ratio, in.first[gr.key]);
+    }
 
     size_t ns = nat ? nat : (size_t)o->samples;
     double step = ev == GA_EVAL_EULER ? o->step : 1.0;

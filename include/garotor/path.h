@@ -294,7 +294,7 @@ int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_fra
  *  Schemes whose key velocities are averages of chords (screw, lihao3 by
  *  default) have ratios of at most 1; lihao2's recurrence
  *  V_{i+1} = (Ad B_i + 2 C_i)/h_i can grow along the keys without bound. */
-#define GA_PATH_GROWTH_MAX 10.0
+#define GA_PATH_GROWTH_MAX 3.0
 
 /** What ga_path_measure_growth found. */
 typedef struct {
