@@ -81,6 +81,24 @@
  *              if the sweeps do not converge (never seen with neighbouring
  *              spacings within a factor 3; see docs/schemes.md).
  *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
+ *   C2         rigid groups only (group.h rigid; GA_ERR_ARG on affine):
+ *              A(t) = A_i exp(x(t - t_i)), x a cubic in the twist with
+ *              x(0) = 0, x(h_i) = theta_i = plog(A_i^-1 A_{i+1}), x'(0) = V_i
+ *              and J_r(theta_i) x'(h_i) = V_{i+1}: the body velocity is V_i at
+ *              every key from both sides (C1), and the key velocities
+ *              V_1..V_{n-2} solve the C2 conditions, the system of
+ *              DECOUPLED_C2 with the twist for the rotation vector and the
+ *              group's right Jacobian (dexp) for SO(3)'s: block-tridiagonal,
+ *              nonlinear through N(x, x') = d/dt(J_r(x)) x' (the body
+ *              acceleration is J_r(x) x'' + N, N taken from the 4x4 jet of
+ *              the acceleration below), solved by the same Newton sweeps.
+ *              End conditions: V_0 = theta_0/h_0, V_{n-1} = theta_{n-2}/h_{n-2},
+ *              the screw velocities of the end segments. Keys on one screw
+ *              motion exp(t xi) (every theta_i = h_i xi) give exactly that
+ *              motion: V_i = xi solves the system with N = 0. Invariant under
+ *              changes of world and body frame, like SCREW and LIHAO3.
+ *              GA_ERR_DOMAIN if the sweeps do not converge (docs/schemes.md:
+ *              none seen with neighbouring spacings within a factor 3).
  *
  * Branch rule (BIVECTOR, QUADRATIC, SMOOTH): X_0 is the principal log of A_0;
  * for i >= 1, X_i is the principal log of A_i passed through the group's
@@ -211,16 +229,18 @@ typedef struct {
     double *t;         /**< the n key times */
     double *key;       /**< the n keys, each group->elem_size bytes, padded to doubles */
     size_t key_stride; /**< doubles from one key to the next */
-    double *coef;      /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units) */
+    double *coef;      /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units); C2: per segment the
+                            cubic's a, b, c (x = a tau + b tau^2 + c tau^3, t units) */
     double *gen;       /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
     double *slope;     /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
-    double *vel;       /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
+    double *vel;       /**< LIHAO2/LIHAO3/C2: the body velocity at each key (per unit t); C2: then the
+                            solver's scratch */
     double *dec;       /**< DECOUPLED/DECOUPLED_C2: per key q, p, angular rate, position slope (13
                             doubles), then per segment the rotation and position cubics (21) */
 } ga_path;
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3",
- *  "decoupled", "decoupled-c2". */
+ *  "decoupled", "decoupled-c2", "c2". */
 const char *ga_scheme_name(ga_scheme s);
 /** The scheme called name; GA_ERR_ARG if there is none. */
 int ga_scheme_by_name(const char *name, ga_scheme *out);
@@ -234,7 +254,7 @@ size_t ga_scheme_min_keys(ga_scheme s);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
  *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
- *  without to_qt/from_qt, i.e. affine). */
+ *  without to_qt/from_qt, C2 on a group that is not rigid: affine). */
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
 
 /** Build into *out a path through n keys (n group elements, each
