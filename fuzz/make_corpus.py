@@ -120,7 +120,7 @@ write("numeric", "points-nan", bytes([OPS["points"]]) + doubles([NAN] + PTS[1:] 
 
 # ---- path: fuzz_path.c ---------------------------------------------------------
 GROUPS = ["cga", "matrix", "affine"]
-SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2"]
+SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "c2"]
 EVALS = ["direct", "euler", "exact"]
 
 
@@ -152,7 +152,7 @@ for group in GROUPS:
     dim = 12 if group == "affine" else 6
     for scheme in SCHEMES:
         n = 3 if scheme in ("quadratic", "smooth") else 4 if scheme == "lihao3" else 2
-        if scheme in ("smooth", "decoupled-c2"):
+        if scheme in ("smooth", "decoupled-c2", "c2"):
             n = 5
         keys = affine_keys(n) if group == "affine" else twist_keys(n)
         times = [0.0] + [1.0] * (n - 1)  # t0, then spacings
@@ -221,6 +221,7 @@ TOOL = {
     "interp-lihao3-default": "interp --scheme lihao3 --samples 7 --group matrix\n" + KEYS,
     "interp-decoupled": "interp --scheme decoupled --samples 5 --format pose\n" + POSES,
     "interp-decoupled-c2": "interp --scheme decoupled-c2 --samples 7 --group matrix\n" + KEYS,
+    "interp-c2": "interp --scheme c2 --samples 7 --with velocity,acceleration\n" + KEYS,
     "interp-decoupled-affine": "interp --scheme decoupled --group affine --samples 3\n0 %s\n1 %s\n" % (M1, AFF),
     "interp-euler": "interp --scheme lihao3 --samples 5 --eval euler --step 0.1\n" + KEYS,
     "interp-exact": "interp --scheme lihao2 --samples 9 --eval exact\n" + KEYS,
