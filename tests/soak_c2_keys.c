@@ -4,9 +4,13 @@
  * jumps at the interior keys, invariance under a change of world frame
  * (G A_i) and of body frame (A_i H) over 201 samples, the largest body
  * velocity and acceleration entries and cga against matrix over 2001
- * samples. A measurement (exit status 0 unless the file cannot be read): the
- * soak suite runs it so that it keeps building and running. */
+ * samples. With a second argument, a pose file (t x y z qx qy qz qw a line,
+ * quaternions normalised: tests/tum_like.awk's), the growth ratios
+ * (ga_path_measure_growth) of lihao2, lihao3 and c2 on it. A measurement
+ * (exit status 0 unless a file cannot be read): the soak suite runs it so
+ * that it keeps building and running. */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "testkit.h"
 
@@ -47,8 +51,8 @@ int main(int argc, char **argv)
     char line[256];
     int n = 0;
     while (f && n < N && fgets(line, sizeof line, f))
-        if (line[0] != '#' && sscanf(line, "%lf %lf %lf %lf %lf %lf %lf %lf", &t[n], &x[0], &x[1], &x[2], &x[3],
-                                     &x[4], &x[5], &x[6]) == 8)
+        if (line[0] != '#' && sscanf(line, "%lf %lf %lf %lf %lf %lf %lf %lf", &t[n], &x[0], &x[1], &x[2],
+                                     &x[3], &x[4], &x[5], &x[6]) == 8)
             k[n] = pose(x), ++n;
     if (n != N) {
         fprintf(stderr, "soak_c2_keys: need the %d keys of docs/figures/schemes.keys\n", N);
@@ -101,9 +105,58 @@ int main(int argc, char **argv)
             ga_path_differentiate(&p, tj, GA_FRAME_BODY, v, ac);
             for (int q = 0; q < 6; ++q) vmax = tk_max(vmax, fabs(v[q])), amax = tk_max(amax, fabs(ac[q]));
         }
-        printf("%-13s %-9.2g %-9.2g %-9.2g %-9.2g %-9.2g %-7.3g %-7.3g %.2g\n", ga_scheme_name(sc[s]), keys, vj,
-               aj, wo, bo, vmax, amax, cm);
+        printf("%-13s %-9.2g %-9.2g %-9.2g %-9.2g %-9.2g %-7.3g %-7.3g %.2g\n", ga_scheme_name(sc[s]), keys,
+               vj, aj, wo, bo, vmax, amax, cm);
     }
     fclose(f);
+    if (argc < 3)
+        return 0;
+    /* the growth rule on a pose file */
+    FILE *g = fopen(argv[2], "r");
+    size_t cap = 0, m = 0;
+    double *tt = NULL, y[8];
+    ga_mat4 *kk = NULL;
+    while (g && fscanf(g, "%lf %lf %lf %lf %lf %lf %lf %lf", &y[0], &y[1], &y[2], &y[3], &y[4], &y[5], &y[6],
+                       &y[7]) == 8) {
+        if (m == cap) {
+            cap = cap ? 2 * cap : 256;
+            double *nt = realloc(tt, cap * sizeof *tt);
+            ga_mat4 *nk = realloc(kk, cap * sizeof *kk);
+            if (!nt || !nk)
+                return free(nt ? nt : tt), free(nk ? nk : kk), 1;
+            tt = nt, kk = nk;
+        }
+        double nq = sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6] + y[7] * y[7]);
+        for (int i = 4; i < 8; ++i) y[i] /= nq;
+        tt[m] = y[0];
+        kk[m++] = pose(y + 1);
+    }
+    if (g)
+        fclose(g);
+    if (m < 3) {
+        fprintf(stderr, "soak_c2_keys: %s: need 3 or more poses\n", argv[2]);
+        return free(tt), free(kk), 1;
+    }
+    double t0 = tt[0];
+    for (size_t i = 0; i < m; ++i) tt[i] -= t0;
+    size_t wb = ga_path_workspace_size(&ga_group_se3, GA_SCHEME_C2, m);
+    void *wk = malloc(wb);
+    const ga_scheme gs[3] = {GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3, GA_SCHEME_C2};
+    for (int s = 0; wk && s < 3; ++s) {
+        ga_path p;
+        ga_path_growth gr;
+        int st = ga_path_init_mat4(&ga_group_se3, gs[s], m, tt, kk, NULL, wk, wb, &p);
+        if (st == GA_OK)
+            st = ga_path_measure_growth(&p, &gr);
+        if (st == GA_OK)
+            printf("%s: %zu keys: largest ratio %.3g at key %zu, first past %g: %s%zu\n",
+                   ga_scheme_name(gs[s]), m, gr.ratio, gr.key, GA_PATH_GROWTH_MAX,
+                   gr.first < m ? "key " : "none, ", gr.first);
+        else
+            printf("%s: %s\n", ga_scheme_name(gs[s]), ga_status_string(st));
+    }
+    free(wk);
+    free(tt);
+    free(kk);
     return 0;
 }
