@@ -964,10 +964,29 @@ static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
 }
 static int exp_curve_deriv(const ga_group *g, const double *x, const double *xd, const double *xdd, double *v,
                            double *a);
+/* N(theta, y) by the jet. The jet's squarings grow with log2 of theta's size,
+ * and a translation near DBL_MAX would take a thousand per call (found by
+ * fuzz/fuzz_path: a build of five keys took seconds). Scaling translations
+ * by l is an automorphism of SE(3) (it commutes with exp, Ad and dexp), so
+ * N(S x, S y) = S N(x, y) for S = diag(1, 1, 1, l, l, l): a translation of
+ * theta beyond 2^20 is brought below 1 by a power of two l (exact, so the
+ * scaling changes nothing but the jet's work). */
 static int c2_nonlin(const ga_path *p, const double *th, const double *y, double *o)
 {
     const double zero[MAXD] = {0};
-    return exp_curve_deriv(p->group, th, y, zero, NULL, o);
+    double big = fmax(fabs(th[3]), fmax(fabs(th[4]), fabs(th[5])));
+    if (!(big > 0x1p20) || !isfinite(big))
+        return exp_curve_deriv(p->group, th, y, zero, NULL, o);
+    int e;
+    frexp(big, &e);
+    double x[6], ys[6];
+    for (int k = 0; k < 6; ++k) {
+        x[k] = k < 3 ? th[k] : ldexp(th[k], -e);
+        ys[k] = k < 3 ? y[k] : ldexp(y[k], -e);
+    }
+    int st = exp_curve_deriv(p->group, x, ys, zero, NULL, o);
+    for (int k = 3; k < 6; ++k) o[k] = ldexp(o[k], e);
+    return st;
 }
 
 static int build_c2(ga_path *p)
