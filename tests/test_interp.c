@@ -1299,6 +1299,27 @@ static void test_accel(tk_rng *r)
     tk_end(&c_one);
 }
 
+/* The checks of one segment i of a rigid path p (cga) against pm (matrix) on
+ * keys k: through the keys (c_key), cga = matrix (c_cm), velocity and
+ * acceleration against central differences (c_v, c_a) at u = 0, 1/4, ..., 1. */
+static void seg_checks(const ga_path *p, const ga_path *pm, const keyset *k, int i, tk_check *c_key,
+                       tk_check *c_cm, tk_check *c_v, tk_check *c_a)
+{
+    double sc = k->scale, sc2 = sc * sc;
+    tk_add(c_key, fmax(mdiff(at_seg(p, i, 0.0), k->m[i]), mdiff(at_seg(p, i, 1.0), k->m[i + 1])) / sc);
+    for (int q = 0; q <= 4; ++q) {
+        double u = 0.25 * q, v[6], a[6], vm[6], am[6], vf[6], af[6];
+        ga_path_differentiate_segment(p, i, u, GA_FRAME_BODY, v, a);
+        ga_path_differentiate_segment(pm, i, u, GA_FRAME_BODY, vm, am);
+        tk_add(c_cm, fmax(mdiff(at_seg(p, i, u), at_seg(pm, i, u)) / sc,
+                          fmax(vdiff(v, vm, 6) / sc, vdiff(a, am, 6) / sc2)));
+        fd_central(p, i, u, 1e-5, vf);
+        fd_accel(p, i, u, GA_FRAME_BODY, 1e-4, af);
+        tk_add(c_v, vdiff(v, vf, 6) / fmax(sc, vnorm(v, 6)));
+        tk_add(c_a, vdiff(a, af, 6) / fmax(sc2, vnorm(a, 6)));
+    }
+}
+
 /* ---- 2c. decoupled, decoupled-c2 ------------------------------------------------- */
 
 /* Rotation and translation apart (path.h DECOUPLED, DECOUPLED_C2). scipy is
@@ -1332,20 +1353,7 @@ static void test_decoupled(tk_rng *r)
             }
             double sc = k.scale, sc2 = sc * sc, jump = 0.0;
             for (int i = 0; i + 1 < k.n; ++i) {
-                tk_add(&c_key,
-                       fmax(mdiff(at_seg(&b.p, i, 0.0), k.m[i]), mdiff(at_seg(&b.p, i, 1.0), k.m[i + 1])) /
-                           sc);
-                for (int q = 0; q <= 4; ++q) {
-                    double u = 0.25 * q, v[6], a[6], vm[6], am[6], vf[6], af[6];
-                    ga_path_differentiate_segment(&b.p, i, u, GA_FRAME_BODY, v, a);
-                    ga_path_differentiate_segment(&bm.p, i, u, GA_FRAME_BODY, vm, am);
-                    tk_add(&c_cm, fmax(mdiff(at_seg(&b.p, i, u), at_seg(&bm.p, i, u)) / sc,
-                                       fmax(vdiff(v, vm, 6) / sc, vdiff(a, am, 6) / sc2)));
-                    fd_central(&b.p, i, u, 1e-5, vf);
-                    fd_accel(&b.p, i, u, GA_FRAME_BODY, 1e-4, af);
-                    tk_add(&c_v, vdiff(v, vf, 6) / fmax(sc, vnorm(v, 6)));
-                    tk_add(&c_a, vdiff(a, af, 6) / fmax(sc2, vnorm(a, 6)));
-                }
+                seg_checks(&b.p, &bm.p, &k, i, &c_key, &c_cm, &c_v, &c_a);
                 if (i + 2 < k.n) { /* key i + 1: arriving against leaving */
                     double v0[6], a0[6], v1[6], a1[6];
                     ga_path_differentiate_segment(&b.p, i, 1.0, GA_FRAME_BODY, v0, a0);
@@ -1485,19 +1493,7 @@ static void test_c2(tk_rng *r)
             continue;
         double sc = k.scale, sc2 = sc * sc;
         for (int i = 0; i + 1 < k.n; ++i) {
-            tk_add(&c_key,
-                   fmax(mdiff(at_seg(&b.p, i, 0.0), k.m[i]), mdiff(at_seg(&b.p, i, 1.0), k.m[i + 1])) / sc);
-            for (int q = 0; q <= 4; ++q) {
-                double u = 0.25 * q, v[6], a[6], vm[6], am[6], vf[6], af[6];
-                ga_path_differentiate_segment(&b.p, i, u, GA_FRAME_BODY, v, a);
-                ga_path_differentiate_segment(&bm.p, i, u, GA_FRAME_BODY, vm, am);
-                tk_add(&c_cm, fmax(mdiff(at_seg(&b.p, i, u), at_seg(&bm.p, i, u)) / sc,
-                                   fmax(vdiff(v, vm, 6) / sc, vdiff(a, am, 6) / sc2)));
-                fd_central(&b.p, i, u, 1e-5, vf);
-                fd_accel(&b.p, i, u, GA_FRAME_BODY, 1e-4, af);
-                tk_add(&c_v, vdiff(v, vf, 6) / fmax(sc, vnorm(v, 6)));
-                tk_add(&c_a, vdiff(a, af, 6) / fmax(sc2, vnorm(a, 6)));
-            }
+            seg_checks(&b.p, &bm.p, &k, i, &c_key, &c_cm, &c_v, &c_a);
             if (i + 2 < k.n) { /* key i + 1: arriving against leaving */
                 double v0[6], a0[6], v1[6], a1[6];
                 ga_path_differentiate_segment(&bm.p, i, 1.0, GA_FRAME_BODY, v0, a0);
