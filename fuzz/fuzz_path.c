@@ -230,14 +230,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* one key is the constant path on every scheme */
     /* rotation and translation apart: rigid groups only (path.h) */
     int decoupled = scheme == GA_SCHEME_DECOUPLED || scheme == GA_SCHEME_DECOUPLED_C2;
-    if (decoupled && affine) {
+    /* c2: screw motions, rigid groups only (path.h) */
+    if ((decoupled || scheme == GA_SCHEME_C2) && affine) {
         FZ_CHECK(st == GA_ERR_ARG && wbytes == 0, "%s on affine: status %d", ga_scheme_name(scheme), st);
         valid = 0;
     }
-    /* decoupled-c2's Newton sweeps are documented to converge for neighbouring
-       spacings within a factor 3 (docs/schemes.md); beyond, GA_ERR_DOMAIN may
-       come instead */
-    if (scheme == GA_SCHEME_DECOUPLED_C2)
+    /* decoupled-c2's and c2's Newton sweeps are documented to converge for
+       neighbouring spacings within a factor 3 (docs/schemes.md); beyond,
+       GA_ERR_DOMAIN may come instead */
+    if (scheme == GA_SCHEME_DECOUPLED_C2 || scheme == GA_SCHEME_C2)
         for (int i = 2; i < n; i++) {
             double ra = (times[i] - times[i - 1]) / (times[i - 1] - times[i - 2]);
             if (!(ra >= 1.0 / 3 && ra <= 3.0))

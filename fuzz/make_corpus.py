@@ -136,7 +136,7 @@ write("numeric", "points-nan", bytes([OPS["points"]]) + doubles([NAN] + PTS[1:] 
 
 # ---- path: fuzz_path.c ---------------------------------------------------------
 GROUPS = ["cga", "matrix", "affine"]
-SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "bspline"]
+SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "bspline", "c2"]
 EVALS = ["direct", "euler", "exact"]
 
 
@@ -169,7 +169,7 @@ for group in GROUPS:
     dim = 12 if group == "affine" else 6
     for scheme in SCHEMES:
         n = 3 if scheme in ("quadratic", "smooth") else 4 if scheme == "lihao3" else 2
-        if scheme in ("smooth", "decoupled-c2"):
+        if scheme in ("smooth", "decoupled-c2", "c2"):
             n = 5
         if scheme == "bspline":
             n = 6
@@ -254,6 +254,7 @@ TOOL = {
     "interp-lihao3-default": "interp --scheme lihao3 --samples 7 --group matrix\n" + KEYS,
     "interp-decoupled": "interp --scheme decoupled --samples 5 --format pose\n" + POSES,
     "interp-decoupled-c2": "interp --scheme decoupled-c2 --samples 7 --group matrix\n" + KEYS,
+    "interp-c2": "interp --scheme c2 --samples 7 --with velocity,acceleration\n" + KEYS,
     "interp-decoupled-affine": "interp --scheme decoupled --group affine --samples 3\n0 %s\n1 %s\n" % (M1, AFF),
     "interp-bspline-epoch": "interp --scheme bspline --format pose --rate 250 --with velocity,acceleration"
     " --extrapolate hold\n" + "".join("1305031102.%02d %s\n" % (17 + i, p) for i, p in enumerate(

@@ -14,8 +14,9 @@
 
 /* ---- names ---------------------------------------------------------------- */
 
-static const char *const scheme_names[GA_SCHEME_COUNT] = {
-    "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "bspline"};
+static const char *const scheme_names[GA_SCHEME_COUNT] = {"screw",   "bivector", "quadratic", "smooth",
+                                                          "lihao2",  "lihao3",   "decoupled", "decoupled-c2",
+                                                          "bspline", "c2"};
 static const char *const eval_names[] = {"direct", "euler", "exact"};
 
 const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < GA_SCHEME_COUNT ? scheme_names[s] : "?"; }
@@ -194,6 +195,11 @@ static int rel_log(const ga_group *g, const void *a, const void *b, double *x, d
 
 static size_t scheme_doubles(ga_scheme s, size_t N, size_t D);
 static int is_decoupled(ga_scheme s) { return s == GA_SCHEME_DECOUPLED || s == GA_SCHEME_DECOUPLED_C2; }
+/* Schemes defined on the rigid groups only (group.h rigid, to_qt/from_qt). */
+static int rigid_only(const ga_group *g, ga_scheme s)
+{
+    return (is_decoupled(s) && (!g->to_qt || !g->from_qt)) || (s == GA_SCHEME_C2 && !g->rigid);
+}
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 static void cross3(const double *a, const double *b, double *o)
@@ -330,7 +336,7 @@ static double *dkey(const ga_path *p, size_t i) { return p->dec + i * DK; }
 static double *dseg(const ga_path *p, size_t i) { return p->dec + p->cap * DK + i * DS; }
 static double *dscr(const ga_path *p, size_t i) { return p->dec + p->cap * DK + (p->cap - 1) * DS + i * DX; }
 
-/* 3x3 helpers for the block-tridiagonal solve (row-major) */
+/* d x d helpers (d <= MAXD, row-major) for the block-tridiagonal solve */
 static void m3_of_jr(const double *r, int inv, double *m)
 {
     for (int j = 0; j < 3; ++j) {
@@ -342,28 +348,63 @@ static void m3_of_jr(const double *r, int inv, double *m)
         for (int i = 0; i < 3; ++i) m[3 * i + j] = c[i];
     }
 }
-static void m3_mul(const double *a, const double *b, double *o)
+static void md_mul(size_t d, const double *a, const double *b, double *o)
 {
-    double t[9];
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            t[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
-    memcpy(o, t, sizeof t);
+    double t[MAXD * MAXD];
+    for (size_t i = 0; i < d; ++i)
+        for (size_t j = 0; j < d; ++j) {
+            double s = 0.0;
+            for (size_t k = 0; k < d; ++k) s += a[d * i + k] * b[d * k + j];
+            t[d * i + j] = s;
+        }
+    memcpy(o, t, d * d * sizeof(double));
 }
-static void m3_vec(const double *a, const double *x, double *o)
+static void md_vec(size_t d, const double *a, const double *x, double *o)
 {
-    double t[3];
-    for (int i = 0; i < 3; ++i) t[i] = a[3 * i] * x[0] + a[3 * i + 1] * x[1] + a[3 * i + 2] * x[2];
-    memcpy(o, t, sizeof t);
+    double t[MAXD];
+    for (size_t i = 0; i < d; ++i) {
+        double s = 0.0;
+        for (size_t k = 0; k < d; ++k) s += a[d * i + k] * x[k];
+        t[i] = s;
+    }
+    memcpy(o, t, d * sizeof(double));
 }
-/* the inverse by the adjugate; the matrices here are diagonally dominant */
-static void m3_inv(const double *a, double *o)
+/* o = a^-1 by Gauss-Jordan elimination with partial pivoting; GA_ERR_DOMAIN
+ * for a matrix singular to working precision (or not finite) */
+static int md_inv(size_t d, const double *a, double *o)
 {
-    double c[9] = {a[4] * a[8] - a[5] * a[7], a[2] * a[7] - a[1] * a[8], a[1] * a[5] - a[2] * a[4],
-                   a[5] * a[6] - a[3] * a[8], a[0] * a[8] - a[2] * a[6], a[2] * a[3] - a[0] * a[5],
-                   a[3] * a[7] - a[4] * a[6], a[1] * a[6] - a[0] * a[7], a[0] * a[4] - a[1] * a[3]};
-    double det = a[0] * c[0] + a[1] * c[3] + a[2] * c[6];
-    for (int k = 0; k < 9; ++k) o[k] = c[k] / det;
+    double m[MAXD * MAXD], r[MAXD * MAXD];
+    memcpy(m, a, d * d * sizeof(double));
+    for (size_t i = 0; i < d * d; ++i) r[i] = (i % (d + 1) == 0);
+    for (size_t c = 0; c < d; ++c) {
+        size_t pv = c;
+        for (size_t i = c + 1; i < d; ++i)
+            if (fabs(m[d * i + c]) > fabs(m[d * pv + c]))
+                pv = i;
+        double piv = m[d * pv + c];
+        if (!(fabs(piv) > 0) || !isfinite(piv))
+            return GA_ERR_DOMAIN;
+        for (size_t j = 0; j < d; ++j) {
+            double x = m[d * c + j], y = r[d * c + j];
+            m[d * c + j] = m[d * pv + j];
+            r[d * c + j] = r[d * pv + j];
+            m[d * pv + j] = x;
+            r[d * pv + j] = y;
+            m[d * c + j] /= piv;
+            r[d * c + j] /= piv;
+        }
+        for (size_t i = 0; i < d; ++i) {
+            double f = m[d * i + c];
+            if (i == c || f == 0.0)
+                continue;
+            for (size_t j = 0; j < d; ++j) {
+                m[d * i + j] -= f * m[d * c + j];
+                r[d * i + j] -= f * r[d * c + j];
+            }
+        }
+    }
+    memcpy(o, r, d * d * sizeof(double));
+    return GA_OK;
 }
 
 /* The not-a-knot slopes s_i of the cubic spline through (t_i, y_i), one
@@ -427,99 +468,121 @@ static void notaknot(const ga_path *p, const double *y, double *s, double *cp, d
 #undef S
 }
 
-/* Newton sweeps of the C2 rotation system (path.h, docs/schemes.md). Row k
- * (interior key), the angular accelerations of segments k-1 (at its end) and
- * k (at its start) equal, with r'(h) = J_r^-1(theta) w_{k}:
+/* The C2 system of key velocities, shared by DECOUPLED_C2 (the rotation
+ * vector, d = 3, SO(3)'s closed forms) and C2 (the twist, d = g->dim, through
+ * the group's dexp and the 4x4 jet). On segment i the motion is
+ * exp(x(tau)), x a cubic with x(0) = 0, x(h_i) = theta_i, x'(0) = w_i and
+ * J_r(theta_i) x'(h_i) = w_{i+1}; its body acceleration is
+ * J_r(x) x'' + N(x, x'), N = (d/dt J_r(x)) x'. Row k (interior key): the
+ * accelerations of segments k-1 (at its end) and k (at its start) equal,
  *   2/h_{k-1} J_r(theta_{k-1}) w_{k-1} + (4/h_{k-1} + 4/h_k) w_k
  *     + 2/h_k J_r^-1(theta_k) w_{k+1}
- *   = 6 theta_{k-1}/h_{k-1}^2 + 6 theta_k/h_k^2 - N(theta_{k-1}, r'_{k-1}(h))
- * (scipy's RotationSpline._solve_for_angular_rates, which iterates it as a
- * fixed point, 10 sweeps at most). Each sweep here linearises N at the
- * current rates and solves the block-tridiagonal system by block Thomas
- * (without N it is block diagonally dominant: |J_r| <= 1, |J_r^-1| <= pi/2).
- * At most DEC_SWEEPS; converged when no rate moves by more than
- * 4 DBL_EPSILON of the largest, or the change stops shrinking once it is
- * below 1e-12 of it. */
-#define DEC_SWEEPS 200
+ *   = 6 theta_{k-1}/h_{k-1}^2 + 6 theta_k/h_k^2 - N(theta_{k-1}, J_r^-1(theta_{k-1}) w_k)
+ * (scipy's RotationSpline._solve_for_angular_rates for SO(3), which iterates
+ * it as a fixed point, 10 sweeps at most). Each sweep here linearises N at
+ * the current rates (Newton) and solves the block-tridiagonal system by block
+ * Thomas (without N it is block diagonally dominant: |J_r| <= 1,
+ * |J_r^-1| <= pi/2 on SO(3)); the full Newton step is taken (halving steps
+ * that raise the largest residual failed more often: docs/schemes.md). At
+ * most C2_SWEEPS; converged when no rate moves by more than 4 DBL_EPSILON of the
+ * largest, or the change stops shrinking once it is below 1e-12 of it. */
+#define C2_SWEEPS 200
 
-static int solve_rates(ga_path *p)
+typedef struct {
+    ga_path *p;
+    size_t d;
+    const double *(*theta)(const ga_path *p, size_t seg); /* theta_i */
+    double *(*rate)(const ga_path *p, size_t key);        /* w_i */
+    double *(*scratch)(const ga_path *p, size_t key);     /* d*d + d doubles */
+    /* m = the d x d matrix of J_r(th) (inv = 0) or of J_r(th)^-1 (inv = 1) */
+    int (*jr)(const ga_path *p, const double *th, int inv, double *m);
+    /* o = N(th, y) */
+    int (*nonlin)(const ga_path *p, const double *th, const double *y, double *o);
+} c2_sys;
+
+static int c2_solve(const c2_sys *s)
 {
-    size_t n = p->n;
+    ga_path *p = s->p;
+    size_t n = p->n, d = s->d, dd = d * d;
     double prev = INFINITY;
-    for (int it = 0; it < DEC_SWEEPS; ++it) {
+    int st;
+    for (int it = 0; it < C2_SWEEPS; ++it) {
         double big = 0.0, delta = 0.0;
         for (size_t k = 1; k + 1 < n; ++k) {
-            const double *rl = dseg(p, k - 1), *rr = dseg(p, k); /* theta in slot a (build) */
+            const double *tl = s->theta(p, k - 1), *tr = s->theta(p, k);
             double hl = seg_len(p, k - 1), hr = seg_len(p, k);
-            double L[9], U[9], D[9], rhs[3], rde[3], nl[3], t3[3], *C = dscr(p, k), *y = C + 9;
-            m3_of_jr(rl, 0, L);
-            m3_of_jr(rr, 1, U);
+            double L[MAXD * MAXD], U[MAXD * MAXD], D[MAXD * MAXD], Ji[MAXD * MAXD], Jn[MAXD * MAXD];
+            double rhs[MAXD], rde[MAXD], nl[MAXD], t3[MAXD], jw[MAXD], sc = 0.0;
+            double *C = s->scratch(p, k), *y = C + dd;
+            const double *wk = s->rate(p, k);
+            if ((st = s->jr(p, tl, 0, L)) || (st = s->jr(p, tr, 1, U)) || (st = s->jr(p, tl, 1, Ji)))
+                return st;
 
             /* N(theta_{k-1}, J_r^-1(theta_{k-1}) w_k), linearised at the current
                w_k: N + Jn (w - w_k), Jn = dN/dr' J_r^-1, dN/dr' by polarisation
                (N is quadratic in r': dN/dr' e = (N(r' + s e) - N(r' - s e))/(2s),
                exact for any s; s = |r'| keeps the rounding relative) */
-            const double *wk = dkey(p, k) + 7;
-            double Jn[9], Ji[9], sc, jw[3];
-            jrinv_apply(rl, wk, rde);
-            jr_nonlin(rl, rde, nl);
-            sc = sqrt(dot3(rde, rde));
-            if (!(sc > 0))
+            md_vec(d, Ji, wk, rde);
+            if ((st = s->nonlin(p, tl, rde, nl)))
+                return st;
+            for (size_t j = 0; j < d; ++j) sc += rde[j] * rde[j];
+            sc = sqrt(sc);
+            if (!(sc > 0) || !isfinite(sc))
                 sc = 1.0;
-            for (int c = 0; c < 3; ++c) {
-                double xp[3], xm[3], np[3], nm[3];
-                for (int j = 0; j < 3; ++j) {
+            for (size_t c = 0; c < d; ++c) {
+                double xp[MAXD], xm[MAXD], np[MAXD], nm[MAXD];
+                for (size_t j = 0; j < d; ++j) {
                     xp[j] = rde[j] + (j == c ? sc : 0.0);
                     xm[j] = rde[j] - (j == c ? sc : 0.0);
                 }
-                jr_nonlin(rl, xp, np);
-                jr_nonlin(rl, xm, nm);
-                for (int j = 0; j < 3; ++j) Jn[3 * j + c] = (np[j] - nm[j]) / (2.0 * sc);
+                if ((st = s->nonlin(p, tl, xp, np)) || (st = s->nonlin(p, tl, xm, nm)))
+                    return st;
+                for (size_t j = 0; j < d; ++j) Jn[d * j + c] = (np[j] - nm[j]) / (2.0 * sc);
             }
-            m3_of_jr(rl, 1, Ji);
-            m3_mul(Jn, Ji, Jn);
-            m3_vec(Jn, wk, jw);
-            for (int j = 0; j < 3; ++j)
-                rhs[j] = 6.0 * rl[j] / (hl * hl) + 6.0 * rr[j] / (hr * hr) - nl[j] + jw[j];
-            for (int j = 0; j < 9; ++j) {
+            md_mul(d, Jn, Ji, Jn);
+            md_vec(d, Jn, wk, jw);
+            for (size_t j = 0; j < d; ++j)
+                rhs[j] = 6.0 * tl[j] / (hl * hl) + 6.0 * tr[j] / (hr * hr) - nl[j] + jw[j];
+            for (size_t j = 0; j < dd; ++j) {
                 L[j] *= 2.0 / hl;
                 U[j] *= 2.0 / hr;
-                D[j] = (j % 4 == 0 ? 4.0 / hl + 4.0 / hr : 0.0) + Jn[j];
+                D[j] = (j % (d + 1) == 0 ? 4.0 / hl + 4.0 / hr : 0.0) + Jn[j];
             }
             if (k == 1) {
-                m3_vec(L, dkey(p, 0) + 7, t3);
-                for (int j = 0; j < 3; ++j) rhs[j] -= t3[j];
+                md_vec(d, L, s->rate(p, 0), t3);
+                for (size_t j = 0; j < d; ++j) rhs[j] -= t3[j];
             } else {
-                double LC[9];
-                const double *Cp = dscr(p, k - 1), *yp = Cp + 9;
-                m3_mul(L, Cp, LC);
-                for (int j = 0; j < 9; ++j) D[j] -= LC[j];
-                m3_vec(L, yp, t3);
-                for (int j = 0; j < 3; ++j) rhs[j] -= t3[j];
+                double LC[MAXD * MAXD];
+                const double *Cp = s->scratch(p, k - 1), *yp = Cp + dd;
+                md_mul(d, L, Cp, LC);
+                for (size_t j = 0; j < dd; ++j) D[j] -= LC[j];
+                md_vec(d, L, yp, t3);
+                for (size_t j = 0; j < d; ++j) rhs[j] -= t3[j];
             }
             if (k == n - 2) {
-                m3_vec(U, dkey(p, n - 1) + 7, t3);
-                for (int j = 0; j < 3; ++j) rhs[j] -= t3[j];
-                for (int j = 0; j < 9; ++j) U[j] = 0.0;
+                md_vec(d, U, s->rate(p, n - 1), t3);
+                for (size_t j = 0; j < d; ++j) rhs[j] -= t3[j];
+                for (size_t j = 0; j < dd; ++j) U[j] = 0.0;
             }
-            double Di[9];
-            m3_inv(D, Di);
-            m3_mul(Di, U, C);
-            m3_vec(Di, rhs, y);
+            double Di[MAXD * MAXD];
+            if ((st = md_inv(d, D, Di)))
+                return st;
+            md_mul(d, Di, U, C);
+            md_vec(d, Di, rhs, y);
         }
-        double nxt[3] = {0, 0, 0};
+        double nxt[MAXD] = {0};
         for (size_t k = n - 1; k-- > 1;) {
-            double *C = dscr(p, k), *y = C + 9, *w = dkey(p, k) + 7, nw[3];
-            m3_vec(C, nxt, nw);
-            for (int j = 0; j < 3; ++j) {
+            double *C = s->scratch(p, k), *y = C + dd, *w = s->rate(p, k), nw[MAXD];
+            md_vec(d, C, nxt, nw);
+            for (size_t j = 0; j < d; ++j) {
                 nw[j] = y[j] - nw[j];
                 delta = fmax(delta, fabs(nw[j] - w[j]));
                 big = fmax(big, fabs(nw[j]));
             }
-            memcpy(w, nw, sizeof nw);
-            memcpy(nxt, nw, sizeof nw);
+            memcpy(w, nw, d * sizeof(double));
+            memcpy(nxt, nw, d * sizeof(double));
         }
-        if (!isfinite(delta))
+        if (!isfinite(delta) || !isfinite(big))
             return GA_ERR_DOMAIN;
         if (delta <= 4 * DBL_EPSILON * big || (delta <= 1e-12 * big && delta >= prev))
             return GA_OK;
@@ -530,7 +593,7 @@ static int solve_rates(ga_path *p)
 
 /* The relative rotation vector theta_i = plog(R_i^-1 R_{i+1}) of segment i,
    through the group's half-turn rule as a twist (theta, 0), parked in slot a. */
-static void dec_theta(ga_path *p, size_t i)
+static void dec_rel_rotation(ga_path *p, size_t i)
 {
     double qc[4], qr[4], x[MAXD] = {0};
     const double *q0 = dkey(p, i), *q1 = dkey(p, i + 1);
@@ -565,6 +628,23 @@ static void dec_linear(ga_path *p, size_t i)
     }
 }
 
+/* DECOUPLED_C2: the rotation vectors, with SO(3)'s closed forms */
+static const double *dec_theta(const ga_path *p, size_t i) { return dseg(p, i); }
+static double *dec_rate(const ga_path *p, size_t i) { return dkey(p, i) + 7; }
+static double *dec_scratch(const ga_path *p, size_t i) { return dscr(p, i); }
+static int dec_jr(const ga_path *p, const double *th, int inv, double *m)
+{
+    (void)p;
+    m3_of_jr(th, inv, m);
+    return GA_OK;
+}
+static int dec_nonlin(const ga_path *p, const double *th, const double *y, double *o)
+{
+    (void)p;
+    jr_nonlin(th, y, o);
+    return GA_OK;
+}
+
 static int build_decoupled(ga_path *p)
 {
     const ga_group *g = p->group;
@@ -573,7 +653,7 @@ static int build_decoupled(ga_path *p)
        and build() checks the whole block for finiteness) */
     memset(p->dec, 0, scheme_doubles(p->scheme, p->cap, g->dim) * sizeof(double));
     for (size_t i = 0; i < n; ++i) g->to_qt(key_of(p, i), dkey(p, i), dkey(p, i) + 4);
-    for (size_t i = 0; i + 1 < n; ++i) dec_theta(p, i);
+    for (size_t i = 0; i + 1 < n; ++i) dec_rel_rotation(p, i);
     if (p->scheme == GA_SCHEME_DECOUPLED) {
         for (size_t i = 0; i + 1 < n; ++i) dec_linear(p, i);
         return GA_OK;
@@ -601,7 +681,8 @@ static int build_decoupled(ga_path *p)
         for (int k = 0; k < 3; ++k) dkey(p, i)[7 + k] = dseg(p, j)[k] / h;
     }
     if (n > 2) {
-        int st = solve_rates(p);
+        c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin};
+        int st = c2_solve(&sys);
         if (st != GA_OK)
             return st;
     }
@@ -683,13 +764,14 @@ static size_t scheme_doubles(ga_scheme s, size_t N, size_t D)
     case GA_SCHEME_SMOOTH: return N * D + S * D + S;
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: return N * (DK + DX) + S * DS;
+    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + D);
     }
     return 0;
 }
 
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n)
 {
-    if (!g || n < 1 || (unsigned)s >= GA_SCHEME_COUNT || (is_decoupled(s) && (!g->to_qt || !g->from_qt)))
+    if (!g || n < 1 || (unsigned)s >= GA_SCHEME_COUNT || rigid_only(g, s))
         return 0;
     size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
     return sizeof(double) * (n + n * stride + scheme_doubles(s, n, g->dim));
@@ -701,8 +783,8 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
 {
     if (!p || !g || !times || !keys || !work || (unsigned)s >= GA_SCHEME_COUNT)
         return GA_ERR_ARG;
-    if (is_decoupled(s) && (!g->to_qt || !g->from_qt))
-        return GA_ERR_ARG; /* rotation and translation apart: rigid groups only */
+    if (rigid_only(g, s))
+        return GA_ERR_ARG; /* rotation and translation apart, screw motions: rigid groups only */
     if (n != 1 && (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)))
         return GA_ERR_ARG; /* one key: the constant path, on every scheme */
     if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
@@ -750,6 +832,10 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
         break;
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: p->dec = w; break;
+    case GA_SCHEME_C2:
+        p->coef = w;
+        p->vel = w + 3 * (n - 1) * d;
+        break;
     }
     return GA_OK;
 }
@@ -934,6 +1020,123 @@ static void build_smooth(ga_path *p)
     }
 }
 
+/* C2 (path.h): on segment i, A_i exp(x(tau)), x(tau) = a tau + b tau^2 +
+ * c tau^3 in coef (t units), the key velocities in vel solved by c2_solve
+ * through the group (J_r by dexp, N by the 4x4 jet), then per key the
+ * solver's scratch. theta_i = plog(A_i^-1 A_{i+1}) is parked in slot c. */
+static const double *c2_theta(const ga_path *p, size_t i) { return p->coef + (3 * i + 2) * p->group->dim; }
+static double *c2_rate(const ga_path *p, size_t i) { return p->vel + i * p->group->dim; }
+static double *c2_scratch(const ga_path *p, size_t i)
+{
+    size_t d = p->group->dim;
+    return p->vel + p->n * d + i * (d * d + d);
+}
+static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
+{
+    const ga_group *g = p->group;
+    size_t d = g->dim;
+    double e[MAXD] = {0}, c[MAXD], J[MAXD * MAXD];
+    for (size_t j = 0; j < d; ++j) {
+        e[j] = 1.0;
+        g->dexp(th, e, c);
+        e[j] = 0.0;
+        for (size_t i = 0; i < d; ++i) J[d * i + j] = c[i];
+    }
+    if (inv)
+        return md_inv(d, J, m);
+    memcpy(m, J, d * d * sizeof(double));
+    return GA_OK;
+}
+static int exp_curve_deriv(const ga_group *g, const double *x, const double *xd, const double *xdd, double *v,
+                           double *a);
+/* N(theta, y) by the jet. The jet's squarings grow with log2 of theta's size,
+ * and a translation near DBL_MAX would take a thousand per call (found by
+ * fuzz/fuzz_path: a build of five keys took seconds). Scaling translations
+ * by l is an automorphism of SE(3) (it commutes with exp, Ad and dexp), so
+ * N(S x, S y) = S N(x, y) for S = diag(1, 1, 1, l, l, l): a translation of
+ * theta beyond 2^20 is brought below 1 by a power of two l (exact, so the
+ * scaling changes nothing but the jet's work). */
+static int c2_nonlin(const ga_path *p, const double *th, const double *y, double *o)
+{
+    const double zero[MAXD] = {0};
+    double big = fmax(fabs(th[3]), fmax(fabs(th[4]), fabs(th[5])));
+    if (!(big > 0x1p20) || !isfinite(big))
+        return exp_curve_deriv(p->group, th, y, zero, NULL, o);
+    int e;
+    frexp(big, &e);
+    double x[6], ys[6];
+    for (int k = 0; k < 6; ++k) {
+        x[k] = k < 3 ? th[k] : ldexp(th[k], -e);
+        ys[k] = k < 3 ? y[k] : ldexp(y[k], -e);
+    }
+    int st = exp_curve_deriv(p->group, x, ys, zero, NULL, o);
+    for (int k = 3; k < 6; ++k) o[k] = ldexp(o[k], e);
+    return st;
+}
+
+static int build_c2(ga_path *p)
+{
+    const ga_group *g = p->group;
+    size_t n = p->n, d = g->dim;
+    double rel[MAXE], J[MAXD * MAXD], e[MAXD];
+    int st;
+    memset(p->coef, 0, scheme_doubles(p->scheme, n, d) * sizeof(double));
+    for (size_t i = 0; i + 1 < n; ++i)
+        if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + (3 * i + 2) * d, rel)))
+            return st;
+    /* the ends: the screw velocities theta/h of the end segments (each a body
+       velocity at both its ends); the interior, to start: lihao3's default
+       (the parabola through the neighbouring screw velocities) */
+    for (size_t i = 0; i < n; ++i) {
+        double *v = c2_rate(p, i);
+        if (i == 0 || i + 1 == n) {
+            size_t j = i ? i - 1 : 0;
+            lin(d, v, 1.0 / seg_len(p, j), c2_theta(p, j), 0.0, v);
+        } else {
+            double hl = seg_len(p, i - 1), hr = seg_len(p, i);
+            lin(d, v, hr / ((hl + hr) * hl), c2_theta(p, i - 1), hl / ((hl + hr) * hr), c2_theta(p, i));
+        }
+    }
+    if (!allfinite(p->vel, n * d))
+        return GA_ERR_DOMAIN;
+    if (n > 2) {
+        c2_sys sys = {p, d, c2_theta, c2_rate, c2_scratch, c2_jr, c2_nonlin};
+        if ((st = c2_solve(&sys)))
+            return st;
+    }
+    /* Hermite: a = w_i, x'(h) = J_r^-1(theta) w_{i+1},
+       b = (3 theta - 2h a - h x'(h))/h^2, c = (-2 theta + h a + h x'(h))/h^3 */
+    for (size_t i = 0; i + 1 < n; ++i) {
+        double *A = p->coef + 3 * i * d, *B = A + d, *C = B + d, th[MAXD], h = seg_len(p, i);
+        const double *w = c2_rate(p, i);
+        memcpy(th, C, d * sizeof(double));
+        if ((st = c2_jr(p, th, 1, J)))
+            return st;
+        md_vec(d, J, c2_rate(p, i + 1), e);
+        for (size_t k = 0; k < d; ++k) {
+            A[k] = w[k];
+            B[k] = (3.0 * th[k] - 2.0 * h * w[k] - h * e[k]) / (h * h);
+            C[k] = (-2.0 * th[k] + h * w[k] + h * e[k]) / (h * h * h);
+        }
+    }
+    return GA_OK;
+}
+
+/* x(tau), x'(tau), x''(tau) of C2 segment seg at u (tau = u h, per unit t). */
+static void c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd)
+{
+    size_t d = p->group->dim;
+    const double *A = p->coef + 3 * seg * d, *B = A + d, *C = B + d;
+    double tau = u * seg_len(p, seg);
+    for (size_t k = 0; k < d; ++k) {
+        x[k] = ((C[k] * tau + B[k]) * tau + A[k]) * tau;
+        if (xd)
+            xd[k] = (3.0 * C[k] * tau + 2.0 * B[k]) * tau + A[k];
+        if (xdd)
+            xdd[k] = 6.0 * C[k] * tau + 2.0 * B[k];
+    }
+}
+
 static int build_scheme(ga_path *p, const double *vel)
 {
     switch (p->scheme) {
@@ -951,6 +1154,7 @@ static int build_scheme(ga_path *p, const double *vel)
     }
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: return build_decoupled(p);
+    case GA_SCHEME_C2: return build_c2(p);
     }
     return GA_ERR_ARG;
 }
@@ -1091,7 +1295,7 @@ static int append(ga_path *p, double t, const void *key, int mat4)
         if (i == 0)                          /* one key: nothing was built */
             g->to_qt(key_of(&q, 0), k0, k0 + 4);
         g->to_qt(k, dkey(&q, i + 1), dkey(&q, i + 1) + 4);
-        dec_theta(&q, i);
+        dec_rel_rotation(&q, i);
         dec_linear(&q, i);
         if (!allfinite(dkey(&q, i), 2 * DK) || !allfinite(dseg(&q, i), DS)) {
             memcpy(k0 + 7, saved, sizeof saved);
@@ -1194,6 +1398,14 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
     double x[MAXD], xd[MAXD];
     if (is_decoupled(p->scheme))
         return dec_eval(p, seg, u, out, NULL, NULL);
+    if (p->scheme == GA_SCHEME_C2) { /* A_i exp(x(tau)) */
+        double e[MAXE];
+        c2_curve(p, seg, u, x, NULL, NULL);
+        if ((st = g->exp(x, e)))
+            return st;
+        g->compose(key_of(p, seg), e, out);
+        return finite_elem(g, out);
+    }
     if (nf == 0) { /* exp(X(t)) */
         gen_curve(p, seg, u, x, xd);
         return g->exp(x, out);
@@ -1251,7 +1463,10 @@ static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
         return GA_OK;
     }
     if (nf == 0) { /* J_r(X) X' (group.h dexp), X' per unit t, times h */
-        gen_curve(p, seg, u, x, xd);
+        if (p->scheme == GA_SCHEME_C2)
+            c2_curve(p, seg, u, x, xd, NULL);
+        else
+            gen_curve(p, seg, u, x, xd);
         g->dexp(x, xd, w);
         lin(d, v, seg_len(p, seg), w, 0.0, w);
         return GA_OK;
@@ -1303,6 +1518,55 @@ int ga_path_velocity(const ga_path *p, double t, double *v)
         return GA_OK;
     }
     return st ? st : ga_path_velocity_segment(p, seg, u, v);
+}
+
+/* ---- the growth rule (path.h) ------------------------------------------------------- */
+
+/* The Euclidean norms of the parts of x: rotation and translation on the
+ * rigid groups, the whole element on affine; returns the number of parts. */
+static size_t part_norms(const ga_group *g, const double *x, double *nrm)
+{
+    size_t parts = g->rigid ? 2 : 1, w = g->dim / parts;
+    for (size_t q = 0; q < parts; ++q) {
+        double s = 0.0;
+        for (size_t k = 0; k < w; ++k) s = hypot(s, x[q * w + k]);
+        nrm[q] = s;
+    }
+    return parts;
+}
+
+int ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
+{
+    if (!p || !out)
+        return GA_ERR_ARG;
+    const ga_group *g = p->group;
+    size_t n = p->n, parts = 1;
+    ga_path_growth r = {0.0, 0, n};
+    double chord[2] = {0.0, 0.0}, x[MAXD], rel[MAXE], nrm[2];
+    int st;
+    for (size_t j = 0; j + 1 < n; ++j) {
+        if ((st = rel_log(g, key_of(p, j), key_of(p, j + 1), x, rel)))
+            return st;
+        parts = part_norms(g, x, nrm);
+        for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / seg_len(p, j));
+    }
+    for (size_t i = 0; n > 1 && i < n; ++i) {
+        if ((st = ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x)))
+            return st;
+        part_norms(g, x, nrm);
+        double ratio = 0.0;
+        for (size_t q = 0; q < parts; ++q)
+            if (chord[q] > 0.0)
+                ratio = fmax(ratio, nrm[q] / chord[q]);
+        if (ratio > r.ratio) {
+            r.ratio = ratio;
+            r.key = i;
+        }
+        if (r.first == n && ratio > GA_PATH_GROWTH_MAX)
+            r.first = i;
+    }
+    *out = r;
+    return GA_OK;
 }
 
 /* ---- acceleration ------------------------------------------------------------------ */
@@ -1417,6 +1681,30 @@ static void gen_curve2(const ga_path *p, size_t j, double u, double *xdd)
     for (size_t i = 0; i < d; ++i) xdd[i] = (dk1[i] - dk[i]) / L;
 }
 
+/* The body velocity v (may be NULL) and acceleration a of G = exp(X(t)) with
+ * X = x, X' = xd, X'' = xdd (per unit t): v = J_r(X) X' (group.h dexp); the
+ * jet exp(X + e X' + e^2 X''/2) gives G' and G''/2, and
+ * a = d/dt(G^-1 G') = G^-1 G'' - (G^-1 G')^2. With X'' = 0, a is the term
+ * N(X, X') = (d/dt J_r(X)) X' of the C2 system (c2_solve). */
+static int exp_curve_deriv(const ga_group *g, const double *x, const double *xd, const double *xdd, double *v,
+                           double *a)
+{
+    size_t d = g->dim;
+    double half[MAXD], gi[MAXE], ge[MAXE];
+    int st;
+    for (size_t k = 0; k < d; ++k) half[k] = 0.5 * xdd[k];
+    jet z = {{g->hat(x), g->hat(xd), g->hat(half)}};
+    jet e = jet_exp(z);
+    if ((st = g->exp(x, ge)) || (st = g->inverse(ge, gi)))
+        return st;
+    ga_mat4 G1 = g->to_mat4(gi), V = ga_mat4_mul(G1, e.c[1]), P = ga_mat4_mul(G1, e.c[2]),
+            V2 = ga_mat4_mul(V, V), A;
+    for (int k = 0; k < 16; ++k) A.m[k] = 2.0 * P.m[k] - V2.m[k];
+    if (v)
+        g->dexp(x, xd, v); /* the velocity as ga_path_velocity has it */
+    return vee_scaled(g, A, 1.0 + 2.0 * mat_maxabs(P) + mat_maxabs(V2), a);
+}
+
 /* Body velocity and acceleration per unit u (u^2) on segment seg. */
 static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
 {
@@ -1432,21 +1720,14 @@ static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
         return GA_OK;
     }
     if (nf == 0) {
-        /* G = exp(X(t)): the jet exp(X + e X' + e^2 X''/2) gives G' and G''/2;
-         * body velocity G^-1 G', acceleration d/dt(G^-1 G') = G^-1 G'' - (G^-1 G')^2 */
-        double x[MAXD], xd[MAXD], xdd[MAXD], gi[MAXE], ge[MAXE];
-        gen_curve(p, seg, u, x, xd);
-        gen_curve2(p, seg, u, xdd);
-        for (size_t k = 0; k < d; ++k) xdd[k] *= 0.5;
-        jet z = {{g->hat(x), g->hat(xd), g->hat(xdd)}};
-        jet e = jet_exp(z);
-        if ((st = g->exp(x, ge)) || (st = g->inverse(ge, gi)))
-            return st;
-        ga_mat4 G1 = g->to_mat4(gi), V = ga_mat4_mul(G1, e.c[1]), P = ga_mat4_mul(G1, e.c[2]),
-                V2 = ga_mat4_mul(V, V), A;
-        for (int k = 0; k < 16; ++k) A.m[k] = 2.0 * P.m[k] - V2.m[k];
-        g->dexp(x, xd, v); /* the velocity as ga_path_velocity has it */
-        if ((st = vee_scaled(g, A, 1.0 + 2.0 * mat_maxabs(P) + mat_maxabs(V2), a)))
+        double x[MAXD], xd[MAXD], xdd[MAXD] = {0};
+        if (p->scheme == GA_SCHEME_C2) {
+            c2_curve(p, seg, u, x, xd, xdd);
+        } else {
+            gen_curve(p, seg, u, x, xd);
+            gen_curve2(p, seg, u, xdd);
+        }
+        if ((st = exp_curve_deriv(g, x, xd, xdd, v, a)))
             return st;
         lin(d, v, h, v, 0.0, v);
         lin(d, a, h * h, a, 0.0, a);

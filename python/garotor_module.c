@@ -1099,7 +1099,7 @@ static PyTypeObject PathType = {
         "key "
         "poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
-        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline;\n"
+        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline, c2;\n"
         "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
         "capacity: room for keys to come (append), for the schemes that can append.",
     .tp_methods = Path_methods,

@@ -1270,14 +1270,15 @@ static void test_accel(tk_rng *r)
     /* one key: the constant path on every scheme and group */
     tk_check c_one = tk_begin("one key: the constant path (every scheme, group, evaluator)", 0);
     for (int gi = 0; gi < 3; ++gi)
-        for (int si = 0; si < 6; ++si) {
+        for (int si = 0; si < 7 - (gi == 2); ++si) { /* c2 (si = 6): rigid groups */
+            ga_scheme sch = si < 6 ? all_schemes[si] : GA_SCHEME_C2;
             keyset k;
             k.n = 1;
             k.t[0] = 1.5;
             k.m[0] = rand_rigid(r, 0.1, 3.0, 2.0);
             set_scale(&k);
             pathbuf b;
-            int st = mkpath(&b, gs[gi], all_schemes[si], &k, NULL);
+            int st = mkpath(&b, gs[gi], sch, &k, NULL);
             tk_add_status(&c_one, st, GA_OK);
             if (st)
                 continue;
@@ -1296,6 +1297,27 @@ static void test_accel(tk_rng *r)
             }
         }
     tk_end(&c_one);
+}
+
+/* The checks of one segment i of a rigid path p (cga) against pm (matrix) on
+ * keys k: through the keys (c_key), cga = matrix (c_cm), velocity and
+ * acceleration against central differences (c_v, c_a) at u = 0, 1/4, ..., 1. */
+static void seg_checks(const ga_path *p, const ga_path *pm, const keyset *k, int i, tk_check *c_key,
+                       tk_check *c_cm, tk_check *c_v, tk_check *c_a)
+{
+    double sc = k->scale, sc2 = sc * sc;
+    tk_add(c_key, fmax(mdiff(at_seg(p, i, 0.0), k->m[i]), mdiff(at_seg(p, i, 1.0), k->m[i + 1])) / sc);
+    for (int q = 0; q <= 4; ++q) {
+        double u = 0.25 * q, v[6], a[6], vm[6], am[6], vf[6], af[6];
+        ga_path_differentiate_segment(p, i, u, GA_FRAME_BODY, v, a);
+        ga_path_differentiate_segment(pm, i, u, GA_FRAME_BODY, vm, am);
+        tk_add(c_cm, fmax(mdiff(at_seg(p, i, u), at_seg(pm, i, u)) / sc,
+                          fmax(vdiff(v, vm, 6) / sc, vdiff(a, am, 6) / sc2)));
+        fd_central(p, i, u, 1e-5, vf);
+        fd_accel(p, i, u, GA_FRAME_BODY, 1e-4, af);
+        tk_add(c_v, vdiff(v, vf, 6) / fmax(sc, vnorm(v, 6)));
+        tk_add(c_a, vdiff(a, af, 6) / fmax(sc2, vnorm(a, 6)));
+    }
 }
 
 /* ---- 2c. decoupled, decoupled-c2 ------------------------------------------------- */
@@ -1331,20 +1353,7 @@ static void test_decoupled(tk_rng *r)
             }
             double sc = k.scale, sc2 = sc * sc, jump = 0.0;
             for (int i = 0; i + 1 < k.n; ++i) {
-                tk_add(&c_key,
-                       fmax(mdiff(at_seg(&b.p, i, 0.0), k.m[i]), mdiff(at_seg(&b.p, i, 1.0), k.m[i + 1])) /
-                           sc);
-                for (int q = 0; q <= 4; ++q) {
-                    double u = 0.25 * q, v[6], a[6], vm[6], am[6], vf[6], af[6];
-                    ga_path_differentiate_segment(&b.p, i, u, GA_FRAME_BODY, v, a);
-                    ga_path_differentiate_segment(&bm.p, i, u, GA_FRAME_BODY, vm, am);
-                    tk_add(&c_cm, fmax(mdiff(at_seg(&b.p, i, u), at_seg(&bm.p, i, u)) / sc,
-                                       fmax(vdiff(v, vm, 6) / sc, vdiff(a, am, 6) / sc2)));
-                    fd_central(&b.p, i, u, 1e-5, vf);
-                    fd_accel(&b.p, i, u, GA_FRAME_BODY, 1e-4, af);
-                    tk_add(&c_v, vdiff(v, vf, 6) / fmax(sc, vnorm(v, 6)));
-                    tk_add(&c_a, vdiff(a, af, 6) / fmax(sc2, vnorm(a, 6)));
-                }
+                seg_checks(&b.p, &bm.p, &k, i, &c_key, &c_cm, &c_v, &c_a);
                 if (i + 2 < k.n) { /* key i + 1: arriving against leaving */
                     double v0[6], a0[6], v1[6], a1[6];
                     ga_path_differentiate_segment(&b.p, i, 1.0, GA_FRAME_BODY, v0, a0);
@@ -1387,7 +1396,7 @@ static void test_decoupled(tk_rng *r)
             const ga_group *g = gi ? &ga_group_se3 : &ga_group_cga;
             int st = mkpath(&b, g, GA_SCHEME_DECOUPLED, &k, NULL) | mkpath(&bs, g, GA_SCHEME_SCREW, &k, NULL);
             for (int j = 0; j <= 40; ++j) {
-                double t = k.t[0] + (k.t[k.n - 1] - k.t[0]) * j / 40.0;
+                double t = tgrid(&k, j, 40); /* the last exactly t_{n-1} */
                 tk_add(&c_sl, st ? NAN : mdiff(at(&b.p, t), at(&bs.p, t)));
             }
         }
@@ -1407,7 +1416,7 @@ static void test_decoupled(tk_rng *r)
             const ga_group *g = gi ? &ga_group_se3 : &ga_group_cga;
             int st = mkpath(&b, g, GA_SCHEME_DECOUPLED_C2, &kc, NULL);
             for (int j = 0; j <= 40; ++j) {
-                double t = kc.t[0] + (kc.t[kc.n - 1] - kc.t[0]) * j / 40.0;
+                double t = tgrid(&kc, j, 40);
                 ga_vec3 pos = {c[0].x + t * (c[1].x + t * (c[2].x + t * c[3].x)),
                                c[0].y + t * (c[1].y + t * (c[2].y + t * c[3].y)),
                                c[0].z + t * (c[1].z + t * (c[2].z + t * c[3].z))};
@@ -1432,6 +1441,213 @@ static void test_decoupled(tk_rng *r)
         tk_add_bool(&c_aff, strcmp(ga_scheme_name(ds[si]), si ? "decoupled-c2" : "decoupled") == 0);
     }
     tk_end(&c_aff);
+}
+
+/* ---- 2d. c2 --------------------------------------------------------------------------- */
+
+/* One-sided second-order FD body acceleration from poses alone at (seg, u),
+ * side sgn: y(s) = log(A^-1 A(t + s)) = v s + a s^2/2 + O(s^3) (the body
+ * velocity ODE), so a ~ (-5 y(e) + 4 y(2e) - y(3e))/e^2, error O(e^2). */
+static void fd_accel_pose(const ga_path *p, int seg, double u, int sgn, double eps, double *a)
+{
+    const ga_group *g = p->group;
+    double m0[16], m[16], y[3][12], h = p->t[seg + 1] - p->t[seg];
+    ga_path_eval_segment(p, seg, u, m0);
+    for (int j = 0; j < 3; ++j) {
+        ga_path_eval_segment(p, seg, u + sgn * (j + 1) * eps / h, m);
+        body_log(g, m0, m, y[j]);
+    }
+    for (size_t i = 0; i < g->dim; ++i) a[i] = (-5 * y[0][i] + 4 * y[1][i] - y[2][i]) / (eps * eps);
+}
+
+/* C2 (path.h): through the keys, cga = matrix, analytic derivatives against
+ * differences, C1 and C2 at the keys (analytic, and the FD acceleration gap
+ * falling with the step, where lihao3's stays), keys on one screw motion
+ * reproduced, affine refused. */
+static void test_c2(tk_rng *r)
+{
+    const ga_group *gs[2] = {&ga_group_cga, &ga_group_se3};
+    tk_check c_init = tk_begin("c2: path init (random keys, spacings 0.2..3)", 0);
+    tk_check c_key = tk_begin("c2: through the keys (eval_segment at u = 0, 1), / scale", 1e-14);
+    tk_check c_cm = tk_begin("c2: cga = matrix (pose, velocity, acceleration), / scale^2", 1e-12);
+    tk_check c_v = tk_begin("c2: velocity = central FD of the pose (step 1e-5), / scale", 1e-8);
+    tk_check c_a = tk_begin("c2: acceleration = central FD of velocity (step 1e-4), / scale^2", 1e-6);
+    tk_check c_c1 = tk_begin("c2: velocity continuous at keys (analytic), / scale", 1e-13);
+    tk_check c_c2 = tk_begin("c2: acceleration continuous at keys (analytic), / scale^2", 1e-11);
+    tk_check c_gap = tk_begin("c2: one-sided FD accelerations of the poses agree (step 1e-3), / scale^2",
+                              1e-4);
+    tk_check c_fall = tk_begin("c2: that FD gap falls ~eps^2 (20x for 5x; or <= 1e-7)", 0);
+    tk_check c_l3 = tk_begin_least("lihao3: its FD acceleration gap does not fall (C1 only): gap at 2e-4",
+                                   1e-3);
+    double worst[2] = {0, 0}, ratio = 1e300, l3[2] = {1e300, 1e300};
+    for (int trial = 0; trial < 16; ++trial) {
+        keyset k;
+        random_keys(r, &k, 2 + trial % 7, trial % 5 == 3 ? 4 : 0);
+        pathbuf b, bm, bl;
+        int st = mkpath(&b, &ga_group_cga, GA_SCHEME_C2, &k, NULL),
+            stm = mkpath(&bm, &ga_group_se3, GA_SCHEME_C2, &k, NULL),
+            stl = mkpath(&bl, &ga_group_se3, GA_SCHEME_LIHAO3, &k, NULL);
+        tk_add_status(&c_init, st, GA_OK);
+        tk_add_status(&c_init, stm, GA_OK);
+        if (st || stm || stl)
+            continue;
+        double sc = k.scale, sc2 = sc * sc;
+        for (int i = 0; i + 1 < k.n; ++i) {
+            seg_checks(&b.p, &bm.p, &k, i, &c_key, &c_cm, &c_v, &c_a);
+            if (i + 2 < k.n) { /* key i + 1: arriving against leaving */
+                double v0[6], a0[6], v1[6], a1[6];
+                ga_path_differentiate_segment(&bm.p, i, 1.0, GA_FRAME_BODY, v0, a0);
+                ga_path_differentiate_segment(&bm.p, i + 1, 0.0, GA_FRAME_BODY, v1, a1);
+                double as = fmax(sc2, vnorm(a0, 6));
+                tk_add(&c_c1, vdiff(v0, v1, 6) / fmax(sc, vnorm(v0, 6)));
+                tk_add(&c_c2, vdiff(a0, a1, 6) / as);
+                /* from the poses alone: the one-sided FD accelerations from
+                   both sides at steps 1e-3 and 2e-4 */
+                double eps[2] = {1e-3, 2e-4}, gap[2], gl[2];
+                for (int e = 0; e < 2; ++e) {
+                    double fl[6], fr[6];
+                    fd_accel_pose(&bm.p, i, 1.0, -1, eps[e], fl);
+                    fd_accel_pose(&bm.p, i + 1, 0.0, +1, eps[e], fr);
+                    gap[e] = vdiff(fl, fr, 6) / as;
+                    worst[e] = fmax(worst[e], gap[e]);
+                    fd_accel_pose(&bl.p, i, 1.0, -1, eps[e], fl);
+                    fd_accel_pose(&bl.p, i + 1, 0.0, +1, eps[e], fr);
+                    gl[e] = vdiff(fl, fr, 6);
+                    l3[e] = fmin(l3[e], gl[e]);
+                }
+                tk_add(&c_gap, gap[0]);
+                tk_add_bool(&c_fall, gap[1] <= 1e-7 || gap[0] >= 20 * gap[1]);
+                ratio = fmin(ratio, gap[1] > 1e-7 ? gap[0] / gap[1] : 25);
+                tk_add(&c_l3, gl[1]);
+            }
+        }
+    }
+    tk_end(&c_init);
+    tk_end(&c_key);
+    tk_end(&c_cm);
+    tk_end(&c_v);
+    tk_end(&c_a);
+    tk_end(&c_c1);
+    tk_end(&c_c2);
+    tk_end(&c_gap);
+    tk_end(&c_fall);
+    printf(
+        "     c2 FD acceleration gap / scale^2, step 1e-3: %.3g   step 2e-4: %.3g  (smallest fall %.1fx)\n",
+        worst[0], worst[1], ratio);
+    tk_end(&c_l3);
+    printf("     lihao3 FD acceleration gap, smallest at step 1e-3: %.3g   at 2e-4: %.3g\n", l3[0], l3[1]);
+
+    /* keys on one screw motion exp(t xi) (|w| h < pi, so every relative log
+       is t xi's): the constant velocity solves the C2 system, so c2 is that
+       motion, its velocity xi and its acceleration 0 */
+    tk_check c_sc = tk_begin("c2: keys on one screw motion reproduced, / scale", 1e-13);
+    tk_check c_scv = tk_begin("c2: ... its velocity xi, acceleration 0, / scale^2", 1e-13);
+    for (int trial = 0; trial < 8; ++trial) {
+        keyset k;
+        k.n = 2 + trial % 7;
+        random_times(r, &k);
+        ga_twist xi = rand_twist(r, 0.5, 2.0);
+        for (int i = 0; i < k.n; ++i) {
+            ga_twist x = {tk_scale(xi.w, k.t[i]), tk_scale(xi.v, k.t[i])};
+            k.m[i] = ga_se3_exp(x);
+        }
+        set_scale(&k);
+        double x6[6] = {xi.w.x, xi.w.y, xi.w.z, xi.v.x, xi.v.y, xi.v.z};
+        for (int gi = 0; gi < 2; ++gi) {
+            pathbuf b;
+            int st = mkpath(&b, gs[gi], GA_SCHEME_C2, &k, NULL);
+            for (int j = 0; j <= 40; ++j) {
+                double t = tgrid(&k, j, 40), v[6], a[6];
+                ga_twist x = {tk_scale(xi.w, t), tk_scale(xi.v, t)};
+                tk_add(&c_sc, st ? NAN : mdiff(at(&b.p, t), ga_se3_exp(x)) / k.scale);
+                if (st || ga_path_differentiate(&b.p, t, GA_FRAME_BODY, v, a))
+                    v[0] = NAN;
+                tk_add(&c_scv, fmax(vdiff(v, x6, 6), vnorm(a, 6)) / (k.scale * k.scale));
+            }
+        }
+    }
+    tk_end(&c_sc);
+    tk_end(&c_scv);
+
+    /* screw motions: rigid groups only */
+    tk_check c_aff = tk_begin("c2 on affine: workspace 0, GA_ERR_ARG; the name", 0);
+    keyset k;
+    affine_keys(r, &k, 3);
+    pathbuf b;
+    ga_scheme sc;
+    tk_add_bool(&c_aff, ga_path_workspace_size(&ga_group_affine, GA_SCHEME_C2, 3) == 0);
+    tk_add_status(&c_aff, mkpath(&b, &ga_group_affine, GA_SCHEME_C2, &k, NULL), GA_ERR_ARG);
+    tk_add_bool(&c_aff, strcmp(ga_scheme_name(GA_SCHEME_C2), "c2") == 0 &&
+                            ga_scheme_by_name("c2", &sc) == GA_OK && sc == GA_SCHEME_C2);
+    tk_end(&c_aff);
+}
+
+/* ---- 2e. the growth rule -------------------------------------------------------------- */
+
+/* ga_path_measure_growth (path.h): averages of chords (screw, lihao3 by
+ * default) stay at ratio <= 1; lihao2 given a first velocity far from the
+ * chords breaks the rule at key 0; one key, NULL. (The TUM-like file where
+ * lihao2's recurrence grows by itself is tests/tool_test.sh's.) */
+static void test_growth(tk_rng *r)
+{
+    tk_check c_avg = tk_begin("growth: screw and lihao3 key velocities <= the fastest chord (ratio - 1)",
+                              1e-12);
+    tk_check c_avgf = tk_begin("growth: ... so no key of theirs is flagged", 0);
+    tk_check c_l2 = tk_begin("growth: lihao2 with v0 = 5x the fastest chord flagged at key 0", 0);
+    tk_check c_arg = tk_begin("growth: NULL is GA_ERR_ARG; one key: ratio 0, none flagged", 0);
+    double c2max = 0.0;
+    for (int trial = 0; trial < 12; ++trial) {
+        keyset k;
+        random_keys(r, &k, 3 + trial % 6, 0);
+        const ga_group *g = trial % 2 ? &ga_group_se3 : &ga_group_cga;
+        const ga_scheme av[2] = {GA_SCHEME_SCREW, GA_SCHEME_LIHAO3};
+        pathbuf b;
+        ga_path_growth gr;
+        for (int si = 0; si < 2; ++si) {
+            int st = mkpath(&b, g, av[si], &k, NULL);
+            if (st == GA_OK)
+                st = ga_path_measure_growth(&b.p, &gr);
+            tk_add(&c_avg, st ? NAN : fmax(0.0, gr.ratio - 1.0));
+            tk_add_bool(&c_avgf, st == GA_OK && gr.first == (size_t)k.n && gr.key < (size_t)k.n);
+        }
+        if (mkpath(&b, g, GA_SCHEME_C2, &k, NULL) == GA_OK && ga_path_measure_growth(&b.p, &gr) == GA_OK)
+            c2max = fmax(c2max, gr.ratio);
+        /* the first chord's velocity, each part scaled to 5 times the
+           fastest chord's part */
+        double v0[6], mx[2] = {0, 0};
+        int st = mkpath(&b, g, GA_SCHEME_SCREW, &k, NULL);
+        for (int j = 0; j + 1 < k.n; ++j)
+            for (int q = 0; q < 2; ++q) {
+                const double *x = b.p.coef + 6 * j + 3 * q;
+                mx[q] = fmax(mx[q], sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) / (k.t[j + 1] - k.t[j]));
+            }
+        for (int q = 0; q < 2; ++q) {
+            const double *x = b.p.coef + 3 * q;
+            double nx = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+            for (int i = 0; i < 3; ++i) v0[3 * q + i] = 5.0 * mx[q] * x[i] / nx;
+        }
+        if (st == GA_OK)
+            st = mkpath(&b, g, GA_SCHEME_LIHAO2, &k, v0);
+        if (st == GA_OK)
+            st = ga_path_measure_growth(&b.p, &gr);
+        tk_add_bool(&c_l2, st == GA_OK && gr.first == 0 && gr.ratio >= 5.0 - 1e-12);
+    }
+    pathbuf b;
+    keyset k;
+    ga_path_growth gr;
+    k.n = 1;
+    k.t[0] = 0.5;
+    k.m[0] = rand_rigid(r, 0.1, 3.0, 2.0);
+    tk_add_status(&c_arg, ga_path_measure_growth(NULL, &gr), GA_ERR_ARG);
+    tk_add_status(&c_arg, mkpath(&b, &ga_group_se3, GA_SCHEME_LIHAO2, &k, NULL), GA_OK);
+    tk_add_status(&c_arg, ga_path_measure_growth(&b.p, NULL), GA_ERR_ARG);
+    tk_add_status(&c_arg, ga_path_measure_growth(&b.p, &gr), GA_OK);
+    tk_add_bool(&c_arg, gr.ratio == 0.0 && gr.first == 1);
+    tk_end(&c_avg);
+    tk_end(&c_avgf);
+    tk_end(&c_l2);
+    tk_end(&c_arg);
+    printf("     c2 on the same random keys: largest ratio %.3g\n", c2max);
 }
 
 static void test_errors(void)
@@ -1616,6 +1832,8 @@ int main(void)
     test_c1(&r);
     test_accel(&r);
     test_decoupled(&r);
+    test_c2(&r);
+    test_growth(&r);
     test_cga_se3(&r);
     test_screw(&r);
     test_identities(&r);

@@ -86,7 +86,7 @@ cat >"$d/keys" <<'K'
 1  1 0 0  0 0 0.7071067811865476 0.7071067811865476
 3  2 1 0  0 0 1 0
 K
-for s in screw bivector quadratic smooth lihao2 lihao3; do
+for s in screw bivector quadratic smooth lihao2 lihao3 c2; do
     for group in cga matrix; do
         "$G" interp --scheme "$s" --group "$group" --format pose --samples 7 --in "$d/keys" \
             --out "$d/s.$s.$group" || fail "interp $s $group"
@@ -100,6 +100,28 @@ for s in screw bivector quadratic smooth lihao2 lihao3; do
           if (m < p) p = m; if (p > e) e = p
           if (e > 1e-12) { printf "interp %s: cga and matrix differ by %g on line %d\n", s, e, NR; bad = 1 } }
         END { exit bad }' || fail "interp $s: cga and matrix agree"
+done
+
+# ---- the growth rule of lihao2 (docs/schemes.md, "lihao2: growth") on a
+# TUM-like file (tests/tum_like.awk, seeded): lihao2 gets a warning naming
+# two consecutive keys by their times as written and their lines, and
+# writes its samples (exit 0); lihao3 and c2 on the same file no warning ----
+awk -v n=300 -v seed=7 -f "$(dirname "$0")/tum_like.awk" >"$d/tum300"
+[ "$(wc -l <"$d/tum300")" -eq 300 ] || fail "tum_like.awk: not 300 keys"
+"$G" interp --format pose --normalize --scheme lihao2 --samples 50 --in "$d/tum300" >"$d/g.out" 2>"$d/g.err" ||
+    fail "lihao2 growth: exit status $? (a warning must not fail the run)"
+[ "$(wc -l <"$d/g.out")" -eq 50 ] || fail "lihao2 growth: samples not written"
+sed -n 's/.*on the segment t = \([0-9.]*\) to \([0-9.]*\) (lines \([0-9]*\) to \([0-9]*\)).*/\1 \2 \3 \4/p' "$d/g.err" >"$d/g.seg"
+grep -q "warning: .*tum300: the lihao2 path's velocity grows past 3 times the fastest chord" "$d/g.err" &&
+    [ -s "$d/g.seg" ] || fail "lihao2 growth: no warning: $(cat "$d/g.err")"
+read -r ta tb la lb <"$d/g.seg" || :
+# the segment's keys: lines la and la + 1 of the file, stamped as written
+[ "$lb" = $((la + 1)) ] && [ "$(sed -n "${la}p" "$d/tum300" | cut -d ' ' -f 1)" = "$ta" ] &&
+    [ "$(sed -n "${lb}p" "$d/tum300" | cut -d ' ' -f 1)" = "$tb" ] || fail "lihao2 growth: the segment named is not two keys: $(cat "$d/g.seg")"
+for s in lihao3 c2; do
+    "$G" interp --format pose --normalize --scheme "$s" --samples 50 --in "$d/tum300" >"$d/g.out" 2>"$d/g.err" ||
+        fail "$s on the TUM-like file: $(cat "$d/g.err")"
+    [ -s "$d/g.err" ] && fail "$s on the TUM-like file: a warning: $(cat "$d/g.err")"
 done
 
 # ---- the error table ------------------------------------------------------
@@ -232,7 +254,7 @@ cut -d' ' -f1-8 "$d/bs.cga" | paste -d' ' - "$d/bs.exact" | awk '{ for (i = 2; i
     fail "bspline --extrapolate extend"
 expect_error "interp: bspline outside" "--at time 1305031102.17 is outside the B-spline's range \\[1305031102.18, 1305031102.27\\]" \
     "$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --at 1305031102.17 --out "$d/out"
-expect_error "interp: --scheme unknown" "--scheme must be screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2 or bspline, not 'spline'" \
+expect_error "interp: --scheme unknown" "--scheme must be screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline or c2, not 'spline'" \
     "$G" interp --scheme spline --format pose --in "$d/k3" --samples 3 --out "$d/out"
 expect_error "interp: bspline, 3 keys" "--scheme bspline needs at least 4 keys, found 3" \
     "$G" interp --scheme bspline --format pose --in "$d/k3" --samples 3 --out "$d/out"
@@ -462,6 +484,23 @@ expect_error "--velocities with screw" "--velocities applies only" \
 printf '0 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1\n1 1 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1\n' >"$d/matkeys"
 expect_error "decoupled on affine" "--scheme decoupled is not defined on --group affine" \
     "$G" interp --scheme decoupled --group affine --samples 3 --in "$d/matkeys" --out "$d/out"
+expect_error "c2 on affine" "--scheme c2 is not defined on --group affine" \
+    "$G" interp --scheme c2 --group affine --samples 3 --in "$d/matkeys" --out "$d/out"
+# c2 on keys that lie on one screw motion exp(t xi), at uneven times: that
+# motion, to 1e-13 (the samples against `garotor exp` of t xi)
+printf '%s\n' -0.7 0.4 0.9 2.6 3.1 4.4 >"$d/st"
+awk '{ t = $1; print t * 0.3, t * -0.5, t * 0.4, t * 1.2, t * 0.2, t * -0.7 }' "$d/st" | "$G" exp >"$d/sm" &&
+    paste -d ' ' "$d/st" "$d/sm" >"$d/skeys" || fail "c2 screw keys"
+awk 'BEGIN { for (k = 0; k <= 50; k++) printf "%.17g\n", -0.7 + 5.1 * k / 50 }' >"$d/stimes"
+awk '{ t = $1; printf "%.17g %.17g %.17g %.17g %.17g %.17g\n", t * 0.3, t * -0.5, t * 0.4, t * 1.2, t * 0.2, t * -0.7 }' \
+    "$d/stimes" | "$G" exp >"$d/sexp"
+for group in cga matrix; do
+    "$G" interp --scheme c2 --group "$group" --times "$d/stimes" --in "$d/skeys" >"$d/sc2" 2>"$d/err" ||
+        fail "c2 on one screw motion, $group: $(cat "$d/err")"
+    cut -d ' ' -f 2- "$d/sc2" | paste -d ' ' - "$d/sexp" | awk '{ for (i = 1; i <= 16; i++) { e = $i - $(i + 16)
+        if (e < 0) e = -e; if (e > m) m = e } } END { if (NR != 51 || m > 1e-13) { print NR, m; exit 1 } }' >"$d/err" ||
+        fail "c2 does not reproduce the screw motion on $group: $(cat "$d/err")"
+done
 expect_error "--at not numbers" "--at needs finite times" \
     "$G" interp --format pose --at 0,x --in "$K" --out "$d/out"
 expect_error "--view without --svg" "--view applies only with --svg" \

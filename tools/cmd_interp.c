@@ -511,7 +511,7 @@ int cmd_interp(const cli_opts *o)
     if (o->scheme && ga_scheme_by_name(o->scheme, &scheme) != GA_OK) {
         fprintf(stderr,
                 "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
-                "lihao2, lihao3, decoupled, decoupled-c2 or bspline, not '%s'\n",
+                "lihao2, lihao3, decoupled, decoupled-c2, bspline or c2, not '%s'\n",
                 o->scheme);
         return 2;
     }
@@ -814,6 +814,19 @@ int cmd_interp(const cli_opts *o)
         fprintf(stderr, "garotor interp: %s: cannot build the %s path: %s\n", in.name, ga_scheme_name(scheme),
                 ga_status_string(st));
         goto done;
+    }
+    /* the growth rule (path.h, docs/schemes.md "lihao2"): a warning, the
+       samples are written all the same (exit status 0) */
+    ga_path_growth gr;
+    if (ga_path_measure_growth(&path, &gr) == GA_OK && gr.first < n) {
+        size_t f = gr.first, a = f ? f - 1 : 0, b = f ? f : 1;
+        fprintf(
+            stderr,
+            "garotor interp: warning: %s: the %s path's velocity grows past %g times the fastest chord on "
+            "the segment t = %s to %s (lines %ld to %ld), up to %.3g times at t = %s; --scheme lihao3 or c2 "
+            "follow the chords (docs/schemes.md)\n",
+            in.name, ga_scheme_name(scheme), GA_PATH_GROWTH_MAX, in.first[a], in.first[b], in.item[a].line,
+            in.item[b].line, gr.ratio, in.first[gr.key]);
     }
 
     /* an algebra element as the tool writes it: a twist (6) on a rigid group,

@@ -65,6 +65,8 @@ static const command commands[] = {
      "  --scheme bspline    n >= 4 evenly spaced keys as control poses of the\n"
      "                      uniform cumulative cubic B-spline (C2; the keys are not\n"
      "                      hit), defined from the second key's t to the last but one's\n"
+     "  --scheme c2         C2 through every key from screw motions: a cubic in the\n"
+     "                      twist on each segment (cga, matrix)\n"
      "  --samples N         N >= 2 samples from the first key's t to the last's\n"
      "                      (bspline: over its range)\n"
      "  --at T1,T2,...      samples at these times instead\n"

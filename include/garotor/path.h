@@ -81,6 +81,24 @@
  *              if the sweeps do not converge (never seen with neighbouring
  *              spacings within a factor 3; see docs/schemes.md).
  *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
+ *   C2         rigid groups only (group.h rigid; GA_ERR_ARG on affine):
+ *              A(t) = A_i exp(x(t - t_i)), x a cubic in the twist with
+ *              x(0) = 0, x(h_i) = theta_i = plog(A_i^-1 A_{i+1}), x'(0) = V_i
+ *              and J_r(theta_i) x'(h_i) = V_{i+1}: the body velocity is V_i at
+ *              every key from both sides (C1), and the key velocities
+ *              V_1..V_{n-2} solve the C2 conditions, the system of
+ *              DECOUPLED_C2 with the twist for the rotation vector and the
+ *              group's right Jacobian (dexp) for SO(3)'s: block-tridiagonal,
+ *              nonlinear through N(x, x') = d/dt(J_r(x)) x' (the body
+ *              acceleration is J_r(x) x'' + N, N taken from the 4x4 jet of
+ *              the acceleration below), solved by the same Newton sweeps.
+ *              End conditions: V_0 = theta_0/h_0, V_{n-1} = theta_{n-2}/h_{n-2},
+ *              the screw velocities of the end segments. Keys on one screw
+ *              motion exp(t xi) (every theta_i = h_i xi) give exactly that
+ *              motion: V_i = xi solves the system with N = 0. Invariant under
+ *              changes of world and body frame, like SCREW and LIHAO3.
+ *              GA_ERR_DOMAIN if the sweeps do not converge (docs/schemes.md:
+ *              none seen with neighbouring spacings within a factor 3).
  *
  *   BSPLINE    the uniform cumulative cubic B-spline with the keys as control
  *              poses (approximating: the keys are not hit). Needs n >= 4 keys
@@ -199,12 +217,13 @@ typedef enum {
     GA_SCHEME_LIHAO3,
     GA_SCHEME_DECOUPLED,
     GA_SCHEME_DECOUPLED_C2,
-    GA_SCHEME_BSPLINE
+    GA_SCHEME_BSPLINE,
+    GA_SCHEME_C2
 } ga_scheme;
 
 /** The number of schemes: GA_SCHEME_SCREW .. GA_SCHEME_COUNT - 1 are all of
  *  them (for loops over every scheme). */
-#define GA_SCHEME_COUNT 9
+#define GA_SCHEME_COUNT 10
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
 
@@ -235,17 +254,19 @@ typedef struct {
     double *t;         /**< the n key times */
     double *key;       /**< the n keys, each group->elem_size bytes, padded to doubles */
     size_t key_stride; /**< doubles from one key to the next */
-    double *coef;      /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units) */
+    double *coef;      /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units); C2: per segment the
+                            cubic's a, b, c (x = a tau + b tau^2 + c tau^3, t units) */
     double *gen;       /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
     double *slope;     /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
-    double *vel;       /**< LIHAO2/LIHAO3: the body velocity at each key (per unit t) */
+    double *vel;       /**< LIHAO2/LIHAO3/C2: the body velocity at each key (per unit t); C2: then the
+                            solver's scratch */
     double *dec;       /**< DECOUPLED/DECOUPLED_C2: per key q, p, angular rate, position slope (13
                             doubles), then per segment the rotation and position cubics (21) */
     int v0_given;      /**< LIHAO2 built from one key: its velocity was given (ga_path_append) */
 } ga_path;
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3",
- *  "decoupled", "decoupled-c2", "bspline". */
+ *  "decoupled", "decoupled-c2", "bspline", "c2". */
 const char *ga_scheme_name(ga_scheme s);
 /** The scheme called name; GA_ERR_ARG if there is none. */
 int ga_scheme_by_name(const char *name, ga_scheme *out);
@@ -278,7 +299,7 @@ size_t ga_times_uneven(size_t n, const double *times);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
  *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
- *  without to_qt/from_qt, i.e. affine). */
+ *  without to_qt/from_qt, C2 on a group that is not rigid: affine). */
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
 
 /** Build into *out a path through n keys (n group elements, each
@@ -353,6 +374,33 @@ int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, dou
 /** The same on segment seg at any finite u (outside [0, 1]: the segment's
  *  formula continued, as ga_path_eval_segment). */
 int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a);
+
+/** The growth rule (docs/schemes.md, "lihao2: growth"): a path whose
+ *  velocity at some key exceeds GA_PATH_GROWTH_MAX times the fastest chord of
+ *  the path. The chord speed of segment j is its screw velocity
+ *  s_j = plog(A_j^-1 A_{j+1})/h_j; on the rigid groups the rotation (first
+ *  three) and translation (last three) parts of a twist are measured apart
+ *  (Euclidean norms), on affine the whole algebra element. Key i's ratio is
+ *  the largest over the parts of |part of V_i| / max_j |part of s_j|, V_i
+ *  the body velocity at t_i (the segment starting there; the last key: the
+ *  one ending there); a part whose chords are all zero is not measured.
+ *  Schemes whose key velocities are averages of chords (screw, lihao3 by
+ *  default) have ratios of at most 1; lihao2's recurrence
+ *  V_{i+1} = (Ad B_i + 2 C_i)/h_i can grow along the keys without bound. */
+#define GA_PATH_GROWTH_MAX 3.0
+
+/** What ga_path_measure_growth found. */
+typedef struct {
+    double ratio; /**< the largest ratio over the keys (0 for one key) */
+    size_t key;   /**< the key where it is largest */
+    size_t first; /**< the first key whose ratio exceeds GA_PATH_GROWTH_MAX; n if none: the velocity that
+                       the segment first - 1 (from t_{first-1} to t_first) carried to it, or for key 0 the
+                       velocity given there (lihao2's v0), is the first past the rule */
+} ga_path_growth;
+
+/** Measure the growth rule on p (any scheme); GA_ERR_ARG for NULL; a failing
+ *  log or velocity is passed on. */
+int ga_path_measure_growth(const ga_path *p, ga_path_growth *out);
 
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 12

@@ -15,7 +15,7 @@ import pytest
 import garotor
 
 EPS = np.finfo(float).eps
-SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2"]
+SCHEMES = ["screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3", "decoupled", "decoupled-c2", "c2"]
 GROUPS = ["cga", "matrix", "affine"]
 
 
@@ -78,7 +78,7 @@ def keys_for(rng, group, n):
 def test_path_sample_equals_tool(tool, rng, scheme, group):
     n = 3 if scheme == "quadratic" else 5
     times, K = keys_for(rng, group, n)
-    if scheme.startswith("decoupled") and group == "affine":
+    if scheme in ("decoupled", "decoupled-c2", "c2") and group == "affine":
         # a rotation and a position to interpolate apart: rigid groups only
         with pytest.raises(ValueError, match="is not defined on group 'affine'"):
             garotor.Path(times, K, scheme=scheme, group=group)
@@ -158,6 +158,38 @@ def test_acceleration_is_derivative_of_velocity(rng, scheme, group):
     # the screw's body velocity is constant on a segment
     if scheme == "screw":
         assert np.abs(a).max() < 1e-12 * (1 + np.abs(p.velocity(t)).max())
+
+
+@pytest.mark.parametrize("group", ["cga", "matrix"])
+def test_c2_path(tool, rng, group):
+    """c2: the tool's samples, velocity and acceleration against differences,
+    the acceleration continuous at the keys, cga and matrix alike."""
+    n = 6
+    times, K = keys_for(rng, group, n)
+    p = garotor.Path(times, K, scheme="c2", group=group)
+    assert p.scheme == "c2"
+    t = np.concatenate([np.sort(rng.uniform(times[0], times[-1], size=30)), times])
+    rows = np.column_stack([times, K.reshape(n, 16)])
+    out = tool(["interp", "--scheme", "c2", "--group", group, "--at", ",".join("%.17g" % v for v in t)], rows)
+    assert np.array_equal(p.sample(t).reshape(-1, 16), out[:, 1:])
+    h = 1e-5
+    seg = rng.integers(0, n - 1, size=30)
+    s = times[seg] + rng.uniform(0.2, 0.8, size=30) * (times[seg + 1] - times[seg])
+    rel = garotor.compose(garotor.inverse(p.sample(s - h)), p.sample(s + h))
+    v = p.velocity(s)
+    assert np.abs(garotor.log(rel) / (2 * h) - v).max() < 1e-7 * (1 + np.abs(v).max())
+    a = p.acceleration(s)
+    fd = (p.velocity(s + h) - p.velocity(s - h)) / (2 * h)
+    assert np.abs(fd - a).max() < 1e-6 * (1 + np.abs(a).max())
+    # at an interior key, the acceleration arriving (just before) and leaving
+    ak = p.acceleration(times[1:-1])
+    e = 1e-6
+    before = p.acceleration(times[1:-1] - e)
+    assert np.abs(before - ak).max() < 1e-4 * (1 + np.abs(ak).max())
+    other = garotor.Path(times, K, scheme="c2", group="matrix" if group == "cga" else "cga")
+    assert np.abs(other.sample(t) - p.sample(t)).max() < 1e-12 * (1 + np.abs(K).max())
+    with pytest.raises(ValueError, match="is not defined on group .affine."):
+        garotor.Path(times, K, scheme="c2", group="affine")
 
 
 # ---- the group operations -------------------------------------------------
