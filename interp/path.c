@@ -1847,6 +1847,10 @@ static int euler_sample(const ga_path *p, double h, size_t *cur, size_t *grid, d
     size_t d = g->dim;
     int st;
     double v[MAXD], e[MAXE], tmp[MAXE];
+    if (p->n == 1) { /* the constant path: its key, on every scheme */
+        copy_elem(g, out, key_of(p, 0));
+        return GA_OK;
+    }
     if (*cur != seg || (double)*grid * h > u) {
         if (p->scheme == GA_SCHEME_BSPLINE) { /* the knot's pose, no key */
             if ((st = ga_path_eval_segment(p, seg, 0.0, A)))

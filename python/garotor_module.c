@@ -1232,6 +1232,10 @@ static PyObject *MV_truediv(PyObject *x, PyObject *y)
     double s = PyFloat_AsDouble(y);
     if (s == -1.0 && PyErr_Occurred())
         return NULL;
+    if (s == 0.0) { /* as Python's float division */
+        PyErr_SetString(PyExc_ZeroDivisionError, "Multivector division by zero");
+        return NULL;
+    }
     for (int i = 0; i < 32; i++) a.c[i] /= s;
     return mv_new(a);
 }

@@ -256,7 +256,7 @@ expect_error "interp: bspline outside" "--at time 1305031102.17 is outside the B
     "$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --at 1305031102.17 --out "$d/out"
 expect_error "interp: --scheme unknown" "--scheme must be screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline or c2, not 'spline'" \
     "$G" interp --scheme spline --format pose --in "$d/k3" --samples 3 --out "$d/out"
-expect_error "interp: bspline, 3 keys" "--scheme bspline needs at least 4 keys, found 3" \
+expect_error "interp: bspline, 3 keys" "--scheme bspline needs one key or at least 4, found 3" \
     "$G" interp --scheme bspline --format pose --in "$d/k3" --samples 3 --out "$d/out"
 sed 's/^1305031102.22 /1305031102.2201 /' "$d/bs" >"$d/bs.uneven"
 expect_error "interp: bspline uneven" "bs.uneven:6: --scheme bspline needs evenly spaced key times (to 1e-9 of the spacing): 1305031102.2201 is 0.0001 s off" \
@@ -271,6 +271,11 @@ expect_error "interp: a sample fails after 3000 (stdout)" "sampling failed" \
     "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend
 expect_error "interp: a sample fails after 3000 (--out)" "sampling failed" \
     "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend --out "$d/out"
+expect_error "interp: --out and --svg one file" "--out and --svg name the same file: $d/same" \
+    "$G" interp --format pose --in "$d/k3" --samples 3 --out "$d/same" --svg "$d/same"
+expect_error "interp: a velocity overflows" "sample 1: no velocity: outside the domain" \
+    "$G" interp --format pose --scheme smooth --at 1e4 --extrapolate extend --with velocity \
+    --in "$(dirname "$doc")/figures/schemes.keys" --out "$d/out"
 # the chunked samples are those of one call: the same lines to standard output,
 # to a file and to a FIFO, for every kind of sample time and evaluator
 mkfifo "$d/fifo" 2>/dev/null || :
@@ -433,9 +438,9 @@ expect_error "interp: --rate huge" "--rate 1.0000000000000001e+300 gives more th
     "$G" interp --format pose --in "$d/k3" --rate 1e300 --out "$d/out"
 expect_error "interp: --extrapolate" "--extrapolate must be error, hold or extend, not 'wrap'" \
     "$G" interp --format pose --in "$d/k3" --rate 1 --extrapolate wrap --out "$d/out"
-expect_error "interp: too few keys (smooth)" "two: --scheme smooth needs at least 3 keys" \
+expect_error "interp: too few keys (smooth)" "two: --scheme smooth needs one key or at least 3, found 2" \
     "$G" interp --scheme smooth --format pose --samples 3 --in "$d/two" --out "$d/out"
-expect_error "interp: quadratic needs 3" "two: --scheme quadratic needs exactly 3 keys" \
+expect_error "interp: quadratic needs 3" "two: --scheme quadratic needs one key or exactly 3, found 2" \
     "$G" interp --scheme quadratic --format pose --samples 3 --in "$d/two" --out "$d/out"
 printf '0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0.6 0.6\n' >"$d/badq"
 expect_error "interp: quaternion not unit" "badq:2: not a rigid motion: the quaternion" \
@@ -467,8 +472,10 @@ expect_error "interp: neither --samples nor --at" "give one of --samples N" \
 # ---- more of the error table ----------------------------------------------
 K="$d/keys"
 expect_error "missing value" "missing value for: --samples" "$G" interp --in "$K" --samples
-expect_error "--step not > 0" "--step needs a number > 0, not: 0" \
+expect_error "--step not > 0" "--step needs a number in \\[1e-9, 1\\] (u units), not: 0" \
     "$G" interp --format pose --samples 3 --eval euler --step 0 --in "$K" --out "$d/out"
+expect_error "--step above 1" "--step needs a number in \\[1e-9, 1\\] (u units), not: 2" \
+    "$G" interp --format pose --samples 3 --eval euler --step 2 --in "$K" --out "$d/out"
 expect_error "--v0 not a number" "--v0 needs 6 finite numbers, not: x" \
     "$G" interp --scheme lihao2 --format pose --samples 3 --v0 1 2 3 4 5 x --in "$K" --out "$d/out"
 expect_error "unknown eval" "--eval must be" \

@@ -521,7 +521,7 @@ int cmd_interp(const cli_opts *o)
         return 2;
     }
     if (ev == GA_EVAL_EULER && !(o->given & OPT_STEP)) {
-        fprintf(stderr, "garotor interp: --eval euler needs --step H (in u units, 0 < H <= 1)\n");
+        fprintf(stderr, "garotor interp: --eval euler needs --step H (in u units, 1e-9 <= H <= 1)\n");
         return 2;
     }
     if ((o->given & OPT_STEP) && ev != GA_EVAL_EULER) {
@@ -598,6 +598,15 @@ int cmd_interp(const cli_opts *o)
     svg_view view;
     if (svg_options(cmd, o->svg, o->view, &view) || html_options(cmd, o->html))
         return 2;
+    /* one file for two outputs: the second would silently replace the first */
+    const char *files[3] = {o->out, o->svg, o->html}, *opt[3] = {"--out", "--svg", "--html"};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (files[i] && files[j] && strcmp(files[i], files[j]) == 0) {
+                fprintf(stderr, "garotor interp: %s and %s name the same file: %s\n", opt[i], opt[j],
+                        files[i]);
+                return 2;
+            }
 
     tio_items in = {0}, vin = {0}, tin = {0};
     double *times = NULL, *at = NULL, *vel = NULL, *key_t = NULL;
@@ -651,7 +660,7 @@ int cmd_interp(const cli_opts *o)
     }
     size_t min = ga_scheme_min_keys(scheme);
     if (n != 1 && (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
-        fprintf(stderr, "garotor interp: %s: --scheme %s needs %s %zu keys, found %zu\n", in.name,
+        fprintf(stderr, "garotor interp: %s: --scheme %s needs one key or %s %zu, found %zu\n", in.name,
                 ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
         goto done;
     }

@@ -217,8 +217,8 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
             break;
         }
         case OPT_STEP:
-            if (parse_double(v, &o->step) || !(o->step > 0.0))
-                return usage_error(c->name, "--step needs a number > 0, not", v);
+            if (parse_double(v, &o->step) || !(o->step >= 1e-9 && o->step <= 1.0)) /* path.h */
+                return usage_error(c->name, "--step needs a number in [1e-9, 1] (u units), not", v);
             break;
         case OPT_V0:
             for (int j = 0; j < 6; j++)

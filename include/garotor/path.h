@@ -419,7 +419,8 @@ typedef struct {
 /** Prepare n >= 1 samples at t_k = t0 + k (t1 - t0)/(n - 1), the last exactly
  *  t1, [t0, t1] inside ga_path_range (n = 1: t0 alone), each rounded to a double
  *  (EXACT: only at its anchors, whole steps from there; see EXACT above).
- *  step: the Euler step in u units (> 0), ignored by the other evaluators. */
+ *  step: the Euler step in u units, in [1e-9, 1] (else GA_ERR_ARG), ignored by
+ *  the other evaluators. */
 int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
                          ga_path_stepper *out);
 /** Write the next sample to out, advancing s. GA_ERR_ARG after the last. */

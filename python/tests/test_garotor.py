@@ -387,6 +387,9 @@ def test_multivector_algebra(rng):
     assert isinstance(np.float64(2) * e1, garotor.Multivector)
     with pytest.raises(ValueError):
         garotor.Multivector(np.zeros(31))
+    assert (e1 / 2) == 0.5 * e1
+    with pytest.raises(ZeroDivisionError):
+        e1 / 0
 
 
 def test_multivector_exp_log_up_down(rng):
