@@ -22,7 +22,8 @@
 #      in the decimal text) changes no sample by more than 1e-12 relative, the
 #      computed stamps differ by exactly the shift, and the samples at keys on
 #      the 100 Hz grid are stamped as those keys were written (0.2600, not 0.26).
-# The worst figures are printed, one line each.
+# The worst figures are printed, one line each. With --log [1] instead of
+# the tool, the script prints the log (1: stamped from 0) and exits.
 set -u
 G=$1
 d=$(mktemp -d)
@@ -56,6 +57,11 @@ gen() {
         }
     }'
 }
+# tests/tum_check.sh --log [shifted]: print the log (0: epoch stamps, 1: from 0)
+if [ "$G" = --log ]; then
+    gen "${2:-0}"
+    exit 0
+fi
 gen 0 >"$d/keys"
 gen 1 >"$d/keys0"
 # the file is what it should be: norms off by up to 1e-4, the flips, the half turn
