@@ -829,13 +829,19 @@ int cmd_interp(const cli_opts *o)
     ga_path_growth gr;
     if (ga_path_measure_growth(&path, &gr) == GA_OK && gr.first < n) {
         size_t f = gr.first, a = f ? f - 1 : 0, b = f ? f : 1;
+        char ratio[32]; /* 3 digits, or as many as show it past the bound (3.0004, not 3) */
+        for (int dig = 3; dig <= 17; dig++) {
+            snprintf(ratio, sizeof ratio, "%.*g", dig, gr.ratio);
+            if (strtod(ratio, NULL) > GA_PATH_GROWTH_MAX)
+                break;
+        }
         fprintf(
             stderr,
             "garotor interp: warning: %s: the %s path's velocity grows past %g times the fastest chord on "
-            "the segment t = %s to %s (lines %ld to %ld), up to %.3g times at t = %s; --scheme lihao3 or c2 "
+            "the segment t = %s to %s (lines %ld to %ld), up to %s times at t = %s; --scheme lihao3 or c2 "
             "follow the chords (docs/schemes.md)\n",
             in.name, ga_scheme_name(scheme), GA_PATH_GROWTH_MAX, in.first[a], in.first[b], in.item[a].line,
-            in.item[b].line, gr.ratio, in.first[gr.key]);
+            in.item[b].line, ratio, in.first[gr.key]);
     }
 
     /* an algebra element as the tool writes it: a twist (6) on a rigid group,
