@@ -32,7 +32,10 @@
  *                     beyond ~4.5e4 reads as the point at infinity).
  *   expm              ||a||_1 <= 100: GA_OK and finite (e^100 ~ 3e43).
  *   logm round trip   logm(expm(X)) = X for ||X||_1 <= 1 (all eigenvalues
- *                     well inside the principal strip), to 1e-9.
+ *                     well inside the principal strip), to 1e-9; and
+ *                     logm(1e-4 expm(X)) = X + log(1e-4) I likewise.
+ *   logm diagonal     a positive diagonal has GA_OK and diag(log a_ii), to
+ *                     1e-12 relative.
  *   mv exp/log        (op "mv", on the bivector part) exp of a bivector up
  *                     to 8 is a finite rotor; exp(log R) = R to 1e-12 |R|
  *                     where every rotation half-angle is at most 1.5 and
@@ -344,6 +347,26 @@ static void op_expm_logm(fz_reader *rd)
         FZ_CHECK(st == GA_OK, "logm(expm(X)), ||X||_1 = %.3g, fails: %d", n1, st);
         double d = mat_dist(back, a, 1.0);
         FZ_CHECK(d <= 1e-9, "logm(expm(X)) = X: off by %.3g", d);
+        /* scaled: log(c e^X) = X + log(c) I, c = 1e-4 (eigenvalues near 0,
+         * where a Schur form of A - I loses digits) */
+        ga_mat4 sc = e;
+        for (int i = 0; i < 16; i++) sc.m[i] *= 1e-4;
+        st = ga_mat4_logm(sc, &back);
+        FZ_CHECK(st == GA_OK, "logm(1e-4 expm(X)), ||X||_1 = %.3g, fails: %d", n1, st);
+        for (int i = 0; i < 4; i++) back.m[5 * i] -= log(1e-4);
+        d = mat_dist(back, a, 1.0);
+        FZ_CHECK(d <= 1e-9, "logm(1e-4 expm(X)) = X + log(1e-4) I: off by %.3g", d);
+    }
+    /* a positive diagonal always has a log: diag(log a_ii) */
+    int diag = 1;
+    for (int i = 0; i < 16; i++) diag &= i % 5 == 0 ? a.m[i] > 0.0 : a.m[i] == 0.0;
+    if (diag) {
+        FZ_CHECK(lst == GA_OK, "logm of a positive diagonal fails: %d", lst);
+        for (int i = 0; i < 4; i++) {
+            double w = log(a.m[5 * i]);
+            FZ_CHECK(fabs(l.m[5 * i] - w) <= 1e-12 * fmax(1.0, fabs(w)),
+                     "logm of a diagonal: %.17g, not %.17g", l.m[5 * i], w);
+        }
     }
 }
 

@@ -5,6 +5,9 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #define M(a, i, j) ((a).m[4 * (i) + (j)])
 
@@ -183,15 +186,6 @@ static ga_mat4 lu4_solve(const lu4 *f, ga_mat4 b)
         if (f->ce[i])
             for (int j = 0; j < 4; j++) M(b, i, j) = ldexp(M(b, i, j), -f->ce[i]);
     return b;
-}
-
-/* log |det A| from the factors (the scalings and the pivots). */
-static double lu4_logabsdet(const lu4 *f)
-{
-    const double ln2 = 0.693147180559945309417232121458;
-    double l = 0.0;
-    for (int i = 0; i < 4; i++) l += log(fabs(M(f->lu, i, i))) + (f->re[i] + f->ce[i]) * ln2;
-    return l;
 }
 
 int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
@@ -449,18 +443,237 @@ ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi)
     return r;
 }
 
-/* ---- general exp: scaling and squaring (Higham 2005) ------------------- */
+/* ---- general exp: scaling and squaring (Al-Mohy & Higham 2009) --------- */
+
+/* The product a*b of two matrices whose last rows are (0 0 0 a33) and
+ * (0 0 0 b33): a homogeneous generator [B v; 0 0], I, and every polynomial
+ * in them, which the product is again:
+ *   [Ba va; 0 a33] [Bb vb; 0 b33] = [Ba Bb, Ba vb + b33 va; 0 a33 b33],
+ * 40 multiplications instead of 64. */
+static inline ga_mat4 mat4_mul_ut(const ga_mat4 *a, const ga_mat4 *b)
+{
+    /* row i of c as a combination of b's rows:
+     * c_ij = (a_i0 b_0j + a_i1 b_1j) + a_i2 b_2j, and c_i3 plus a_i3 b_33 */
+    ga_mat4 c;
+#if defined(__SSE2__)
+    /* the same operations in the same order, two entries per instruction
+     * (gcc's own vectorisation of the loop below shuffles more than it
+     * computes once inlined into ga_mat4_expm); adding -0.0 is exact */
+    const double *bm = b->m;
+    __m128d b0l = _mm_loadu_pd(bm), b0h = _mm_loadu_pd(bm + 2), b1l = _mm_loadu_pd(bm + 4),
+            b1h = _mm_loadu_pd(bm + 6), b2l = _mm_loadu_pd(bm + 8), b2h = _mm_loadu_pd(bm + 10);
+    for (int i = 0; i < 3; i++) {
+        __m128d x0 = _mm_set1_pd(M(*a, i, 0)), x1 = _mm_set1_pd(M(*a, i, 1)), x2 = _mm_set1_pd(M(*a, i, 2));
+        __m128d lo = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, b0l), _mm_mul_pd(x1, b1l)), _mm_mul_pd(x2, b2l));
+        __m128d hi = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, b0h), _mm_mul_pd(x1, b1h)), _mm_mul_pd(x2, b2h));
+        hi = _mm_add_pd(hi, _mm_set_pd(M(*a, i, 3) * M(*b, 3, 3), -0.0));
+        _mm_storeu_pd(&M(c, i, 0), lo);
+        _mm_storeu_pd(&M(c, i, 2), hi);
+    }
+#else
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 4; j++)
+            M(c, i, j) = M(*a, i, 0) * M(*b, 0, j) + M(*a, i, 1) * M(*b, 1, j) + M(*a, i, 2) * M(*b, 2, j);
+        M(c, i, 3) += M(*a, i, 3) * M(*b, 3, 3);
+    }
+#endif
+    M(c, 3, 0) = M(c, 3, 1) = M(c, 3, 2) = 0.0;
+    M(c, 3, 3) = M(*a, 3, 3) * M(*b, 3, 3);
+    return c;
+}
+
+static inline ga_mat4 mat4_mul_any(const ga_mat4 *a, const ga_mat4 *b, int h)
+{
+    return h ? mat4_mul_ut(a, b) : ga_mat4_mul(*a, *b);
+}
+
+/* ||a||_1 of a finite a (no NaN to propagate), the column sums as one vector
+ * expression */
+static double norm1_finite(const ga_mat4 *a)
+{
+    double s[4];
+    for (int j = 0; j < 4; j++)
+        s[j] = fabs(M(*a, 0, j)) + fabs(M(*a, 1, j)) + fabs(M(*a, 2, j)) + fabs(M(*a, 3, j));
+    double s01 = s[0] > s[1] ? s[0] : s[1], s23 = s[2] > s[3] ? s[2] : s[3];
+    return s01 > s23 ? s01 : s23;
+}
+
+/* ell(A, m) of Al-Mohy & Higham 2009 (eq. 5.3 and Alg. 5.1): the number of
+ * extra squarings that bring the leading backward-error term
+ * |c_{2m+1}| || |A|^{2m+1} ||_1 / ||A||_1 down to u = 2^-53, with
+ * c_{2m+1} = (m!)^2 / ((2m)! (2m+1)!). || |A|^k ||_1 = max of e^T |A|^k
+ * exactly (the paper estimates it), the vector rescaled by 2^-+500 (exact)
+ * whenever it leaves [2^-500, 2^500], so that it can neither overflow nor
+ * lose its largest entry to underflow. */
+static int expm_ell(const ga_mat4 *a, double norm, int m, double log2c)
+{
+    if (!(norm > 0.0))
+        return 0;
+    double ab[16], v[4] = {1.0, 1.0, 1.0, 1.0}, mx = 1.0;
+    int e = 0;
+    for (int i = 0; i < 16; i++) ab[i] = fabs(a->m[i]);
+    for (int k = 0; k < 2 * m + 1; k++) {
+        double w[4];
+        mx = 0.0;
+        for (int j = 0; j < 4; j++) {
+            w[j] = v[0] * ab[j] + v[1] * ab[4 + j] + v[2] * ab[8 + j] + v[3] * ab[12 + j];
+            mx = w[j] > mx ? w[j] : mx;
+        }
+        if (!(mx > 0.0))
+            return 0; /* |A| nilpotent: no truncation error at all */
+        double f = mx > 0x1p500 ? 0x1p-500 : mx < 0x1p-500 ? 0x1p500 : 1.0;
+        e += f > 1.0 ? -500 : f < 1.0 ? 500 : 0;
+        mx *= f;
+        for (int j = 0; j < 4; j++) v[j] = w[j] * f;
+    }
+    double l = ceil((log2c + log2(mx) + e - log2(norm) + 53.0) / (2 * m));
+    return l > 0.0 ? (l < 64.0 ? (int)l : 64) : 0;
+}
+
+/* X = 2 D^{-1} U for D = V - U, when the last rows are D: (0 0 0 b_0) and
+ * U: 0 (a homogeneous generator). D is block triangular, [D3 d; 0 b_0], and
+ * D [X3 x; 0 0] = U gives D3 [X3 x] = [U3 u]: one 3x3 elimination with
+ * partial pivoting, four right-hand sides; d and b_0 play no part. 0 if a
+ * pivot is at most 4 eps max |D3_ij| (a guard: the caller then takes the
+ * 4x4 LU with its equilibrated retry). */
+static int expm_solve3(const ga_mat4 *d, const ga_mat4 *u, ga_mat4 *x)
+{
+    /* rows [D3_i | U_i], 7 entries each, permuted through pointers: the
+     * pivot choices are selections, not branches or row copies */
+    double rows[3][7], big = 0.0;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            rows[i][j] = M(*d, i, j);
+            big = fabs(rows[i][j]) > big ? fabs(rows[i][j]) : big;
+        }
+        for (int j = 0; j < 4; j++) rows[i][3 + j] = M(*u, i, j);
+    }
+    double *r0 = rows[0], *r1 = rows[1], *r2 = rows[2], *t;
+    /* column 0: the largest of three to the top, then of two */
+    t = fabs(r1[0]) > fabs(r0[0]) ? r1 : r0;
+    r1 = t == r1 ? r0 : r1;
+    r0 = t;
+    t = fabs(r2[0]) > fabs(r0[0]) ? r2 : r0;
+    r2 = t == r2 ? r0 : r2;
+    r0 = t;
+    double tol = 4.0 * DBL_EPSILON * big;
+    if (!(fabs(r0[0]) > tol))
+        return 0;
+    double f1 = r1[0] / r0[0], f2 = r2[0] / r0[0];
+    for (int j = 1; j < 7; j++) {
+        r1[j] -= f1 * r0[j];
+        r2[j] -= f2 * r0[j];
+    }
+    t = fabs(r2[1]) > fabs(r1[1]) ? r2 : r1;
+    r2 = t == r2 ? r1 : r2;
+    r1 = t;
+    if (!(fabs(r1[1]) > tol))
+        return 0;
+    double f = r2[1] / r1[1];
+    for (int j = 2; j < 7; j++) r2[j] -= f * r1[j];
+    if (!(fabs(r2[2]) > tol))
+        return 0;
+    for (int j = 0; j < 4; j++) {
+        double x2 = r2[3 + j] / r2[2];
+        double x1 = (r1[3 + j] - r1[2] * x2) / r1[1];
+        double x0 = (r0[3 + j] - r0[1] * x1 - r0[2] * x2) / r0[0];
+        M(*x, 0, j) = 2.0 * x0;
+        M(*x, 1, j) = 2.0 * x1;
+        M(*x, 2, j) = 2.0 * x2;
+        M(*x, 3, j) = 0.0;
+    }
+    return 1;
+}
+
+/* The diagonal blocks of A when A is upper quasi-triangular with blocks of
+ * size 1 and 2 (every entry below them 0): their starts and sizes, and the
+ * count; 0 if A is not of that form. */
+static int qt_blocks(const ga_mat4 *a, int bs[4], int bz[4])
+{
+    int nb = 0;
+    for (int p = 0; p < 4;) {
+        int z = (p < 3 && M(*a, p + 1, p) != 0.0) ? 2 : 1;
+        for (int j = p; j < p + z; j++)
+            for (int i = p + z; i < 4; i++)
+                if (M(*a, i, j) != 0.0)
+                    return 0;
+        bs[nb] = p;
+        bz[nb++] = z;
+        p += z;
+    }
+    return nb;
+}
+
+/* sinh(x)/x */
+static double sinch(double x) { return fabs(x) < 0x1p-26 ? 1.0 : sinh(x) / x; }
+
+/* The diagonal blocks of exp(2^k A), and the superdiagonal entry between two
+ * adjacent 1x1 blocks, written into x exactly (to rounding) instead of as
+ * the squarings left them (Al-Mohy & Higham 2009, sec. 2 and Code Fragment
+ * 2.1, which scipy applies to triangular input; the 2x2 blocks by the closed
+ * form e^m (cosh mu I + sinch mu N), N = B - m I, mu^2 = -det N, the form
+ * scipy uses for 2x2 input). plain: x holds exp; else exp - I. */
+static void expm_fix_blocks(ga_mat4 *x, const ga_mat4 *a, int k, int plain, const int *bs, const int *bz,
+                            int nb)
+{
+    for (int b = 0; b < nb; b++) {
+        int p = bs[b];
+        if (bz[b] == 1) {
+            double l = ldexp(M(*a, p, p), k);
+            M(*x, p, p) = plain ? exp(l) : expm1(l);
+            if (b + 1 < nb && bz[b + 1] == 1) {
+                double l2 = ldexp(M(*a, p + 1, p + 1), k), t = ldexp(M(*a, p, p + 1), k);
+                double f = t * exp(0.5 * (l + l2)) * sinch(0.5 * (l2 - l));
+                if (isfinite(f))
+                    M(*x, p, p + 1) = f;
+            }
+        } else {
+            double b11 = ldexp(M(*a, p, p), k), b12 = ldexp(M(*a, p, p + 1), k),
+                   b21 = ldexp(M(*a, p + 1, p), k), b22 = ldexp(M(*a, p + 1, p + 1), k);
+            double m = 0.5 * (b11 + b22), hd = 0.5 * (b11 - b22), q = hd * hd + b12 * b21, c, sc, cm1;
+            if (q >= 0.0) {
+                double mu = sqrt(q), h = sinh(0.5 * mu);
+                c = cosh(mu);
+                cm1 = 2.0 * h * h; /* cosh mu - 1 */
+                sc = sinch(mu);
+            } else {
+                double nu = sqrt(-q), h = sin(0.5 * nu);
+                c = cos(nu);
+                cm1 = -2.0 * h * h;
+                sc = nu < 0x1p-26 ? 1.0 : sin(nu) / nu;
+            }
+            double em = exp(m), d = plain ? em * c : expm1(m) * c + cm1, o = em * sc;
+            double e[2][2] = {{d + o * hd, o * b12}, {o * b21, d - o * hd}};
+            if (isfinite(e[0][0]) && isfinite(e[0][1]) && isfinite(e[1][0]) && isfinite(e[1][1]))
+                for (int u = 0; u < 2; u++)
+                    for (int v = 0; v < 2; v++) M(*x, p + u, p + v) = e[u][v];
+        }
+    }
+}
 
 int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
 {
-    /* theta_m: the largest ||A||_1 for which r_m(A) = e^(A + E) with
-     * ||E|| <= 2^-53 ||A|| (Higham 2005; checked against the backward-error
-     * series log(e^-x r_m(x)) in exact rational arithmetic). b: the
-     * coefficients of the Pade numerator p_m(x) = sum b_j x^j, scaled to
-     * integers, with q_m(x) = p_m(-x). */
+    /* theta_m: the largest alpha for which r_m(A) = e^(A + E) with
+     * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3, used unchanged by
+     * Al-Mohy & Higham 2009). b: the coefficients of the Pade numerator
+     * p_m(x) = sum b_j x^j, scaled to integers, with q_m(x) = p_m(-x).
+     * log2c: log2 of c_{2m+1} = (m!)^2 / ((2m)! (2m+1)!). */
     static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
                                     2.097847961257068e0, 5.371920351148152e0};
+    static const double log2c[5] = {-16.621136113, -33.227772657, -51.994974307, -72.324718099,
+                                    -116.447004252};
     static const int degree[5] = {3, 5, 7, 9, 13};
+    /* theta_m^4 and theta_m^6: for m = 3, 5 eta = max(d4, d6); for m = 7, 9
+     * eta_3 = max(d6, d8) with d8 <= d4 (below). ell_free: ||A||_1 below
+     * which ell(A, m) is 0 whatever |A| is (|c_{2m+1}| ||A||_1^(2m) <= u).
+     * t13_k: theta_13^k for k = 4, 6, 10. */
+    static const double theta4[4] = {5.003163045600666e-08, 4.158371815587934e-03, 0.8159403826875232,
+                                     19.368502336532284};
+    static const double theta6[4] = {1.1190950742656221e-11, 2.6815443116884287e-04, 0.7370342020997932,
+                                     85.24012158171844};
+    static const double ell_free[5] = {0.014955873861517137, 0.2539783216046672, 0.9514583772676373,
+                                       2.104672049828496, 5.427430678788747};
+    static const double t13_4 = 832.7569372235824, t13_6 = 24031.306848874174, t13_10 = 20012237.488948554;
     static const double b3[] = {120, 60, 12, 1};
     static const double b5[] = {30240, 15120, 3360, 420, 30, 1};
     static const double b7[] = {17297280, 8648640, 1995840, 277200, 25200, 1512, 56, 1};
@@ -484,35 +697,95 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
 
     if (!mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
-    /* The norm of a/4 cannot overflow (4 entries of at most DBL_MAX/4 each). */
-    ga_mat4 q = a;
-    for (int i = 0; i < 16; i++) q.m[i] *= 0.25;
-    double eta4 = ga_mat4_norm1(q);
-    int idx = 0, s = 0;
-    while (idx < 4 && !(eta4 <= 0.25 * theta[idx])) idx++;
-    if (idx == 4 && eta4 > 0.25 * theta[4]) /* scale so that ||a/2^s||_1 <= theta_13 */
-        s = (int)ceil(log2(eta4 / (0.25 * theta[4])));
-    mat4_scale2(&a, -s);
+    /* A homogeneous generator (last row 0): every power and U have last row
+     * 0, I and V have (0 0 0 c): all products are block triangular
+     * (mat4_mul_ut), and the Pade solve is 3x3 (expm_solve3). */
+    int h = M(a, 3, 0) == 0.0 && M(a, 3, 1) == 0.0 && M(a, 3, 2) == 0.0 && M(a, 3, 3) == 0.0;
+    /* Past ||A||_1 = 2^60 the powers below could overflow: scale by an exact
+     * power of 2 first (at least that many squarings are needed anyway). Its
+     * exponent comes from the norm of A/4, which cannot overflow (4 entries
+     * of at most DBL_MAX/4 each) where ||A||_1 can. */
+    double n1 = norm1_finite(&a); /* Inf if the sum overflows */
+    int s = 0;
+    if (!(n1 <= 0x1p60)) {
+        ga_mat4 q = a;
+        for (int i = 0; i < 16; i++) q.m[i] *= 0.25;
+        s = ilogb(norm1_finite(&q)) - 58 + 2;
+        mat4_scale2(&a, -s);
+        n1 = norm1_finite(&a);
+    }
+    /* d_k = ||A^k||_1^(1/k) (exact norms: the powers are needed anyway), and
+     * the choice of m and s of Al-Mohy & Higham 2009, Alg. 5.1: eta from the
+     * d_k, which for a nonnormal A are much below ||A||_1 and avoid the
+     * overscaling of Higham 2005 (Moler's badly scaled matrix), with ell()
+     * guarding against a nonnormal |A| that makes the eta bound optimistic. */
+    ga_mat4 a2 = mat4_mul_any(&a, &a, h), a4 = mat4_mul_any(&a2, &a2, h), a6 = mat4_mul_any(&a4, &a2, h);
+    /* eta <= theta_m is tested as ||A^k|| <= theta_m^k (no roots). d8 and
+     * d10 are not computed (two more products): the bounds
+     * ||A^8|| <= ||A^4||^2 and ||A^10|| <= ||A^4|| ||A^6|| give d8 <= d4 and
+     * d10 <= (||A^4|| ||A^6||)^(1/10), which can only choose more squarings
+     * than the paper's estimates, never fewer. ell(A, m) is computed only
+     * for m = 9: for m = 3, 5, 7 a candidate with ||A||_1 above ell_free
+     * goes on to the next degree instead (its eta test then holds too),
+     * because one more matrix product costs less than the 2m + 1 dependent
+     * vector products of ell, and a larger m with the same s is as
+     * accurate (its backward error is also below u). */
+    double n4 = norm1_finite(&a4), n6 = norm1_finite(&a6);
+    int idx = -1;
+    for (int c = 0; c < 4 && idx < 0; c++) {
+        if (n4 <= theta4[c] && n6 <= theta6[c] &&
+            (n1 <= ell_free[c] || (c == 3 && expm_ell(&a, n1, degree[c], log2c[c]) == 0)))
+            idx = c;
+    }
+    if (idx < 0) {
+        /* eta_5 = min(max(d4, d6), max(d4, d10)) <= theta_13 is again tested
+         * without roots; only when it fails is s computed from the d_k */
+        int s1 = 0;
+        if (!(n4 <= t13_4 && (n6 <= t13_6 || n4 * n6 <= t13_10))) {
+            double d4 = sqrt(sqrt(n4)), d6 = pow(n6, 1.0 / 6.0), d10 = pow(n4 * n6, 0.1);
+            double eta5 = fmin(fmax(d6, d4), fmax(d4, d10));
+            s1 = eta5 > theta[4] ? (int)ceil(log2(eta5 / theta[4])) : 0;
+        }
+        double ns = ldexp(n1, -s1); /* ||2^-s1 A||_1, exactly */
+        if (!(ns <= ell_free[4])) {
+            ga_mat4 as = a;
+            mat4_scale2(&as, -s1);
+            s1 += expm_ell(&as, ns, 13, log2c[4]);
+        }
+        idx = 4;
+        if (s1 > 0) { /* scaled powers: exact powers of 2 */
+            mat4_scale2(&a, -s1);
+            mat4_scale2(&a2, -2 * s1);
+            mat4_scale2(&a4, -4 * s1);
+            mat4_scale2(&a6, -6 * s1);
+        }
+        s += s1;
+    }
 
     /* r_m = (V - U)^{-1} (V + U), U the odd and V the even part of p_m. */
     const double *b = coef[idx];
     int m = degree[idx];
-    ga_mat4 id = ga_mat4_identity(), v = mat4_zero(), u0 = mat4_zero(); /* U = A U0 */
-    ga_mat4 a2 = ga_mat4_mul(a, a);
+    ga_mat4 id = ga_mat4_identity(), v, u0; /* U = A U0 */
     if (m < 13) {
-        ga_mat4 p = id; /* p = A^(2k) */
-        for (int k = 0; 2 * k < m; k++) {
-            mat4_acc(&u0, b[2 * k + 1], &p);
-            mat4_acc(&v, b[2 * k], &p);
-            if (2 * k + 2 < m)
-                p = ga_mat4_mul(p, a2);
+        /* U0 = sum b_{2k+1} A^{2k}, V = sum b_{2k} A^{2k}, entry by entry in
+         * one pass (A^8 only for m = 9; the missing powers are 0 terms) */
+        ga_mat4 a8 = mat4_zero();
+        if (m == 9)
+            a8 = mat4_mul_any(&a4, &a4, h);
+        double bb[10] = {0};
+        for (int k = 0; k <= m; k++) bb[k] = b[k];
+        for (int i = 0; i < 16; i++) {
+            u0.m[i] = bb[1] * id.m[i] + bb[3] * a2.m[i] + bb[5] * a4.m[i] + bb[7] * a6.m[i] + bb[9] * a8.m[i];
+            v.m[i] = bb[0] * id.m[i] + bb[2] * a2.m[i] + bb[4] * a4.m[i] + bb[6] * a6.m[i] + bb[8] * a8.m[i];
         }
     } else { /* Higham's m = 13 scheme: 6 matrix products instead of 12 */
-        ga_mat4 a4 = ga_mat4_mul(a2, a2), a6 = ga_mat4_mul(a4, a2), w = mat4_zero();
+        ga_mat4 w = mat4_zero();
+        v = mat4_zero();
+        u0 = mat4_zero();
         mat4_acc(&w, b[13], &a6);
         mat4_acc(&w, b[11], &a4);
         mat4_acc(&w, b[9], &a2);
-        u0 = ga_mat4_mul(a6, w);
+        u0 = mat4_mul_any(&a6, &w, h);
         mat4_acc(&u0, b[7], &a6);
         mat4_acc(&u0, b[5], &a4);
         mat4_acc(&u0, b[3], &a2);
@@ -521,22 +794,26 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
         mat4_acc(&w, b[12], &a6);
         mat4_acc(&w, b[10], &a4);
         mat4_acc(&w, b[8], &a2);
-        v = ga_mat4_mul(a6, w);
+        v = mat4_mul_any(&a6, &w, h);
         mat4_acc(&v, b[6], &a6);
         mat4_acc(&v, b[4], &a4);
         mat4_acc(&v, b[2], &a2);
         mat4_acc(&v, b[0], &id);
     }
-    ga_mat4 u = ga_mat4_mul(a, u0), den = v;
+    ga_mat4 u = mat4_mul_any(&a, &u0, h), den = v, x;
     mat4_acc(&den, -1.0, &u);
-    lu4 f;
-    /* q_m(A) is well conditioned for ||A||_1 <= theta_m (Higham 2005): this
-     * failure is a guard, not an expected path. */
-    if (lu4_factor(den, &f) != GA_OK)
-        return GA_ERR_DOMAIN;
     /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. */
-    ga_mat4 x = lu4_solve(&f, u);
-    for (int i = 0; i < 16; i++) x.m[i] *= 2.0;
+    if (!h || !expm_solve3(&den, &u, &x)) {
+        lu4 f;
+        /* q_m(A) is well conditioned for alpha <= theta_m (Higham 2005): this
+         * failure is a guard, not an expected path. */
+        if (lu4_factor(den, &f) != GA_OK)
+            return GA_ERR_DOMAIN;
+        x = lu4_solve(&f, u);
+        for (int i = 0; i < 16; i++) x.m[i] *= 2.0;
+        if (h)
+            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = M(x, 3, 3) = 0.0;
+    }
 
     /* Squaring. (I + X)^2 = I + (2X + X^2) keeps relative accuracy in X when
      * the result is near I; e.g. a rotation block R = I + O(1e-12) under a
@@ -545,20 +822,25 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
      * Once a diagonal entry 1 + x of the result falls below 3/4 (contraction),
      * plain squaring is better: per step the X form rounds like
      * eps (2|x| + x^2) and the plain form like eps (1 + x)^2, which is smaller
-     * for x < -1/4; near 0 the plain form keeps relative accuracy. */
-    int plain = 0;
+     * for x < -1/4; near 0 the plain form keeps relative accuracy. With h the
+     * last row is 0 in X and e_4^T in I + X: products stay block triangular. */
+    int plain = 0, bs[4], bz[4], nb = qt_blocks(&a, bs, bz);
+    if (nb)
+        expm_fix_blocks(&x, &a, 0, plain, bs, bz, nb);
     for (int k = 0; k < s; k++) {
         if (!plain &&
             (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25)) {
             x = mat4_add_id(x, 1.0);
             plain = 1;
         }
-        ga_mat4 x2 = ga_mat4_mul(x, x);
+        ga_mat4 x2 = mat4_mul_any(&x, &x, h);
         if (!plain)
             mat4_acc(&x2, 2.0, &x);
         x = x2;
         if (!mat4_isfinite(&x))
             return GA_ERR_DOMAIN; /* overflow: stop before Inf - Inf */
+        if (nb)
+            expm_fix_blocks(&x, &a, k + 1, plain, bs, bz, nb);
     }
     if (!plain)
         x = mat4_add_id(x, 1.0);
@@ -568,167 +850,353 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
     return GA_OK;
 }
 
-/* ---- general log: inverse scaling and squaring ------------------------- */
+/* ---- general log: real Schur form, inverse scaling and squaring -------- */
 
-/* One Newton step for X^2 = A from X: X += E with X E + E X = A - X^2, a
- * Sylvester equation, solved in its 16x16 Kronecker form by Gaussian
- * elimination with partial pivoting (unknown E_kj at index 4k + j). Its
- * matrix is nonsingular for a principal root (no mu_i + mu_j = 0). The step
- * is kept only if it lowers the residual ||A - X^2||_1, so an ill-conditioned
- * Sylvester system (a root near +-i, from a near half turn) cannot spoil X. */
-static void sqrtm_newton(ga_mat4 a, ga_mat4 *x)
+/* The real Schur form of the leading n x n block of t (n = 3 or 4): t is
+ * overwritten by Q^T t Q, upper quasi-triangular with 1x1 blocks (real
+ * eigenvalues) and 2x2 blocks (complex pairs), and q by q Q. Householder
+ * reduction to Hessenberg form, then Francis double-shift QR steps with
+ * deflation (Golub & Van Loan, Matrix Computations, Alg. 7.4.2 and 7.5.1).
+ * A 2x2 block with real eigenvalues is split by one rotation whose first
+ * column is an eigenvector. GA_ERR_DOMAIN if QR does not converge (a guard:
+ * 300 steps per deflation, LAPACK dlahqr's 30 max(10, n); a nearly
+ * defective cluster, e^X - I for a nilpotent X, needed more than 30). */
+static void refl_apply(double t[4][4], double q[4][4], int n, int k, int len, const double v[3], double beta)
 {
-    double k[16][17] = {{0}};
-    ga_mat4 x2 = ga_mat4_mul(*x, *x);
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) {
-            double *row = k[4 * i + j];
-            for (int l = 0; l < 4; l++) {
-                row[4 * l + j] += M(*x, i, l); /* (X E)_ij */
-                row[4 * i + l] += M(*x, l, j); /* (E X)_ij */
-            }
-            row[16] = M(a, i, j) - M(x2, i, j);
+    for (int j = 0; j < n; j++) { /* rows k..k+len-1, from the left */
+        double w = 0.0;
+        for (int i = 0; i < len; i++) w += v[i] * t[k + i][j];
+        w *= beta;
+        for (int i = 0; i < len; i++) t[k + i][j] -= w * v[i];
+    }
+    for (int r = 0; r < n; r++) { /* columns k..k+len-1, from the right */
+        double w = 0.0, wq = 0.0;
+        for (int i = 0; i < len; i++) {
+            w += t[r][k + i] * v[i];
+            wq += q[r][k + i] * v[i];
         }
-    for (int c = 0; c < 16; c++) {
-        int p = c;
-        for (int i = c + 1; i < 16; i++)
-            if (fabs(k[i][c]) > fabs(k[p][c]))
-                p = i;
-        if (k[p][c] == 0.0)
-            return; /* cannot happen for a principal root; keep X */
-        for (int j = c; j < 17; j++) {
-            double t = k[c][j];
-            k[c][j] = k[p][j];
-            k[p][j] = t;
-        }
-        for (int i = c + 1; i < 16; i++) {
-            double l = k[i][c] / k[c][c];
-            for (int j = c; j < 17; j++) k[i][j] -= l * k[c][j];
+        w *= beta;
+        wq *= beta;
+        for (int i = 0; i < len; i++) {
+            t[r][k + i] -= w * v[i];
+            q[r][k + i] -= wq * v[i];
         }
     }
-    double e[16];
-    for (int i = 15; i >= 0; i--) {
-        double acc = k[i][16];
-        for (int j = i + 1; j < 16; j++) acc -= k[i][j] * e[j];
-        e[i] = acc / k[i][i];
-    }
-    ga_mat4 r = *x, d0 = a, d1 = a;
-    for (int i = 0; i < 16; i++) r.m[i] += e[i];
-    ga_mat4 r2 = ga_mat4_mul(r, r);
-    mat4_acc(&d0, -1.0, &x2);
-    mat4_acc(&d1, -1.0, &r2);
-    if (mat4_isfinite(&r) && ga_mat4_norm1(d1) < ga_mat4_norm1(d0))
-        *x = r;
 }
 
-/* The principal square root of a by the Denman-Beavers iteration with
- * determinantal scaling (Higham, Functions of Matrices, 2008, ch. 6):
- *   Y_{k+1} = (mu Y_k + mu^-1 Z_k^{-1}) / 2,   Y_0 = A,
- *   Z_{k+1} = (mu Z_k + mu^-1 Y_k^{-1}) / 2,   Z_0 = I,
- *   mu = |det(Y_k) det(Z_k)|^(-1/8),
- * with Y_k -> A^(1/2) and Z_k -> A^(-1/2). The coupled form, not the cheaper
- * product form M_{k+1} = (I + (M_k + M_k^{-1})/2)/2: for an eigenvalue
- * e^(i(pi - d)) (a rotation near a half turn) the product form builds
- * M_1 = (I + (A + A^{-1})/2)/2 with an eigenvalue d^2/4 by cancellation and
- * loses eps/d^2, while Y_1 = (A + I)/2 and Z_1 = (I + A^{-1})/2 lose only
- * eps/d, which is the conditioning of the square root itself.
- * Convergence: M_k = Y_k Z_k obeys M_{k+1} - I = (M_k - I)^2 M_k^{-1} / 4
- * exactly (unscaled), and Y_k = A^(1/2) M_k^(1/2). So once M_k - I is below
- * 1e-8 (about sqrt(eps)) one more step leaves M at rounding level and the
- * iteration stops there; scaling, which speeds up the early steps, is
- * switched off below 1e-2 to keep that quadratic convergence. "Below" is
- * measured entrywise against |Y_k| |Z_k|, the scale at which Y_k Z_k rounds:
- * with a translation t the product rounds at eps |t| in its last column, so
- * a normwise test could never pass once |t| > 1e8. The iterates
- * use inverses of Y_k and Z_k, which for an ill-conditioned A (cond 1e6)
- * leave a residual ||Y^2 - A|| near 1e-13 ||A||; one Newton step at the end
- * brings it to rounding level (measured: the affine expm(logm(A)) round trip
- * goes from 8e-13 to 4e-14).
- * With an eigenvalue on the closed negative real axis the iteration meets a
- * singular Y_k or Z_k or never converges (for a real negative eigenvalue the
- * scalar iterates stay real and cannot approach its imaginary root):
- * GA_ERR_DOMAIN either way. */
-/* max_ij |Y Z - I|_ij / S_ij, the residual of Denman-Beavers, with the scale
- * S_ij = max(D_ij, 1e-6 min(max_l D_il, max_l D_lj), DBL_MIN), D = |Y| |Z|.
- * D_ij is the scale at which (Y Z)_ij rounds when its terms carry the
- * entry's weight. An entry that should be exactly 0 but holds rounding noise
- * of its row and column (eps times max_l D_il, say) would read as a residual
- * near 1 against its own terms and stop convergence forever, and with it
- * keep the determinant scaling on (found by fuzz/fuzz_path: logm of
- * [1 0 0 0; 0 1 0 0; 0 -.98 .016 -.98; 0 0 0 1] was GA_ERR_DOMAIN; replayed by
- * fuzz/regress/path/affine-logm-db-stall): such entries are measured against
- * 1e-6 of the smaller of their row's and column's largest scale, which
- * leaves the noise near 1e-9. A translation column keeps its own scale (its
- * D_ij is the largest of its row). Below DBL_MIN products round absolutely,
- * to 2^-1074, so a relative residual need never fall below 1e-8 (found by
- * fuzz/fuzz_numeric: logm(expm(X)) was GA_ERR_DOMAIN for an X with one entry of
- * -8e-322; replayed by fuzz/regress/numeric/logm-subnormal-entry). */
-static double db_residual(const ga_mat4 *y, const ga_mat4 *z)
+/* The reflector I - beta v v^T that maps x (len 2 or 3) to a multiple of e_1. */
+static double refl_make(const double *x, int len, double v[3])
 {
-    double d[4][4], r[4][4], rowmax[4] = {0}, colmax[4] = {0}, worst = 0.0;
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) {
-            r[i][j] = -(double)(i == j);
-            d[i][j] = 0.0;
-            for (int k = 0; k < 4; k++) {
-                r[i][j] += M(*y, i, k) * M(*z, k, j);
-                d[i][j] += fabs(M(*y, i, k) * M(*z, k, j));
-            }
-            rowmax[i] = fmax(rowmax[i], d[i][j]);
-            colmax[j] = fmax(colmax[j], d[i][j]);
-        }
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) {
-            double s = fmax(fmax(d[i][j], 1e-6 * fmin(rowmax[i], colmax[j])), DBL_MIN);
-            if (fabs(r[i][j]) > worst * s)
-                worst = fabs(r[i][j]) / s;
-        }
-    return worst;
+    double nrm = 0.0, mx = 0.0;
+    for (int i = 0; i < len; i++) mx = fmax(mx, fabs(x[i]));
+    if (!(mx > 0.0))
+        return 0.0;
+    for (int i = 0; i < len; i++) {
+        v[i] = x[i] / mx;
+        nrm += v[i] * v[i];
+    }
+    nrm = sqrt(nrm);
+    v[0] += copysign(nrm, v[0]);
+    double vv = 0.0;
+    for (int i = 0; i < len; i++) vv += v[i] * v[i];
+    return 2.0 / vv;
 }
 
-static int sqrtm_db(ga_mat4 a, ga_mat4 *root)
+/* Is the subdiagonal t[l][l-1] negligible? The test of Ahues & Tisseur
+ * (1997), as LAPACK's dlahqr uses it: beyond |t21| <= eps (|t11| + |t22|) it
+ * asks that setting t21 to 0 perturb the eigenvalues of the 2x2 window only
+ * by rounding. So [-1 -s; s -1] with s = 1.2e-16 (a rotation one rounding
+ * short of a half turn) stays a complex pair -1 +- is, whose log exists,
+ * instead of being split into the eigenvalues -1, -1, which have none. */
+static int schur_negligible(double t[4][4], int l)
 {
-    ga_mat4 y = a, z = ga_mat4_identity(), id = ga_mat4_identity();
-    for (int it = 0; it < 100; it++) {
-        lu4 fy, fz;
-        if (lu4_factor(y, &fy) != GA_OK || lu4_factor(z, &fz) != GA_OK)
-            return GA_ERR_DOMAIN;
-        ga_mat4 yinv = lu4_solve(&fy, id), zinv = lu4_solve(&fz, id);
-        double res = db_residual(&y, &z), mu = 1.0;
-        if (res > 1e-2) {
-            mu = exp(-(lu4_logabsdet(&fy) + lu4_logabsdet(&fz)) / 8.0);
+    double h21 = fabs(t[l][l - 1]);
+    if (h21 <= DBL_MIN)
+        return 1;
+    if (!(h21 <= DBL_EPSILON * (fabs(t[l - 1][l - 1]) + fabs(t[l][l]))))
+        return 0;
+    double h12 = fabs(t[l - 1][l]), d = fabs(t[l - 1][l - 1] - t[l][l]), h22 = fabs(t[l][l]);
+    double ab = fmax(h21, h12), ba = fmin(h21, h12), aa = fmax(h22, d), bb = fmin(h22, d), s = aa + ab;
+    return ba * (ab / s) <= fmax(DBL_MIN, DBL_EPSILON * (bb * (aa / s)));
+}
+
+static int schur_real(double t[4][4], double q[4][4], int n)
+{
+    for (int k = 0; k + 2 < n; k++) { /* Hessenberg */
+        double x[3] = {t[k + 1][k], t[k + 2][k], k + 3 < n ? t[k + 3][k] : 0.0}, v[3];
+        int len = n - k - 1;
+        double beta = refl_make(x, len, v);
+        if (beta > 0.0)
+            refl_apply(t, q, n, k + 1, len, v, beta);
+        for (int i = k + 2; i < n; i++) t[i][k] = 0.0;
+    }
+    /* After 10 steps without deflation, a subdiagonal entry within
+     * eps ||T||_max is taken as 0 too: a normwise backward-stable perturbation.
+     * A strongly graded window (an entry 1 beside entries near 1e-298, whose
+     * eigenvalues near 1e-149 have squares that underflow) otherwise gives a
+     * shift column of 0 and no progress (found by fuzz/fuzz_numeric;
+     * fuzz/regress/numeric/logm-expm-graded-tiny replays it). */
+    double tmax = 0.0;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) tmax = fmax(tmax, fabs(t[i][j]));
+    int hi = n - 1, iter = 0;
+    while (hi > 0) {
+        int l = hi;
+        for (; l > 0; l--)
+            if (schur_negligible(t, l) || (iter >= 10 && fabs(t[l][l - 1]) <= DBL_EPSILON * tmax)) {
+                t[l][l - 1] = 0.0;
+                break;
+            }
+        if (l == hi) {
+            hi--;
+            iter = 0;
+            continue;
         }
-        ga_mat4 yn = mat4_zero(), zn = mat4_zero();
-        mat4_acc(&yn, 0.5 * mu, &y);
-        mat4_acc(&yn, 0.5 / mu, &zinv);
-        mat4_acc(&zn, 0.5 * mu, &z);
-        mat4_acc(&zn, 0.5 / mu, &yinv);
-        y = yn;
-        z = zn;
-        if (!mat4_isfinite(&y) || !mat4_isfinite(&z))
+        if (l == hi - 1) { /* a 2x2 block: keep a complex pair, split a real one */
+            int p = l;
+            double a = t[p][p], b = t[p][p + 1], c = t[p + 1][p], d = t[p + 1][p + 1];
+            double hd = 0.5 * (a - d), disc = hd * hd + b * c;
+            if (disc >= 0.0) {
+                double v0 = hd + copysign(sqrt(disc), hd), v1 = c, r = hypot(v0, v1);
+                double x[2] = {v0 / r, v1 / r}, v[3];
+                /* the reflector with first column (x0, x1) up to sign */
+                double beta = refl_make(x, 2, v);
+                if (beta > 0.0)
+                    refl_apply(t, q, n, p, 2, v, beta);
+                t[p + 1][p] = 0.0;
+            }
+            hi -= 2;
+            iter = 0;
+            continue;
+        }
+        if (++iter >
+            300) /* found by fuzz/fuzz_numeric at 30; fuzz/regress/numeric/logm-expm-nilpotent-slow-qr */
             return GA_ERR_DOMAIN;
-        if (res <= 1e-8) {
-            sqrtm_newton(a, &y);
-            *root = y;
-            return GA_OK;
+        /* The first column of (H - s1 I)(H - s2 I), s1 + s2 = s, s1 s2 = p,
+         * from the active window divided by its largest entry g: only its
+         * direction matters, and unscaled, a window of entries near 1e-298
+         * (eigenvalues of A - I that small) would square to 0 and the
+         * iteration would stall (found by fuzz/fuzz_numeric;
+         * fuzz/regress/numeric/logm-expm-tiny-entries replays it). */
+        int m = hi;
+        double g = 0.0;
+        for (int i = l; i <= hi; i++)
+            for (int j = i > l ? i - 1 : l; j <= hi; j++) g = fmax(g, fabs(t[i][j]));
+        double ig = 1.0 / g; /* g > 0: t[l+1][l] was not negligible */
+        double w00 = t[l][l] * ig, w01 = t[l][l + 1] * ig, w10 = t[l + 1][l] * ig, w11 = t[l + 1][l + 1] * ig,
+               w21 = t[l + 2][l + 1] * ig, a = t[m - 1][m - 1] * ig, b = t[m - 1][m] * ig,
+               c = t[m][m - 1] * ig, d = t[m][m] * ig;
+        /* with the shifts the eigenvalues of [a b; c d], the column in
+         * differences, (w00 - a)(w00 - d) - bc + w01 w10 and
+         * w10 ((w00 - a) + (w11 - d)), which do not cancel when the
+         * eigenvalues are clustered (EISPACK hqr): the expanded
+         * w00^2 - (a + d) w00 + ad - bc + w01 w10 would lose the relative
+         * accuracy of the step for a near-multiple of I (1e-4 I plus 1e-9
+         * entries did not converge in 30 steps) */
+        double x[3] = {(w00 - a) * (w00 - d) - b * c + w01 * w10, w10 * ((w00 - a) + (w11 - d)), w10 * w21};
+        if (iter % 10 == 0) { /* an exceptional shift breaks a cycle */
+            double e = fabs(c) + fabs(t[m - 1][m - 2] * ig), s = 1.5 * e, p = e * e;
+            x[0] = w00 * w00 + w01 * w10 - s * w00 + p;
+            x[1] = w10 * (w00 + w11 - s);
+        }
+        for (int k = l; k < hi - 1; k++) {
+            double v[3], beta = refl_make(x, 3, v);
+            if (beta > 0.0)
+                refl_apply(t, q, n, k, 3, v, beta);
+            if (k > l)
+                t[k + 1][k - 1] = t[k + 2][k - 1] = 0.0;
+            x[0] = t[k + 1][k];
+            x[1] = t[k + 2][k];
+            x[2] = k + 3 <= hi ? t[k + 3][k] : 0.0;
+        }
+        double v[3], beta = refl_make(x, 2, v);
+        if (beta > 0.0)
+            refl_apply(t, q, n, hi - 1, 2, v, beta);
+        if (hi - 2 >= l)
+            t[hi][hi - 2] = 0.0;
+    }
+    return GA_OK;
+}
+
+/* A 2x2 block B with a complex pair a +- i w is a I + N with N = B - a I,
+ * N^2 = -w^2 I (Cayley-Hamilton), so every function of B is f(B) =
+ * Re f(a + iw) I + (Im f(a + iw) / w) N: a closed form, exact up to the
+ * rounding of a, w and f, with no square root of a nearly singular matrix
+ * even when a + iw is near -1 (a near half turn). */
+static void blk2_parts(double t[4][4], int p, double *a, double *w, double nm[2][2])
+{
+    *a = 0.5 * (t[p][p] + t[p + 1][p + 1]);
+    double hd = 0.5 * (t[p][p] - t[p + 1][p + 1]);
+    /* w^2 = -(hd^2 + bc), scaled so that a tiny block does not underflow */
+    double sc = fmax(fabs(hd), fmax(fabs(t[p][p + 1]), fabs(t[p + 1][p])));
+    *w = 0.0;
+    if (sc > 0.0) {
+        double h = hd / sc, b = t[p][p + 1] / sc, c = t[p + 1][p] / sc;
+        *w = sc * sqrt(fmax(-(h * h + b * c), 0.0));
+    }
+    nm[0][0] = hd;
+    nm[0][1] = t[p][p + 1];
+    nm[1][0] = t[p + 1][p];
+    nm[1][1] = -hd;
+}
+
+/* log|z| for z = 1 + am1 + iw: the log1p form near |z| = 1, where
+ * log(hypot) would lose the small part. */
+static double log_abs(double am1, double w)
+{
+    if (fabs(am1) < 0.5 && fabs(w) < 0.5)
+        return 0.5 * log1p(am1 * (2.0 + am1) + w * w);
+    return log(hypot(1.0 + am1, w));
+}
+
+/* The principal square root of the upper quasi-triangular t (blocks as
+ * listed) by the real block recurrence of Higham ("Computing real square
+ * roots of a real matrix", 1987; Functions of Matrices, 2008, Alg. 6.7):
+ * R_jj = sqrt(T_jj) (1x1, or the 2x2 closed form above), then for i < j
+ * R_ii R_ij + R_ij R_jj = T_ij - sum_{i<k<j} R_ik R_kj, a Sylvester equation
+ * of at most 4 unknowns, solved by elimination with partial pivoting. Its
+ * matrix is nonsingular: principal roots have eigenvalues in the open right
+ * half-plane, so no two sum to 0. */
+static void qt_sqrt(double t[4][4], const int *bs, const int *bz, int nb, double r[4][4])
+{
+    memset(r, 0, 16 * sizeof(double));
+    for (int j = 0; j < nb; j++) {
+        int pj = bs[j], qj = bz[j];
+        if (qj == 1)
+            r[pj][pj] = sqrt(t[pj][pj]);
+        else {
+            double a, w, nm[2][2], al, c;
+            blk2_parts(t, pj, &a, &w, nm);
+            double rho = hypot(a, w);
+            if (a >= 0.0) {
+                al = sqrt(0.5 * (rho + a));
+                c = 0.5 / al;
+            } else { /* sqrt(a + iw) = al + i be with be = sqrt((rho - a)/2) */
+                double be = sqrt(0.5 * (rho - a));
+                al = w / (2.0 * be);
+                c = be / w;
+            }
+            for (int u = 0; u < 2; u++)
+                for (int v = 0; v < 2; v++) r[pj + u][pj + v] = (u == v ? al : 0.0) + c * nm[u][v];
+        }
+        for (int i = j - 1; i >= 0; i--) {
+            int pi = bs[i], qi = bz[i], nu = qi * qj;
+            double k[4][5] = {{0}};
+            for (int u = 0; u < qi; u++)
+                for (int v = 0; v < qj; v++) {
+                    int row = u * qj + v;
+                    double rhs = t[pi + u][pj + v];
+                    for (int x = pi + qi; x < pj; x++) rhs -= r[pi + u][x] * r[x][pj + v];
+                    k[row][nu] = rhs;
+                    for (int w = 0; w < qi; w++) k[row][w * qj + v] += r[pi + u][pi + w]; /* R_ii X */
+                    for (int w = 0; w < qj; w++) k[row][u * qj + w] += r[pj + w][pj + v]; /* X R_jj */
+                }
+            for (int c = 0; c < nu; c++) {
+                int p = c;
+                for (int i2 = c + 1; i2 < nu; i2++)
+                    if (fabs(k[i2][c]) > fabs(k[p][c]))
+                        p = i2;
+                for (int j2 = 0; j2 <= nu; j2++) {
+                    double tmp = k[c][j2];
+                    k[c][j2] = k[p][j2];
+                    k[p][j2] = tmp;
+                }
+                for (int i2 = c + 1; i2 < nu; i2++) {
+                    double l = k[i2][c] / k[c][c];
+                    for (int j2 = c; j2 <= nu; j2++) k[i2][j2] -= l * k[c][j2];
+                }
+            }
+            double e[4];
+            for (int i2 = nu - 1; i2 >= 0; i2--) {
+                double acc = k[i2][nu];
+                for (int j2 = i2 + 1; j2 < nu; j2++) acc -= k[i2][j2] * e[j2];
+                e[i2] = acc / k[i2][i2];
+            }
+            for (int u = 0; u < qi; u++)
+                for (int v = 0; v < qj; v++) r[pi + u][pj + v] = e[u * qj + v];
         }
     }
-    return GA_ERR_DOMAIN;
+}
+
+static ga_mat4 mat4_of(double t[4][4])
+{
+    ga_mat4 a;
+    memcpy(a.m, t, sizeof a.m);
+    return a;
+}
+
+/* The real Schur form of A - sig I (its leading n x n block; t and q as for
+ * schur_real, t then holding T - sig I), scaled by a power of 2 so that QR's
+ * products neither underflow nor overflow: a rotation of 1e-300 rad has
+ * A - I of 1e-300. Not an upper triangular t, which is its own Schur form:
+ * scaling down rounds subnormal entries (a diagonal 2e-322 beside 2 lost a
+ * bit; found by fuzz/fuzz_numeric, fuzz/regress/numeric/logm-diagonal-
+ * subnormal). */
+static int schur_shifted(const ga_mat4 *a, int n, double sig, double t[4][4], double qm[4][4])
+{
+    memcpy(t, a->m, 16 * sizeof(double));
+    memset(qm, 0, 16 * sizeof(double));
+    for (int i = 0; i < 4; i++) {
+        qm[i][i] = 1.0;
+        t[i][i] -= sig;
+    }
+    int es = 0, tri = 1;
+    double mx = 0.0;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            mx = fmax(mx, fabs(t[i][j]));
+            tri &= i <= j || t[i][j] == 0.0;
+        }
+    if (mx > 0.0 && !tri) {
+        es = ilogb(mx);
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++) t[i][j] = ldexp(t[i][j], -es);
+    }
+    if (schur_real(t, qm, n) != GA_OK)
+        return GA_ERR_DOMAIN;
+    for (int i = 0; es && i < n; i++)
+        for (int j = 0; j < n; j++) t[i][j] = ldexp(t[i][j], es);
+    return GA_OK;
+}
+
+/* t (log y - log x)/(y - x) for eigenvalues x, y > 0 given with their logs
+ * lx, ly and their difference d = y - x (each from the form, T or T - I,
+ * that holds them accurately), without cancellation: for close x and y the
+ * divided difference is 2 atanh(z)/(y - x), z = (y - x)/(y + x) (Higham,
+ * Functions of Matrices, 2008, eq. 11.28, with no unwinding term for real
+ * positive x, y). t is multiplied in before the division: the divided
+ * difference alone overflows for subnormal eigenvalues (1/x for x = 1e-312;
+ * found by fuzz/fuzz_numeric, fuzz/regress/numeric/logm-diagonal-subnormal-pair). */
+static double log_divdiff(double t, double x, double y, double lx, double ly, double d)
+{
+    if (t == 0.0)
+        return 0.0;
+    if (d == 0.0)
+        return t / x;
+    if (x < 0.5 * y || y < 0.5 * x)
+        return t * (ly - lx) / d;
+    double z = d / (x + y);
+    if (fabs(z) < 0x1p-26) /* atanh z = z (1 + z^2/3 + ...): 2 atanh(z)/d = 2/(x + y) to rounding,
+                               and z and d may be subnormal, with few bits */
+        return 2.0 * t / (x + y);
+    return t * (2.0 * atanh(z)) / d;
 }
 
 int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
 {
     /* [8/8] Pade approximant of log(1 + x) in partial fractions: 8-point
      * Gauss-Legendre on log(I + X) = int_0^1 X (I + t X)^{-1} dt (Higham 2001).
-     * For ||X||_1 <= 0.325 its error is below 2^-53 |log(1 - ||X||_1)|
-     * (Kenney-Laub bound: the worst case is x = -||X||). */
+     * It is used once alpha_p(X) = max(||X^p||^(1/p), ||X^(p+1)||^(1/(p+1)))
+     * is at most theta_8 = 0.3666532675959788 for p = 3 or p = 4, which
+     * bounds its backward error by u = 2^-53 (Al-Mohy & Higham 2012, Table
+     * 2.1 and Thm. 2.2 with p(p - 1) <= 2m + 1 = 17). */
     static const double node[8] = {1.98550717512318842e-02, 1.01666761293186636e-01, 2.37233795041835505e-01,
                                    4.08282678752175110e-01, 5.91717321247824946e-01, 7.62766204958164495e-01,
                                    8.98333238706813364e-01, 9.80144928248768088e-01};
     static const double weight[8] = {
         5.06142681451881293e-02, 1.11190517226687241e-01, 1.56853322938943635e-01, 1.81341891689180995e-01,
         1.81341891689180995e-01, 1.56853322938943635e-01, 1.11190517226687241e-01, 5.06142681451881293e-02};
-    const double theta8 = 0.325;
+    const double theta8 = 0.3666532675959788;
 
     if (!mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
@@ -736,54 +1204,207 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
     if (lu4_factor(a, &f) != GA_OK)
         return GA_ERR_SINGULAR; /* eigenvalue 0: no log */
 
-    /* A_k = A^(1/2^k) and Z = A_k - I. Z is updated by the identity
-     * A_k - I = (A_{k+1} + I)(A_{k+1} - I) (the factors commute) rather than
-     * formed as A_{k+1} - I, which would round away small parts: a scaling
-     * diag(1 + 1e-10, ...) under a translation of 1e6 needs 23 roots, after
-     * which its diagonal in A_23 - I is near 1e-17, below the rounding of 1;
-     * subtraction returns that scaling's log with 100% error, the update with
-     * 1e-15 (tests/test_mat4.c). */
-    ga_mat4 ak = a, z = mat4_add_id(a, -1.0);
-    int k = 0;
-    while (ga_mat4_norm1(z) > theta8) {
-        ga_mat4 root;
-        /* Each root about halves ||Z||_1 <= 4 DBL_MAX < 2^1026 (a translation
-         * t needs log2(|t|/theta8) roots, 23 for 1e6), so 1100 roots always
-         * suffice; not getting there means no principal root is converging. */
-        if (k == 1100 || sqrtm_db(ak, &root) != GA_OK)
+    /* The real Schur form A = Q T Q^T (Al-Mohy & Higham 2012, Alg. 4.1 works
+     * on the Schur factor; real arithmetic as in Al-Mohy, Higham & Relton
+     * 2013). A homogeneous A = [B t; 0 1] is already block triangular: only
+     * B is reduced, B = Q3 T3 Q3^T, and T = [T3 Q3^T t; 0 1], Q = diag(Q3, 1).
+     * The form is first computed of A - I (same Q, T - I): its backward
+     * error is relative to ||A - I||, so a motion near the identity (a
+     * rotation of 1e-12 rad) keeps relative accuracy in its log, which a
+     * Schur form of A itself (error eps ||A||, absolute) would not. That
+     * shift loses the eigenvalues near 0 instead (1e-100 - 1 rounds to -1;
+     * an eigenvalue 1e-4 keeps only 12 digits), so when one has modulus
+     * below 1/2 the form is recomputed of A itself, whose error is then no
+     * larger (||A|| <= 3 ||A - I|| once rho(A - I) >= 1/2). t holds
+     * T - sig I: sig = 1 (shifted), 0, or (a fallback) the mean of the
+     * diagonal. */
+    double t[4][4], qm[4][4];
+    int h = M(a, 3, 0) == 0.0 && M(a, 3, 1) == 0.0 && M(a, 3, 2) == 0.0 && M(a, 3, 3) == 1.0;
+    /* A rigid motion, orthonormal to rounding (GA_MAT4_LOGM_RIGID_TOL),
+     * turning by more than pi/2: Eberly's closed form (ga_se3_log). Its
+     * result is the exact log of a rigid motion within that rounding of a,
+     * so it is as backward stable as the general method, and it keeps full
+     * accuracy up to the half turn, where the general log of a nearly
+     * orthogonal matrix is conditioned like 1/(pi - th) (a complex pair
+     * near -1). At th = pi exactly (a skew part of 0) there is no principal
+     * log: GA_ERR_DOMAIN. */
+    if (h && 0.5 * (M(a, 0, 0) + M(a, 1, 1) + M(a, 2, 2) - 1.0) < 0.0 &&
+        se3_check(&a, GA_MAT4_LOGM_RIGID_TOL) == GA_OK) {
+        if (M(a, 2, 1) == M(a, 1, 2) && M(a, 0, 2) == M(a, 2, 0) && M(a, 1, 0) == M(a, 0, 1))
             return GA_ERR_DOMAIN;
-        if (lu4_factor(mat4_add_id(root, 1.0), &f) != GA_OK)
+        ga_twist xi = se3_log_core(&a);
+        /* v = V^{-1} t overflows for a translation near DBL_MAX, as in
+           ga_se3_log (found by fuzz/fuzz_numeric;
+           fuzz/regress/numeric/logm-rigid-translation-overflow) */
+        ga_mat4 l = ga_twist_hat(xi);
+        if (!mat4_isfinite(&l))
             return GA_ERR_DOMAIN;
-        z = lu4_solve(&f, z);
-        ak = root;
-        k++;
+        *out = l;
+        return GA_OK;
     }
-    ga_mat4 l = mat4_zero();
-    for (int j = 0; j < 8; j++) {
-        ga_mat4 d = z;
-        for (int i = 0; i < 16; i++) d.m[i] *= node[j];
-        /* I + t Z, ||t Z|| < 1/3: well conditioned, cannot be singular */
-        if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK)
+    int n = h ? 3 : 4;
+    double sig = 1.0; /* t holds T - sig I */
+    if (schur_shifted(&a, n, 1.0, t, qm) != GA_OK) {
+        /* the form of A - I did not converge (a guard: a cluster of
+         * eigenvalues equal to rounding, 1e-4 (I + E) with E of 1e-10 and
+         * below, once did not; found by fuzz/fuzz_numeric,
+         * fuzz/regress/numeric/logm-scaled-expm-tiny-schur-fallback and
+         * logm-scaled-expm-cluster-mean-shift): the form of A - sig I,
+         * sig the mean of the diagonal, whose entries are the cluster's
+         * spread, resolved after scaling */
+        sig = 0.0;
+        for (int i = 0; i < n; i++) sig += M(a, i, i) / n;
+        if (schur_shifted(&a, n, sig, t, qm) != GA_OK)
             return GA_ERR_DOMAIN;
-        ga_mat4 term = lu4_solve(&f, z);
+    } else {
+        /* the smallest |lambda| (squared), lambda = 1 + t_ii, or for a 2x2
+         * block det(I + T_jj) */
+        double small = INFINITY;
+        for (int i = 0; i < n; i++) {
+            if (i + 1 < n && t[i + 1][i] != 0.0) {
+                double d = (1.0 + t[i][i]) * (1.0 + t[i + 1][i + 1]) - t[i][i + 1] * t[i + 1][i];
+                small = fmin(small, fabs(d));
+                i++;
+            } else
+                small = fmin(small, (1.0 + t[i][i]) * (1.0 + t[i][i]));
+        }
+        if (small < 0.25) {
+            double ts[4][4], qs[4][4];
+            memcpy(ts, t, sizeof t);
+            memcpy(qs, qm, sizeof qm);
+            if (schur_shifted(&a, n, 0.0, t, qm) == GA_OK)
+                sig = 0.0;
+            else { /* a guard, as above: keep the form of A - I */
+                memcpy(t, ts, sizeof t);
+                memcpy(qm, qs, sizeof qm);
+            }
+        }
+    }
+    const int shifted = sig == 1.0;
+    if (h)
+        for (int i = 0; i < 3; i++)
+            t[i][3] = qm[0][i] * M(a, 0, 3) + qm[1][i] * M(a, 1, 3) + qm[2][i] * M(a, 2, 3);
+    /* the eigenvalue 1 of A's last row when A is homogeneous, less sig */
+    if (h)
+        t[3][3] = 1.0 - sig;
+
+    /* The blocks, and the domain decided from the eigenvalues: a real
+     * eigenvalue <= 0 has no real principal log (0 is caught above as
+     * singular); a complex pair always has one. lambda = sig + t_ii. */
+    const double lam1 = sig;
+    int bs[4], bz[4], nb = 0;
+    for (int i = 0; i < 4; i += bz[nb - 1]) {
+        bs[nb] = i;
+        bz[nb] = (i < 3 && t[i + 1][i] != 0.0) ? 2 : 1;
+        if (bz[nb] == 1 && !(lam1 + t[i][i] > 0.0))
+            return lam1 + t[i][i] == 0.0 ? GA_ERR_SINGULAR : GA_ERR_DOMAIN;
+        if (bz[nb] == 2) {
+            /* a complex pair re +- iw whose imaginary part is within the
+             * rounding of the Schur form (GA_MAT4_LOGM_AXIS_TOL |lambda|)
+             * of the negative real axis: the sign of w, and with it the
+             * log's, is not determined by the data */
+            double am, w, nm[2][2];
+            blk2_parts(t, i, &am, &w, nm);
+            double re = lam1 + am;
+            if (re < 0.0 && w <= GA_MAT4_LOGM_AXIS_TOL * hypot(re, w))
+                return GA_ERR_DOMAIN;
+        }
+        nb++;
+    }
+
+    /* Inverse scaling and squaring on T: T_k = T^(1/2^k) and Z = T_k - I,
+     * carried as Z <- (T_{k+1} + I)^{-1} Z (the factors commute) rather than
+     * formed by subtraction, which would round away small parts (a scaling
+     * 1 + 1e-10 under a translation of 1e6; this is the accurate T_k - I of
+     * Al-Mohy & Higham 2012, sec. 5, for the whole matrix). Square roots
+     * are taken while the spectral radius of Z exceeds theta_8, then while
+     * alpha_3(Z) and alpha_4(Z) both do. */
+    double tk[4][4], z[4][4];
+    memcpy(tk, t, sizeof t);
+    memcpy(z, t, sizeof t);
+    for (int i = 0; i < 4; i++) {
+        tk[i][i] += lam1;      /* T */
+        z[i][i] -= 1.0 - lam1; /* T - I */
+    }
+    int k = 0;
+    for (;; k++) {
+        double rho = 0.0;
+        for (int b = 0; b < nb; b++) {
+            int p = bs[b];
+            rho = fmax(rho, bz[b] == 1 ? fabs(z[p][p])
+                                       : sqrt(fabs(z[p][p] * z[p + 1][p + 1] - z[p][p + 1] * z[p + 1][p])));
+        }
+        if (rho <= theta8) {
+            ga_mat4 zm = mat4_of(z);
+            if (ga_mat4_norm1(zm) <= theta8)
+                break;
+            ga_mat4 z2 = ga_mat4_mul(zm, zm), z3 = ga_mat4_mul(z2, zm), z4 = ga_mat4_mul(z2, z2),
+                    z5 = ga_mat4_mul(z4, zm);
+            double d3 = cbrt(ga_mat4_norm1(z3)), d4 = pow(ga_mat4_norm1(z4), 0.25),
+                   d5 = pow(ga_mat4_norm1(z5), 0.2);
+            if (fmin(fmax(d3, d4), fmax(d4, d5)) <= theta8)
+                break;
+        }
+        /* Each root at least halves the argument of a complex eigenvalue
+         * and the log of a real one; with ||log T|| <= 4 * 1100 ... the
+         * count is bounded by the exponent range: 1100 roots always do. */
+        if (k == 1100)
+            return GA_ERR_DOMAIN;
+        double r[4][4];
+        qt_sqrt(tk, bs, bz, nb, r);
+        ga_mat4 rp = mat4_of(r);
+        if (lu4_factor(mat4_add_id(rp, 1.0), &f) != GA_OK)
+            return GA_ERR_DOMAIN; /* a guard: R + I has eigenvalues with real part > 1 */
+        ga_mat4 zn = lu4_solve(&f, mat4_of(z));
+        memcpy(z, zn.m, sizeof z);
+        memcpy(tk, r, sizeof r);
+    }
+    ga_mat4 zm = mat4_of(z), l = mat4_zero();
+    for (int j = 0; j < 8; j++) {
+        ga_mat4 d = zm;
+        for (int i = 0; i < 16; i++) d.m[i] *= node[j];
+        if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK)
+            return GA_ERR_DOMAIN; /* a guard: rho(t Z) < 0.37 */
+        ga_mat4 term = lu4_solve(&f, zm);
         mat4_acc(&l, weight[j], &term);
     }
     mat4_scale2(&l, k);
+
+    /* The diagonal blocks of log T exactly from T's own (Al-Mohy & Higham
+     * 2012, sec. 5: recomputing them removes the error of the roots and of
+     * the Pade step where it matters most): log t_ii, or for a complex pair
+     * a +- iw, log|.| I + (arg/w) N with arg = atan2(w, a) in (0, pi). The
+     * superdiagonal entry between two adjacent real eigenvalues is t_ij
+     * times their divided difference. */
+    for (int b = 0; b < nb; b++) {
+        int p = bs[b];
+        if (bz[b] == 1) {
+            double x = lam1 + t[p][p], lx = shifted ? log1p(t[p][p]) : log(x);
+            M(l, p, p) = lx;
+            if (b + 1 < nb && bz[b + 1] == 1) {
+                double y = lam1 + t[p + 1][p + 1], ly = shifted ? log1p(t[p + 1][p + 1]) : log(y);
+                M(l, p, p + 1) = log_divdiff(t[p][p + 1], x, y, lx, ly, t[p + 1][p + 1] - t[p][p]);
+            }
+        } else {
+            double aa, w, nm[2][2];
+            blk2_parts(t, p, &aa, &w, nm);
+            double re = lam1 + aa, lr = shifted ? log_abs(aa, w) : log(hypot(re, w));
+            double c = w > 0.0 ? atan2(w, re) / w : 1.0 / re;
+            for (int u = 0; u < 2; u++)
+                for (int v = 0; v < 2; v++) M(l, p + u, p + v) = (u == v ? lr : 0.0) + c * nm[u][v];
+        }
+    }
+    if (h) /* the last row of log [B t; 0 1] is 0, exactly */
+        M(l, 3, 0) = M(l, 3, 1) = M(l, 3, 2) = M(l, 3, 3) = 0.0;
+
+    /* log A = Q log(T) Q^T */
+    ga_mat4 q = mat4_of(qm), qt;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) M(qt, i, j) = qm[j][i];
+    l = ga_mat4_mul(ga_mat4_mul(q, l), qt);
+    if (h)
+        M(l, 3, 0) = M(l, 3, 1) = M(l, 3, 2) = M(l, 3, 3) = 0.0;
     if (!mat4_isfinite(&l))
-        return GA_ERR_DOMAIN;
-    /* A posteriori check. Within rounding of the negative real axis (a
-     * rounded half turn has eigenvalues -1 +- 1e-16 i) a square root can
-     * settle on a non-principal branch, and the backward error of the whole
-     * computation grows fast once the eigenvalues come closer to the axis
-     * than ~1e-8 (tests/test_cross.c). Rather than return a confident wrong
-     * answer, accept L only if exp(L) reproduces A to GA_LOGM_BACKWARD_TOL. */
-    ga_mat4 back;
-    if (ga_mat4_expm(l, &back) != GA_OK)
-        return GA_ERR_DOMAIN;
-    double err = 0.0;
-    for (int i = 0; i < 16; i++) back.m[i] -= a.m[i];
-    err = ga_mat4_norm1(back);
-    if (!(err <= GA_LOGM_BACKWARD_TOL * ga_mat4_norm1(a)))
         return GA_ERR_DOMAIN;
     *out = l;
     return GA_OK;
