@@ -124,7 +124,13 @@ static coeffs exp_coeffs(double s, double qq)
 {
     coeffs k;
     double d = fmax(s * s - qq, 0.0);
-    if (s == 0.0 && qq == 0.0) { /* B^2 = 0: exp(B) = 1 + B */
+    if (fabs(s) <= 0x1p-60 && fabs(qq) <= 0x1p-120) {
+        /* |l1|, |l2| <= 2^-60: every coefficient is its limit at l = 0 to
+           within |l| < 2^-60 relative, below the rounding of 1 (exp(B) =
+           1 + B + q/2 + Bq/6 up to terms of relative size l); the formulas
+           below would divide 0 by 0 once s^2 underflows (B = 0.25 (e14 -
+           e15) + 2e-162 e23 gave NaN; found by fuzz/fuzz_numeric,
+           fuzz/regress/numeric/mv-exp-null-blade-subnormal-square) */
         k.alpha = 1.0, k.beta = 1.0, k.gamma = 0.5, k.delta = 1.0 / 6.0;
         return k;
     }
