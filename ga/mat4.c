@@ -1254,8 +1254,66 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
          * spread, resolved after scaling */
         sig = 0.0;
         for (int i = 0; i < n; i++) sig += M(a, i, i) / n;
-        if (schur_shifted(&a, n, sig, t, qm) != GA_OK)
-            return GA_ERR_DOMAIN;
+        if (schur_shifted(&a, n, sig, t, qm) != GA_OK) {
+            /* Neither converged (the case seen: 1e-4 e^X, a cluster of
+             * three eigenvalues at 1e-4 coupled by entries of 1e-15 in a
+             * cycle, beside entries of 1e-302 and subnormals; found by
+             * fuzz_numeric, fuzz/regress/numeric/logm-scaled-expm-qr-stall).
+             * A fallback without a Schur form: inverse scaling and squaring
+             * on A itself, square roots by the Denman-Beavers iteration
+             * (Higham, "Functions of Matrices", 6.15), then the Pade step on
+             * X = A^(1/2^k) - I once ||X||_1 <= theta_8, log A = 2^k log(I + X).
+             * Formed by subtraction, X carries an absolute error of a few
+             * eps, so this is accurate to about 2^k eps ||log A||, less than
+             * the Schur path; the domain (no eigenvalue on the closed
+             * negative axis) shows as a failing iteration. */
+            ga_mat4 y = a, x = mat4_add_id(a, -1.0);
+            int k = 0;
+            for (; k < 64 && !(ga_mat4_norm1(x) <= theta8); k++) {
+                ga_mat4 Y = y, Z = ga_mat4_identity();
+                int it = 0;
+                for (; it < 64; it++) {
+                    lu4 fy, fz;
+                    if (lu4_factor(Y, &fy) != GA_OK || lu4_factor(Z, &fz) != GA_OK)
+                        return GA_ERR_DOMAIN;
+                    ga_mat4 yi = lu4_solve(&fy, ga_mat4_identity()), zi = lu4_solve(&fz, ga_mat4_identity());
+                    double change = 0.0, size = 0.0;
+                    for (int e = 0; e < 16; e++) {
+                        double yn = 0.5 * (Y.m[e] + zi.m[e]);
+                        change = fmax(change, fabs(yn - Y.m[e]));
+                        size = fmax(size, fabs(yn));
+                        Y.m[e] = yn;
+                        Z.m[e] = 0.5 * (Z.m[e] + yi.m[e]);
+                    }
+                    if (!mat4_isfinite(&Y) || !mat4_isfinite(&Z))
+                        return GA_ERR_DOMAIN;
+                    if (change <= 4 * DBL_EPSILON * size)
+                        break;
+                }
+                if (it == 64)
+                    return GA_ERR_DOMAIN;
+                y = Y;
+                x = mat4_add_id(y, -1.0);
+            }
+            if (k == 64)
+                return GA_ERR_DOMAIN;
+            ga_mat4 l = mat4_zero();
+            for (int j = 0; j < 8; j++) {
+                ga_mat4 d = x;
+                for (int i = 0; i < 16; i++) d.m[i] *= node[j];
+                if (lu4_factor(mat4_add_id(d, 1.0), &f) != GA_OK)
+                    return GA_ERR_DOMAIN; /* a guard: rho(t X) < 0.37 */
+                ga_mat4 term = lu4_solve(&f, x);
+                mat4_acc(&l, weight[j], &term);
+            }
+            mat4_scale2(&l, k);
+            if (h)
+                M(l, 3, 0) = M(l, 3, 1) = M(l, 3, 2) = M(l, 3, 3) = 0.0;
+            if (!mat4_isfinite(&l))
+                return GA_ERR_DOMAIN;
+            *out = l;
+            return GA_OK;
+        }
     } else {
         /* the smallest |lambda| (squared), lambda = 1 + t_ii, or for a 2x2
          * block det(I + T_jj) */
