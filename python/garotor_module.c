@@ -1072,7 +1072,8 @@ static PyMethodDef Path_methods[] = {
      "acceleration(t, *, out=None): the body acceleration d/dt (A^-1 dA/dt) per unit time^2 at the times t: "
      "(..., 6) (affine: (..., 4, 4))."},
     {"append", (PyCFunction)(void (*)(void))Path_append, METH_VARARGS | METH_KEYWORDS,
-     "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled), building one "
+     "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
+     "building one "
      "new segment; the Path then equals one built from all the keys, bit for bit. Room: Path(..., "
      "capacity=m)."},
     {NULL, NULL, 0, NULL}};
