@@ -271,6 +271,15 @@ expect_error "interp: a sample fails after 3000 (stdout)" "sampling failed" \
     "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend
 expect_error "interp: a sample fails after 3000 (--out)" "sampling failed" \
     "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend --out "$d/out"
+# a run killed while it writes (SIGTERM; SIGINT and SIGHUP alike) removes its
+# temporary: no sig.out.tmpXXXXXX is left
+"$G" interp --format pose --in "$d/k3" --samples 99999999 --out "$d/sig.out" 2>/dev/null &
+sigpid=$!
+sleep 1
+kill -TERM $sigpid 2>/dev/null
+wait $sigpid
+ls "$d"/sig.out.tmp* >/dev/null 2>&1 && fail "interp killed by SIGTERM left $(ls "$d"/sig.out.tmp*)"
+rm -f "$d/sig.out"
 expect_error "interp: --out and --svg one file" "--out and --svg name the same file: $d/same" \
     "$G" interp --format pose --in "$d/k3" --samples 3 --out "$d/same" --svg "$d/same"
 expect_error "interp: a velocity overflows" "sample 1: no velocity: outside the domain" \

@@ -6,6 +6,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -183,6 +184,47 @@ int tio_read_first(const char *path, int skip_header, tio_items *out)
     return read_items(path, skip_header, 1, out);
 }
 
+/* Temporaries being written (at most --out, --svg and --html at once): a
+ * SIGINT, SIGTERM or SIGHUP removes them before the tool dies of it, so an
+ * interrupted run leaves no FILE.tmpXXXXXX behind. unlink, signal and raise
+ * are async-signal-safe; a slot is cleared only after its file was renamed
+ * or removed, so the handler at worst unlinks a name that is gone. */
+#define TIO_PENDING 4
+static char *volatile tio_pending[TIO_PENDING];
+
+static void tio_on_signal(int sig)
+{
+    for (int i = 0; i < TIO_PENDING; i++)
+        if (tio_pending[i])
+            unlink(tio_pending[i]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void tio_pend(char *tmp, int on)
+{
+    static int installed;
+    if (on && !installed) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = tio_on_signal;
+        sigemptyset(&sa.sa_mask);
+        const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+        for (int i = 0; i < 3; i++) {
+            struct sigaction old;
+            /* a signal the caller ignores (nohup) stays ignored */
+            if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+                sigaction(sigs[i], &sa, NULL);
+        }
+        installed = 1;
+    }
+    for (int i = 0; i < TIO_PENDING; i++)
+        if (on ? !tio_pending[i] : tio_pending[i] == tmp) {
+            tio_pending[i] = on ? tmp : NULL;
+            return;
+        }
+}
+
 static void tio_out_release(tio_out *o)
 {
     free(o->resolved);
@@ -240,6 +282,7 @@ int tio_out_open(tio_out *o, const char *path)
         return -1;
     }
     setvbuf(o->fp, NULL, _IOFBF, 1 << 16); /* a line is some 300 bytes: fewer writes */
+    tio_pend(o->tmp, 1);
     return 0;
 }
 
@@ -301,10 +344,12 @@ int tio_out_close(tio_out *o, int ok)
             rc = ok ? 0 : -1;
     } else if (ok && !werr && rename(o->tmp, o->path) == 0) {
         rc = 0;
+        tio_pend(o->tmp, 0);
     } else {
         if (ok)
             fprintf(stderr, "garotor: %s: cannot write: %s\n", o->path, strerror(errno));
         unlink(o->tmp);
+        tio_pend(o->tmp, 0);
     }
     tio_out_release(o);
     return rc;
