@@ -255,7 +255,8 @@ typedef struct {
     double *key;       /**< the n keys, each group->elem_size bytes, padded to doubles */
     size_t key_stride; /**< doubles from one key to the next */
     double *coef;      /**< SCREW/LIHAO2/LIHAO3: per segment B_i[, C_i[, D_i]] (u units); C2: per segment the
-                            cubic's a, b, c (x = a tau + b tau^2 + c tau^3, t units) */
+                            cubic's a, b, c (x = a tau + b tau^2 + c tau^3, t units); BSPLINE: d_i =
+                            plog(A_i^-1 A_{i+1}) between neighbouring keys */
     double *gen;       /**< BIVECTOR/QUADRATIC/SMOOTH: the n key generators X_i */
     double *slope;     /**< QUADRATIC/SMOOTH: X' at the n - 1 breakpoints */
     double *vel;       /**< LIHAO2/LIHAO3/C2: the body velocity at each key (per unit t); C2: then the
@@ -299,7 +300,9 @@ size_t ga_times_uneven(size_t n, const double *times);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
  *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
- *  without to_qt/from_qt, C2 on a group that is not rigid: affine). */
+ *  without to_qt/from_qt, C2 on a group that is not rigid: affine). A
+ *  workspace of this size for m > n keys, given to ga_path_init with n keys,
+ *  leaves room for ga_path_append to add m - n (schemes that can append). */
 size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
 
 /** Build into *out a path through n keys (n group elements, each
