@@ -333,9 +333,6 @@ int ga_path_append(ga_path *p, double t, const void *key);
  *  returned). */
 int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key);
 
-/** The segment and u of time t (t in [t_0, t_{n-1}]; t = t_i gives segment i,
- *  u = 0, except t_{n-1}: segment n-2, u = 1). GA_ERR_ARG outside. */
-
 /** The number of segments: n - 1, BSPLINE n - 3 (0 for the one-key path). */
 size_t ga_path_segments(const ga_path *p);
 /** The times [*t0, *t1] the path is defined on: [t_0, t_{n-1}], BSPLINE
@@ -347,7 +344,8 @@ int ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1);
 
 /** The segment and u of time t (t in ga_path_range; t at the start of a
  *  segment gives that segment, u = 0, except the range's end: the last
- *  segment, u = 1). GA_ERR_ARG outside. */
+ *  segment, u = 1). GA_ERR_ARG outside, and for a NaN t (a time that is in
+ *  no range: so from every function that takes a sample time t). */
 int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u);
 
 /** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
