@@ -201,6 +201,13 @@ static int read_real(ga_mv O, ga_object *o)
     return GA_OK;
 }
 
+/* Both objects of a two-object query, the first failure's status. */
+static int read_real_pair(ga_mv A, ga_mv B, ga_object *a, ga_object *b)
+{
+    int st = read_real(A, a);
+    return st == GA_OK ? read_real(B, b) : st;
+}
+
 /* Nearest point of a round of centre c and radius r in the direction d from c. */
 static int onto_round(ga_vec3 c, double r, ga_vec3 d, ga_vec3 *out)
 {
@@ -340,9 +347,7 @@ static int round_angle(const ga_object *a, const ga_object *b, double *out)
 int ga_object_angle(ga_mv A, ga_mv B, double *out)
 {
     ga_object a, b;
-    int st = read_real(A, &a);
-    if (st == GA_OK)
-        st = read_real(B, &b);
+    int st = read_real_pair(A, B, &a, &b);
     if (st != GA_OK)
         return st;
     int fa = a.kind == GA_OBJECT_PLANE || a.kind == GA_OBJECT_LINE;
@@ -374,9 +379,7 @@ static ga_rotor turn(ga_vec3 a, ga_vec3 b)
 int ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
 {
     ga_object a, b;
-    int st = read_real(A, &a);
-    if (st == GA_OK)
-        st = read_real(B, &b);
+    int st = read_real_pair(A, B, &a, &b);
     if (st != GA_OK)
         return st;
     if (a.kind != b.kind)

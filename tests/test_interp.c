@@ -190,6 +190,15 @@ static void affine_keys(tk_rng *r, keyset *k, int n)
     set_scale(k);
 }
 
+/* n keys for a group: affine_keys, else random_keys of the given kind. */
+static void group_keys(tk_rng *r, int affine, keyset *k, int n, int kind)
+{
+    if (affine)
+        affine_keys(r, k, n);
+    else
+        random_keys(r, k, n, kind);
+}
+
 /* ---- paths ---------------------------------------------------------------------- */
 
 typedef struct {
@@ -330,10 +339,7 @@ static void test_keys(tk_rng *r)
     for (int trial = 0; trial < 90; ++trial) {
         keyset k;
         int gi = trial % 3;
-        if (gi == 2)
-            affine_keys(r, &k, 3 + trial % 5);
-        else
-            random_keys(r, &k, 3 + trial % 5, trial % 5 == 1 ? 1 : trial % 5 == 2 ? 2 : 0);
+        group_keys(r, gi == 2, &k, 3 + trial % 5, trial % 5 == 1 ? 1 : trial % 5 == 2 ? 2 : 0);
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
             keyset kk = k;
@@ -422,10 +428,7 @@ static void test_c1(tk_rng *r)
     for (int trial = 0; trial < 30; ++trial) {
         int gi = trial % 3;
         keyset k;
-        if (gi == 2)
-            affine_keys(r, &k, 4 + trial % 3);
-        else
-            random_keys(r, &k, 4 + trial % 3, 0);
+        group_keys(r, gi == 2, &k, 4 + trial % 3, 0);
         int d = gs[gi]->dim;
         double vel[MAXK * 12];
         for (int i = 0; i < k.n * d; ++i) /* affine: mild scaling rates, any translation */
@@ -1194,10 +1197,7 @@ static void test_accel(tk_rng *r)
     for (int trial = 0; trial < 12; ++trial) {
         int gi = trial % 3;
         keyset k;
-        if (gi == 2)
-            affine_keys(r, &k, 4 + trial % 2);
-        else
-            random_keys(r, &k, 4 + trial % 2, 0);
+        group_keys(r, gi == 2, &k, 4 + trial % 2, 0);
         int d = gs[gi]->dim;
         for (int si = 0; si < 6; ++si) {
             ga_scheme s = all_schemes[si];
@@ -1767,10 +1767,7 @@ static void test_append(tk_rng *r)
                 continue; /* not defined on g */
             for (int rep = 0; rep < 4; ++rep) {
                 keyset k;
-                if (g->rigid)
-                    random_keys(r, &k, 8, rep);
-                else
-                    affine_keys(r, &k, 8);
+                group_keys(r, !g->rigid, &k, 8, rep);
                 double v0[12];
                 for (int i = 0; i < 12; ++i) v0[i] = tk_range(r, -1, 1);
                 const double *vel = s == GA_SCHEME_LIHAO2 && rep % 2 ? v0 : NULL;
