@@ -481,6 +481,17 @@ expect_error "interp: neither --samples nor --at" "give one of --samples N" \
 # ---- more of the error table ----------------------------------------------
 K="$d/keys"
 expect_error "missing value" "missing value for: --samples" "$G" interp --in "$K" --samples
+expect_error "option twice" "option given twice: --samples" \
+    "$G" interp --format pose --samples 3 --samples 4 --in "$K" --out "$d/out"
+expect_error "flag with a value" "this option takes no value: --normalize=1" \
+    "$G" interp --format pose --samples 3 --normalize=1 --in "$K" --out "$d/out"
+expect_error "--v0=" "--v0 takes its six numbers as separate words, not: --v0=1" \
+    "$G" interp --scheme lihao2 --format pose --samples 3 --v0=1 --in "$K" --out "$d/out"
+"$G" interp --format pose --samples 5 --in "$K" --out "$d/spaced"
+"$G" interp --format=pose --samples=5 --in="$K" --out="$d/joined"
+cmp -s "$d/spaced" "$d/joined" && pass || fail "--opt=value differs from --opt value"
+[ "$("$G" --version)" = "garotor $(sed -n "s/^ *version *: *'\([^']*\)'.*/\1/p" "$(dirname "$doc")/../meson.build" | head -1)" ] && pass ||
+    fail "--version does not print meson.build's version"
 expect_error "--step not > 0" "--step needs a number in \\[1e-9, 1\\] (u units), not: 0" \
     "$G" interp --format pose --samples 3 --eval euler --step 0 --in "$K" --out "$d/out"
 expect_error "--step above 1" "--step needs a number in \\[1e-9, 1\\] (u units), not: 2" \

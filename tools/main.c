@@ -2,6 +2,8 @@
  * The reference for every command and option is docs/tool.md. */
 #include "cli.h"
 
+#include <garotor/version.h>
+
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -123,7 +125,9 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  interp   sample a path through key poses\n"
                             "  versor   exp, log and action of general rotors and versors\n"
                             "\n"
-                            "garotor COMMAND --help shows a command's options.\n";
+                            "garotor COMMAND --help shows a command's options;\n"
+                            "garotor --version prints the version.\n"
+                            "An option's value may follow it or be joined to it: --samples 5, --samples=5.\n";
 
 static const struct {
     const char *name;
@@ -172,17 +176,35 @@ static int parse_double(const char *s, double *out)
     return 0;
 }
 
+/* --name VALUE or --name=VALUE (a one-value option only); an option given
+ * twice is an error rather than a silent choice of one of the two. */
 static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
 {
     for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
+        const char *a = argv[i], *eq = strchr(a, '=');
+        size_t len = (a[0] == '-' && eq) ? (size_t)(eq - a) : strlen(a);
         size_t k = 0, nopt = sizeof option_table / sizeof option_table[0];
-        while (k < nopt && strcmp(a, option_table[k].name) != 0) k++;
+        while (k < nopt && !(strncmp(a, option_table[k].name, len) == 0 && option_table[k].name[len] == '\0'))
+            k++;
         if (k == nopt || !(c->accepts & option_table[k].bit))
             return usage_error(c->name, "unknown option", a);
-        if (i + option_table[k].takes_value >= argc)
-            return usage_error(c->name, "missing value for", a);
-        const char *v = argv[i + 1];
+        if (a[len] == '=' && option_table[k].takes_value != 1)
+            return usage_error(c->name,
+                               option_table[k].takes_value
+                                   ? "--v0 takes its six numbers as separate words, not"
+                                   : "this option takes no value",
+                               a);
+        if (o->given & option_table[k].bit)
+            return usage_error(c->name, "option given twice", option_table[k].name);
+        const char *v;
+        if (a[len] == '=') {
+            v = a + len + 1;
+        } else {
+            if (i + option_table[k].takes_value >= argc)
+                return usage_error(c->name, "missing value for", a);
+            v = argv[i + 1];
+            i += option_table[k].takes_value;
+        }
         o->given |= option_table[k].bit;
         switch (option_table[k].bit) {
         case OPT_IN: o->in = v; break;
@@ -222,11 +244,10 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
             break;
         case OPT_V0:
             for (int j = 0; j < 6; j++)
-                if (parse_double(argv[i + 1 + j], &o->v0[j]))
-                    return usage_error(c->name, "--v0 needs 6 finite numbers, not", argv[i + 1 + j]);
+                if (parse_double(argv[i - 5 + j], &o->v0[j]))
+                    return usage_error(c->name, "--v0 needs 6 finite numbers, not", argv[i - 5 + j]);
             break;
         }
-        i += option_table[k].takes_value;
     }
     return 0;
 }
@@ -237,6 +258,10 @@ int main(int argc, char **argv)
     int first = 1;
     if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         fputs(usage, stdout);
+        return 0;
+    }
+    if (argc > 1 && strcmp(argv[1], "--version") == 0) {
+        printf("garotor %s\n", GAROTOR_VERSION_STRING);
         return 0;
     }
     if (argc > 1 && argv[1][0] != '-') {
