@@ -638,6 +638,11 @@ done
 cmp -s "$d/v-iso.svg" "$d/v-xy.svg" && fail "--view xy draws the same as iso"
 "$G" interp --format pose --samples 21 --in "$K" --out "$d/v.txt" --svg "$d/again.svg" --view xy
 cmp -s "$d/v-xy.svg" "$d/again.svg" || fail "the same picture twice differs"
+# key labels carry the key's time in full (an epoch stamp, not 1.30503e+09)
+printf '1305031102.1758 0 0 0 0 0 0 1\n1305031103.1758 1 0 0 0 0 0 1\n' >"$d/epoch2"
+"$G" interp --format pose --samples 3 --in "$d/epoch2" --out "$d/e.txt" --svg "$d/e.svg" || fail "epoch --svg"
+grep -q '>t=1305031102.1758<' "$d/e.svg" && grep -q '>t=1305031103.1758<' "$d/e.svg" ||
+    fail "epoch key labels: $(grep -o '>t=[^<]*' "$d/e.svg" | tr '\n' ' ')"
 "$G" interp --group matrix --format pose --samples 21 --in "$K" --svg "$d/m.svg" >"$d/m.txt" ||
     fail "interp --svg with samples on standard output"
 [ "$(wc -l <"$d/m.txt")" -eq 21 ] || fail "samples on standard output beside --svg"
