@@ -638,6 +638,17 @@ done
 cmp -s "$d/v-iso.svg" "$d/v-xy.svg" && fail "--view xy draws the same as iso"
 "$G" interp --format pose --samples 21 --in "$K" --out "$d/v.txt" --svg "$d/again.svg" --view xy
 cmp -s "$d/v-xy.svg" "$d/again.svg" || fail "the same picture twice differs"
+# a picture of many samples keeps at most 8193 of them (every stride-th and
+# the last): the polyline ends on the last key, memory does not grow
+"$G" interp --format pose --samples 20000 --in "$K" --out "$d/many.txt" --svg "$d/many.svg" --view xy ||
+    fail "20000 samples --svg"
+awk 'BEGIN { RS = "\"" } prev ~ /points=$/ { n = split($0, p, /[ \n]+/); while (p[n] == "") n--; print n, p[n] }
+     { prev = $0 }' "$d/many.svg" >"$d/many.pts"
+read -r npts lastpt <"$d/many.pts"
+lastkey=$(grep -o '<circle cx="[^"]*" cy="[^"]*" r="3.5"' "$d/many.svg" | tail -n 1 | sed 's/<circle cx="\([^"]*\)" cy="\([^"]*\)".*/\1,\2/')
+[ "$npts" -eq 6668 ] || fail "20000 samples: the picture keeps $npts points, not ceil(20000/3) + 1 = 6668"
+[ "$lastpt" = "$lastkey" ] || fail "20000 samples: the polyline ends at $lastpt, the last key is at $lastkey"
+[ "$(wc -l <"$d/many.txt")" -eq 20000 ] || fail "20000 samples --svg: every sample still written"
 # key labels carry the key's time in full (an epoch stamp, not 1.30503e+09)
 printf '1305031102.1758 0 0 0 0 0 0 1\n1305031103.1758 1 0 0 0 0 0 1\n' >"$d/epoch2"
 "$G" interp --format pose --samples 3 --in "$d/epoch2" --out "$d/e.txt" --svg "$d/e.svg" || fail "epoch --svg"

@@ -325,8 +325,9 @@ static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, dou
 /* The picture of the path: the keys, the samples m[0..ns-1] (in the order
  * sampled) and, for the screw scheme on keys that follow one screw motion,
  * its axis. 0, or -1 after a message. */
+/* m: the nm samples kept for the picture, of ns made */
 static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval ev, svg_view view,
-                const ga_mat4 *keys, const double *times, size_t n, const ga_mat4 *m, size_t ns)
+                const ga_mat4 *keys, const double *times, size_t n, const ga_mat4 *m, size_t nm, size_t ns)
 {
     char title[256], step[64] = "";
     if (ev == GA_EVAL_EULER)
@@ -334,7 +335,7 @@ static int draw(const cli_opts *o, const ga_group *g, ga_scheme scheme, ga_eval 
     snprintf(title, sizeof title, "%s: %zu keys, %zu samples (group %s, eval %s%s)", ga_scheme_name(scheme),
              n, ns, g->name, ga_eval_name(ev), step);
     int frames = 4 * (int)(n - 1) < 12 ? 12 : 4 * (int)(n - 1) > 48 ? 48 : 4 * (int)(n - 1);
-    svg_path path = {ga_scheme_name(scheme), "#333333", m, ns, frames};
+    svg_path path = {ga_scheme_name(scheme), "#333333", m, nm, frames};
     svg_picture pic = {title, view, keys, times, n, &path, 1, 0, {0, 0, 0}, {0, 0, 0}};
     pic.has_axis = scheme == GA_SCHEME_SCREW && svg_screw_axis(keys, n, &pic.axis_point, &pic.axis_dir);
     int st = o->svg ? svg_write(o->svg, &pic) : 0;
@@ -429,10 +430,19 @@ static const char *stamp_of(const sampler *s, size_t k, double t, double off, ch
     return buf;
 }
 
+/* The samples a picture keeps: every stride-th from the first, and the last;
+ * at most PICTURE_MAX + 1 matrices (128 bytes each) however many samples
+ * are written: an 800-pixel picture shows no more. */
+enum { PICTURE_MAX = 8192 };
+typedef struct {
+    ga_mat4 *m;
+    size_t stride, n;
+} picture_keep;
+
 /* Every sample: made, checked, written to out (NULL: not written) and kept as
  * a matrix in keep (NULL: not kept); *count is the number of samples.
  * 0, or -1 after a message. */
-static int run(const sampler *s, tio_out *out, ga_mat4 *keep, size_t *count)
+static int run(const sampler *s, tio_out *out, picture_keep *keep, size_t *count)
 {
     const ga_group *g = s->g;
     const char *name = s->in->name;
@@ -465,8 +475,10 @@ static int run(const sampler *s, tio_out *out, ga_mat4 *keep, size_t *count)
             break;
         for (size_t j = 0; j < m; j++, k++) {
             ga_mat4 mat = g->to_mat4(buf + j * g->elem_size);
-            if (keep)
-                keep[k] = mat;
+            if (keep && k % keep->stride == 0)
+                keep->m[keep->n++] = mat;
+            else if (keep) /* the last sample so far, in the slot after the kept ones */
+                keep->m[keep->n] = mat;
             if (s->pose && (st = mat4_to_pose(mat, &prev, row + 1)) != GA_OK) {
                 fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", name, k + 1,
                         ga_status_string(st));
@@ -495,6 +507,8 @@ static int run(const sampler *s, tio_out *out, ga_mat4 *keep, size_t *count)
         fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", name, ga_status_string(st));
     else
         rc = 0;
+    if (keep && k && (k - 1) % keep->stride != 0)
+        keep->n++; /* the last sample, off the stride */
 done:
     free(buf);
     *count = k;
@@ -855,12 +869,15 @@ int cmd_interp(const cli_opts *o)
      * standard output or a FIFO, whatever is written stays written: every
      * sample is made and checked first, without a line written, and made
      * again as it is written. The picture (--svg, --html) needs the samples'
-     * matrices, held in memory (128 bytes a sample), before the samples are
-     * written: they are kept in that first pass. */
+     * matrices before the samples are written: they are kept in that first
+     * pass (at most PICTURE_MAX + 1 of them, 128 bytes each). */
     int drawn = o->svg || o->html;
+    picture_keep pk = {NULL, 1, 0};
     if (drawn) { /* the picture labels the keys with their times as read */
         key_t = malloc(n * sizeof *key_t);
-        kept = malloc(smp.ns * sizeof *kept);
+        pk.stride = smp.ns > PICTURE_MAX ? (smp.ns + PICTURE_MAX - 1) / PICTURE_MAX : 1;
+        kept = malloc(((smp.ns + pk.stride - 1) / pk.stride + 1) * sizeof *kept);
+        pk.m = kept;
         if (!key_t || !kept)
             goto oom;
         for (size_t i = 0; i < n; i++) key_t[i] = strtod(in.first[i], NULL);
@@ -869,11 +886,11 @@ int cmd_interp(const cli_opts *o)
     if (tio_out_open(&out, o->out))
         goto done;
     size_t ns = 0;
-    if ((drawn || !out.path || out.direct) && run(&smp, NULL, kept, &ns)) {
+    if ((drawn || !out.path || out.direct) && run(&smp, NULL, drawn ? &pk : NULL, &ns)) {
         tio_out_close(&out, 0);
         goto done;
     }
-    if (drawn && draw(o, g, scheme, ev, view, keys, key_t, n, kept, ns)) {
+    if (drawn && draw(o, g, scheme, ev, view, keys, key_t, n, kept, pk.n, ns)) {
         tio_out_close(&out, 0);
         goto done;
     }
