@@ -28,9 +28,11 @@ static PyObject *garotor_error; /* garotor.Error, a subclass of ValueError */
 
 /* ---- errors ------------------------------------------------------------ */
 
-/* Raise garotor.Error("<what>: index <i>: <status text>") with attributes
- * index (a tuple, () for a single element) and status. */
-static void raise_status(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status)
+/* Raise garotor.Error("<what>: index <i>: <status text>[: <why>]") with
+ * attributes index (a tuple, () for a single element) and status; why (or
+ * NULL) says what is wrong with the element where the status alone does not. */
+static void raise_status_why(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status,
+                             const char *why)
 {
     PyObject *idx = PyTuple_New(nlead);
     if (!idx)
@@ -41,13 +43,14 @@ static void raise_status(const char *what, int nlead, const npy_intp *lead, npy_
         flat /= n;
     }
     PyObject *msg;
+    const char *sep = why ? ": " : "", *tail = why ? why : "";
     if (nlead == 0)
-        msg = PyUnicode_FromFormat("%s: %s", what, ga_status_string(status));
+        msg = PyUnicode_FromFormat("%s: %s%s%s", what, ga_status_string(status), sep, tail);
     else if (nlead == 1)
-        msg = PyUnicode_FromFormat("%s: index %S: %s", what, PyTuple_GET_ITEM(idx, 0),
-                                   ga_status_string(status));
+        msg = PyUnicode_FromFormat("%s: index %S: %s%s%s", what, PyTuple_GET_ITEM(idx, 0),
+                                   ga_status_string(status), sep, tail);
     else
-        msg = PyUnicode_FromFormat("%s: index %S: %s", what, idx, ga_status_string(status));
+        msg = PyUnicode_FromFormat("%s: index %S: %s%s%s", what, idx, ga_status_string(status), sep, tail);
     PyObject *exc = msg ? PyObject_CallOneArg(garotor_error, msg) : NULL;
     Py_XDECREF(msg);
     if (exc) {
@@ -59,6 +62,21 @@ static void raise_status(const char *what, int nlead, const npy_intp *lead, npy_
         Py_DECREF(exc);
     }
     Py_DECREF(idx);
+}
+
+static void raise_status(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status)
+{
+    raise_status_why(what, nlead, lead, flat, status, NULL);
+}
+
+/* x as Python's repr writes it (the shortest text that reads back as x) in
+ * buf[32]; buf. With the GIL held. */
+static const char *repr_text(double x, char buf[32])
+{
+    char *r = PyOS_double_to_string(x, 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+    snprintf(buf, 32, "%s", r ? r : "?");
+    PyMem_Free(r);
+    return buf;
 }
 
 /* ---- the vectorised loop ------------------------------------------------ */
@@ -85,6 +103,9 @@ typedef struct {
     /* set by run_kernel: the broadcast leading shape, for kernels that care */
     int nlead;
     npy_intp lead[NPY_MAXDIMS];
+    /* or NULL: for the first bad element (its inputs, the kernel's status),
+       why it is bad where the status alone does not say, into why[size] */
+    void (*explain)(void *ctx, const double *const *in, int status, char *why, size_t size);
 } kernel_call;
 
 static npy_intp core_size(const core_spec *c)
@@ -223,6 +244,7 @@ static PyObject *run_kernel(kernel_call *kc, PyObject *const *objs, PyObject *ou
     double *o = (double *)PyArray_DATA(res);
     npy_intp osize = core_size(&kc->out), bad = -1;
     int st = GA_OK;
+    const double *badin[MAX_IN];
     npy_intp idx[NPY_MAXDIMS] = {0};
     Py_BEGIN_ALLOW_THREADS;
     if (same) {
@@ -231,6 +253,7 @@ static PyObject *run_kernel(kernel_call *kc, PyObject *const *objs, PyObject *ou
             for (int j = 0; j < kc->nin; j++) in[j] = base[j] + k * csize[j];
             if ((st = kc->kernel(kc->ctx, in, o + k * osize, k)) != GA_OK) {
                 bad = k;
+                memcpy(badin, in, sizeof in);
                 break;
             }
         }
@@ -238,6 +261,7 @@ static PyObject *run_kernel(kernel_call *kc, PyObject *const *objs, PyObject *ou
         for (npy_intp k = 0; k < total; k++) {
             if ((st = kc->kernel(kc->ctx, p, o + k * osize, k)) != GA_OK) {
                 bad = k;
+                memcpy(badin, p, sizeof p);
                 break;
             }
             /* the odometer: advance the last leading index, carry left */
@@ -252,7 +276,10 @@ static PyObject *run_kernel(kernel_call *kc, PyObject *const *objs, PyObject *ou
     }
     Py_END_ALLOW_THREADS;
     if (bad >= 0) {
-        raise_status(kc->what, kc->nlead, kc->lead, bad, st);
+        char why[160] = "";
+        if (kc->explain)
+            kc->explain(kc->ctx, badin, st, why, sizeof why);
+        raise_status_why(kc->what, kc->nlead, kc->lead, bad, st, *why ? why : NULL);
         goto done;
     }
     if (out && out != Py_None) {
@@ -536,7 +563,8 @@ static PyObject *py_exp(PyObject *self, PyObject *args, PyObject *kw)
                       k_exp,
                       (void *)g,
                       0,
-                      {0}};
+                      {0},
+                      NULL};
     return run_kernel(&kc, &xi, out);
 }
 
@@ -558,7 +586,8 @@ static PyObject *py_log(PyObject *self, PyObject *args, PyObject *kw)
                       k_log,
                       (void *)g,
                       0,
-                      {0}};
+                      {0},
+                      NULL};
     return run_kernel(&kc, &T, out);
 }
 
@@ -574,7 +603,8 @@ static PyObject *py_compose(PyObject *self, PyObject *args, PyObject *kw)
     if (!g)
         return NULL;
     kernel_call kc = {
-        "compose", 2, {CORE2(4, 4, "A"), CORE2(4, 4, "B")}, CORE2(4, 4, NULL), k_compose, (void *)g, 0, {0}};
+        "compose", 2,   {CORE2(4, 4, "A"), CORE2(4, 4, "B")}, CORE2(4, 4, NULL), k_compose, (void *)g, 0,
+        {0},       NULL};
     return run_kernel(&kc, in, out);
 }
 
@@ -589,7 +619,8 @@ static PyObject *py_inverse(PyObject *self, PyObject *args, PyObject *kw)
     const ga_group *g = group_arg("inverse", gname);
     if (!g)
         return NULL;
-    kernel_call kc = {"inverse", 1, {CORE2(4, 4, "T")}, CORE2(4, 4, NULL), k_inverse, (void *)g, 0, {0}};
+    kernel_call kc = {"inverse", 1,   {CORE2(4, 4, "T")}, CORE2(4, 4, NULL), k_inverse, (void *)g, 0,
+                      {0},       NULL};
     return run_kernel(&kc, &T, out);
 }
 
@@ -604,8 +635,8 @@ static PyObject *py_apply(PyObject *self, PyObject *args, PyObject *kw)
     const ga_group *g = group_arg("apply", gname);
     if (!g)
         return NULL;
-    kernel_call kc = {"apply", 2,  {CORE2(4, 4, "T"), CORE1(3, "points")}, CORE1(3, NULL), k_apply, (void *)g,
-                      0,       {0}};
+    kernel_call kc = {
+        "apply", 2, {CORE2(4, 4, "T"), CORE1(3, "points")}, CORE1(3, NULL), k_apply, (void *)g, 0, {0}, NULL};
     return run_kernel(&kc, in, out);
 }
 
@@ -622,8 +653,8 @@ static PyObject *py_from_quat(PyObject *self, PyObject *args, PyObject *kw)
         if (!zero)
             return NULL;
     }
-    kernel_call kc = {"from_quat", 2,  {CORE1(4, "q"), CORE1(3, "t")}, CORE2(4, 4, NULL), k_from_quat, NULL,
-                      0,           {0}};
+    kernel_call kc = {
+        "from_quat", 2, {CORE1(4, "q"), CORE1(3, "t")}, CORE2(4, 4, NULL), k_from_quat, NULL, 0, {0}, NULL};
     PyObject *r = run_kernel(&kc, in, out);
     Py_XDECREF(zero);
     return r;
@@ -637,7 +668,7 @@ static PyObject *py_from_quat(PyObject *self, PyObject *args, PyObject *kw)
         PyObject *x, *out = NULL;                                                                            \
         if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O:" #fname, kwlist, &x, &out))                        \
             return NULL;                                                                                     \
-        kernel_call kc = {#fname, 1, {incore}, outcore, kernel, NULL, 0, {0}};                               \
+        kernel_call kc = {#fname, 1, {incore}, outcore, kernel, NULL, 0, {0}, NULL};                         \
         return run_kernel(&kc, &x, out);                                                                     \
     }
 
@@ -665,7 +696,7 @@ static PyObject *py_to_pose(PyObject *self, PyObject *args, PyObject *kw)
         return NULL;
     if (continuous && PyArray_NDIM(a) >= 3)
         c.run = PyArray_DIM(a, PyArray_NDIM(a) - 3);
-    kernel_call kc = {"to_pose", 1, {CORE2(4, 4, "T")}, CORE1(7, NULL), k_to_pose, &c, 0, {0}};
+    kernel_call kc = {"to_pose", 1, {CORE2(4, 4, "T")}, CORE1(7, NULL), k_to_pose, &c, 0, {0}, NULL};
     PyObject *r = run_kernel(&kc, (PyObject **)&a, out);
     Py_DECREF(a);
     return r;
@@ -802,7 +833,12 @@ static int Path_init(PathObject *self, PyObject *args, PyObject *kw)
     const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
     for (npy_intp i = 0; i < n; i++)
         if (!isfinite(tv[i]) || (i > 0 && !(tv[i] > tv[i - 1]))) {
-            raise_status("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE);
+            char why[128] = "", a[32], b[32];
+            if (isfinite(tv[i]))
+                snprintf(why, sizeof why, "%s is not after the time before it, %s (times must increase)",
+                         repr_text(tv[i], a), repr_text(tv[i - 1], b));
+            raise_status_why("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE,
+                             *why ? why : NULL);
             goto done;
         }
     size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, tv) : 0;
@@ -923,6 +959,20 @@ static int k_acceleration(void *ctx, const double *const *in, double *out, npy_i
     return GA_OK;
 }
 
+/* A time the path is not defined at: outside its range (or NaN). */
+static void explain_time(void *ctx, const double *const *in, int status, char *why, size_t size)
+{
+    double t0, t1, t = in[0][0];
+    if (status == GA_ERR_NOTFINITE || ga_path_range(ctx, &t0, &t1) != GA_OK)
+        return;
+    char a[32], b[32], c[32];
+    if (isnan(t))
+        snprintf(why, size, "t is NaN");
+    else if (t < t0 || t > t1)
+        snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", repr_text(t, a),
+                 repr_text(t0, b), repr_text(t1, c));
+}
+
 static PyObject *path_call(PathObject *self, PyObject *args, PyObject *kw, const char *what, kernel_fn kernel,
                            core_spec outcore)
 {
@@ -930,8 +980,9 @@ static PyObject *path_call(PathObject *self, PyObject *args, PyObject *kw, const
     PyObject *t, *out = NULL;
     if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !path_ready(self))
         return NULL;
-    kernel_call kc = {what, 1, {CORE0}, outcore, kernel, &self->path, 0, {0}};
+    kernel_call kc = {what, 1, {CORE0}, outcore, kernel, &self->path, 0, {0}, NULL};
     kc.in[0].name = "t";
+    kc.explain = explain_time;
     return run_kernel(&kc, &t, out);
 }
 

@@ -331,8 +331,13 @@ def test_errors_name_the_index(rng):
 
 def test_path_errors(rng):
     times, K = keys_for(rng, "cga", 4)
-    with pytest.raises(ValueError, match="times: index 2: invalid argument"):
+    with pytest.raises(ValueError, match=r"times: index 2: invalid argument: 1.0 is not after the time before "
+                       r"it, 1.0 \(times must increase\)"):
         garotor.Path([0, 1, 1, 2], K)
+    with pytest.raises(ValueError, match="times: index 1: invalid argument: 0.5 is not after the time before it, 2.0"):
+        garotor.Path([2, 0.5, 3, 4], K)
+    with pytest.raises(ValueError, match="times: index 3: not finite"):
+        garotor.Path([0, 1, 2, np.nan], K)
     bad = K.copy()
     bad[3, 0, 1] += 0.1
     with pytest.raises(ValueError, match="poses: index 3: not a rigid motion"):
@@ -356,8 +361,14 @@ def test_path_errors(rng):
         garotor.Path(times, garotor.to_pose(K), group="affine")
     p = garotor.Path(times, K)
     out = np.full((3, 4, 4), 5.0)
-    with pytest.raises(ValueError, match="index 1: invalid argument"):
+    with pytest.raises(ValueError, match="index 1: invalid argument: t = %r is outside the path's range "
+                       r"\[%r, %r\]" % (times[-1] + 1, times[0], times[-1])) as e:
         p.sample([times[0], times[-1] + 1, times[1]], out=out)
+    assert e.value.index == (1,) and e.value.status == -6  # GA_ERR_ARG
+    with pytest.raises(ValueError, match=r"Path.velocity: index \(1, 0\): invalid argument: t = -1e-300 is "):
+        p.velocity([[times[0], times[1]], [-1e-300, times[1]]])
+    with pytest.raises(ValueError, match="Path.sample: index 0: invalid argument: t is NaN"):
+        p.sample([np.nan])
     assert np.all(out == 5.0)
     with pytest.raises(ValueError, match="index 0: not finite"):
         p.velocity([np.nan])
