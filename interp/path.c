@@ -485,7 +485,8 @@ static void notaknot(const ga_path *p, const double *y, double *s, double *cp, d
  * |J_r^-1| <= pi/2 on SO(3)); the full Newton step is taken (halving steps
  * that raise the largest residual failed more often: docs/schemes.md). At
  * most C2_SWEEPS; converged when no rate moves by more than 4 DBL_EPSILON of the
- * largest, or the change stops shrinking once it is below 1e-12 of it. */
+ * largest, or the change stops shrinking once it is below 1e-12 of it. Where
+ * that fails, continuation (c2_solve). */
 #define C2_SWEEPS 200
 
 typedef struct {
@@ -498,9 +499,14 @@ typedef struct {
     int (*jr)(const ga_path *p, const double *th, int inv, double *m);
     /* o = N(th, y) */
     int (*nonlin)(const ga_path *p, const double *th, const double *y, double *o);
+    /* the interior rates set to where the sweeps start */
+    void (*start)(ga_path *p);
 } c2_sys;
 
-static int c2_solve(const c2_sys *s)
+/* Newton sweeps on the system with N scaled by lam (1: the system itself),
+ * from the current rates. GA_OK when converged: to the rule above when
+ * final, else to 1e-9 of the largest rate (a start for the next lam). */
+static int c2_newton(const c2_sys *s, double lam, int final)
 {
     ga_path *p = s->p;
     size_t n = p->n, d = s->d, dd = d * d;
@@ -540,9 +546,10 @@ static int c2_solve(const c2_sys *s)
                 for (size_t j = 0; j < d; ++j) Jn[d * j + c] = (np[j] - nm[j]) / (2.0 * sc);
             }
             md_mul(d, Jn, Ji, Jn);
+            for (size_t j = 0; j < dd; ++j) Jn[j] *= lam;
             md_vec(d, Jn, wk, jw);
             for (size_t j = 0; j < d; ++j)
-                rhs[j] = 6.0 * tl[j] / (hl * hl) + 6.0 * tr[j] / (hr * hr) - nl[j] + jw[j];
+                rhs[j] = 6.0 * tl[j] / (hl * hl) + 6.0 * tr[j] / (hr * hr) - lam * nl[j] + jw[j];
             for (size_t j = 0; j < dd; ++j) {
                 L[j] *= 2.0 / hl;
                 U[j] *= 2.0 / hr;
@@ -586,9 +593,27 @@ static int c2_solve(const c2_sys *s)
             return GA_ERR_DOMAIN;
         if (delta <= 4 * DBL_EPSILON * big || (delta <= 1e-12 * big && delta >= prev))
             return GA_OK;
+        if (!final && delta <= 1e-9 * big)
+            return GA_OK;
         prev = delta;
     }
     return GA_ERR_DOMAIN;
+}
+
+/* Newton from the start; where it does not converge, continuation: from
+ * the start again, the systems with N scaled by 1/m, 2/m, ..., 1, each
+ * solved from the last one's rates, for m = 4, 16 and 64 in turn (the
+ * system without N is linear and block diagonally dominant, and a small
+ * change of lam moves the solution little). */
+static int c2_solve(const c2_sys *s)
+{
+    int st = c2_newton(s, 1.0, 1);
+    for (int m = 4; st == GA_ERR_DOMAIN && m <= 64; m *= 4) {
+        s->start(s->p);
+        st = GA_OK;
+        for (int j = 1; j <= m && st == GA_OK; ++j) st = c2_newton(s, (double)j / m, j == m);
+    }
+    return st;
 }
 
 /* The relative rotation vector theta_i = plog(R_i^-1 R_{i+1}) of segment i,
@@ -645,6 +670,15 @@ static int dec_nonlin(const ga_path *p, const double *th, const double *y, doubl
     return GA_OK;
 }
 
+static void dec_start(ga_path *p)
+{
+    for (size_t i = 0; i < p->n; ++i) {
+        size_t j = i + 1 < p->n ? i : i - 1;
+        double h = seg_len(p, j);
+        for (int k = 0; k < 3; ++k) dkey(p, i)[7 + k] = dseg(p, j)[k] / h;
+    }
+}
+
 static int build_decoupled(ga_path *p)
 {
     const ga_group *g = p->group;
@@ -675,13 +709,9 @@ static int build_decoupled(ga_path *p)
         }
     }
     /* angular rates: the chord rates to start (and for good at the ends) */
-    for (size_t i = 0; i < n; ++i) {
-        size_t j = i + 1 < n ? i : i - 1;
-        double h = seg_len(p, j);
-        for (int k = 0; k < 3; ++k) dkey(p, i)[7 + k] = dseg(p, j)[k] / h;
-    }
+    dec_start(p);
     if (n > 2) {
-        c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin};
+        c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin, dec_start};
         int st = c2_solve(&sys);
         if (st != GA_OK)
             return st;
@@ -1074,19 +1104,12 @@ static int c2_nonlin(const ga_path *p, const double *th, const double *y, double
     return st;
 }
 
-static int build_c2(ga_path *p)
+/* the ends: the screw velocities theta/h of the end segments (each a body
+   velocity at both its ends); the interior, to start: lihao3's default (the
+   parabola through the neighbouring screw velocities) */
+static void c2_start(ga_path *p)
 {
-    const ga_group *g = p->group;
-    size_t n = p->n, d = g->dim;
-    double rel[MAXE], J[MAXD * MAXD], e[MAXD];
-    int st;
-    memset(p->coef, 0, scheme_doubles(p->scheme, n, d) * sizeof(double));
-    for (size_t i = 0; i + 1 < n; ++i)
-        if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + (3 * i + 2) * d, rel)))
-            return st;
-    /* the ends: the screw velocities theta/h of the end segments (each a body
-       velocity at both its ends); the interior, to start: lihao3's default
-       (the parabola through the neighbouring screw velocities) */
+    size_t n = p->n, d = p->group->dim;
     for (size_t i = 0; i < n; ++i) {
         double *v = c2_rate(p, i);
         if (i == 0 || i + 1 == n) {
@@ -1097,10 +1120,23 @@ static int build_c2(ga_path *p)
             lin(d, v, hr / ((hl + hr) * hl), c2_theta(p, i - 1), hl / ((hl + hr) * hr), c2_theta(p, i));
         }
     }
+}
+
+static int build_c2(ga_path *p)
+{
+    const ga_group *g = p->group;
+    size_t n = p->n, d = g->dim;
+    double rel[MAXE], J[MAXD * MAXD], e[MAXD];
+    int st;
+    memset(p->coef, 0, scheme_doubles(p->scheme, n, d) * sizeof(double));
+    for (size_t i = 0; i + 1 < n; ++i)
+        if ((st = rel_log(g, key_of(p, i), key_of(p, i + 1), p->coef + (3 * i + 2) * d, rel)))
+            return st;
+    c2_start(p);
     if (!allfinite(p->vel, n * d))
         return GA_ERR_DOMAIN;
     if (n > 2) {
-        c2_sys sys = {p, d, c2_theta, c2_rate, c2_scratch, c2_jr, c2_nonlin};
+        c2_sys sys = {p, d, c2_theta, c2_rate, c2_scratch, c2_jr, c2_nonlin, c2_start};
         if ((st = c2_solve(&sys)))
             return st;
     }
