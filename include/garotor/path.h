@@ -80,7 +80,7 @@
  *              RotationSpline, whose construction this is). Where the
  *              sweeps stall, continuation in N; GA_ERR_DOMAIN if that does
  *              not converge either (docs/schemes.md: 1 of 4000 key sets with
- *              neighbouring spacings up to 1000x apart, none of 12000 within 10x).
+ *              spacings log-uniform in [1e-3, 1e3], none of 12000 in [0.1, 10]).
  *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
  *   C2         rigid groups only (group.h rigid; GA_ERR_ARG on affine):
  *              A(t) = A_i exp(x(t - t_i)), x a cubic in the twist with
@@ -100,7 +100,7 @@
  *              changes of world and body frame, like SCREW and LIHAO3.
  *              GA_ERR_DOMAIN if the sweeps and the continuation do not
  *              converge (docs/schemes.md: 2 of 4000 key sets with
- *              neighbouring spacings up to 1000x apart, none of 12000 within 10x).
+ *              spacings log-uniform in [1e-3, 1e3], none of 12000 in [0.1, 10]).
  *
  *   BSPLINE    the uniform cumulative cubic B-spline with the keys as control
  *              poses (approximating: the keys are not hit). Needs n >= 4 keys
