@@ -135,7 +135,7 @@ for cmds in $(cd "$d/blocks" && ls ./*.cmds 2>/dev/null | sort -t. -k2,2 -k3,3n)
     base=${base%.cmds}
     name=$(basename "$base")
     if [ "$can_cc" -eq 0 ] && grep -q '^cc ' "$base.cmds"; then
-        echo "note: $name (compiles the tutorial's C program) skipped: cannot link build/libgarotor.a here"
+        echo "note: $name (compiles a C program) skipped: cannot link build/libgarotor.a here"
         : >"$base.got"
         same "${name%%.*}.md" "$base" >/dev/null
         continue
