@@ -6,8 +6,9 @@
 # GAROTOR is the built tool (default: build/garotor beside docs/), OUTDIR where
 # the figures go (default: docs/figures). The inputs are the committed files
 # docs/figures/*.keys, *.twist and *.csv; everything else is computed here by
-# garotor (exp, log, interp --svg) and a little POSIX awk. It takes well under
-# a second. tests/figures_test.sh runs it into a temporary directory and checks
+# garotor (exp, log, interp --svg) and a little POSIX awk, and the pictures of
+# the conformal model (cga-*.svg) by docs/examples/figures.c, which the build
+# compiles beside the tool as conformal-figures. It takes well under a second. tests/figures_test.sh runs it into a temporary directory and checks
 # that the result is byte for byte what is committed.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -116,3 +117,8 @@ awk '/^#/ { next } { $1 = n++; print }' "$src/schemes.keys" >"$tmp/even.keys"
 "$G" interp --header --format pose --scheme lihao3 --samples 51 --in "$src/tool-poses.csv" \
     --out "$tmp/samples" --svg "$out/tool-poses-xy.svg" --view xy
 "$G" demo --svg "$out/demo.svg" >"$tmp/report"
+
+# ---- the conformal model: objects, meets, an inversion, a dilation ----------
+# docs/examples/figures.c builds each object with the library, reads it back
+# and draws it, checking every point it draws against the object's blade
+"$(dirname "$G")/conformal-figures" "$out"

@@ -10,9 +10,10 @@
 #     differ are the ones named in the list of exceptions below, each with
 #     its reason; it is empty now. The tutorial's C programs are written out
 #     from its ```c blocks, each to the file its first line names
-#     ("/* point.c: ..."), for its sessions to compile; if they cannot be
-#     linked here (a sanitizer build), the blocks that compile them are
-#     skipped with a note.
+#     ("/* point.c: ..."), for its sessions to compile; the other pages'
+#     sessions compile the programs of docs/examples/ (conformal.md's, say)
+#     as they show it. If a program cannot be linked here (a sanitizer build),
+#     the blocks that compile one ("cc ...") are skipped with a note.
 # The digits shown are those of the default build, and these print the same
 # digits: gcc or clang, -O0 to -O3, the sanitizer build, and glibc's maths
 # functions on or off their FMA code paths (GLIBC_TUNABLES=glibc.cpu.hwcaps=
@@ -134,7 +135,7 @@ for cmds in $(cd "$d/blocks" && ls ./*.cmds 2>/dev/null | sort -t. -k2,2 -k3,3n)
     base=${base%.cmds}
     name=$(basename "$base")
     if [ "$can_cc" -eq 0 ] && grep -q '^cc ' "$base.cmds"; then
-        echo "note: $name (compiles the tutorial's C program) skipped: cannot link build/libgarotor.a here"
+        echo "note: $name (compiles a C program) skipped: cannot link build/libgarotor.a here"
         : >"$base.got"
         same "${name%%.*}.md" "$base" >/dev/null
         continue
