@@ -654,12 +654,16 @@ static void expm_fix_blocks(ga_mat4 *x, const ga_mat4 *a, int k, int plain, cons
 int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
 {
     /* theta_m: the largest alpha for which r_m(A) = e^(A + E) with
-     * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3, used unchanged by
-     * Al-Mohy & Higham 2009). b: the coefficients of the Pade numerator
+     * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3) for m <= 9, and
+     * theta_13 = 4.25 of Al-Mohy & Higham 2009, Table 3.1 (and scipy), not
+     * Higham 2005's 5.37: near 5.37 the rounding in evaluating r_13 and
+     * solving with q_13 dominates the truncation error (scipy's
+     * test_burkardt_12 and three other dense 3x3 and 4x4 inputs lost 3 to 5
+     * times scipy's accuracy with 5.37, one squaring fewer). b: the coefficients of the Pade numerator
      * p_m(x) = sum b_j x^j, scaled to integers, with q_m(x) = p_m(-x).
      * log2c: log2 of c_{2m+1} = (m!)^2 / ((2m)! (2m+1)!). */
     static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
-                                    2.097847961257068e0, 5.371920351148152e0};
+                                    2.097847961257068e0, 4.25};
     static const double log2c[5] = {-16.621136113, -33.227772657, -51.994974307, -72.324718099,
                                     -116.447004252};
     static const int degree[5] = {3, 5, 7, 9, 13};
@@ -673,7 +677,7 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
                                      85.24012158171844};
     static const double ell_free[5] = {0.014955873861517137, 0.2539783216046672, 0.9514583772676373,
                                        2.104672049828496, 5.427430678788747};
-    static const double t13_4 = 832.7569372235824, t13_6 = 24031.306848874174, t13_10 = 20012237.488948554;
+    static const double t13_4 = 326.25390625, t13_6 = 5892.961181640625, t13_10 = 1922601.6048898697;
     static const double b3[] = {120, 60, 12, 1};
     static const double b5[] = {30240, 15120, 3360, 420, 30, 1};
     static const double b7[] = {17297280, 8648640, 1995840, 277200, 25200, 1512, 56, 1};
@@ -738,12 +742,17 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
             idx = c;
     }
     if (idx < 0) {
-        /* eta_5 = min(max(d4, d6), max(d4, d10)) <= theta_13 is again tested
-         * without roots; only when it fails is s computed from the d_k */
+        /* eta_5 = min(max(d6, d8), max(d8, d10)) <= theta_13 is first
+         * tested without roots or products, with d8 <= d4 and
+         * d10 <= (||A^4|| ||A^6||)^(1/10); only when that fails are d8 and
+         * d10 computed exactly (||A^4 A^4||, ||A^4 A^6||: the paper's and
+         * scipy's s, not one squaring more from the bounds) */
         int s1 = 0;
         if (!(n4 <= t13_4 && (n6 <= t13_6 || n4 * n6 <= t13_10))) {
-            double d4 = sqrt(sqrt(n4)), d6 = pow(n6, 1.0 / 6.0), d10 = pow(n4 * n6, 0.1);
-            double eta5 = fmin(fmax(d6, d4), fmax(d4, d10));
+            ga_mat4 a8 = mat4_mul_any(&a4, &a4, h), a10 = mat4_mul_any(&a4, &a6, h);
+            double d6 = pow(n6, 1.0 / 6.0), d8 = pow(norm1_finite(&a8), 0.125),
+                   d10 = pow(norm1_finite(&a10), 0.1);
+            double eta5 = fmin(fmax(d6, d8), fmax(d8, d10));
             s1 = eta5 > theta[4] ? (int)ceil(log2(eta5 / theta[4])) : 0;
         }
         double ns = ldexp(n1, -s1); /* ||2^-s1 A||_1, exactly */
@@ -825,6 +834,25 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
      * for x < -1/4; near 0 the plain form keeps relative accuracy. With h the
      * last row is 0 in X and e_4^T in I + X: products stay block triangular. */
     int plain = 0, bs[4], bz[4], nb = qt_blocks(&a, bs, bz);
+    /* A contracting r_m (a diagonal entry of X below -1/4, where the loop
+     * below would switch to plain squaring at once): r_m itself as
+     * (V - U)^{-1} (V + U), as scipy computes it, not I + X, which rounds
+     * r_m's small entries to eps absolute (scipy's test_burkardt_12,
+     * e^-1, e^-2, e^-20 through six squarings: 2.8e-13 against 1.0e-14,
+     * scipy 7.1e-14). */
+    if (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25) {
+        lu4 f;
+        ga_mat4 vu = v;
+        mat4_acc(&vu, 1.0, &u);
+        if (lu4_factor(den, &f) != GA_OK)
+            return GA_ERR_DOMAIN;
+        x = lu4_solve(&f, vu);
+        if (h) {
+            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = 0.0;
+            M(x, 3, 3) = 1.0;
+        }
+        plain = 1;
+    }
     if (nb)
         expm_fix_blocks(&x, &a, 0, plain, bs, bz, nb);
     for (int k = 0; k < s; k++) {
@@ -842,8 +870,13 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
         if (nb)
             expm_fix_blocks(&x, &a, k + 1, plain, bs, bz, nb);
     }
-    if (!plain)
+    if (!plain) {
         x = mat4_add_id(x, 1.0);
+        /* 1 + expm1(l) rounds e^l to eps absolute, not relative (e^-5.4 =
+         * 0.0047 then carries 20 u): the blocks once more as exp itself */
+        if (nb)
+            expm_fix_blocks(&x, &a, s, 1, bs, bz, nb);
+    }
     if (!mat4_isfinite(&x))
         return GA_ERR_DOMAIN;
     *out = x;
