@@ -811,18 +811,40 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
     }
     ga_mat4 u = mat4_mul_any(&a, &u0, h), den = v, x;
     mat4_acc(&den, -1.0, &u);
-    /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. */
-    lu4 f;
-    int hsolve = h && expm_solve3(&den, &u, 2.0, &x);
-    if (!hsolve) {
-        /* q_m(A) is well conditioned for alpha <= theta_m (Higham 2005): this
-         * failure is a guard, not an expected path. */
-        if (lu4_factor(den, &f) != GA_OK)
-            return GA_ERR_DOMAIN;
-        x = lu4_solve(&f, u);
-        for (int i = 0; i < 16; i++) x.m[i] *= 2.0;
-        if (h)
-            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = M(x, 3, 3) = 0.0;
+    /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. But
+     * for a contracting r_m (a diagonal entry below 3/4, where the squaring
+     * below goes plain at once) r_m itself, (V - U)^{-1} (V + U), as scipy
+     * computes it: I + X rounds r_m's small entries to eps absolute
+     * (scipy's test_burkardt_12, e^-1, e^-2, e^-20 through six squarings:
+     * 2.8e-13 against 1.0e-14, scipy 7.1e-14). Predicted from the diagonal
+     * of 2^-s A (one solve, not two, for most inputs), and checked on X. */
+    int plain = a.m[0] < -0.25 || a.m[5] < -0.25 || a.m[10] < -0.25 || a.m[15] < -0.25;
+    ga_mat4 rhs = u;
+    double c = 2.0;
+    for (int pass = 0; pass < 2; pass++) {
+        if (plain) { /* D r = V + U; for h, r = [R t; 0 1] and D3 t = 2 u, t as in X */
+            rhs = v;
+            mat4_acc(&rhs, 1.0, &u);
+            if (h)
+                for (int i = 0; i < 3; i++) M(rhs, i, 3) = 2.0 * M(u, i, 3);
+            c = 1.0;
+        }
+        if (!(h && expm_solve3(&den, &rhs, c, &x))) {
+            lu4 f;
+            /* q_m(A) is well conditioned for alpha <= theta_m (Higham
+             * 2005): this failure is a guard, not an expected path. */
+            if (lu4_factor(den, &f) != GA_OK)
+                return GA_ERR_DOMAIN;
+            x = lu4_solve(&f, rhs);
+            for (int i = 0; i < 16; i++) x.m[i] *= c;
+        }
+        if (h) {
+            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = 0.0;
+            M(x, 3, 3) = plain ? 1.0 : 0.0;
+        }
+        if (plain || !(M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25))
+            break;
+        plain = 1;
     }
 
     /* Squaring. (I + X)^2 = I + (2X + X^2) keeps relative accuracy in X when
@@ -834,27 +856,7 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
      * eps (2|x| + x^2) and the plain form like eps (1 + x)^2, which is smaller
      * for x < -1/4; near 0 the plain form keeps relative accuracy. With h the
      * last row is 0 in X and e_4^T in I + X: products stay block triangular. */
-    int plain = 0, bs[4], bz[4], nb = qt_blocks(&a, bs, bz);
-    /* A contracting r_m (a diagonal entry of X below -1/4, where the loop
-     * below would switch to plain squaring at once): r_m itself as
-     * (V - U)^{-1} (V + U), as scipy computes it, not I + X, which rounds
-     * r_m's small entries to eps absolute (scipy's test_burkardt_12,
-     * e^-1, e^-2, e^-20 through six squarings: 2.8e-13 against 1.0e-14,
-     * scipy 7.1e-14). */
-    if (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25) {
-        ga_mat4 vu = v;
-        mat4_acc(&vu, 1.0, &u);
-        if (hsolve) { /* D r = V + U with r = [R t; 0 1]: D3 t = 2 u, t as in X */
-            for (int i = 0; i < 3; i++) M(vu, i, 3) = 2.0 * M(u, i, 3);
-            expm_solve3(&den, &vu, 1.0, &x); /* the same pivots: cannot fail now */
-        } else
-            x = lu4_solve(&f, vu);
-        if (h) {
-            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = 0.0;
-            M(x, 3, 3) = 1.0;
-        }
-        plain = 1;
-    }
+    int bs[4], bz[4], nb = qt_blocks(&a, bs, bz);
     if (nb)
         expm_fix_blocks(&x, &a, 0, plain, bs, bz, nb);
     for (int k = 0; k < s; k++) {
