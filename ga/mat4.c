@@ -1335,10 +1335,11 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
              * on A itself, square roots by the Denman-Beavers iteration
              * (Higham, "Functions of Matrices", 6.15), then the Pade step on
              * X = A^(1/2^k) - I once ||X||_1 <= theta_8, log A = 2^k log(I + X).
-             * Formed by subtraction, X carries an absolute error of a few
-             * eps, so this is accurate to about 2^k eps ||log A||, less than
-             * the Schur path; the domain (no eigenvalue on the closed
-             * negative axis) shows as a failing iteration. */
+             * X is carried as X <- (Y + I)^{-1} X, not formed by
+             * subtraction, whose absolute error of a few eps made the result
+             * accurate only to about 2^k eps ||log A||; the domain (no
+             * eigenvalue on the closed negative axis) shows as a failing
+             * iteration. */
             ga_mat4 y = a, x = mat4_add_id(a, -1.0);
             int k = 0;
             for (; k < 64 && !(ga_mat4_norm1(x) <= theta8); k++) {
@@ -1364,8 +1365,13 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
                 }
                 if (it == 64)
                     return GA_ERR_DOMAIN;
+                /* X <- (Y + I)^{-1} X, as Z in the Schur path: the root's
+                 * A^(1/2^k) - I without the subtraction's absolute error */
+                lu4 fr;
+                if (lu4_factor(mat4_add_id(Y, 1.0), &fr) != GA_OK)
+                    return GA_ERR_DOMAIN;
+                x = lu4_solve(&fr, x);
                 y = Y;
-                x = mat4_add_id(y, -1.0);
             }
             if (k == 64)
                 return GA_ERR_DOMAIN;
