@@ -1424,8 +1424,8 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
      * the log; after this step both are a few u (measured against the
      * 80-digit logs of scipy's 4x4 matrices: 15.6u to 2.5u, 10.8u to 1.8u,
      * 11.4u to 1.3u). The recomputed T is kept only where it keeps every
-     * eigenvalue's sign and every 2x2 block complex (the domain decision
-     * below stays the QR's). */
+     * real eigenvalue's sign and every 2x2 block complex, so that the
+     * domain decision below sees the QR's eigenvalue structure. */
     {
         double qe[4][4], qn[4][4], bq[4][4], tn[4][4];
         for (int i = 0; i < n; i++)
