@@ -12,21 +12,22 @@
  * Checks, one line per source and function (testkit.h):
  *   - status: GA_OK for every input that has a real principal log (and for
  *     every expm input): no refusal;
- *   - error: at most 4 times scipy's error on the same double input, or
- *     64u (u = 2^-53, 64u = 7.1e-15) where that is larger. Why not scipy's
- *     figure itself: both are backward-stable methods whose errors on these
- *     inputs sit at rounding level, and which rounding pattern wins on one
- *     matrix is luck (scipy's error is 0 on the zero matrix, 2e-17 on
- *     some); the real Schur form, the extra products of the 4x4 embedding
- *     and Q L Q^T (each entry a sum of 16 products) round differently from
- *     scipy's complex Schur form or its 1x1 and 2x2 closed forms. Measured
- *     (test_matfunc -v prints every matrix): below 64u the worst ratio to
- *     scipy's error is 4.9 (1.8e-15 against 3.8e-16) and the largest error
- *     3.7e-15; above 64u the worst ratio is 3.9, on the nonnormal 3x3 of
- *     scipy's test_burkardt_12 (2.8e-13 against 7.1e-14). So the factor 4
- *     is a measured margin, not a derived bound. The regressions this
- *     guards against were 1000x and more (9.4e-13 against scipy's 7.1e-16;
- *     9.2e-9 against 9.7e-14);
+ *   - error: at most 1.25 times scipy's error on the same double input,
+ *     or 1.25 x 4u (u = 2^-53, 4u = 4.4e-16) where scipy's is below 4u.
+ *     The floor: at unit-roundoff level the two round differently for
+ *     reasons that are no condition of the problem (the 4x4 embedding,
+ *     Q log(T) Q^T whose entries are sums of 16 products, exact zeros of a
+ *     log such as diag log [2 3; 1 2] coming out as 1e-16); scipy's error
+ *     is 0 on the zero matrix and 2e-17 on some. Measured (test_matfunc -v
+ *     prints every matrix; errors against max(scipy's, 4u)): worst 1.18 on
+ *     logm of scipy's random 4x4 whose pair -0.63 +- 1.23i makes the log 2x
+ *     more sensitive than the Schur form's backward error of ~4u (8.1u
+ *     against scipy's 6.9u), 1.12 on expm of scipy's 2x2 (4.5u against
+ *     4.0u); every other input at or below max(scipy's, 4u). The factor
+ *     1.25 is that measured margin. The regressions this guards against
+ *     were 3 to 20 times (a squaring too few near theta_13 = 5.37, I + X
+ *     for a contracting r_m, Schur vectors 10-30u from orthogonal) and
+ *     1000x and more before (9.4e-13 against scipy's 7.1e-16);
  *   - near half turns (rigid motions turning by pi - 1e-8 and pi - 1e-13):
  *     error at most 10 times ga_se3_log's (the closed form) on the same
  *     matrix, or 2u if the closed form's error is below u/5;
@@ -106,8 +107,8 @@ int main(int argc, char **argv)
                 printf("  row %zu %s %s: err %.3e closed form %.3e\n", k, fn, r->src, e, ce);
             continue;
         }
-        snprintf(name, sizeof name, "%s %s: error <= 4 x scipy's (floor 64u)", fn, r->src);
-        tk_add_tol(tk_get(name), e, fmax(4.0 * r->scipy_err, 64.0 * U));
+        snprintf(name, sizeof name, "%s %s: error <= 1.25 x scipy's (floor 4u)", fn, r->src);
+        tk_add_tol(tk_get(name), e, 1.25 * fmax(r->scipy_err, 4.0 * U));
         if (verbose)
             printf("  row %zu %s %s n=%d: err %.3e scipy %.3e\n", k, fn, r->src, r->n, e, r->scipy_err);
     }
