@@ -288,6 +288,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             break;
         }
 
+    /* --name=VALUE is --name VALUE to the tool: split it here too, so that
+       the filters below see every option's value (a --samples=HUGE or an
+       --out=FILE would escape them) */
+    for (char *c = cmdline, *word = cmdline; *c; c++) {
+        if (*c == ' ' || *c == '\t' || *c == '\r')
+            word = c + 1;
+        else if (*c == '=' && word && word[0] == '-' && word[1] == '-') {
+            *c = ' ';
+            word = NULL; /* the value, split no further: --a=--b=c is --a and --b=c */
+        }
+    }
     /* the tool takes --help (or -h) anywhere, even where an option's value
        goes ("log --group --help" prints the usage, status 0, no output
        file): skipped like --help itself (fuzz/regress/tool/help-as-value) */
@@ -324,17 +335,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             tmax = fmax(tmax, t);
         }
         i += len + 1;
-    }
-    /* --name=VALUE is --name VALUE to the tool: split it here too, so that
-       the filters below see every option's value (a --samples=HUGE or an
-       --out=FILE would escape them) */
-    for (char *c = cmdline, *word = cmdline; *c; c++) {
-        if (*c == ' ' || *c == '\t' || *c == '\r')
-            word = c + 1;
-        else if (*c == '=' && word[0] == '-' && word[1] == '-') {
-            *c = ' ';
-            word = c + 1;
-        }
     }
     char *save = NULL;
     for (char *tok = strtok_r(cmdline, " \t\r", &save); tok; tok = strtok_r(NULL, " \t\r", &save)) {
