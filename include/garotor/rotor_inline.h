@@ -52,9 +52,9 @@ static inline ga_vec3 ga_rotor_to_translation_inline(ga_rotor r)
  *  sandwich. In quaternion terms, with q = (s, v), v = (-e23, e13, -e12), and
  *  the dual part d = -(e123n, e1n, e2n, e3n) (so that t = 2 d q*), it is
  *  y = vec((q x + 2 d) q*): m = q x + 2 d, then the vector part of m q*, 24
- *  multiplications and 25 additions. (A rotation in the t = 2 v x x form and
- *  a separate translation take 27 and 30; a 4x4 matrix takes 9 and 9, but
- *  building it from r takes more than the sandwich.) */
+ *  multiplications and 25 additions (a rotation in the u = 2 v x x form and
+ *  the translation computed apart took 33 and 24; a 4x4 matrix takes 9 and
+ *  9, but building it from r costs more than the sandwich). */
 static inline ga_vec3 ga_rotor_apply_inline(ga_rotor r, ga_vec3 x)
 {
     /* m = (mx, my, mz; m0) */
