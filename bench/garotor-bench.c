@@ -879,7 +879,7 @@ static const ratio_def ratios[] = {
     {"sample_exact/sample_euler", "sample_exact", "sample_euler", 0.5, 0,
      "exact stepping against one Euler step, same poses"},
     {"sample_direct/exp", "sample_direct", "exp", 2.0, 0,
-     "a screw pose against one exp (one exp and one product)"},
+     "a closed-form screw pose against one exp"},
     {"sample_exact/motor_mul", "sample_exact", "motor_mul", 2.5, 0,
      "an exactly stepped screw pose against one product"},
     {"se3_exp/eigen_expm", "se3_exp", "eigen_expm", 1.0, 0,
