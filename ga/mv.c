@@ -305,8 +305,15 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
 
 /* ---- text ------------------------------------------------------------------ */
 
-/* One term: " - " / " + " between terms ("-" first), the coefficient with
-   %.17g unless it is +-1 on a blade, then the blade's name. */
+/* The shortest decimal that reads back as the same double, the tool's writer
+ * (tools/numtext.c, Schubfach), compiled here as static functions: no
+ * allocation, no locale, nothing exported. */
+#define NT_API static
+#define NT_WRITE_ONLY
+#include "../tools/numtext.c"
+
+/* One term: " - " / " + " between terms ("-" first), the coefficient in
+   nt_write's shortest form unless it is +-1 on a blade, then the blade's name. */
 int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
 {
     if (!ga_mv_isfinite(a))
@@ -318,15 +325,22 @@ int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
         if (v == 0.0)
             continue;
         const char *sep = signbit(v) ? (n ? " - " : "-") : (n ? " + " : "");
-        int k = i > 0 && fabs(v) == 1.0
-                  ? snprintf(tmp + n, sizeof tmp - n, "%s%s", sep, blade_names[i])
-                  : snprintf(tmp + n, sizeof tmp - n, "%s%.17g%s", sep, fabs(v), i > 0 ? blade_names[i] : "");
-        if (k < 0 || (size_t)k >= sizeof tmp - n)
+        char num[NT_BUF];
+        size_t k = i > 0 && fabs(v) == 1.0 ? 0 : nt_write(fabs(v), num);
+        size_t ls = strlen(sep), ln = strlen(blade_names[i]);
+        if (ls + k + ln >= sizeof tmp - n)
             return GA_ERR_ARG; /* cannot happen: GA_MV_TEXT_MAX is the longest text */
-        n += (size_t)k;
+        memcpy(tmp + n, sep, ls);
+        memcpy(tmp + n + ls, num, k);
+        n += ls + k;
+        if (i > 0) {
+            memcpy(tmp + n, blade_names[i], ln);
+            n += ln;
+        }
     }
     if (n == 0)
-        tmp[n++] = '0', tmp[n] = '\0';
+        tmp[n++] = '0';
+    tmp[n] = '\0';
     if (!buf || n + 1 > cap)
         return GA_ERR_ARG;
     memcpy(buf, tmp, n + 1);
