@@ -118,33 +118,62 @@ double ga_mv_maxabs(ga_mv a)
  *
  * (a's blade, then b's; op keeps disjoint pairs, lc the pairs with a's blade
  * a subset of b's), so each sum is rounded as that loop rounds it. */
+/* On x86-64 Linux with gcc, ga_mv_gp is the same product in vectors
+ * (mv_gp_blocks2, 4, 8 of mv_products.inc: gcc's vector extensions), compiled
+ * three times, for SSE2 in vectors of 2 doubles, AVX2 in 4 and AVX-512F in
+ * 8, and the dynamic loader picks the one the CPU runs (an ifunc). Each does
+ * mv_gp_dense's operations in its order (no FMA: -ffp-contract=off), so all
+ * give the same bits. In garotor-bench gp_full took 166-189 ns with the old
+ * AVX-512F clone of the straight-line mv_gp_dense (220-227 ns as SSE2 only);
+ * see CHANGELOG.md for the figures of the vectors. -Dc_args=-DGA_NO_TARGET_CLONES
+ * turns it off (mv_gp_dense, for the compiler's own target). */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&                 \
+    !defined(GA_NO_TARGET_CLONES)
+#define GA_DENSE_BLOCKS 1
+#endif
 #if defined(__GNUC__)
-#define GA_DENSE_FN static inline __attribute__((always_inline)) /* into each clone below */
+#define GA_DENSE_FN static inline __attribute__((always_inline)) /* into each target below */
 #else
 #define GA_DENSE_FN static inline
 #endif
 #include "mv_products.inc"
 
-/* On x86-64 Linux with gcc, ga_mv_gp is also compiled for AVX-512F and AVX2
- * and the dynamic loader picks the clone the CPU runs (an ifunc). In
- * garotor-bench (41 batches, a loaded 2-core machine) gp_full took 220-227 ns
- * as SSE2 only, 177 ns with the AVX2 clone, 162-164 ns with AVX-512F, against
- * 556-629 ns for gp_table. The arithmetic is the same, operation for operation
- * (no FMA: -ffp-contract=off), so every clone gives the same bits.
- * -Dc_args=-DGA_NO_TARGET_CLONES turns it off. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&                 \
-    !defined(GA_NO_TARGET_CLONES)
-#define GA_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#ifdef GA_DENSE_BLOCKS
+__attribute__((target("avx512f"))) static ga_mv gp_avx512f(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_gp_blocks8(a.c, b.c, r.c);
+    return r;
+}
+__attribute__((target("avx2"))) static ga_mv gp_avx2(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_gp_blocks4(a.c, b.c, r.c);
+    return r;
+}
+static ga_mv gp_sse2(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_gp_blocks2(a.c, b.c, r.c);
+    return r;
+}
+typedef ga_mv (*gp_fn)(ga_mv, ga_mv);
+static gp_fn gp_resolve(void)
+{
+    __builtin_cpu_init(); /* a resolver runs before the constructors that would */
+    return __builtin_cpu_supports("avx512f") ? gp_avx512f
+         : __builtin_cpu_supports("avx2")    ? gp_avx2
+                                             : gp_sse2;
+}
+ga_mv ga_mv_gp(ga_mv a, ga_mv b) __attribute__((ifunc("gp_resolve")));
 #else
-#define GA_CLONES
-#endif
-
-GA_CLONES ga_mv ga_mv_gp(ga_mv a, ga_mv b)
+ga_mv ga_mv_gp(ga_mv a, ga_mv b)
 {
     ga_mv r;
     mv_gp_dense(a.c, b.c, r.c);
     return r;
 }
+#endif
 
 ga_mv ga_mv_op(ga_mv a, ga_mv b)
 {
@@ -276,8 +305,15 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
 
 /* ---- text ------------------------------------------------------------------ */
 
-/* One term: " - " / " + " between terms ("-" first), the coefficient with
-   %.17g unless it is +-1 on a blade, then the blade's name. */
+/* The shortest decimal that reads back as the same double, the tool's writer
+ * (tools/numtext.c, Schubfach), compiled here as static functions: no
+ * allocation, no locale, nothing exported. */
+#define NT_API static
+#define NT_WRITE_ONLY
+#include "../tools/numtext.c"
+
+/* One term: " - " / " + " between terms ("-" first), the coefficient in
+   nt_write's shortest form unless it is +-1 on a blade, then the blade's name. */
 int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
 {
     if (!ga_mv_isfinite(a))
@@ -289,15 +325,22 @@ int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
         if (v == 0.0)
             continue;
         const char *sep = signbit(v) ? (n ? " - " : "-") : (n ? " + " : "");
-        int k = i > 0 && fabs(v) == 1.0
-                  ? snprintf(tmp + n, sizeof tmp - n, "%s%s", sep, blade_names[i])
-                  : snprintf(tmp + n, sizeof tmp - n, "%s%.17g%s", sep, fabs(v), i > 0 ? blade_names[i] : "");
-        if (k < 0 || (size_t)k >= sizeof tmp - n)
+        char num[NT_BUF];
+        size_t k = i > 0 && fabs(v) == 1.0 ? 0 : nt_write(fabs(v), num);
+        size_t ls = strlen(sep), ln = strlen(blade_names[i]);
+        if (ls + k + ln >= sizeof tmp - n)
             return GA_ERR_ARG; /* cannot happen: GA_MV_TEXT_MAX is the longest text */
-        n += (size_t)k;
+        memcpy(tmp + n, sep, ls);
+        memcpy(tmp + n + ls, num, k);
+        n += ls + k;
+        if (i > 0) {
+            memcpy(tmp + n, blade_names[i], ln);
+            n += ln;
+        }
     }
     if (n == 0)
-        tmp[n++] = '0', tmp[n] = '\0';
+        tmp[n++] = '0';
+    tmp[n] = '\0';
     if (!buf || n + 1 > cap)
         return GA_ERR_ARG;
     memcpy(buf, tmp, n + 1);

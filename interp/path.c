@@ -9,6 +9,10 @@
 
 #include <garotor/mat4.h>
 #include <garotor/path.h>
+#include <garotor/rotor_inline.h>
+
+/* the series of ga_rotor_exp, for the screw sampler on rotors */
+#include "../ga/rotor_series.h"
 #define MAXD GA_GROUP_MAX_DIM
 #define MAXE GA_GROUP_MAX_ELEM
 
@@ -1436,6 +1440,76 @@ static void gen_curve(const ga_path *p, size_t j, double u, double *x, double *x
     }
 }
 
+/* ---- SCREW on rotors: a sample as four fixed rotors --------------------------------
+ * On the cga group a screw segment is A_i exp(u B), B = -(w I3 + v n)/2 the
+ * generator of its twist X = (w, v) (group.c, cga_exp). With beta = -w/2,
+ * c = -v/2 (as vectors, rotor.h), phi = |beta| and a = u phi, ga_rotor_exp's
+ * closed form of exp(u B) is
+ *   cos a + u sinc a (beta + c n) + u^2 sinc a (beta.c) I n + u^3 k(a) (beta.c) beta n,
+ * sinc a = sin(a)/a, k(a) = (cos a - sinc a)/a^2, the bivector beta and the
+ * vector c written into a rotor as rotor.c's rotor_make does: linear in four
+ * rotors E_0 = 1, E_1, E_2, E_3 that are fixed on the segment, with
+ * coefficients that depend on u alone. So A_i exp(u B) = sum_j f_j(u) (A_i E_j):
+ * the three products A_i E_j once per segment (screw_prep), then per sample
+ * the three functions of a, by ga_rotor_exp's series and branches, and 32
+ * multiply-adds (screw_at), not an exp and a 48-multiplication product
+ * through the group's function pointers. It is the same closed form rounded
+ * in another order; tests/test_interp.c measures it against
+ * ga_rotor_mul(A_i, ga_rotor_exp(u B)). */
+static int screw_rotors(const ga_path *p)
+{
+    return p->group == &ga_group_cga && p->scheme == GA_SCHEME_SCREW && p->n > 1;
+}
+
+/* k01 = A_i E_0 | A_i E_1, k23 = A_i E_2 | A_i E_3 (8 doubles each), *phi2 = |beta|^2. */
+static void screw_prep(const ga_path *p, size_t seg, double *k01, double *k23, double *phi2)
+{
+    const double *x = seg_coef(p, seg);
+    double bx = -0.5 * x[0], by = -0.5 * x[1], bz = -0.5 * x[2];
+    double cx = -0.5 * x[3], cy = -0.5 * x[4], cz = -0.5 * x[5];
+    double bc = bx * cx + by * cy + bz * cz;
+    ga_rotor a, e1 = {0, bz, -by, bx, cx, cy, cz, 0}, e2 = {0, 0, 0, 0, 0, 0, 0, bc},
+                e3 = {0, 0, 0, 0, bc * bx, bc * by, bc * bz, 0};
+    memcpy(&a, key_of(p, seg), sizeof a);
+    ga_rotor r1 = ga_rotor_mul_inline(a, e1), r2 = ga_rotor_mul_inline(a, e2),
+             r3 = ga_rotor_mul_inline(a, e3);
+    memcpy(k01, &a, sizeof a);
+    memcpy(k01 + 8, &r1, sizeof r1);
+    memcpy(k23, &r2, sizeof r2);
+    memcpy(k23 + 8, &r3, sizeof r3);
+    *phi2 = bx * bx + by * by + bz * bz;
+}
+
+/* A_i exp(u B) from screw_prep's rotors; GA_ERR_DOMAIN where it is not finite
+ * (an extrapolation far outside [0, 1]). */
+static int screw_at(const double *k01, const double *k23, double phi2, double u, double *out)
+{
+    double a2 = (u * u) * phi2, cs, sinc, f3;
+    if (a2 <= (GA_PI / 4) * (GA_PI / 4)) {
+        double y2 = a2 * a2, y4 = y2 * y2, y8 = y4 * y4;
+        cs = estrin9(cos_taylor, a2, y2, y4, y8);
+        sinc = estrin9(sinc_taylor, a2, y2, y4, y8);
+        f3 = u * (u * (u * estrin9(k_taylor, a2, y2, y4, y8)));
+    } else {
+        double a = sqrt(a2);
+        if (a <= 3 * GA_PI / 4) { /* as ga_rotor_exp: r = pi/2 - a, sin a = cos r, cos a = r sinc r */
+            double r = (PIO2_HI - a) + PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+            cs = r * estrin9(sinc_taylor, y, y2, y4, y8);
+            sinc = estrin9(cos_taylor, y, y2, y4, y8) / a;
+        } else {
+            cs = cos(a);
+            sinc = sin(a) / a;
+        }
+        f3 = u * ((cs - sinc) / phi2); /* u^3 k(a); phi2 > 0 here */
+    }
+    double f1 = u * sinc, f2 = u * f1, z = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        out[i] = (cs * k01[i] + f1 * k01[8 + i]) + (f2 * k23[i] + f3 * k23[8 + i]);
+        z += out[i] - out[i]; /* 0 for finite, NaN for Inf and NaN */
+    }
+    return z == 0.0 ? GA_OK : GA_ERR_DOMAIN;
+}
+
 int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
 {
     if (!p || !out || seg >= nseg(p) || !isfinite(u))
@@ -1444,6 +1518,11 @@ int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
     size_t d = g->dim, nf = nfac(p->scheme);
     int st;
     double x[MAXD], xd[MAXD];
+    if (screw_rotors(p)) {
+        double k01[16], k23[16], phi2;
+        screw_prep(p, seg, k01, k23, &phi2);
+        return screw_at(k01, k23, phi2, u, out);
+    }
     if (is_decoupled(p->scheme))
         return dec_eval(p, seg, u, out, NULL, NULL);
     if (p->scheme == GA_SCHEME_C2) { /* A_i exp(x(tau)) */
@@ -2027,6 +2106,50 @@ int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, do
     return GA_OK;
 }
 
+/* DIRECT and EXACT samples of SCREW on rotors (screw_rotors), without the
+ * group's function pointers: slot 0 is the running sample A_i exp(u B) and
+ * slot 1 exp(dt/h B) (EXACT), slots 2 to 4 screw_prep's rotors of segment
+ * s->seg, which are prepared whenever s->seg changes. */
+static int screw_next(ga_path_stepper *s, size_t seg, double u, void *out)
+{
+    const ga_path *p = s->path;
+    int st = GA_OK, newseg = seg != s->seg;
+    if (newseg)
+        screw_prep(p, seg, s->slot[2], s->slot[3], &s->slot[4][0]);
+    s->seg = seg;
+    if (s->eval == GA_EVAL_DIRECT) { /* as eval_direct: the key itself at a key time */
+        if (u == 0.0 || u == 1.0) {
+            memcpy(out, key_of(p, seg + (u == 1.0)), sizeof(ga_rotor));
+            return GA_OK;
+        }
+        return screw_at(s->slot[2], s->slot[3], s->slot[4][0], u, out);
+    }
+    if (newseg || s->since >= GA_PATH_EXACT_REANCHOR) { /* as exact_anchor */
+        st = screw_at(s->slot[2], s->slot[3], s->slot[4][0], u, s->slot[0]);
+        if (st == GA_OK && newseg) {
+            double x[6], delta = s->dt / seg_len(p, seg);
+            lin(6, x, poly_diff(fac_poly(p->scheme, 0), 1, u, delta), seg_coef(p, seg), 0.0,
+                seg_coef(p, seg));
+            st = ga_group_cga.exp(x, s->slot[1]);
+        }
+        s->since = 0;
+    } else { /* as exact_advance: G_0 <- G_0 exp(dt/h B) */
+        ga_rotor a, e;
+        memcpy(&a, s->slot[0], sizeof a);
+        memcpy(&e, s->slot[1], sizeof e);
+        a = ga_rotor_mul_inline(a, e);
+        memcpy(s->slot[0], &a, sizeof a);
+    }
+    ++s->since;
+    if (st == GA_OK) {
+        memcpy(out, s->slot[0], sizeof(ga_rotor));
+        double z = 0.0; /* as finite_elem */
+        for (int i = 0; i < 8; ++i) z += s->slot[0][i] - s->slot[0][i];
+        st = z == 0.0 ? GA_OK : GA_ERR_DOMAIN;
+    }
+    return st;
+}
+
 int ga_path_stepper_next(ga_path_stepper *s, void *out)
 {
     if (!s || !out || s->k >= s->n)
@@ -2045,6 +2168,8 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
     }
     if (s->eval == GA_EVAL_EULER) {
         st = euler_sample(p, s->step, &s->seg, &s->grid, s->slot[0], seg, u, out);
+    } else if (screw_rotors(p)) {
+        st = screw_next(s, seg, u, out);
     } else if (s->eval == GA_EVAL_DIRECT || nfac(p->scheme) == 0 || p->n == 1) {
         st = eval_direct(p, seg, u, out);
         s->seg = seg; /* DIRECT keeps no state: seg is only where to look first */

@@ -751,6 +751,7 @@ static void test_screw(tk_rng *r)
     tk_check e_wl = tk_begin("screw == W-L exp(u l(R1 ~R0)) R0 on rotors (Ad-invariance)", 1e-13);
     tk_check e_dq = tk_begin("screw == dual-quaternion ScLERP", 1e-12);
     tk_check e_slerp = tk_begin("screw on pure rotations == quaternion SLERP", 1e-13);
+    tk_check e_four = tk_begin("screw on rotors == A_i ga_rotor_exp(u B_i), u in [-1, 2], / scale", 1e-14);
     for (int trial = 0; trial < 100; ++trial) {
         keyset k;
         random_keys(r, &k, 2 + trial % 5, 0);
@@ -782,6 +783,19 @@ static void test_screw(tk_rng *r)
                 tk_add(&e_wl, mdiff(pc, g->to_mat4(wl)) / k.scale);
                 tk_add(&e_dq, mdiff(ps, sclerp(k.m[i], k.m[i + 1], u)) / k.scale);
             }
+            /* the sampler's sum of four fixed rotors (path.c, screw_at) against
+               the product of the key and the exp of its scaled twist, also past
+               the segment's ends, where u phi reaches each branch of the exp */
+            const double *key = b.p.key + i * b.p.key_stride, *xi = b.p.coef + 6 * i;
+            for (int q = -20; q <= 40; ++q) {
+                double u = q / 20.0, got[8];
+                ga_rotor ki, want;
+                memcpy(&ki, key, sizeof ki);
+                ga_twist tw = {{u * xi[0], u * xi[1], u * xi[2]}, {u * xi[3], u * xi[4], u * xi[5]}};
+                want = ga_rotor_mul(ki, ga_rotor_exp(ga_twist_to_generator(tw)));
+                tk_add_status(&c_init, ga_path_eval_segment(&b.p, i, u, got), GA_OK);
+                tk_add(&e_four, mdiff(g->to_mat4(got), ga_rotor_to_mat4(want)) / k.scale);
+            }
         }
         /* pure rotations: quaternion SLERP */
         keyset rk = k;
@@ -812,6 +826,7 @@ static void test_screw(tk_rng *r)
     tk_end(&e_wl);
     tk_end(&e_dq);
     tk_end(&e_slerp);
+    tk_end(&e_four);
 }
 
 /* ---- 5. scheme identities: W-L quadratic, smooth exactness, lihao3 screw, eq. 27 ---- */

@@ -3,10 +3,12 @@
  *
  * Text: random multivectors (a random subset of the 32 blades, coefficients
  * of every kind: +-1, small exact ones, random doubles from 1e-310 to 1e308,
- * subnormals, 1e-5, which %.17g writes with an exponent) are written and read
- * back to the same doubles, bit for bit; the text is never longer than
- * GA_MV_TEXT_MAX promises, and the longest text there is (32 terms, every
- * coefficient -DBL_MAX) is exactly GA_MV_TEXT_MAX - 1 bytes. Then the exact text of a few, and the statuses:
+ * subnormals, 1e-5, 0.1) are written and read back to the same doubles, bit
+ * for bit; the text is never longer than GA_MV_TEXT_MAX promises, and the
+ * longest text there is (32 terms, every coefficient minus the double after
+ * 1e-7, whose shortest decimal has 17 digits written from the place 10^-7)
+ * is exactly GA_MV_TEXT_MAX - 1 bytes. Then the exact text of a few (the
+ * shortest decimals, in the tool's layout), and the statuses:
  * a buffer too small, NaN, an unknown name, a missing sign, an overflow.
  *
  * Inner products: against their definitions through the geometric product
@@ -120,22 +122,29 @@ int main(void)
         if (!same)
             printf("     round trip lost: %s\n", buf);
     }
-    /* the longest text: every coefficient -DBL_MAX */
+    /* the longest text: every coefficient minus the double after 1e-7 */
     ga_mv big;
-    for (int i = 0; i < 32; i++) big.c[i] = -DBL_MAX;
+    for (int i = 0; i < 32; i++) big.c[i] = -nextafter(1e-7, 1.0);
     tk_add_status(tk_get("the longest text fits GA_MV_TEXT_MAX"), ga_mv_format(big, buf, sizeof buf, &len),
                   GA_OK);
-    /* "-1.7976931348623157e+308" (24), then 31 times " - ", 23 digits and the
-       name: 31 x 26 + 111 bytes of names */
-    tk_add_bool(ln, len == GA_MV_TEXT_MAX - 1 && len == 24 + 31 * 26 + 111);
+    /* "-0.00000010000000000000001" (26), then 31 times " - ", the 25 bytes of
+       the number and the name: 31 x 28 + 111 bytes of names */
+    tk_add_bool(ln, len == GA_MV_TEXT_MAX - 1 && len == 26 + 31 * 28 + 111 &&
+                        strncmp(buf, "-0.00000010000000000000001 - ", 29) == 0);
+    /* and -DBL_MAX, the longest number of the other layout */
+    for (int i = 0; i < 32; i++) big.c[i] = -DBL_MAX;
+    tk_add_bool(ln, ga_mv_format(big, buf, sizeof buf, &len) == GA_OK && len == 24 + 31 * 26 + 111);
 
     /* exact texts */
     expect_text(ga_mv_add(ga_mv_add(ga_mv_scalar(1), term(GA_BLADE_E12, 2)), term(GA_BLADE_E1234, -0.5)),
                 "1 + 2e12 - 0.5e1234");
     expect_text(ga_mv_zero(), "0");
-    expect_text(ga_mv_add(term(GA_BLADE_E1, -1), term(GA_BLADE_E2, 1e-5)), "-e1 + 1.0000000000000001e-05e2");
-    expect_text(ga_mv_add(term(GA_BLADE_SCALAR, -1), term(GA_BLADE_E12345, 1e20)), "-1 + 1e+20e12345");
-    expect_text(term(GA_BLADE_E45, 0.1), "0.10000000000000001e45");
+    expect_text(ga_mv_add(term(GA_BLADE_E1, -1), term(GA_BLADE_E2, 1e-5)), "-e1 + 0.00001e2");
+    expect_text(ga_mv_add(term(GA_BLADE_SCALAR, -1), term(GA_BLADE_E12345, 1e20)),
+                "-1 + 100000000000000000000e12345");
+    expect_text(ga_mv_add(term(GA_BLADE_SCALAR, 1e21), term(GA_BLADE_E3, -1e-8)), "1e+21 - 1e-08e3");
+    expect_text(term(GA_BLADE_E45, 0.1), "0.1e45");
+    expect_text(term(GA_BLADE_E1, ldexp(1, -1074)), "5e-324e1");
 
     /* statuses of format: nothing written on failure */
     ga_mv one = ga_mv_scalar(1);

@@ -132,7 +132,7 @@ static inline int digit_count(uint64_t f)
 #endif
 }
 
-int nt_shortest(double x, uint64_t *digits, int *exp)
+NT_API int nt_shortest(double x, uint64_t *digits, int *exp)
 {
     uint64_t bits;
     memcpy(&bits, &x, sizeof bits);
@@ -176,6 +176,7 @@ static const char pairs[201] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
+#ifndef NT_WRITE_ONLY
 size_t nt_layout(int neg, const char *dig, int n, int exp, char *buf)
 {
     char *p = buf;
@@ -224,6 +225,7 @@ size_t nt_layout(int neg, const char *dig, int n, int exp, char *buf)
     *p = '\0';
     return (size_t)(p - buf);
 }
+#endif
 
 static int bits_negative(double x)
 {
@@ -263,7 +265,7 @@ static inline void put_digits(uint64_t f, int n, char *p)
         d[-1] = (char)('0' + v);
 }
 
-size_t nt_write(double x, char *buf)
+NT_API size_t nt_write(double x, char *buf)
 {
     uint64_t f;
     int e, n = nt_shortest(x, &f, &e);

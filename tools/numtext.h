@@ -20,19 +20,28 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The library compiles these into ga/mv.c for ga_mv_format, as static
+ * functions: it defines NT_API as static and NT_WRITE_ONLY (no nt_layout)
+ * before it includes numtext.c. The tool and the tests link numtext.c. */
+#ifndef NT_API
+#define NT_API
+#endif
+
 /** Bytes nt_write may need, the terminating zero included. */
 enum { NT_BUF = 32 };
 
 /** The shortest decimal of a finite x as *digits x 10^*exp, *digits without
  *  trailing zeros (0 and exp 0 for a zero); the sign is x's. Returns the
  *  number of digits (1 to 17). */
-int nt_shortest(double x, uint64_t *digits, int *exp);
+NT_API int nt_shortest(double x, uint64_t *digits, int *exp);
 /** x (finite) written in the layout above into buf (NT_BUF bytes); a negative
  *  zero is written "-0". Returns the length, without the terminating zero. */
-size_t nt_write(double x, char *buf);
+NT_API size_t nt_write(double x, char *buf);
 /** A decimal, sign then the characters dig[0..n-1] ('0'..'9', dig[0] not '0',
  *  n >= 1) x 10^exp, in the layout above; n = 0 writes "0". buf needs n + 30
  *  bytes. Returns the length. */
+#ifndef NT_WRITE_ONLY
 size_t nt_layout(int neg, const char *dig, int n, int exp, char *buf);
+#endif
 
 #endif

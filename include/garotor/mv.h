@@ -101,19 +101,21 @@ ga_mv ga_mv_undual(ga_mv a);
 
 /* ---- text --------------------------------------------------------------- */
 /** Bytes that ga_mv_format may need, with the terminating NUL: the longest
- *  text has 32 terms, each a %.17g number of 23 bytes ("1.7976931348623157e+308"),
- *  "-" before the first and " - " before the others, and the 31 names (111
- *  bytes): 24 + 31 * 26 + 111 + 1. */
-#define GA_MV_TEXT_MAX 942
+ *  text has 32 terms, each a number of 25 bytes (17 digits whose first is at
+ *  the place 10^-7: "0.00000010000000000000001"), "-" before the first and
+ *  " - " before the others, and the 31 names (111 bytes): 26 + 31 * 28 + 111 + 1. */
+#define GA_MV_TEXT_MAX 1006
 /** a as text, the nonzero terms in canonical order with the blade names of
- *  docs/conventions.md: "1 + 2e12 - 0.5e1234", "-e1 + 1.0000000000000001e-05e2",
- *  "0" for zero. Coefficients are written with %.17g (they read back as the
- *  same doubles; an exponent always has its sign), +-1 on a blade as the name
- *  alone. Writes the text and its NUL into buf and its length (without the
- *  NUL) to *len; GA_ERR_ARG if cap is too small (GA_MV_TEXT_MAX always
- *  suffices) or buf is NULL, GA_ERR_NOTFINITE for NaN or Inf; nothing written
- *  then. Uses the C library's number formatting: the "C" locale's '.' unless
- *  the program has called setlocale. */
+ *  docs/conventions.md: "1 + 2e12 - 0.5e1234", "-e1 + 0.00001e2", "0" for
+ *  zero. Coefficients are written as the shortest decimal that reads back as
+ *  the same double (0.1, not 0.10000000000000001), in the tool's layout
+ *  (docs/tool.md): positional when the leading digit is between the places
+ *  10^20 and 10^-7, else d.ddde+XX with the exponent's sign and at least two
+ *  digits (1e+21, 5e-324); +-1 on a blade as the name alone. Writes the text
+ *  and its NUL into buf and its length (without the NUL) to *len; GA_ERR_ARG
+ *  if cap is too small (GA_MV_TEXT_MAX always suffices) or buf is NULL,
+ *  GA_ERR_NOTFINITE for NaN or Inf; nothing written then. No allocation and
+ *  no locale. */
 int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len);
 /** Reads what ga_mv_format writes, and a little more: terms separated by + or
  *  -, each a decimal number, a blade name (e1, ..., e12345, in canonical

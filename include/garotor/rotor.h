@@ -124,8 +124,8 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out);
 
 /* ---- action ---------------------------------------------------------------- */
 
-/** The point x moved by r, as down(R F(x) ~R), computed as q x ~q + t: a quaternion
- *  rotation and the translation t = -2 <P ~q>_1 (R = T_t q). r must be on the group. */
+/** The point x moved by r, as down(R F(x) ~R), computed as q x ~q + t (R = T_t q,
+ *  t = -2 <P ~q>_1) in one quaternion sandwich (rotor_inline.h). r must be on the group. */
 ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
 
 /** R X ~R for any conformal object X, through the full geometric product. */

@@ -48,17 +48,23 @@ static inline ga_vec3 ga_rotor_to_translation_inline(ga_rotor r)
     return t;
 }
 
-/** ga_rotor_apply: the point x moved by r (on the group): q x ~q + t, the
- *  rotation by the quaternion (s, v), v = -b: x + s u + v x u, u = 2 v x x. */
+/** ga_rotor_apply: the point x moved by r (on the group): q x ~q + t as one
+ *  sandwich. In quaternion terms, with q = (s, v), v = (-e23, e13, -e12), and
+ *  the dual part d = -(e123n, e1n, e2n, e3n) (so that t = 2 d q*), it is
+ *  y = vec((q x + 2 d) q*): m = q x + 2 d, then the vector part of m q*, 24
+ *  multiplications and 25 additions (a rotation in the u = 2 v x x form and
+ *  the translation computed apart took 33 and 24; a 4x4 matrix takes 9 and
+ *  9, but building it from r costs more than the sandwich). */
 static inline ga_vec3 ga_rotor_apply_inline(ga_rotor r, ga_vec3 x)
 {
-    double vx = -r.e23, vy = r.e13, vz = -r.e12;
-    double ux = 2.0 * (vy * x.z - vz * x.y), uy = 2.0 * (vz * x.x - vx * x.z),
-           uz = 2.0 * (vx * x.y - vy * x.x);
-    ga_vec3 t = ga_rotor_to_translation_inline(r);
-    ga_vec3 y = {((x.x + r.s * ux) + (vy * uz - vz * uy)) + t.x,
-                 ((x.y + r.s * uy) + (vz * ux - vx * uz)) + t.y,
-                 ((x.z + r.s * uz) + (vx * uy - vy * ux)) + t.z};
+    /* m = (mx, my, mz; m0) */
+    double mx = ((x.x * r.s + x.y * r.e12) + x.z * r.e13) - (r.e1n + r.e1n);
+    double my = ((x.y * r.s - x.x * r.e12) + x.z * r.e23) - (r.e2n + r.e2n);
+    double mz = ((x.z * r.s - x.x * r.e13) - x.y * r.e23) - (r.e3n + r.e3n);
+    double m0 = ((x.x * r.e23 - x.y * r.e13) + x.z * r.e12) - (r.e123n + r.e123n);
+    ga_vec3 y = {(r.s * mx + m0 * r.e23) + (mz * r.e13 + r.e12 * my),
+                 (r.s * my - m0 * r.e13) + (mz * r.e23 - r.e12 * mx),
+                 (r.s * mz + r.e12 * m0) - (r.e23 * my + r.e13 * mx)};
     return y;
 }
 
