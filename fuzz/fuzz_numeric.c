@@ -494,6 +494,39 @@ static void mv_any(const ga_mv *X, double lambda)
              "circle %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(r) && vfinite(c), "circle: GA_OK with bad output");
+    /* the local-origin functions (object.h): statuses, finite outputs, and
+       the same kind, reality and direction as ga_object_from_mv reads */
+    ga_vec3 og = {lambda, -0.5 * lambda, 0.25 * lambda};
+    ga_object ob2;
+    st = ga_object_from_mv_about(*X, og, lambda, &ob2);
+    FZ_CHECK(is_status(st) && (fin || st == GA_ERR_NOTFINITE), "object_about %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(vfinite(ob2.centre) && vfinite(ob2.direction) && isfinite(ob2.r2) &&
+                     ob2.kind >= GA_OBJECT_EMPTY && ob2.kind <= GA_OBJECT_SPHERE,
+                 "object_about: GA_OK with bad output");
+        ga_object ob1;
+        if (ga_object_from_mv(*X, &ob1) == GA_OK)
+            FZ_CHECK(ob1.kind == ob2.kind && ob1.direction.x == ob2.direction.x &&
+                         ob1.direction.y == ob2.direction.y && ob1.direction.z == ob2.direction.z,
+                     "object_about: kind %d or direction differs from object_from_mv's (kind %d)", ob2.kind,
+                     ob1.kind);
+    }
+    ga_mv Y;
+    st = ga_mv_localize(*X, og, lambda, &Y);
+    FZ_CHECK(is_status(st) && (fin || st == GA_ERR_NOTFINITE), "localize %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(fz_all_finite(Y.c, 32), "localize: GA_OK with a non-finite result");
+    ga_vec3 og2;
+    st = ga_rotor_apply_about(ga_rotor_rotation((ga_vec3){0.6, 0, 0.8}, lambda), og, *X, &og2, &Y);
+    FZ_CHECK(is_status(st), "apply_about %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(vfinite(og2) && fz_all_finite(Y.c, 32), "apply_about: GA_OK with a non-finite result");
+        ga_object ob1;
+        if (ga_object_from_mv(*X, &ob1) == GA_OK && ga_object_from_mv(Y, &ob2) == GA_OK &&
+            ob1.kind >= GA_OBJECT_POINTPAIR)
+            FZ_CHECK(ob2.kind == ob1.kind, "apply_about: a round of kind %d became kind %d", ob1.kind,
+                     ob2.kind);
+    }
     ga_mv inv;
     st = ga_mv_inverse(*X, &inv);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR) : st == GA_ERR_NOTFINITE, "inverse %d", st);
@@ -694,6 +727,25 @@ static void op_points(fz_reader *rd)
         double s = fmax(1.0, fmax(vnorm(p[0]), fabs(rad)));
         double d = fmax(vnorm((ga_vec3){c.x - p[0].x, c.y - p[0].y, c.z - p[0].z}), fabs(r - fabs(rad)));
         FZ_CHECK(d <= 1e-12 * s * s, "dual sphere read back off by %.3g (scene %.3g)", d, s);
+    }
+    /* a dual sphere held about the origin p[1] at the length lam, a power of
+       two near its radius (object.h): where the origin is near the sphere
+       (within 8 radii: c - o is then within 8 u L of exact), it reads back
+       to 1e-12 of L = max(1, |c| + |r|) at any distance, never refused */
+    double rr = fabs(rad), q = vnorm((ga_vec3){p[0].x - p[1].x, p[0].y - p[1].y, p[0].z - p[1].z});
+    if (which % 8 == 5 && vfinite(p[0]) && vfinite(p[1]) && isfinite(rad) && rr >= 1e-100 && rr <= 1e100 &&
+        vnorm(p[0]) <= 1e100 && vnorm(p[1]) <= 1e100 && q <= 8 * rr) {
+        double lam = ldexp(1.0, ilogb(rr)), L = fmax(1.0, vnorm(p[0]) + rr);
+        ga_vec3 cl = {(p[0].x - p[1].x) / lam, (p[0].y - p[1].y) / lam, (p[0].z - p[1].z) / lam};
+        ga_object ob;
+        int st = ga_object_from_mv_about(ga_sphere_dual(cl, rad / lam), p[1], lam, &ob);
+        FZ_CHECK(st == GA_OK, "object_about(dual sphere about a near origin): %d", st);
+        if (st == GA_OK) {
+            double d = vnorm((ga_vec3){ob.centre.x - p[0].x, ob.centre.y - p[0].y, ob.centre.z - p[0].z}) / L;
+            d = fmax(d, fabs(ob.r2 - rr * rr) / (L * L));
+            FZ_CHECK(ob.kind == GA_OBJECT_SPHERE && d <= 1e-12,
+                     "dual sphere about a near origin: kind %d, off by %.3g (L %.3g)", ob.kind, d, L);
+        }
     }
 }
 
