@@ -602,6 +602,22 @@ static void mv_exp_log(const ga_mv *X)
         double d = ga_mv_maxabs(mv_sub(ga_mv_exp(L), *X)) / fmax(1.0, ga_mv_maxabs(*X));
         FZ_CHECK(d <= 1e-9, "mv_log: GA_OK but exp(log X) misses X by %.3g", d);
     }
+    if (bfin) {
+        /* a bivector of the Euclidean 4-space e1234 has only elliptic parts:
+           its exp is bounded and on the group at any size (beyond ~1e77 its
+           square overflows: versor.c's exp_huge) */
+        ga_mv E = ga_mv_zero();
+        static const int e1234[] = {GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E14,
+                                    GA_BLADE_E23, GA_BLADE_E24, GA_BLADE_E34};
+        for (int i = 0; i < 6; i++) E.c[e1234[i]] = B.c[e1234[i]];
+        ga_mv RE = ga_mv_exp(E), re;
+        FZ_CHECK(fz_all_finite(RE.c, 32) && ga_mv_maxabs(RE) <= 1.0 + 1e-12,
+                 "mv_exp of an e1234 bivector (max %.3g): not finite or above 1", ga_mv_maxabs(E));
+        re = ga_mv_gp(RE, ga_mv_reverse(RE));
+        re.c[0] -= 1.0;
+        FZ_CHECK(ga_mv_maxabs(re) <= 1e-12, "mv_exp of an e1234 bivector (max %.3g): R ~R - 1 = %.3g",
+                 ga_mv_maxabs(E), ga_mv_maxabs(re));
+    }
     if (!bfin || ga_mv_maxabs(B) > 8.0)
         return;
     /* exp of a finite bivector up to 8 is finite and a rotor: even, R ~R = 1 */

@@ -14,6 +14,7 @@
 
 #include <garotor/conformal.h>
 #include <garotor/rotor.h>
+#include <float.h>
 #include <math.h>
 
 /* ---- the functions of t ------------------------------------------------------ */
@@ -154,8 +155,133 @@ static coeffs exp_coeffs(double s, double qq)
     return k;
 }
 
+/* ---- exp of a bivector whose square overflows ---------------------------------- */
+
+/* One factor exp(Bi) = C(li) + S(li) Bi of B = 2^k B', given Xi' = 2^-k Bi,
+   as its scalar *c and bivector S(li) Bi; li = w <Bi Bi>_0 (w = 1 for a
+   2-blade, 2 for a part in an ideal of P, whose <P>_0 = 1/2). Where Bi is
+   at most 2^300, li is taken from Bi itself (its square from 2^-k Bi could
+   underflow) and the functions of li as they are; beyond, with
+   t = 2^k sqrt|li'|, S(li) Bi = (sin t / sqrt(-li')) Xi' (sinh for li > 0,
+   which overflows as the true result does) keeps every intermediate in range. */
+static ga_mv scaled_factor(ga_mv Xp, int k, double w, double *c)
+{
+    ga_mv X;
+    for (int i = 0; i < 32; i++) X.c[i] = ldexp(Xp.c[i], k);
+    if (ga_mv_isfinite(X) && ga_mv_maxabs(X) <= 0x1p300) {
+        fns f = fns_at(w * ga_mv_sp(X, X));
+        *c = f.c;
+        return ga_mv_scale(X, f.s);
+    }
+    double lp = w * ga_mv_sp(Xp, Xp), r = sqrt(fabs(lp)), t = ldexp(r, k);
+    if (!isfinite(t))
+        t = DBL_MAX; /* an angle beyond DBL_MAX: only known to be huge */
+    if (r == 0.0) {  /* a null part: exp = 1 + Bi, as large as it is */
+        *c = 1.0;
+        return X;
+    }
+    *c = lp < 0.0 ? cos(t) : cosh(t);
+    return ga_mv_scale(Xp, (lp < 0.0 ? sin(t) : sinh(t)) / r);
+}
+
+/* exp(B) for max |B| > 8 (see ga_mv_exp): on B' = 2^-k B (exact, max |B'|
+   in [2^239, 2^240): s^2 ~ |B'|^4 and B' q' ~ |B'|^3 do not overflow), split
+   into its commuting parts
+   (the l form's B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2),
+   all homogeneous so that they hold for the scaled quantities), or, where
+   l1 - l2 is small against s (near-equal parts, the ab form's case), into
+   the ideals of P+- = (1 +- J)/2, J = q / sqrt(q.q): exp(B) P+- =
+   (C(a) + S(a) B) P+- with a = s +- sqrt(q.q) (docs/versors.md). Each
+   factor is bounded when elliptic, so a bivector with an elliptic part above
+   ~1.3e154 (whose square overflows) has its bounded exp; parts are known
+   to u max|B|^2 in their squares, as in the unscaled formulas. */
+/* R (3 - ~R R)/2: Newton-Schulz steps towards the group, each taking
+   ~R R = 1 + e (e of grades 0 and 4, |e| < 1/2) to 1 + O(e^2), while e is
+   above the rounding of ~R R. Where B splits into 2-blades to rounding
+   the factors are on the group already; where a part is rounding noise
+   (below u |B|) that is not a 2-blade, its factor is not, by up to ~1e-7. */
+static ga_mv onto_group(ga_mv R)
+{
+    for (int it = 0; it < 3; it++) {
+        ga_mv e = ga_mv_gp(ga_mv_reverse(R), R);
+        e.c[0] -= 1.0;
+        double m = ga_mv_maxabs(R);
+        if (!(ga_mv_maxabs(e) < 0.5) || ga_mv_maxabs(e) <= 64.0 * DBL_EPSILON * fmax(1.0, m * m))
+            break;
+        R = lin(1.0, R, -0.5, ga_mv_gp(R, e));
+    }
+    return R;
+}
+
+static ga_mv exp_huge_parts(ga_mv B);
+static ga_mv exp_huge(ga_mv B) { return onto_group(exp_huge_parts(B)); }
+
+static ga_mv exp_huge_parts(ga_mv B)
+{
+    int k = ilogb(ga_mv_maxabs(B)) - 239;
+    ga_mv Bp;
+    for (int i = 0; i < 32; i++) Bp.c[i] = ldexp(B.c[i], -k);
+    bsquare sq = square_of(Bp);
+    double m2 = ga_mv_maxabs(sq.b) * ga_mv_maxabs(sq.b), noise = 64.0 * DBL_EPSILON * m2;
+    double d = fmax(sq.s * sq.s - sq.qq, 0.0);
+    if (fabs(sq.s) <= noise && fabs(sq.qq) <= noise * noise) {
+        /* both parts null to rounding: 1 + B + q/2 + Bq/6, huge as it is */
+        ga_mv r;
+        for (int i = 0; i < 32; i++)
+            r.c[i] = ldexp(sq.b.c[i], k) + ldexp(0.5 * sq.q.c[i], 2 * k) + ldexp(sq.bq.c[i] / 6.0, 3 * k);
+        r.c[0] += 1.0;
+        return r;
+    }
+    double c1, c2;
+    if (sq.qq < 0.0 || d >= sq.qq) {
+        double l1, l2;
+        roots(sq.s, sq.qq, &l1, &l2);
+        double dl = l1 - l2;
+        ga_mv X1 = lin(l1 / dl, sq.b, -0.5 / dl, sq.bq), X2 = lin(0.5 / dl, sq.bq, -l2 / dl, sq.b);
+        /* each factor's square from its own 2-blade (Xi^2 = li): the roots
+           lose the smaller one to the rounding of s and q.q when the parts
+           differ by more than 1/u in size, and a factor C(l) + S(l) X is on
+           the group only with the l of its X */
+        ga_mv V1 = scaled_factor(X1, k, 1.0, &c1), V2 = scaled_factor(X2, k, 1.0, &c2);
+        V1.c[0] += c1;
+        V2.c[0] += c2;
+        return ga_mv_gp(V1, V2);
+    }
+    double r = sqrt(sq.qq);
+    ga_mv J = ga_mv_scale(sq.q, 1.0 / r), out = ga_mv_zero();
+    for (int sgn = 1; sgn >= -1; sgn -= 2) {
+        ga_mv P = ga_mv_scale(J, 0.5 * sgn);
+        P.c[0] += 0.5;
+        /* B P+- cancels the parts of the other ideal to rounding of |B|, which
+           is not small against B P+- for near-equal parts (t1 - t2 << t1):
+           projected again, what is left of them is rounding of |B P+-| */
+        ga_mv X = ga_mv_grade(ga_mv_gp(Bp, P), 2);
+        X = ga_mv_grade(ga_mv_gp(X, P), 2);
+        /* X^2 = a P (<P>_0 = 1/2): a from X, not s +- sqrt(q.q), which
+           cancels for near-equal parts (a = -(t1 - t2)^2) */
+        ga_mv V = scaled_factor(X, k, 2.0, &c1);
+        out = lin(1.0, out, 1.0, lin(c1, P, 1.0, V));
+    }
+    return out;
+}
+
 ga_mv ga_mv_exp(ga_mv B)
 {
+    /* Beyond max |B| = 8 the coefficients below lose u |B|^2 to the
+       cancellations of s +- sqrt(q.q) and s^2 - q.q (R ~R = 1 + 1.5e-8 for
+       parts of 1e4, unbounded beyond 1e8), and beyond 2^240 they overflow:
+       there B is split into its factors (exp_huge), except where both parts
+       are near null (|li| <= 2^-20 |B|^2), which the split cannot separate
+       and the coefficients handle (their limits at l = 0). */
+    double m = ga_mv_maxabs(ga_mv_grade(B, 2));
+    if (ga_mv_isfinite(B) && m > 8.0) {
+        if (m > 0x1p240)
+            return exp_huge(ga_mv_grade(B, 2));
+        bsquare h = square_of(B);
+        double m2 = m * m;
+        if (!(fabs(h.s) <= 0x1p-20 * m2 && fabs(h.qq) <= 0x1p-40 * m2 * m2))
+            return exp_huge(ga_mv_grade(B, 2));
+    }
     bsquare sq = square_of(B);
     coeffs k = exp_coeffs(sq.s, sq.qq);
     ga_mv r = lin(k.beta, sq.b, k.delta, sq.bq);
