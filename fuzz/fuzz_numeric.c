@@ -499,7 +499,15 @@ static void mv_any(const ga_mv *X, double lambda)
     ga_vec3 og = {lambda, -0.5 * lambda, 0.25 * lambda};
     ga_object ob2;
     st = ga_object_from_mv_about(*X, og, lambda, &ob2);
-    FZ_CHECK(is_status(st) && (fin || st == GA_ERR_NOTFINITE), "object_about %d", st);
+    /* lambda (and the origin made of it) is checked first: NaN/Inf in it
+       is GA_ERR_NOTFINITE, lambda <= 0 GA_ERR_ARG whatever X holds */
+    int lam_ok = isfinite(lambda) && lambda > 0;
+    FZ_CHECK(!isfinite(lambda) ? st == GA_ERR_NOTFINITE
+             : !lam_ok         ? st == GA_ERR_ARG
+             : !fin            ? st == GA_ERR_NOTFINITE
+                               : (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_NOTBLADE ||
+                       st == GA_ERR_PRECISION || st == GA_ERR_DOMAIN),
+             "object_about, lambda %.17g: %d", lambda, st);
     if (st == GA_OK) {
         FZ_CHECK(vfinite(ob2.centre) && vfinite(ob2.direction) && isfinite(ob2.r2) &&
                      ob2.kind >= GA_OBJECT_EMPTY && ob2.kind <= GA_OBJECT_SPHERE,
@@ -513,7 +521,10 @@ static void mv_any(const ga_mv *X, double lambda)
     }
     ga_mv Y;
     st = ga_mv_localize(*X, og, lambda, &Y);
-    FZ_CHECK(is_status(st) && (fin || st == GA_ERR_NOTFINITE), "localize %d", st);
+    FZ_CHECK(!fin || !isfinite(lambda) ? st == GA_ERR_NOTFINITE
+             : !lam_ok                 ? st == GA_ERR_ARG
+                                       : (st == GA_OK || st == GA_ERR_DOMAIN),
+             "localize, lambda %.17g: %d", lambda, st);
     if (st == GA_OK)
         FZ_CHECK(fz_all_finite(Y.c, 32), "localize: GA_OK with a non-finite result");
     ga_vec3 og2;

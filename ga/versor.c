@@ -273,14 +273,15 @@ ga_mv ga_mv_exp(ga_mv B)
        there B is split into its factors (exp_huge), except where both parts
        are near null (|li| <= 2^-20 |B|^2), which the split cannot separate
        and the coefficients handle (their limits at l = 0). */
-    double m = ga_mv_maxabs(ga_mv_grade(B, 2));
-    if (ga_mv_isfinite(B) && m > 8.0) {
+    ga_mv b = ga_mv_grade(B, 2);
+    double m = ga_mv_maxabs(b);
+    if (ga_mv_isfinite(b) && m > 8.0) {
         if (m > 0x1p240)
-            return exp_huge(ga_mv_grade(B, 2));
-        bsquare h = square_of(B);
+            return exp_huge(b);
+        bsquare h = square_of(b);
         double m2 = m * m;
         if (!(fabs(h.s) <= 0x1p-20 * m2 && fabs(h.qq) <= 0x1p-40 * m2 * m2))
-            return exp_huge(ga_mv_grade(B, 2));
+            return exp_huge(b);
     }
     bsquare sq = square_of(B);
     coeffs k = exp_coeffs(sq.s, sq.qq);
@@ -519,6 +520,128 @@ int ga_mv_log(ga_mv R, ga_mv *out)
     if (!(ga_mv_maxabs(ga_mv_sub(ga_mv_exp(B), R)) <= tol * scale))
         return GA_ERR_DOMAIN;
     *out = B;
+    return GA_OK;
+}
+
+/* ---- split and factorization ------------------------------------------------ */
+
+/* The coefficient-wise dot product (a Euclidean metric on the 32 numbers). */
+static double cdot(ga_mv a, ga_mv b)
+{
+    double r = 0.0;
+    for (int i = 0; i < 32; i++) r += a.c[i] * b.c[i];
+    return r;
+}
+
+/* Split b (max |b| in [1/2, 1)) into commuting 2-blades b1 + b2. */
+static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
+{
+    bsquare sq = square_of(b);
+    double tol = 64.0 * DBL_EPSILON, qn = ga_mv_maxabs(sq.q), qc = cdot(sq.q, sq.q);
+    if (qn <= tol) { /* b is a 2-blade to rounding */
+        *b1 = b;
+        *b2 = ga_mv_zero();
+        return;
+    }
+    if (sq.qq > 0x1p-26 * qc && sqrt(sq.qq) > 0x1p20 * DBL_EPSILON) {
+        /* two rotations: q spans a Euclidean 4-space, J = q / sqrt(q.q),
+           J^2 = 1. In the ideals of P+- = (1 +- J)/2, b = tp Up + tm Um with
+           Up^2 = -P+, Um^2 = -P- (each ideal is a quaternion algebra), and
+           E1 = Up + Um, E2 = Up - Um are commuting unit 2-blades (E^2 = -1,
+           E1 E2 = -J) with b = (tp + tm)/2 E1 + (tp - tm)/2 E2: exact for
+           any unit Um, so it holds for isoclinic b (tm = 0) and near it,
+           where the roots l1, l2 are too close to divide by. */
+        ga_mv J = ga_mv_scale(sq.q, 1.0 / sqrt(sq.qq)), U[2];
+        double t[2];
+        for (int i = 0; i < 2; i++) {
+            ga_mv P = ga_mv_scale(J, i == 0 ? 0.5 : -0.5), B3[3], X = ga_mv_zero();
+            P.c[0] += 0.5;
+            /* b P in the coordinates of an orthonormal basis of the ideal
+               (<B3k B3k>_0 = -1/2): exactly in the ideal to rounding of its
+               own size, which a product with P is not for a small part
+               (the rounding of b, of |b|, leaves the 4-space of J) */
+            ideal_basis(J, P, B3);
+            ga_mv bp = ga_mv_gp(b, P);
+            double t2 = 0.0;
+            for (int k = 0; k < 3; k++) {
+                double v = -2.0 * ga_mv_sp(bp, B3[k]);
+                X = lin(1.0, X, v, B3[k]);
+                t2 += v * v;
+            }
+            t[i] = sqrt(t2);
+            U[i] = t[i] > 0.0 ? ga_mv_scale(X, 1.0 / t[i]) : B3[0]; /* U^2 = -P */
+        }
+        *b1 = ga_mv_scale(lin(1.0, U[0], 1.0, U[1]), 0.5 * (t[0] + t[1]));
+        *b2 = ga_mv_scale(lin(1.0, U[0], -1.0, U[1]), 0.5 * (t[0] - t[1]));
+        return;
+    }
+    /* separated parts (elliptic x hyperbolic, or a null part):
+       b1 = (l1 b - bq/2)/(l1 - l2), b2 = (bq/2 - l2 b)/(l1 - l2) with l1, l2
+       the roots of l^2 - s l + q.q/4. Beside a null part q.q = 4 l1 l2 is a
+       sum of products of q's coefficients that cancel, so l2 = 0, l1 = s is
+       tried too. Of these splits and (b, 0) (b a 2-blade to |q|/2), the one
+       with the smallest residual (how far from commuting 2-blades summing
+       to b) is kept. A rotation t beside a null part N is resolved only to
+       u |b|^3 / t^3 of N (s = -t^2 is known to u |b|^2, and b1 is b minus
+       b2 ~ N): below t ~ 1e-4 |b| the split is that poor (versor.h). */
+    double sv[2] = {sq.s, sq.s};
+    double best = 0.5 * qn;
+    *b1 = b;
+    *b2 = ga_mv_zero();
+    for (int v = 0; v < 2; v++) {
+        double l1, l2;
+        roots(sv[v % 2], sq.qq, &l1, &l2);
+        if (v % 2)
+            l1 = sv[v % 2], l2 = 0.0;
+        double dl = l1 - l2;
+        if (!(fabs(dl) > 0.0))
+            continue;
+        ga_mv x = lin(l1 / dl, b, -0.5 / dl, sq.bq), y = lin(0.5 / dl, sq.bq, -l2 / dl, b);
+        double res = fmax(ga_mv_maxabs(ga_mv_sub(lin(1.0, x, 1.0, y), b)),
+                          fmax(ga_mv_maxabs(ga_mv_sub(ga_mv_gp(x, y), ga_mv_gp(y, x))),
+                               fmax(ga_mv_maxabs(ga_mv_grade(ga_mv_gp(x, x), 4)),
+                                    ga_mv_maxabs(ga_mv_grade(ga_mv_gp(y, y), 4)))));
+        if (finite_mv(x) && finite_mv(y) && res < best) {
+            best = res;
+            *b1 = x;
+            *b2 = y;
+        }
+    }
+}
+
+int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
+{
+    ga_mv b = ga_mv_grade(B, 2);
+    if (!finite_mv(b))
+        return GA_ERR_NOTFINITE;
+    double m = ga_mv_maxabs(b);
+    if (m == 0.0) {
+        *B1 = *B2 = ga_mv_zero();
+        return GA_OK;
+    }
+    int e;
+    frexp(m, &e);
+    for (int i = 0; i < 32; i++) b.c[i] = ldexp(b.c[i], -e);
+    ga_mv x, y;
+    split_unit(b, &x, &y);
+    for (int i = 0; i < 32; i++) x.c[i] = ldexp(x.c[i], e), y.c[i] = ldexp(y.c[i], e);
+    if (!finite_mv(x) || !finite_mv(y))
+        return GA_ERR_DOMAIN;
+    *B1 = x;
+    *B2 = y;
+    return GA_OK;
+}
+
+int ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2)
+{
+    ga_mv L, B1, B2;
+    int st = ga_mv_log(R, &L);
+    if (st == GA_OK)
+        st = ga_mv_split(L, &B1, &B2);
+    if (st != GA_OK)
+        return st;
+    *R1 = ga_mv_exp(B1);
+    *R2 = ga_mv_exp(B2);
     return GA_OK;
 }
 

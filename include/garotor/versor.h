@@ -60,6 +60,33 @@ ga_mv ga_mv_exp(ga_mv B);
  *  where R has no real logarithm. */
 int ga_mv_log(ga_mv R, ga_mv *out);
 
+/** B's bivector part as a sum B1 + B2 of two commuting 2-blades (B1 B2 =
+ *  B2 B1, Bi^2 scalar; Dorst-Valkenburg 2011 §3), |B1^2| >= |B2^2| where the
+ *  parts are separated. Two rotations (q = <B^2>_4 spanning a Euclidean
+ *  4-space) are split through the ideals of (1 +- J)/2, J = q/sqrt(q.q):
+ *  exact for any B, so also for isoclinic B (t1 = t2), where the split is
+ *  not unique and any one is returned. Otherwise (a rotation and a boost, a
+ *  null part) by B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2)
+ *  (l2 = 0 tried as well beside a null part), keeping the split with the
+ *  smallest residual. A 2-blade gives (B, 0). Accuracy (tests/test_versor.c
+ *  section 7, 10^4 rotors per family with `test_versor 10`): the factors of
+ *  ga_mv_factor multiply to R, commute and are simple to 5e-14 of |R| for
+ *  rotations, boosts, null parts and their pairs (isoclinic and near-isoclinic
+ *  included), to 4.7e-12 on dense random bivectors; a rotation by t beside a
+ *  null part N (a screw with a small turn) only to about 20 u (|B|/t)^3, as
+ *  t^2 = -<B^2>_0 is known to u |B|^2 and B1 is B less B2 ~ N; where that
+ *  exceeds |q| ~ t |N| (t below ~2e-4 |B|), (B, 0) is returned, simple to
+ *  |q|. GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
+ *  GA_ERR_DOMAIN when a part overflows. */
+int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
+
+/** A rotor R as a product R1 R2 of commuting simple rotors Ri = exp(Bi)
+ *  (Bi 2-blades: a rotation, a boost such as a dilation, or a null part such
+ *  as a translation or transversion): the ga_mv_split of ga_mv_log(R).
+ *  Status of ga_mv_log (GA_ERR_DOMAIN where R has no real log) or of
+ *  ga_mv_split. */
+int ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2);
+
 /* ---- versors ------------------------------------------------------------------- */
 
 /** V X^ V^-1 (X^ = X for even V, the grade involution of X for odd V).
