@@ -629,6 +629,20 @@ static void mv_exp_log(const ga_mv *X)
         FZ_CHECK(ga_mv_maxabs(re) <= 1e-12, "mv_exp of an e1234 bivector (max %.3g): R ~R - 1 = %.3g",
                  ga_mv_maxabs(E), ga_mv_maxabs(re));
     }
+    /* split: NOTFINITE exactly for NaN/Inf in the bivector part; else two
+       finite parts summing to B (to rounding of the 4-space they span) */
+    ga_mv B1, B2, F1, F2;
+    st = ga_mv_split(*X, &B1, &B2);
+    FZ_CHECK(bfin ? (st == GA_OK || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE, "mv_split status %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(fz_all_finite(B1.c, 32) && fz_all_finite(B2.c, 32), "mv_split: GA_OK with non-finite parts");
+        double d = ga_mv_maxabs(mv_sub(ga_mv_add(B1, B2), B)) / ga_mv_maxabs(B);
+        FZ_CHECK(!(ga_mv_maxabs(B) > 0) || d <= 1e-11, "mv_split: B1 + B2 misses B by %.3g", d);
+    }
+    /* factor: ga_mv_log's status, or split's */
+    st = ga_mv_factor(*X, &F1, &F2);
+    FZ_CHECK(is_status(st) && (st == GA_OK || st == GA_ERR_DOMAIN || st == GA_ERR_NOTFINITE),
+             "mv_factor status %d", st);
     if (!bfin || ga_mv_maxabs(B) > 8.0)
         return;
     /* exp of a finite bivector up to 8 is finite and a rotor: even, R ~R = 1 */

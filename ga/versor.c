@@ -534,6 +534,20 @@ static double cdot(ga_mv a, ga_mv b)
 }
 
 /* Split b (max |b| in [1/2, 1)) into commuting 2-blades b1 + b2. */
+/* How far x, y are from commuting 2-blades, for x + y = b to 2^-40 (b of
+   size 1); a split that misses b by more is no split (INFINITY). */
+static double split_residual(ga_mv b, ga_mv x, ga_mv y)
+{
+    if (!finite_mv(x) || !finite_mv(y))
+        return INFINITY;
+    double sum = ga_mv_maxabs(ga_mv_sub(lin(1.0, x, 1.0, y), b));
+    if (!(sum <= 0x1p-40))
+        return INFINITY;
+    return fmax(sum, fmax(ga_mv_maxabs(ga_mv_sub(ga_mv_gp(x, y), ga_mv_gp(y, x))),
+                          fmax(ga_mv_maxabs(ga_mv_grade(ga_mv_gp(x, x), 4)),
+                               ga_mv_maxabs(ga_mv_grade(ga_mv_gp(y, y), 4)))));
+}
+
 static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
 {
     bsquare sq = square_of(b);
@@ -543,6 +557,8 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
         *b2 = ga_mv_zero();
         return;
     }
+    double ideal_res = INFINITY;
+    ga_mv ideal_x = b, ideal_y = ga_mv_zero();
     if (sq.qq > 0x1p-26 * qc && sqrt(sq.qq) > 0x1p20 * DBL_EPSILON) {
         /* two rotations: q spans a Euclidean 4-space, J = q / sqrt(q.q),
            J^2 = 1. In the ideals of P+- = (1 +- J)/2, b = tp Up + tm Um with
@@ -571,9 +587,18 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
             t[i] = sqrt(t2);
             U[i] = t[i] > 0.0 ? ga_mv_scale(X, 1.0 / t[i]) : B3[0]; /* U^2 = -P */
         }
-        *b1 = ga_mv_scale(lin(1.0, U[0], 1.0, U[1]), 0.5 * (t[0] + t[1]));
-        *b2 = ga_mv_scale(lin(1.0, U[0], -1.0, U[1]), 0.5 * (t[0] - t[1]));
-        return;
+        ga_mv x = ga_mv_scale(lin(1.0, U[0], 1.0, U[1]), 0.5 * (t[0] + t[1]));
+        ga_mv y = ga_mv_scale(lin(1.0, U[0], -1.0, U[1]), 0.5 * (t[0] - t[1]));
+        /* b outside the 4-space of J (rounding of b, or a J of rounding)
+           is dropped by the projection: kept only if the residual says
+           so, as the l forms below */
+        double res = split_residual(b, x, y);
+        if (res <= 64.0 * DBL_EPSILON) {
+            *b1 = x;
+            *b2 = y;
+            return;
+        }
+        ideal_res = res, ideal_x = x, ideal_y = y;
     }
     /* separated parts (elliptic x hyperbolic, or a null part):
        b1 = (l1 b - bq/2)/(l1 - l2), b2 = (bq/2 - l2 b)/(l1 - l2) with l1, l2
@@ -588,6 +613,11 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
     double best = 0.5 * qn;
     *b1 = b;
     *b2 = ga_mv_zero();
+    if (ideal_res < best) {
+        best = ideal_res;
+        *b1 = ideal_x;
+        *b2 = ideal_y;
+    }
     for (int v = 0; v < 2; v++) {
         double l1, l2;
         roots(sv[v % 2], sq.qq, &l1, &l2);
@@ -597,11 +627,8 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
         if (!(fabs(dl) > 0.0))
             continue;
         ga_mv x = lin(l1 / dl, b, -0.5 / dl, sq.bq), y = lin(0.5 / dl, sq.bq, -l2 / dl, b);
-        double res = fmax(ga_mv_maxabs(ga_mv_sub(lin(1.0, x, 1.0, y), b)),
-                          fmax(ga_mv_maxabs(ga_mv_sub(ga_mv_gp(x, y), ga_mv_gp(y, x))),
-                               fmax(ga_mv_maxabs(ga_mv_grade(ga_mv_gp(x, x), 4)),
-                                    ga_mv_maxabs(ga_mv_grade(ga_mv_gp(y, y), 4)))));
-        if (finite_mv(x) && finite_mv(y) && res < best) {
+        double res = split_residual(b, x, y);
+        if (res < best) {
             best = res;
             *b1 = x;
             *b2 = y;
