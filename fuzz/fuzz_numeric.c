@@ -636,7 +636,10 @@ static void mv_exp_log(const ga_mv *X)
     FZ_CHECK(bfin ? (st == GA_OK || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE, "mv_split status %d", st);
     if (st == GA_OK) {
         FZ_CHECK(fz_all_finite(B1.c, 32) && fz_all_finite(B2.c, 32), "mv_split: GA_OK with non-finite parts");
-        double d = ga_mv_maxabs(mv_sub(ga_mv_add(B1, B2), B)) / ga_mv_maxabs(B);
+        /* halved: B1 + B2 of a B near DBL_MAX may round past it */
+        double d = ga_mv_maxabs(mv_sub(ga_mv_add(ga_mv_scale(B1, 0.5), ga_mv_scale(B2, 0.5)),
+                                       ga_mv_scale(B, 0.5))) /
+                   ga_mv_maxabs(ga_mv_scale(B, 0.5));
         FZ_CHECK(!(ga_mv_maxabs(B) > 0) || d <= 1e-11, "mv_split: B1 + B2 misses B by %.3g", d);
     }
     /* factor: ga_mv_log's status, or split's */

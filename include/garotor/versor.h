@@ -78,9 +78,9 @@ int ga_mv_log(ga_mv R, ga_mv *out);
  *  (l2 = 0 tried as well beside a null part), keeping the split with the
  *  smallest residual. A 2-blade gives (B, 0). Accuracy (tests/test_versor.c
  *  section 7, 10^4 rotors per family with `test_versor 10`): the factors of
- *  ga_mv_factor multiply to R, commute and are simple to 5e-14 of |R| for
- *  rotations, boosts, null parts and their pairs (isoclinic and near-isoclinic
- *  included), to 4.7e-12 on dense random bivectors; a rotation by t beside a
+ *  ga_mv_factor multiply to R, commute and are simple to 2.6e-14 of |R| for
+ *  rotations, boosts, null parts, their pairs (isoclinic and near-isoclinic
+ *  included) and dense random bivectors; a rotation by t beside a
  *  null part N (a screw with a small turn) only to about 20 u (|B|/t)^3, as
  *  t^2 = -<B^2>_0 is known to u |B|^2 and B1 is B less B2 ~ N; where that
  *  exceeds |q| ~ t |N| (t below ~2e-4 |B|), (B, 0) is returned, simple to
