@@ -494,6 +494,50 @@ static void mv_any(const ga_mv *X, double lambda)
              "circle %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(a) && isfinite(r) && vfinite(c), "circle: GA_OK with bad output");
+    /* the local-origin functions (object.h): statuses, finite outputs, and
+       the same kind, reality and direction as ga_object_from_mv reads */
+    ga_vec3 og = {lambda, -0.5 * lambda, 0.25 * lambda};
+    ga_object ob2;
+    st = ga_object_from_mv_about(*X, og, lambda, &ob2);
+    /* lambda (and the origin made of it) is checked first: NaN/Inf in it
+       is GA_ERR_NOTFINITE, lambda <= 0 GA_ERR_ARG whatever X holds */
+    int lam_ok = isfinite(lambda) && lambda > 0;
+    FZ_CHECK(!isfinite(lambda) ? st == GA_ERR_NOTFINITE
+             : !lam_ok         ? st == GA_ERR_ARG
+             : !fin            ? st == GA_ERR_NOTFINITE
+                               : (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_NOTBLADE ||
+                       st == GA_ERR_PRECISION || st == GA_ERR_DOMAIN),
+             "object_about, lambda %.17g: %d", lambda, st);
+    if (st == GA_OK) {
+        FZ_CHECK(vfinite(ob2.centre) && vfinite(ob2.direction) && isfinite(ob2.r2) &&
+                     ob2.kind >= GA_OBJECT_EMPTY && ob2.kind <= GA_OBJECT_SPHERE,
+                 "object_about: GA_OK with bad output");
+        ga_object ob1;
+        if (ga_object_from_mv(*X, &ob1) == GA_OK)
+            FZ_CHECK(ob1.kind == ob2.kind && ob1.direction.x == ob2.direction.x &&
+                         ob1.direction.y == ob2.direction.y && ob1.direction.z == ob2.direction.z,
+                     "object_about: kind %d or direction differs from object_from_mv's (kind %d)", ob2.kind,
+                     ob1.kind);
+    }
+    ga_mv Y;
+    st = ga_mv_localize(*X, og, lambda, &Y);
+    FZ_CHECK(!fin || !isfinite(lambda) ? st == GA_ERR_NOTFINITE
+             : !lam_ok                 ? st == GA_ERR_ARG
+                                       : (st == GA_OK || st == GA_ERR_DOMAIN),
+             "localize, lambda %.17g: %d", lambda, st);
+    if (st == GA_OK)
+        FZ_CHECK(fz_all_finite(Y.c, 32), "localize: GA_OK with a non-finite result");
+    ga_vec3 og2;
+    st = ga_rotor_apply_about(ga_rotor_rotation((ga_vec3){0.6, 0, 0.8}, lambda), og, *X, &og2, &Y);
+    FZ_CHECK(is_status(st), "apply_about %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(vfinite(og2) && fz_all_finite(Y.c, 32), "apply_about: GA_OK with a non-finite result");
+        ga_object ob1;
+        if (ga_object_from_mv(*X, &ob1) == GA_OK && ga_object_from_mv(Y, &ob2) == GA_OK &&
+            ob1.kind >= GA_OBJECT_POINTPAIR)
+            FZ_CHECK(ob2.kind == ob1.kind, "apply_about: a round of kind %d became kind %d", ob1.kind,
+                     ob2.kind);
+    }
     ga_mv inv;
     st = ga_mv_inverse(*X, &inv);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR) : st == GA_ERR_NOTFINITE, "inverse %d", st);
@@ -569,6 +613,43 @@ static void mv_exp_log(const ga_mv *X)
         double d = ga_mv_maxabs(mv_sub(ga_mv_exp(L), *X)) / fmax(1.0, ga_mv_maxabs(*X));
         FZ_CHECK(d <= 1e-9, "mv_log: GA_OK but exp(log X) misses X by %.3g", d);
     }
+    if (bfin) {
+        /* a bivector of the Euclidean 4-space e1234 has only elliptic parts:
+           its exp is bounded and on the group at any size (beyond ~1e77 its
+           square overflows: versor.c's exp_huge) */
+        ga_mv E = ga_mv_zero();
+        static const int e1234[] = {GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E14,
+                                    GA_BLADE_E23, GA_BLADE_E24, GA_BLADE_E34};
+        for (int i = 0; i < 6; i++) E.c[e1234[i]] = B.c[e1234[i]];
+        ga_mv RE = ga_mv_exp(E), re;
+        FZ_CHECK(fz_all_finite(RE.c, 32) && ga_mv_maxabs(RE) <= 1.0 + 1e-12,
+                 "mv_exp of an e1234 bivector (max %.3g): not finite or above 1", ga_mv_maxabs(E));
+        re = ga_mv_gp(RE, ga_mv_reverse(RE));
+        re.c[0] -= 1.0;
+        FZ_CHECK(ga_mv_maxabs(re) <= 1e-12, "mv_exp of an e1234 bivector (max %.3g): R ~R - 1 = %.3g",
+                 ga_mv_maxabs(E), ga_mv_maxabs(re));
+    }
+    /* split: NOTFINITE exactly for NaN/Inf in the bivector part; else two
+       finite parts summing to B (to rounding of the 4-space they span) */
+    ga_mv B1, B2, F1, F2;
+    st = ga_mv_split(*X, &B1, &B2);
+    FZ_CHECK(bfin ? (st == GA_OK || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE, "mv_split status %d", st);
+    if (st == GA_OK) {
+        FZ_CHECK(fz_all_finite(B1.c, 32) && fz_all_finite(B2.c, 32), "mv_split: GA_OK with non-finite parts");
+        /* (B1 - B) + B2, quartered for a B above 1 (near DBL_MAX the parts
+           and their sums may round past it), exact below (subnormals) */
+        double d = 0.0, k = ga_mv_maxabs(B) > 1.0 ? 0.25 : 1.0;
+        for (int i = 0; i < 32; i++) d = fmax(d, fabs((k * B1.c[i] - k * B.c[i]) + k * B2.c[i]));
+        d /= k * ga_mv_maxabs(B);
+        /* to 1e-11, or to the spacing of subnormals where B's parts are
+           scaled back below DBL_MIN */
+        FZ_CHECK(!(ga_mv_maxabs(B) > 0) || d <= 1e-11 + 0x1p-1068 / ga_mv_maxabs(B),
+                 "mv_split: B1 + B2 misses B (max %.3g) by %.3g", ga_mv_maxabs(B), d);
+    }
+    /* factor: ga_mv_log's status, or split's */
+    st = ga_mv_factor(*X, &F1, &F2);
+    FZ_CHECK(is_status(st) && (st == GA_OK || st == GA_ERR_DOMAIN || st == GA_ERR_NOTFINITE),
+             "mv_factor status %d", st);
     if (!bfin || ga_mv_maxabs(B) > 8.0)
         return;
     /* exp of a finite bivector up to 8 is finite and a rotor: even, R ~R = 1 */
@@ -694,6 +775,25 @@ static void op_points(fz_reader *rd)
         double s = fmax(1.0, fmax(vnorm(p[0]), fabs(rad)));
         double d = fmax(vnorm((ga_vec3){c.x - p[0].x, c.y - p[0].y, c.z - p[0].z}), fabs(r - fabs(rad)));
         FZ_CHECK(d <= 1e-12 * s * s, "dual sphere read back off by %.3g (scene %.3g)", d, s);
+    }
+    /* a dual sphere held about the origin p[1] at the length lam, a power of
+       two near its radius (object.h): where the origin is near the sphere
+       (within 8 radii: c - o is then within 8 u L of exact), it reads back
+       to 1e-12 of L = max(1, |c| + |r|) at any distance, never refused */
+    double rr = fabs(rad), q = vnorm((ga_vec3){p[0].x - p[1].x, p[0].y - p[1].y, p[0].z - p[1].z});
+    if (which % 8 == 5 && vfinite(p[0]) && vfinite(p[1]) && isfinite(rad) && rr >= 1e-100 && rr <= 1e100 &&
+        vnorm(p[0]) <= 1e100 && vnorm(p[1]) <= 1e100 && q <= 8 * rr) {
+        double lam = ldexp(1.0, ilogb(rr)), L = fmax(1.0, vnorm(p[0]) + rr);
+        ga_vec3 cl = {(p[0].x - p[1].x) / lam, (p[0].y - p[1].y) / lam, (p[0].z - p[1].z) / lam};
+        ga_object ob;
+        int st = ga_object_from_mv_about(ga_sphere_dual(cl, rad / lam), p[1], lam, &ob);
+        FZ_CHECK(st == GA_OK, "object_about(dual sphere about a near origin): %d", st);
+        if (st == GA_OK) {
+            double d = vnorm((ga_vec3){ob.centre.x - p[0].x, ob.centre.y - p[0].y, ob.centre.z - p[0].z}) / L;
+            d = fmax(d, fabs(ob.r2 - rr * rr) / (L * L));
+            FZ_CHECK(ob.kind == GA_OBJECT_SPHERE && d <= 1e-12,
+                     "dual sphere about a near origin: kind %d, off by %.3g (L %.3g)", ob.kind, d, L);
+        }
     }
 }
 

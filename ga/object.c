@@ -154,6 +154,130 @@ static int classify(ga_mv X, int strict, ga_object *o)
 
 int ga_object_from_mv(ga_mv X, ga_object *out) { return classify(X, 1, out); }
 
+static ga_mv translate(ga_mv X, ga_vec3 a);
+static int finite3(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+int ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out)
+{
+    if (!finite3(origin) || !isfinite(lambda))
+        return GA_ERR_NOTFINITE;
+    if (!(lambda > 0.0))
+        return GA_ERR_ARG;
+    ga_object o;
+    int st = classify(X, 1, &o);
+    if (st != GA_OK)
+        return st;
+    ga_vec3 c = mul3(o.centre, lambda);
+    switch (o.kind) {
+    case GA_OBJECT_EMPTY: break;
+    case GA_OBJECT_PLANE: /* m.(x - origin) = lambda d: m.x = lambda d + m.origin */
+        o.centre = mul3(o.direction, dot3(c, o.direction) + dot3(o.direction, origin));
+        break;
+    case GA_OBJECT_LINE: { /* the point of the line closest to the world's origin */
+        ga_vec3 q = add3(c, origin);
+        o.centre = sub3(q, mul3(o.direction, dot3(q, o.direction)));
+        break;
+    }
+    default: o.centre = add3(c, origin); /* rounds and flat points */
+    }
+    o.r2 *= lambda * lambda;
+    if (!finite3(o.centre) || !isfinite(o.r2))
+        return GA_ERR_DOMAIN;
+    *out = o;
+    return GA_OK;
+}
+
+/* The parts A e4, A e5 (A without e4, e5) of X with coefficients p, q are
+   A ^ ((p + q)/2 n + (p - q)/2 nbar): each pair is rewritten as
+   A ^ (kn (p + q)/2 n + kb (p - q)/2 nbar). */
+static ga_mv scale_n_nbar(ga_mv X, double kn, double kb)
+{
+    for (int i = 0; i < 32; i++) {
+        if ((ga_blade_mask(i) & 0x18u) != 0x8u)
+            continue;
+        int j = i + 1; /* A e5 follows A e4 in canonical order */
+        double hn = 0.5 * (X.c[i] + X.c[j]) * kn, hb = kb == 0.0 ? 0.0 : 0.5 * (X.c[i] - X.c[j]) * kb;
+        X.c[i] = hn + hb;
+        X.c[j] = hn - hb;
+    }
+    return X;
+}
+
+int ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
+{
+    if (!ga_mv_isfinite(X) || !finite3(origin) || !isfinite(lambda))
+        return GA_ERR_NOTFINITE;
+    if (!(lambda > 0.0))
+        return GA_ERR_ARG;
+    /* an object is of one grade: what rounding left in the others (1e-18 of a
+       plane built 1e4 out) is dropped, as the translation would magnify it */
+    int k = 0;
+    for (int g = 1; g <= 5; g++)
+        if (ga_mv_maxabs(ga_mv_grade(X, g)) > ga_mv_maxabs(ga_mv_grade(X, k)))
+            k = g;
+    int one_grade = off_grade(X, k) <= GA_POINT_TOL * ga_mv_maxabs(X);
+    if (one_grade)
+        X = ga_mv_grade(X, k);
+    ga_object kind;
+    ga_mv Y;
+    if (classify(X, 0, &kind) == GA_OK && kind.kind <= GA_OBJECT_PLANE) {
+        /* A flat has no part A ^ nbar (a dual plane m + d n, a direct flat
+           F ^ n): what rounding left there is dropped. Then T X ~T = X +
+           (n t X + X t n)/2 exactly, t = -origin (the term n t X t n / 4
+           vanishes: n t n = 0), which has no t^2 terms to cancel; the full
+           sandwich loses u |t|^2 of X's size where the flat comes near. */
+        X = scale_n_nbar(X, 1.0, 0.0);
+        ga_mv nt = ga_mv_gp(ga_mv_n(), ga_vec3_to_mv(mul3(origin, -1.0)));
+        Y = ga_mv_add(X, ga_mv_scale(ga_mv_add(ga_mv_gp(nt, X), ga_mv_gp(X, ga_mv_reverse(nt))), 0.5));
+        Y = scale_n_nbar(Y, 1.0 / lambda, 0.0);
+        if (kind.kind == GA_OBJECT_LINE) {
+            /* w (u e45 + (p ^ u) ^ n): the moment p x u = (b23, -b13, b12),
+               b_ij the e_ij4 (= e_ij5) coefficients, is known to u |origin|
+               from a line far out, u |origin| / lambda in the units of
+               lambda: its part along u, which no line has, is dropped */
+            ga_vec3 dir = v3(Y.c[GA_BLADE_E145], Y.c[GA_BLADE_E245], Y.c[GA_BLADE_E345]);
+            ga_vec3 M = v3(Y.c[GA_BLADE_E234], -Y.c[GA_BLADE_E134], Y.c[GA_BLADE_E124]);
+            double uu = dot3(dir, dir);
+            if (uu > 0.0)
+                M = sub3(M, mul3(dir, dot3(M, dir) / uu));
+            Y.c[GA_BLADE_E234] = Y.c[GA_BLADE_E235] = M.x;
+            Y.c[GA_BLADE_E134] = Y.c[GA_BLADE_E135] = -M.y;
+            Y.c[GA_BLADE_E124] = Y.c[GA_BLADE_E125] = M.z;
+        }
+    } else {
+        /* x -> x / lambda: o -> lambda o, n -> n / lambda, e_i fixed (then
+           F(x) -> lambda F(x / lambda)); blades with e45 (o ^ n) and without
+           e4, e5 are fixed */
+        Y = scale_n_nbar(translate(X, mul3(origin, -1.0)), 1.0 / lambda, lambda);
+    }
+    if (one_grade)
+        Y = ga_mv_grade(Y, k);
+    if (!ga_mv_isfinite(Y))
+        return GA_ERR_DOMAIN;
+    *out = Y;
+    return GA_OK;
+}
+
+int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out)
+{
+    double r[8] = {R.s, R.e12, R.e13, R.e23, R.e1n, R.e2n, R.e3n, R.e123n};
+    for (int i = 0; i < 8; i++)
+        if (!isfinite(r[i]))
+            return GA_ERR_NOTFINITE;
+    if (!finite3(origin) || !ga_mv_isfinite(X))
+        return GA_ERR_NOTFINITE;
+    /* R T_o = T_R(o) Q with Q = T_-R(o) R T_o: Q fixes the origin, so it is
+       the rotation q of R = T_t q (R(o) = q(o) + t) */
+    ga_rotor Q = {R.s, R.e12, R.e13, R.e23, 0.0, 0.0, 0.0, 0.0};
+    ga_vec3 o2 = ga_rotor_apply(R, origin);
+    ga_mv Y = ga_rotor_apply_mv(Q, X);
+    if (!finite3(o2) || !ga_mv_isfinite(Y))
+        return GA_ERR_DOMAIN;
+    *new_origin = o2;
+    *out = Y;
+    return GA_OK;
+}
+
 /* T_a X ~T_a with T_a = 1 + n a / 2 (Wareham-Lasenby §2.2): exact for any X,
    and free of cancellation (it adds the multiples of a the object needs). */
 static ga_mv translate(ga_mv X, ga_vec3 a)

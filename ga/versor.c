@@ -14,6 +14,7 @@
 
 #include <garotor/conformal.h>
 #include <garotor/rotor.h>
+#include <float.h>
 #include <math.h>
 
 /* ---- the functions of t ------------------------------------------------------ */
@@ -154,8 +155,134 @@ static coeffs exp_coeffs(double s, double qq)
     return k;
 }
 
+/* ---- exp of a bivector whose square overflows ---------------------------------- */
+
+/* One factor exp(Bi) = C(li) + S(li) Bi of B = 2^k B', given Xi' = 2^-k Bi,
+   as its scalar *c and bivector S(li) Bi; li = w <Bi Bi>_0 (w = 1 for a
+   2-blade, 2 for a part in an ideal of P, whose <P>_0 = 1/2). Where Bi is
+   at most 2^300, li is taken from Bi itself (its square from 2^-k Bi could
+   underflow) and the functions of li as they are; beyond, with
+   t = 2^k sqrt|li'|, S(li) Bi = (sin t / sqrt(-li')) Xi' (sinh for li > 0,
+   which overflows as the true result does) keeps every intermediate in range. */
+static ga_mv scaled_factor(ga_mv Xp, int k, double w, double *c)
+{
+    ga_mv X;
+    for (int i = 0; i < 32; i++) X.c[i] = ldexp(Xp.c[i], k);
+    if (ga_mv_isfinite(X) && ga_mv_maxabs(X) <= 0x1p300) {
+        fns f = fns_at(w * ga_mv_sp(X, X));
+        *c = f.c;
+        return ga_mv_scale(X, f.s);
+    }
+    double lp = w * ga_mv_sp(Xp, Xp), r = sqrt(fabs(lp)), t = ldexp(r, k);
+    if (!isfinite(t))
+        t = DBL_MAX; /* an angle beyond DBL_MAX: only known to be huge */
+    if (r == 0.0) {  /* a null part: exp = 1 + Bi, as large as it is */
+        *c = 1.0;
+        return X;
+    }
+    *c = lp < 0.0 ? cos(t) : cosh(t);
+    return ga_mv_scale(Xp, (lp < 0.0 ? sin(t) : sinh(t)) / r);
+}
+
+/* exp(B) for max |B| > 8 (see ga_mv_exp): on B' = 2^-k B (exact, max |B'|
+   in [2^239, 2^240): s^2 ~ |B'|^4 and B' q' ~ |B'|^3 do not overflow), split
+   into its commuting parts
+   (the l form's B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2),
+   all homogeneous so that they hold for the scaled quantities), or, where
+   l1 - l2 is small against s (near-equal parts, the ab form's case), into
+   the ideals of P+- = (1 +- J)/2, J = q / sqrt(q.q): exp(B) P+- =
+   (C(a) + S(a) B) P+- with a = s +- sqrt(q.q) (docs/versors.md). Each
+   factor is bounded when elliptic, so a bivector with an elliptic part above
+   ~1.3e154 (whose square overflows) has its bounded exp; parts are known
+   to u max|B|^2 in their squares, as in the unscaled formulas. */
+/* R (3 - ~R R)/2: Newton-Schulz steps towards the group, each taking
+   ~R R = 1 + e (e of grades 0 and 4, |e| < 1/2) to 1 + O(e^2), while e is
+   above the rounding of ~R R. Where B splits into 2-blades to rounding
+   the factors are on the group already; where a part is rounding noise
+   (below u |B|) that is not a 2-blade, its factor is not, by up to ~1e-7. */
+static ga_mv onto_group(ga_mv R)
+{
+    for (int it = 0; it < 3; it++) {
+        ga_mv e = ga_mv_gp(ga_mv_reverse(R), R);
+        e.c[0] -= 1.0;
+        double m = ga_mv_maxabs(R);
+        if (!(ga_mv_maxabs(e) < 0.5) || ga_mv_maxabs(e) <= 64.0 * DBL_EPSILON * fmax(1.0, m * m))
+            break;
+        R = lin(1.0, R, -0.5, ga_mv_gp(R, e));
+    }
+    return R;
+}
+
+static ga_mv exp_huge_parts(ga_mv B);
+static ga_mv exp_huge(ga_mv B) { return onto_group(exp_huge_parts(B)); }
+
+static ga_mv exp_huge_parts(ga_mv B)
+{
+    int k = ilogb(ga_mv_maxabs(B)) - 239;
+    ga_mv Bp;
+    for (int i = 0; i < 32; i++) Bp.c[i] = ldexp(B.c[i], -k);
+    bsquare sq = square_of(Bp);
+    double m2 = ga_mv_maxabs(sq.b) * ga_mv_maxabs(sq.b), noise = 64.0 * DBL_EPSILON * m2;
+    double d = fmax(sq.s * sq.s - sq.qq, 0.0);
+    if (fabs(sq.s) <= noise && fabs(sq.qq) <= noise * noise) {
+        /* both parts null to rounding: 1 + B + q/2 + Bq/6, huge as it is */
+        ga_mv r;
+        for (int i = 0; i < 32; i++)
+            r.c[i] = ldexp(sq.b.c[i], k) + ldexp(0.5 * sq.q.c[i], 2 * k) + ldexp(sq.bq.c[i] / 6.0, 3 * k);
+        r.c[0] += 1.0;
+        return r;
+    }
+    double c1, c2;
+    if (sq.qq < 0.0 || d >= sq.qq) {
+        double l1, l2;
+        roots(sq.s, sq.qq, &l1, &l2);
+        double dl = l1 - l2;
+        ga_mv X1 = lin(l1 / dl, sq.b, -0.5 / dl, sq.bq), X2 = lin(0.5 / dl, sq.bq, -l2 / dl, sq.b);
+        /* each factor's square from its own 2-blade (Xi^2 = li): the roots
+           lose the smaller one to the rounding of s and q.q when the parts
+           differ by more than 1/u in size, and a factor C(l) + S(l) X is on
+           the group only with the l of its X */
+        ga_mv V1 = scaled_factor(X1, k, 1.0, &c1), V2 = scaled_factor(X2, k, 1.0, &c2);
+        V1.c[0] += c1;
+        V2.c[0] += c2;
+        return ga_mv_gp(V1, V2);
+    }
+    double r = sqrt(sq.qq);
+    ga_mv J = ga_mv_scale(sq.q, 1.0 / r), out = ga_mv_zero();
+    for (int sgn = 1; sgn >= -1; sgn -= 2) {
+        ga_mv P = ga_mv_scale(J, 0.5 * sgn);
+        P.c[0] += 0.5;
+        /* B P+- cancels the parts of the other ideal to rounding of |B|, which
+           is not small against B P+- for near-equal parts (t1 - t2 << t1):
+           projected again, what is left of them is rounding of |B P+-| */
+        ga_mv X = ga_mv_grade(ga_mv_gp(Bp, P), 2);
+        X = ga_mv_grade(ga_mv_gp(X, P), 2);
+        /* X^2 = a P (<P>_0 = 1/2): a from X, not s +- sqrt(q.q), which
+           cancels for near-equal parts (a = -(t1 - t2)^2) */
+        ga_mv V = scaled_factor(X, k, 2.0, &c1);
+        out = lin(1.0, out, 1.0, lin(c1, P, 1.0, V));
+    }
+    return out;
+}
+
 ga_mv ga_mv_exp(ga_mv B)
 {
+    /* Beyond max |B| = 8 the coefficients below lose u |B|^2 to the
+       cancellations of s +- sqrt(q.q) and s^2 - q.q (R ~R = 1 + 1.5e-8 for
+       parts of 1e4, unbounded beyond 1e8), and beyond 2^240 they overflow:
+       there B is split into its factors (exp_huge), except where both parts
+       are near null (|li| <= 2^-20 |B|^2), which the split cannot separate
+       and the coefficients handle (their limits at l = 0). */
+    ga_mv b = ga_mv_grade(B, 2);
+    double m = ga_mv_maxabs(b);
+    if (ga_mv_isfinite(b) && m > 8.0) {
+        if (m > 0x1p240)
+            return exp_huge(b);
+        bsquare h = square_of(b);
+        double m2 = m * m;
+        if (!(fabs(h.s) <= 0x1p-20 * m2 && fabs(h.qq) <= 0x1p-40 * m2 * m2))
+            return exp_huge(b);
+    }
     bsquare sq = square_of(B);
     coeffs k = exp_coeffs(sq.s, sq.qq);
     ga_mv r = lin(k.beta, sq.b, k.delta, sq.bq);
@@ -393,6 +520,155 @@ int ga_mv_log(ga_mv R, ga_mv *out)
     if (!(ga_mv_maxabs(ga_mv_sub(ga_mv_exp(B), R)) <= tol * scale))
         return GA_ERR_DOMAIN;
     *out = B;
+    return GA_OK;
+}
+
+/* ---- split and factorization ------------------------------------------------ */
+
+/* The coefficient-wise dot product (a Euclidean metric on the 32 numbers). */
+static double cdot(ga_mv a, ga_mv b)
+{
+    double r = 0.0;
+    for (int i = 0; i < 32; i++) r += a.c[i] * b.c[i];
+    return r;
+}
+
+/* Split b (max |b| in [1/2, 1)) into commuting 2-blades b1 + b2. */
+/* How far x, y are from commuting 2-blades, for x + y = b to 2^-40 (b of
+   size 1); a split that misses b by more is no split (INFINITY). */
+static double split_residual(ga_mv b, ga_mv x, ga_mv y)
+{
+    if (!finite_mv(x) || !finite_mv(y))
+        return INFINITY;
+    double sum = ga_mv_maxabs(ga_mv_sub(lin(1.0, x, 1.0, y), b));
+    if (!(sum <= 0x1p-40))
+        return INFINITY;
+    return fmax(sum, fmax(ga_mv_maxabs(ga_mv_sub(ga_mv_gp(x, y), ga_mv_gp(y, x))),
+                          fmax(ga_mv_maxabs(ga_mv_grade(ga_mv_gp(x, x), 4)),
+                               ga_mv_maxabs(ga_mv_grade(ga_mv_gp(y, y), 4)))));
+}
+
+static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
+{
+    bsquare sq = square_of(b);
+    double tol = 64.0 * DBL_EPSILON, qn = ga_mv_maxabs(sq.q), qc = cdot(sq.q, sq.q);
+    if (qn <= tol) { /* b is a 2-blade to rounding */
+        *b1 = b;
+        *b2 = ga_mv_zero();
+        return;
+    }
+    double ideal_res = INFINITY;
+    ga_mv ideal_x = b, ideal_y = ga_mv_zero();
+    if (sq.qq > 0x1p-26 * qc && sqrt(sq.qq) > 0x1p20 * DBL_EPSILON) {
+        /* two rotations: q spans a Euclidean 4-space, J = q / sqrt(q.q),
+           J^2 = 1. In the ideals of P+- = (1 +- J)/2, b = tp Up + tm Um with
+           Up^2 = -P+, Um^2 = -P- (each ideal is a quaternion algebra), and
+           E1 = Up + Um, E2 = Up - Um are commuting unit 2-blades (E^2 = -1,
+           E1 E2 = -J) with b = (tp + tm)/2 E1 + (tp - tm)/2 E2: exact for
+           any unit Um, so it holds for isoclinic b (tm = 0) and near it,
+           where the roots l1, l2 are too close to divide by. */
+        ga_mv J = ga_mv_scale(sq.q, 1.0 / sqrt(sq.qq)), U[2];
+        double t[2];
+        for (int i = 0; i < 2; i++) {
+            ga_mv P = ga_mv_scale(J, i == 0 ? 0.5 : -0.5), B3[3], X = ga_mv_zero();
+            P.c[0] += 0.5;
+            /* b P in the coordinates of an orthonormal basis of the ideal
+               (<B3k B3k>_0 = -1/2): exactly in the ideal to rounding of its
+               own size, which a product with P is not for a small part
+               (the rounding of b, of |b|, leaves the 4-space of J) */
+            ideal_basis(J, P, B3);
+            ga_mv bp = ga_mv_gp(b, P);
+            double t2 = 0.0;
+            for (int k = 0; k < 3; k++) {
+                double v = -2.0 * ga_mv_sp(bp, B3[k]);
+                X = lin(1.0, X, v, B3[k]);
+                t2 += v * v;
+            }
+            t[i] = sqrt(t2);
+            U[i] = t[i] > 0.0 ? ga_mv_scale(X, 1.0 / t[i]) : B3[0]; /* U^2 = -P */
+        }
+        ga_mv x = ga_mv_scale(lin(1.0, U[0], 1.0, U[1]), 0.5 * (t[0] + t[1]));
+        ga_mv y = ga_mv_scale(lin(1.0, U[0], -1.0, U[1]), 0.5 * (t[0] - t[1]));
+        /* b outside the 4-space of J (rounding of b, or a J of rounding)
+           is dropped by the projection: kept only if the residual says
+           so, as the l forms below */
+        double res = split_residual(b, x, y);
+        if (res <= 64.0 * DBL_EPSILON) {
+            *b1 = x;
+            *b2 = y;
+            return;
+        }
+        ideal_res = res, ideal_x = x, ideal_y = y;
+    }
+    /* separated parts (elliptic x hyperbolic, or a null part):
+       b1 = (l1 b - bq/2)/(l1 - l2), b2 = (bq/2 - l2 b)/(l1 - l2) with l1, l2
+       the roots of l^2 - s l + q.q/4. Beside a null part q.q = 4 l1 l2 is a
+       sum of products of q's coefficients that cancel, so l2 = 0, l1 = s is
+       tried too. Of these splits and (b, 0) (b a 2-blade to |q|/2), the one
+       with the smallest residual (how far from commuting 2-blades summing
+       to b) is kept. A rotation t beside a null part N is resolved only to
+       u |b|^3 / t^3 of N (s = -t^2 is known to u |b|^2, and b1 is b minus
+       b2 ~ N): below t ~ 1e-4 |b| the split is that poor (versor.h). */
+    double sv[2] = {sq.s, sq.s};
+    double best = 0.5 * qn;
+    *b1 = b;
+    *b2 = ga_mv_zero();
+    if (ideal_res < best) {
+        best = ideal_res;
+        *b1 = ideal_x;
+        *b2 = ideal_y;
+    }
+    for (int v = 0; v < 2; v++) {
+        double l1, l2;
+        roots(sv[v % 2], sq.qq, &l1, &l2);
+        if (v % 2)
+            l1 = sv[v % 2], l2 = 0.0;
+        double dl = l1 - l2;
+        if (!(fabs(dl) > 0.0))
+            continue;
+        ga_mv x = lin(l1 / dl, b, -0.5 / dl, sq.bq), y = lin(0.5 / dl, sq.bq, -l2 / dl, b);
+        double res = split_residual(b, x, y);
+        if (res < best) {
+            best = res;
+            *b1 = x;
+            *b2 = y;
+        }
+    }
+}
+
+int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
+{
+    ga_mv b = ga_mv_grade(B, 2);
+    if (!finite_mv(b))
+        return GA_ERR_NOTFINITE;
+    double m = ga_mv_maxabs(b);
+    if (m == 0.0) {
+        *B1 = *B2 = ga_mv_zero();
+        return GA_OK;
+    }
+    int e;
+    frexp(m, &e);
+    for (int i = 0; i < 32; i++) b.c[i] = ldexp(b.c[i], -e);
+    ga_mv x, y;
+    split_unit(b, &x, &y);
+    for (int i = 0; i < 32; i++) x.c[i] = ldexp(x.c[i], e), y.c[i] = ldexp(y.c[i], e);
+    if (!finite_mv(x) || !finite_mv(y))
+        return GA_ERR_DOMAIN;
+    *B1 = x;
+    *B2 = y;
+    return GA_OK;
+}
+
+int ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2)
+{
+    ga_mv L, B1, B2;
+    int st = ga_mv_log(R, &L);
+    if (st == GA_OK)
+        st = ga_mv_split(L, &B1, &B2);
+    if (st != GA_OK)
+        return st;
+    *R1 = ga_mv_exp(B1);
+    *R2 = ga_mv_exp(B2);
     return GA_OK;
 }
 

@@ -1463,14 +1463,27 @@ static ga_mv generator_to_mv(ga_generator b)
     return m;
 }
 
+/* exp: a rigid-motion generator through the compact rotor (as before, bit
+   for bit), any other bivector through ga_mv_exp; anything with other
+   grades is refused (to 1e-9 of max(1, max|m|), as mv_to_generator) */
 static PyObject *MV_exp(MVObject *self, PyObject *u)
 {
     (void)u;
     ga_generator b;
     int st = mv_to_generator(self->mv, &b);
-    return st == GA_OK ? mv_new(ga_rotor_to_mv(ga_rotor_exp(b))) : mv_status("Multivector.exp", st);
+    if (st == GA_OK)
+        return mv_new(ga_rotor_to_mv(ga_rotor_exp(b)));
+    if (st == GA_ERR_NOTBLADE) {
+        ga_mv m = self->mv;
+        double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
+        if (ga_mv_maxabs(ga_mv_sub(m, ga_mv_grade(m, 2))) <= tol)
+            return mv_new(ga_mv_exp(ga_mv_grade(m, 2)));
+    }
+    return mv_status("Multivector.exp", st);
 }
 
+/* log: a rigid-motion rotor through the compact rotor (as before), any
+   other rotor through ga_mv_log (GA_ERR_DOMAIN where it has no real log) */
 static PyObject *MV_log(MVObject *self, PyObject *u)
 {
     (void)u;
@@ -1479,7 +1492,35 @@ static PyObject *MV_log(MVObject *self, PyObject *u)
     int st = ga_rotor_from_mv(self->mv, GA_ROTOR_DRIFT_MAX, &r);
     if (st == GA_OK)
         st = ga_rotor_log(r, &b);
-    return st == GA_OK ? mv_new(generator_to_mv(b)) : mv_status("Multivector.log", st);
+    if (st == GA_OK)
+        return mv_new(generator_to_mv(b));
+    if (st == GA_ERR_NOTRIGID) {
+        ga_mv L;
+        st = ga_mv_log(self->mv, &L);
+        if (st == GA_OK)
+            return mv_new(L);
+    }
+    return mv_status("Multivector.log", st);
+}
+
+static PyObject *MV_dot(MVObject *self, PyObject *o)
+{
+    ga_mv b;
+    if (!mv_coerce(o, &b)) {
+        PyErr_SetString(PyExc_TypeError, "Multivector.dot: a Multivector or a number");
+        return NULL;
+    }
+    return mv_new(ga_mv_dot(self->mv, b));
+}
+
+static PyObject *MV_ip(MVObject *self, PyObject *o)
+{
+    ga_mv b;
+    if (!mv_coerce(o, &b)) {
+        PyErr_SetString(PyExc_TypeError, "Multivector.ip: a Multivector or a number");
+        return NULL;
+    }
+    return mv_new(ga_mv_ip(self->mv, b));
 }
 
 static PyObject *MV_down(MVObject *self, PyObject *u)
@@ -1534,8 +1575,11 @@ static PyMethodDef MV_methods[] = {
     {"norm2", (PyCFunction)MV_norm2, METH_NOARGS, "<X ~X>_0"},
     {"inverse", (PyCFunction)MV_inverse, METH_NOARGS, "~X / (X ~X) of a versor or blade"},
     {"exp", (PyCFunction)MV_exp, METH_NOARGS,
-     "exp of a rigid-motion generator (a bivector in span{e_ij, e_i n}), through the compact rotor"},
-    {"log", (PyCFunction)MV_log, METH_NOARGS, "the principal log of a rigid-motion rotor"},
+     "exp of a bivector: a rigid-motion generator through the compact rotor, any other by ga_mv_exp"},
+    {"log", (PyCFunction)MV_log, METH_NOARGS,
+     "the principal log of a rotor: a rigid one through the compact rotor, any other by ga_mv_log"},
+    {"dot", (PyCFunction)MV_dot, METH_O, "the fat dot a . b (ga_mv_dot; ganja.js's |)"},
+    {"ip", (PyCFunction)MV_ip, METH_O, "Hestenes' inner product (ga_mv_ip; clifford's |)"},
     {"down", (PyCFunction)MV_down, METH_NOARGS, "the point x of a conformal point X = w F(x)"},
     {"up", (PyCFunction)MV_up, METH_O | METH_CLASS, "Multivector.up(x): the conformal point F(x)"},
     {"blade", (PyCFunction)MV_blade, METH_O | METH_CLASS, "Multivector.blade(i or name): a basis blade"},

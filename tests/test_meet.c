@@ -12,7 +12,10 @@
  * (tangent) and beyond it (an imaginary circle with its signed r^2), a line
  * missing a sphere (an imaginary pair), parallel planes and a line parallel to
  * a plane (empty). Then projection, rejection, distance, angle and the rigid
- * motion between two objects, on the same scenes.
+ * motion between two objects, on the same scenes. The lines "about o" build,
+ * meet, move and read the rounds (and flats) again about a local origin and
+ * length (object.h, "Local origin and length scale"), where no refusal is
+ * allowed at any distance.
  */
 #include "testkit.h"
 
@@ -36,7 +39,7 @@ typedef struct {
     double worst;
     long n, refused;
 } acc;
-static acc kinds[32];
+static acc kinds[64];
 static int nkinds;
 static acc *kind_acc(const char *k)
 {
@@ -250,13 +253,148 @@ static void scene(tk_rng *t, double D)
     }
 }
 
+/* The same rounds held about a local origin og and length lam, a power of two
+   near the size (object.h, "Local origin and length scale"): built from the
+   points (x - og) / lam, a plane built in world coordinates brought in by
+   ga_mv_localize, met, moved by a screw motion about an axis through the
+   world's origin (ga_rotor_apply_about) and read back with
+   ga_object_from_mv_about, against the same Euclidean formulas in world
+   coordinates. No refusal is allowed at any distance. */
+static void scene_about(tk_rng *t, double D)
+{
+    ga_vec3 zero = {0, 0, 0};
+    double S = D == 1.0 ? tk_loguni(t, 0.1, 1) : tk_loguni(t, 1, D);
+    ga_vec3 og = tk_scale(tk_unit(t), D); /* the local origin, near the scene */
+    ga_vec3 a = add(og, tk_scale(tk_unit(t), S * tk_uni(t)));
+    ga_vec3 b = add(og, tk_scale(tk_unit(t), S * tk_uni(t)));
+    ga_vec3 c = add(og, tk_scale(tk_unit(t), S * tk_uni(t)));
+    double L = D + 2 * S;
+    double lam = ldexp(1.0, ilogb(S));
+    ga_object ob;
+    int st;
+#define LOC(x) tk_scale(sub((x), og), 1 / lam)
+    /* a plane built in world coordinates (exact as a flat), brought to og */
+    ga_vec3 m = unit(cross(sub(b, a), sub(c, a)));
+    ga_mv P;
+    st = ga_mv_localize(ga_plane_from_points(a, b, c), og, lam, &P);
+    tk_add_status(tk_get("about o: ga_mv_localize of a world plane"), st, GA_OK);
+    st = ga_object_from_mv_about(P, og, lam, &ob);
+    measure("about o: world plane", st, obj_err(ob, GA_OBJECT_PLANE, tk_scale(m, dot(m, a)), 0, m, L), 0);
+    ga_vec3 u = unit(sub(b, a));
+    ga_mv Ln = ga_line_from_points(LOC(a), LOC(b)), Lw;
+    st = ga_object_from_mv_about(Ln, og, lam, &ob);
+    measure("about o: line", st, obj_err(ob, GA_OBJECT_LINE, sub(a, tk_scale(u, dot(u, a))), 0, u, L), 0);
+    /* a line and a dual plane given in world coordinates, brought in */
+    st = ga_mv_localize(ga_line_from_points(a, b), og, lam, &Lw);
+    if (st == GA_OK)
+        st = ga_object_from_mv_about(Lw, og, lam, &ob);
+    measure("about o: world line", st, obj_err(ob, GA_OBJECT_LINE, sub(a, tk_scale(u, dot(u, a))), 0, u, L),
+            0);
+    ga_vec3 m2 = tk_unit(t);
+    double d2w = dot(m2, c);
+    st = ga_mv_localize(ga_plane_dual(m2, d2w), og, lam, &Lw);
+    if (st == GA_OK)
+        st = ga_object_from_mv_about(Lw, og, lam, &ob);
+    measure("about o: world dual plane", st, obj_err(ob, GA_OBJECT_PLANE, tk_scale(m2, d2w), 0, m2, L), 0);
+
+    double r1 = S * tk_range(t, 0.2, 1), r2 = S * tk_range(t, 0.2, 1);
+    ga_vec3 e = tk_unit(t);
+    static const char *nm[] = {"about o: sphere^sphere circle", "about o:   ... tangent",
+                               "about o:   ... imaginary"};
+    static const int want[] = {GA_REALITY_REAL, GA_REALITY_TANGENT, GA_REALITY_IMAGINARY};
+    for (int cs = 0; cs < 3; cs++) {
+        double dist = cs == 0 ? tk_range(t, fabs(r1 - r2), r1 + r2)
+                    : cs == 1 ? r1 + r2
+                              : (r1 + r2) * tk_range(t, 1.1, 3);
+        /* the truth from the centres as rounded (c2 - a is exact where they
+           are close: Sterbenz), which at 1e8 are u D off the line a + e dist;
+           tangent: r2 is the rounded distance less r1 */
+        ga_vec3 c2 = add(a, tk_scale(e, dist)), ea = sub(c2, a);
+        double da = tk_norm(ea), s2 = cs == 1 ? da - r1 : r2;
+        ea = tk_scale(ea, 1 / da);
+        double h = (da * da + r1 * r1 - s2 * s2) / (2 * da);
+        ga_mv M = ga_mv_meet(ga_sphere_dual(LOC(a), r1 / lam), ga_sphere_dual(LOC(c2), s2 / lam));
+        st = ga_object_from_mv_about(M, og, lam, &ob);
+        measure(nm[cs], st,
+                obj_err(ob, GA_OBJECT_CIRCLE, add(a, tk_scale(ea, h)), (r1 - h) * (r1 + h), ea, L), 0);
+        tk_add_bool(tk_get("about o: tangent and imaginary circles classified so"),
+                    st == GA_OK && ob.reality == want[cs]);
+    }
+    ga_vec3 q = add(a, tk_scale(u, dot(u, sub(c, a))));
+    double off = tk_norm(sub(q, c));
+    double R = fmin(off * tk_range(t, 0.5, 2), 2 * S);
+    st = ga_object_from_mv_about(ga_mv_meet(Ln, ga_sphere_dual(LOC(c), R / lam)), og, lam, &ob);
+    measure("about o: line^sphere pair", st, obj_err(ob, GA_OBJECT_POINTPAIR, q, (R - off) * (R + off), u, L),
+            0);
+    double sd = dot(m, c) - dot(m, a);
+    st = ga_object_from_mv_about(ga_mv_meet(P, ga_sphere_dual(LOC(c), R / lam)), og, lam, &ob);
+    measure("about o: plane^sphere circle", st,
+            obj_err(ob, GA_OBJECT_CIRCLE, sub(c, tk_scale(m, sd)), (R - sd) * (R + sd), m, L), 0);
+
+    ga_vec3 cc = add(a, tk_scale(e, r1));
+    ga_vec3 w1 = unit(cross(e, tk_unit(t))), w2 = cross(e, w1);
+    ga_vec3 p1 = add(cc, tk_scale(w1, r1)), p2 = add(cc, tk_scale(w2, r1)), p3 = sub(cc, tk_scale(w1, r1));
+    st = ga_object_from_mv_about(ga_sphere_dual(LOC(cc), r1 / lam), og, lam, &ob);
+    measure("about o: sphere (dual)", st, obj_err(ob, GA_OBJECT_SPHERE, cc, r1 * r1, zero, L), 0);
+    /* the circle and pair through the points as rounded (u D off cc + r1 w at
+       1e8, which tilts a small circle by u D / r1): centre, r^2 and normal
+       from their differences (exact where close), the circumcentre of the
+       triangle 0, d2, d3 at (|d2|^2 d3 - |d3|^2 d2) x (d2 x d3) / (2 |d2 x d3|^2)
+       (rounded to a few u of its size, added to p1) */
+    ga_vec3 d2 = sub(p2, p1), d3 = sub(p3, p1), nc = cross(d2, d3);
+    ga_vec3 kc = tk_scale(cross(sub(tk_scale(d3, dot(d2, d2)), tk_scale(d2, dot(d3, d3))), nc),
+                          0.5 / dot(nc, nc));
+    ga_vec3 ccp = add(p1, kc);
+    ga_mv C = ga_circle_from_points(LOC(p1), LOC(p2), LOC(p3));
+    st = ga_object_from_mv_about(C, og, lam, &ob);
+    measure("about o: circle (from points)", st, obj_err(ob, GA_OBJECT_CIRCLE, ccp, dot(kc, kc), unit(nc), L),
+            0);
+    ga_vec3 p4 = add(cc, tk_scale(e, r1)), d4 = sub(p4, p1);
+    {
+        /* the sphere through p1..p4: centre p1 + k with 2 k.di = |di|^2, i = 2, 3, 4 */
+        double b2 = 0.5 * dot(d2, d2), b3 = 0.5 * dot(d3, d3), b4 = 0.5 * dot(d4, d4);
+        ga_vec3 k = tk_scale(add(add(tk_scale(cross(d3, d4), b2), tk_scale(cross(d4, d2), b3)),
+                                 tk_scale(cross(d2, d3), b4)),
+                             1 / dot(d2, cross(d3, d4)));
+        st = ga_object_from_mv_about(ga_sphere_from_points(LOC(p1), LOC(p2), LOC(p3), LOC(p4)), og, lam, &ob);
+        measure("about o: sphere (from points)", st,
+                obj_err(ob, GA_OBJECT_SPHERE, add(p1, k), dot(k, k), zero, L), 0);
+    }
+    st = ga_object_from_mv_about(ga_pointpair_from_points(LOC(p1), LOC(p3)), og, lam, &ob);
+    measure("about o: pair (from points)", st,
+            obj_err(ob, GA_OBJECT_POINTPAIR, add(p1, tk_scale(d3, 0.5)), 0.25 * dot(d3, d3), unit(d3), L), 0);
+
+    /* moved by a screw motion about an axis through the world's origin (a
+       turn of up to 3 rad moves the circle by up to ~2 D): the centre moved
+       by Rm, the normal turned by Rm's rotation */
+    ga_rotor Rm = ga_rotor_twist(tk_range(t, 0, 3), (ga_generator){0.6, 0, 0.8, 0, 0, 0},
+                                 tk_scale(tk_unit(t), S));
+    ga_rotor Rq = ga_rotor_from_quat(ga_rotor_to_quat(Rm), zero);
+    ga_vec3 og2;
+    ga_mv C2;
+    st = ga_rotor_apply_about(Rm, og, C, &og2, &C2);
+    if (st == GA_OK)
+        st = ga_object_from_mv_about(C2, og2, lam, &ob);
+    measure("about o: circle moved", st,
+            obj_err(ob, GA_OBJECT_CIRCLE, ga_rotor_apply(Rm, ccp), dot(kc, kc), ga_rotor_apply(Rq, unit(nc)),
+                    L),
+            0);
+    /* projection onto the sphere about og */
+    ga_vec3 x = add(og, tk_scale(tk_unit(t), S)), pr;
+    st = ga_point_project(LOC(x), ga_sphere_dual(LOC(cc), r1 / lam), &pr);
+    measure("about o: project onto sphere", st,
+            tk_norm(sub(add(tk_scale(pr, lam), og), add(cc, tk_scale(unit(sub(x, cc)), r1)))) / L, 0);
+#undef LOC
+}
+
 int main(void)
 {
-    tk_rng t = {14};
+    tk_rng t = {14}, ta = {1414};
     static const double dists[] = {1, 1e2, 1e4, 1e6, 1e8};
     printf("worst error per kind, per distance D from the origin (lengths / L, r^2 / L^2)\n");
     for (int k = 0; k < 5; k++) {
         for (int i = 0; i < 300; i++) scene(&t, dists[k]);
+        for (int i = 0; i < 300; i++) scene_about(&ta, dists[k]);
         flush(dists[k]);
     }
     /* statuses */
@@ -361,6 +499,30 @@ int main(void)
                       GA_OK);
         tk_add_tol(acc_ang, fabs(ang - want) / want, rtol);
     }
+    /* the local-origin functions' statuses */
+    ga_vec3 nanv = {NAN, 0, 0};
+    ga_mv lm;
+    tk_expect_status("about: NaN origin", ga_object_from_mv_about(ga_sphere_dual(z, 1), nanv, 1, &ob),
+                     GA_ERR_NOTFINITE);
+    tk_expect_status("about: lambda 0", ga_object_from_mv_about(ga_sphere_dual(z, 1), z, 0, &ob), GA_ERR_ARG);
+    tk_expect_status("about: a line is still no object of grade 0",
+                     ga_object_from_mv_about(ga_mv_scalar(1), z, 1, &ob), GA_ERR_NOTBLADE);
+    tk_expect_status("localize: lambda -1", ga_mv_localize(ga_sphere_dual(z, 1), z, -1, &lm), GA_ERR_ARG);
+    tk_expect_status("localize: NaN", ga_mv_localize(ga_sphere_dual(nanv, 1), z, 1, &lm), GA_ERR_NOTFINITE);
+    tk_expect_status("localize: overflow",
+                     ga_mv_localize(ga_sphere_dual((ga_vec3){4, 0, 0}, 1), z, 1e-308, &lm), GA_ERR_DOMAIN);
+    tk_expect_status("apply_about: NaN", ga_rotor_apply_about(ga_rotor_identity(), nanv, im, &ex, &lm),
+                     GA_ERR_NOTFINITE);
+    /* about (o, 1) with o = 1e8 ex, the unit sphere at 1e8 + (1, 0, 0) reads back
+       exactly (its local form is exact) */
+    ga_vec3 far = {1e8, 0, 0};
+    tk_expect_status("about: unit sphere at 1e8", ga_object_from_mv_about(ga_sphere_dual(ex, 1), far, 1, &ob),
+                     GA_OK);
+    tk_expect(ob.kind == GA_OBJECT_SPHERE && ob.centre.x == 1e8 + 1 && ob.r2 == 1,
+              "about: unit sphere at 1e8 + 1: centre and r^2 exact");
+    /* about (0, 1), a unit sphere at 1e4 is refused (at 1e8 it is a plane as stored) */
+    tk_expect_status("world: unit sphere at 1e4 refused",
+                     ga_object_from_mv(ga_sphere_dual((ga_vec3){1e4, 0, 0}, 1), &ob), GA_ERR_PRECISION);
     /* antiparallel planes: a half turn about a perpendicular axis */
     ga_rotor H;
     ga_vec3 mz = {0, 0, -1};

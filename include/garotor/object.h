@@ -29,8 +29,43 @@
  *     unit-sized round that is within a few tens of units of the origin. A
  *     dual vector whose weight is below 64 u s is a flat as stored: at 1e8,
  *     ga_sphere_dual of a sphere of radius below ~1e7 is already a plane.
- * For rounds far from the origin, build the scene about a local origin o (pass
- * x - o, add o to what is read back): exact up to the rounding of x - o.
+ * This is not a defect of the read-back that a better formula could mend: a
+ * round far out has lost, in its stored e4/e5 coefficients, the information
+ * the read-back needs. A direct round is T_c((o + (r^2/2) n) ^ E), o = F(0) =
+ * -nbar/2 and E a Euclidean blade that holds the weight (DFM §14.2); its part
+ * o ^ E, which translations leave as it is, alone carries the weight against
+ * which the centre and r^2 are measured (for a dual sphere w (F(c) - (r^2/2)
+ * n), the nbar coefficient -w/2). Stored as e4 = (n + nbar)/2, e5 = (n -
+ * nbar)/2 beside n-parts of size |c|^2, that part keeps an absolute error
+ * u |c|^2 |w|. A sphere has
+ * no other coefficient to recover it from (5 numbers for 4 unknowns and a
+ * weight, in either form), and the redundant coefficients of a point pair or
+ * circle determine it only away from degenerate orientations (a pair
+ * perpendicular to its centre's direction has none), so no read-back of one
+ * ga_mv can keep 1e-12 for every round far out.
+ *
+ * Local origin and length scale. The answer is to carry an origin o and a
+ * length lambda with the object: a scene held "about (o, lambda)" is the
+ * scene seen from o in units of lambda, x -> (x - o) / lambda, built by the
+ * constructors of conformal.h from the points (x - o) / lambda (rounded to u
+ * of |x| / lambda; a power of two for lambda divides exactly). Both matter:
+ * o removes the cancellation of the centre's distance (|c - o|^2 beside 1),
+ * lambda that of the scene's size (a sphere of radius 1e6 centred 2e6 from
+ * o has e4, e5 ~ 1e12 beside the weight 1/2 when lambda = 1, just as far out).
+ * Everything holds about (o, lambda) as about (0, 1), with lengths relative
+ * to L_o = lambda max(1, |c - o| / lambda + |r| / lambda):
+ *   - build: any constructor, on (x - o) / lambda;
+ *   - bring in an object given in world coordinates (a flat loses nothing on
+ *     the way; a round only keeps what it had): ga_mv_localize;
+ *   - meet: ga_mv_meet of two objects about the same (o, lambda);
+ *   - move: ga_rotor_apply_about (the origin moves with the object, so that
+ *     a rotation about a far point puts no large translation into it);
+ *   - read back: ga_object_from_mv_about, in world coordinates;
+ *   - project, distance: on (x - o) / lambda, giving lambda y + o and lambda d.
+ * With o within a few sizes of the scene and lambda within a factor 4 or so of
+ * its size, rounds anywhere up to 1e8 from the origin (and beyond) read back to
+ * a few u L and are not refused (tests/test_meet.c, "about o": all kinds,
+ * tangent and imaginary included, at 1 to 1e8).
  */
 #ifndef GAROTOR_OBJECT_H
 #define GAROTOR_OBJECT_H
@@ -91,6 +126,32 @@ typedef struct {
  *  objects above (mixed grades, grade 0 or 5, a non-blade), to GA_POINT_TOL
  *  relative. */
 int ga_object_from_mv(ga_mv X, ga_object *out);
+
+/** ga_object_from_mv of an object held about (o, lambda) (see "Local origin
+ *  and length scale" above), in world coordinates: lambda c + o for the
+ *  centre c of a round or flat point, the point closest to the world's origin
+ *  for a plane (d m, d = lambda d_o + m.o) or a line, r^2 times lambda^2;
+ *  kind, reality and direction as read about (o, lambda) (tangent relative to
+ *  L_o). Codes of ga_object_from_mv on X; GA_ERR_NOTFINITE for NaN/Inf in o or
+ *  lambda, GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on overflow. */
+int ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out);
+
+/** The object X, given in world coordinates, held about (o, lambda): translated
+ *  by -o (T_-o X ~T_-o), then every length divided by lambda (o -> lambda o,
+ *  n -> n / lambda in the basis n, nbar; a positive multiple of the object of
+ *  the points (x - o) / lambda). A flat built in world coordinates (a plane
+ *  1e8 away) comes in as accurate as it was; a round as inaccurate as it was.
+ *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on
+ *  overflow. */
+int ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out);
+
+/** The rigid motion R of an object X held about (o, lambda): R T_o X ~T_o ~R is
+ *  T_o' X' ~T_o' with o' = R(o) (ga_rotor_apply) and X' = q X ~q, q the
+ *  rotation of R = T_t q (lambda unchanged: a rotation about the local origin
+ *  commutes with the scaling). Writes o' and X'. Exact up to the rounding of R(o)
+ *  and of the rotation: no translation of the size of o enters X'.
+ *  GA_ERR_NOTFINITE for NaN/Inf in R, o or X; GA_ERR_DOMAIN if o' overflows. */
+int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out);
 
 /** The meet of two objects, A* ^ B* undualised: ((A I^-1) ^ (B I^-1)) I (DFM §5.5,
  *  the meet in the whole space, as clifford's meet and ganja's dual wedge).

@@ -421,8 +421,8 @@ def test_multivector_exp_log_up_down(rng):
         assert np.allclose(np.asarray(L.exp()), np.asarray(R), rtol=0, atol=1e-12 * (1 + np.abs(xi).max()))
     with pytest.raises(ValueError, match="not an object of the expected kind"):
         (garotor.e1 + garotor.e12).exp()
-    with pytest.raises(ValueError, match="not a rigid motion"):
-        (2.0 * garotor.e12 + 5).log()
+    with pytest.raises(ValueError, match="outside the domain"):
+        (2.0 * garotor.e12 + 5).log()  # not a rotor: no log, rigid or general
     X = garotor.up(rng.normal(size=(4, 2, 3)))
     assert X.shape == (4, 2, 32)
     x = rng.normal(size=3)
@@ -568,3 +568,26 @@ def test_path_append_errors(rng):
         b.append(even[4] + 1e-3, K[0])
     b.append(even[4], K[0])
     assert b.range == (even[1], even[3])
+
+
+def test_multivector_general_exp_log_and_inner_products(rng):
+    # any bivector: a rotation, a dilation (e45) and a transversion part
+    # (e_i nbar); exp by ga_mv_exp, log by ga_mv_log, exp(log R) = R
+    for _ in range(50):
+        c = np.zeros(32)
+        c[6:16] = rng.uniform(-0.6, 0.6, size=10)
+        B = garotor.Multivector(c)
+        R = B.exp()
+        assert abs((R * ~R)[0] - 1) < 1e-13
+        L = R.log()
+        assert np.allclose(np.asarray(L.exp()), np.asarray(R), rtol=0, atol=1e-12)
+        assert np.allclose(np.asarray(L), c, rtol=0, atol=1e-12)
+    D = (0.3 * garotor.e45).exp()  # a dilation: not rigid, now has an exp and a log
+    assert np.allclose(np.asarray(D.log()), np.asarray(0.3 * garotor.e45), rtol=0, atol=1e-15)
+    # | is the left contraction; .dot the fat dot (ganja.js), .ip Hestenes' (clifford)
+    e1, e2, e12 = garotor.e1, garotor.e2, garotor.e12
+    assert np.array_equal(np.asarray(e1 | e12), np.asarray(e2))
+    assert np.array_equal(np.asarray(e12 | e1), np.zeros(32))  # grade 1 - 2 < 0
+    assert np.array_equal(np.asarray(e12.dot(e1)), np.asarray(-e2))
+    assert np.array_equal(np.asarray(garotor.Multivector.blade(0).dot(e1)), np.asarray(e1))
+    assert np.array_equal(np.asarray(garotor.Multivector.blade(0).ip(e1)), np.zeros(32))
