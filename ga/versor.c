@@ -199,10 +199,14 @@ static ga_mv scaled_factor(ga_mv Xp, int k, double w, double *c)
    ~R R = 1 + e (e of grades 0 and 4, |e| < 1/2) to 1 + O(e^2), while e is
    above the rounding of ~R R. Where B splits into 2-blades to rounding
    the factors are on the group already; where a part is rounding noise
-   (below u |B|) that is not a 2-blade, its factor is not, by up to ~1e-7. */
+   (below u |B|) that is not a 2-blade, its factor is not: usually by ~1e-7,
+   but an isoclinic B of 1e207 with parts of 1e-10 beside it (fuzz/regress/
+   numeric/mv-exp-huge-isoclinic-noise) starts at |e| = 0.497, which takes
+   nine steps (0.497, 0.405, 0.309, 0.172, 0.050, 3.8e-3, 2.2e-5, 7.2e-10,
+   then rounding): up to 12 are taken. */
 static ga_mv onto_group(ga_mv R)
 {
-    for (int it = 0; it < 3; it++) {
+    for (int it = 0; it < 12; it++) {
         ga_mv e = ga_mv_gp(ga_mv_reverse(R), R);
         e.c[0] -= 1.0;
         double m = ga_mv_maxabs(R);
