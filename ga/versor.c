@@ -199,11 +199,10 @@ static ga_mv scaled_factor(ga_mv Xp, int k, double w, double *c)
    ~R R = 1 + e (e of grades 0 and 4, |e| < 1/2) to 1 + O(e^2), while e is
    above the rounding of ~R R. Where B splits into 2-blades to rounding
    the factors are on the group already; where a part is rounding noise
-   (below u |B|) that is not a 2-blade, its factor is not: usually by ~1e-7,
-   but an isoclinic B of 1e207 with parts of 1e-10 beside it (fuzz/regress/
-   numeric/mv-exp-huge-isoclinic-noise) starts at |e| = 0.497, which takes
-   nine steps (0.497, 0.405, 0.309, 0.172, 0.050, 3.8e-3, 2.2e-5, 7.2e-10,
-   then rounding): up to 12 are taken. */
+   (below u |B|) that is not a 2-blade, its factor is not, usually by ~1e-7.
+   From |e| near 1/2 the steps are slow at first (0.497, 0.405, 0.309,
+   0.172, 0.050, 3.8e-3, 2.2e-5, 7.2e-10, then rounding, seen before the
+   near-null parts of the ideal route were taken as 0): up to 12 are taken. */
 static ga_mv onto_group(ga_mv R)
 {
     for (int it = 0; it < 12; it++) {
@@ -261,6 +260,12 @@ static ga_mv exp_huge_parts(ga_mv B)
            projected again, what is left of them is rounding of |B P+-| */
         ga_mv X = ga_mv_grade(ga_mv_gp(Bp, P), 2);
         X = ga_mv_grade(ga_mv_gp(X, P), 2);
+        /* a part that is rounding of |B| (t1 - t2 below 64 u |B|): its angle
+           cannot be told from zero, and its X is not a 2-blade of P's ideal,
+           whose factor C + S X would be off the group by up to 1 (fuzz/
+           regress/numeric/mv-exp-huge-isoclinic-*): taken as 0, the factor P */
+        if (ga_mv_maxabs(X) <= 64.0 * DBL_EPSILON * ga_mv_maxabs(Bp))
+            X = ga_mv_zero();
         /* X^2 = a P (<P>_0 = 1/2): a from X, not s +- sqrt(q.q), which
            cancels for near-equal parts (a = -(t1 - t2)^2) */
         ga_mv V = scaled_factor(X, k, 2.0, &c1);
