@@ -147,6 +147,21 @@ static void set_scale(keyset *k)
     for (int i = 0; i < k->n; ++i) k->scale = fmax(k->scale, tnorm(k->m[i]));
 }
 
+/* n keys at random times on one screw motion exp(t xi) (rand_twist(r, 0.5,
+   sv)); returns xi */
+static ga_twist screw_keys(tk_rng *r, keyset *k, int n, double sv)
+{
+    k->n = n;
+    random_times(r, k);
+    ga_twist xi = rand_twist(r, 0.5, sv);
+    for (int i = 0; i < n; ++i) {
+        ga_twist x = {tk_scale(xi.w, k->t[i]), tk_scale(xi.v, k->t[i])};
+        k->m[i] = ga_se3_exp(x);
+    }
+    set_scale(k);
+    return xi;
+}
+
 /* kind 0: generic; 1: some exact half turns (absolute); 2: tiny rotations under
  * large translations; 3: relative half turns between neighbours; 4: a mixture. */
 static void random_keys(tk_rng *r, keyset *k, int n, int kind)
@@ -1279,14 +1294,7 @@ static void test_accel(tk_rng *r)
                             1e-13);
     for (int trial = 0; trial < 6; ++trial) {
         keyset k;
-        k.n = 5;
-        random_times(r, &k);
-        ga_twist xi = rand_twist(r, 0.5, 1.0);
-        for (int i = 0; i < k.n; ++i) {
-            ga_twist x = {tk_scale(xi.w, k.t[i]), tk_scale(xi.v, k.t[i])};
-            k.m[i] = ga_se3_exp(x);
-        }
-        set_scale(&k);
+        ga_twist xi = screw_keys(r, &k, 5, 1.0);
         const ga_scheme zs[3] = {GA_SCHEME_SCREW, GA_SCHEME_LIHAO2, GA_SCHEME_LIHAO3};
         for (int gi = 0; gi < 2; ++gi)
             for (int si = 0; si < 3; ++si) {
@@ -1672,14 +1680,7 @@ static void test_c2(tk_rng *r)
     tk_check c_scv = tk_begin("c2: ... its velocity xi, acceleration 0, / scale^2", 1e-13);
     for (int trial = 0; trial < 8; ++trial) {
         keyset k;
-        k.n = 2 + trial % 7;
-        random_times(r, &k);
-        ga_twist xi = rand_twist(r, 0.5, 2.0);
-        for (int i = 0; i < k.n; ++i) {
-            ga_twist x = {tk_scale(xi.w, k.t[i]), tk_scale(xi.v, k.t[i])};
-            k.m[i] = ga_se3_exp(x);
-        }
-        set_scale(&k);
+        ga_twist xi = screw_keys(r, &k, 2 + trial % 7, 2.0);
         double x6[6] = {xi.w.x, xi.w.y, xi.w.z, xi.v.x, xi.v.y, xi.v.z};
         for (int gi = 0; gi < 2; ++gi) {
             pathbuf b;
