@@ -53,7 +53,7 @@
 
 int garotor_main(int argc, char **argv);
 
-static char dir[256], in_path[300], vel_path[300], out_path[300], svg_path[300];
+static char dir[256], in_path[300], vel_path[300], out_path[300], svg_path[300], html_path[300];
 
 static void cleanup(void)
 {
@@ -61,6 +61,7 @@ static void cleanup(void)
     unlink(vel_path);
     unlink(out_path);
     unlink(svg_path);
+    unlink(html_path);
     rmdir(dir);
 }
 
@@ -81,6 +82,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     snprintf(vel_path, sizeof vel_path, "%s/vel", dir);
     snprintf(out_path, sizeof out_path, "%s/out", dir);
     snprintf(svg_path, sizeof svg_path, "%s/pic.svg", dir);
+    snprintf(html_path, sizeof html_path, "%s/page.html", dir);
     atexit(cleanup);
     return 0;
 }
@@ -104,7 +106,7 @@ static void check_no_stray_files(int allow_out)
         const char *nm = e->d_name;
         if (!strcmp(nm, ".") || !strcmp(nm, "..") || !strcmp(nm, "in") || !strcmp(nm, "vel"))
             continue;
-        if (allow_out && (!strcmp(nm, "out") || !strcmp(nm, "pic.svg")))
+        if (allow_out && (!strcmp(nm, "out") || !strcmp(nm, "pic.svg") || !strcmp(nm, "page.html")))
             continue;
         closedir(d);
         FZ_CHECK(0, "file '%s' left behind (exit status %s)", nm, allow_out ? "0" : "2");
@@ -313,7 +315,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char *argv[MAXARG + 12];
     int argc = 0;
     argv[argc++] = "garotor";
-    int want_vel = 0, want_svg = 0, kind = -1, affine = 0, pose = 0, verb = -1, header = 0;
+    int want_vel = 0, want_svg = 0, want_html = 0, kind = -1, affine = 0, pose = 0, verb = -1, header = 0;
     static char capped[3][32];
     /* the span of the keys' times (the first number of each input line), for
        capping --rate below: HZ is lowered so that it gives at most 4096
@@ -370,10 +372,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             return 0;
         if (!strcmp(tok, "--help") || !strcmp(tok, "-h"))
             return 0;
+        /* every file the tool reads or writes is the harness's, in its
+           directory (a --html FILE passed through wrote pages into the
+           working directory, and could overwrite any file there) */
         if (!strcmp(tok, "--in") || !strcmp(tok, "--out") || !strcmp(tok, "--svg") ||
-            !strcmp(tok, "--velocities")) {
+            !strcmp(tok, "--html") || !strcmp(tok, "--velocities")) {
             want_vel |= !strcmp(tok, "--velocities");
             want_svg |= !strcmp(tok, "--svg");
+            want_html |= !strcmp(tok, "--html");
             strtok_r(NULL, " \t\r", &save); /* and its value */
             continue;
         }
@@ -432,7 +438,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     if (kind < 0)
         return 0;
-    char *in_opt = "--in", *out_opt = "--out", *vel_opt = "--velocities", *svg_opt = "--svg";
+    char *in_opt = "--in", *out_opt = "--out", *vel_opt = "--velocities", *svg_opt = "--svg",
+         *html_opt = "--html";
     argv[argc++] = in_opt;
     argv[argc++] = in_path;
     if (want_vel) {
@@ -442,6 +449,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (want_svg) {
         argv[argc++] = svg_opt;
         argv[argc++] = svg_path;
+    }
+    if (want_html) {
+        argv[argc++] = html_opt;
+        argv[argc++] = html_path;
     }
     argv[argc++] = out_opt;
     argv[argc++] = out_path;
@@ -462,6 +473,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     unlink(out_path);
     unlink(svg_path);
+    unlink(html_path);
     unlink(vel_path);
     return 0;
 }
