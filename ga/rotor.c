@@ -369,7 +369,15 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         double cpar = (s * pu + nb * (sg * r.e123n)) / q2;
         vec pperp = v_sub(p, v_scale(u, pu));
         beta = v_scale(u, phi);
-        c = v_add(v_scale(pperp, phi * inv), v_scale(u, cpar));
+        vec cperp = v_scale(pperp, phi * inv);
+        /* pperp is perpendicular to u only to rounding of |p|; near a full
+           turn (the literal log, s < 0) phi / |b| ~ pi / (pi - phi) magnifies
+           that along u, where exp does not damp it (the translation along the
+           axis): 2.4e-12 of |p| at pi - phi = 1e-4 in exp(l(R)) - R. Taken
+           out again, it is rounding of |c_perp|. */
+        if (s < 0.0)
+            cperp = v_sub(cperp, v_scale(u, v_dot(cperp, u)));
+        c = v_add(cperp, v_scale(u, cpar));
         /* finite when rotor_near_group(r) (|p| <= 1e150, phi/|b| <= pi 2^450);
          * past it, as below: x - x is 0 for finite x, NaN for Inf and NaN */
         if (!((c.x - c.x) + (c.y - c.y) + (c.z - c.z) == 0.0))

@@ -419,19 +419,192 @@ static ga_mv spin4_log(ga_mv R, ga_mv J)
    (the 4-space of two elliptic parts: q = 2 B1 B2 = 2 t1 t2 J, R4 = s1 s2 J) */
 static ga_mv unit4(ga_mv q) { return ga_mv_scale(q, 1.0 / sqrt(ga_mv_sp(q, q))); }
 
-int ga_mv_log(ga_mv R, ga_mv *out)
-{
-    if (!finite_mv(R))
-        return GA_ERR_NOTFINITE;
-    double scale = ga_mv_maxabs(R), tol = 1e-9;
-    for (int g = 1; g <= 5; g += 2)
-        if (ga_mv_maxabs(ga_mv_grade(R, g)) > tol * scale)
-            return GA_ERR_DOMAIN;
-    ga_mv rr = ga_mv_gp(R, ga_mv_reverse(R));
-    rr.c[0] -= 1.0;
-    if (!(ga_mv_maxabs(rr) <= tol * fmax(1.0, scale * scale)))
-        return GA_ERR_DOMAIN;
+/* ---- a null part: the frame in which it is rigid ------------------------------- */
 
+/* A rotation E by a small angle t beside a null part N (R = +-exp(tE) exp(N),
+   or B = tE + N) is a rigid screw seen in another frame: both fix the null
+   vector n of N's plane (n.n = 0, n.E = n.N = 0), and a rotor V that takes n
+   to the point at infinity (V n ~V ~ e4 + e5) turns them into a rigid rotor
+   or generator, whose log and split are exact for every angle
+   (ga_rotor_log_literal; the screw's axis). The m and l forms find E from
+   t^2 = -<B^2>_0, which is known only to u |N|^2, and lose u (|N|/t)^3 or
+   more. Here n is taken from M, the 5x5 matrix of the vector map
+   x -> R x ~R - x (or x -> x _| B): n spans its kernel and, since R keeps
+   the metric, n.M y = 0 for every y, so n is the metric normal of M's
+   columns, found by Gaussian elimination with complete pivoting on M^T
+   (backward stable: an error in n lies in E's plane, u |M| / t of it, which
+   moves n by only t times that; docs/versors.md). For t below u^(1/3) of
+   |M| those columns are too near a rank of 2; then the columns of M^2,
+   ~ (x.n) n with t^2 of E's plane beside it, give n. */
+
+/* The metric normal n (n.c = 0, n5 >= 0) of the columns c of M, or 0 where
+   M has rank below 4 (candidate 0), or the largest column of M^2
+   (candidate 1). */
+static int null_normal(double M[5][5], int cand, double n[5])
+{
+    double A[5][5];
+    if (cand == 1) {
+        double best = 0.0;
+        for (int j = 0; j < 5; j++) {
+            double col[5], nn = 0.0;
+            for (int i = 0; i < 5; i++) {
+                col[i] = 0.0;
+                for (int k = 0; k < 5; k++) col[i] += M[i][k] * M[k][j];
+                nn += col[i] * col[i];
+            }
+            if (nn > best) {
+                best = nn;
+                for (int i = 0; i < 5; i++) n[i] = col[i];
+            }
+        }
+        if (!(best > 0.0))
+            return 0;
+    } else {
+        int perm[5] = {0, 1, 2, 3, 4};
+        for (int i = 0; i < 5; i++)
+            for (int j = 0; j < 5; j++) A[i][j] = M[j][i];
+        for (int k = 0; k < 4; k++) {
+            int pi = k, pj = k;
+            for (int i = k; i < 5; i++)
+                for (int j = k; j < 5; j++)
+                    if (fabs(A[i][j]) > fabs(A[pi][pj]))
+                        pi = i, pj = j;
+            if (!(fabs(A[pi][pj]) > 0.0))
+                return 0;
+            for (int j = 0; j < 5; j++) {
+                double t = A[k][j];
+                A[k][j] = A[pi][j], A[pi][j] = t;
+            }
+            for (int i = 0; i < 5; i++) {
+                double t = A[i][k];
+                A[i][k] = A[i][pj], A[i][pj] = t;
+            }
+            int t = perm[k];
+            perm[k] = perm[pj], perm[pj] = t;
+            for (int i = k + 1; i < 5; i++) {
+                double f = A[i][k] / A[k][k];
+                for (int j = k; j < 5; j++) A[i][j] -= f * A[k][j];
+            }
+        }
+        double y[5];
+        y[4] = 1.0;
+        for (int k = 3; k >= 0; k--) {
+            double acc = 0.0;
+            for (int j = k + 1; j < 5; j++) acc += A[k][j] * y[j];
+            y[k] = -acc / A[k][k];
+        }
+        for (int k = 0; k < 5; k++) n[perm[k]] = y[k];
+        n[4] = -n[4]; /* the metric: n = diag(1, 1, 1, 1, -1) x */
+    }
+    if (n[4] < 0.0)
+        for (int i = 0; i < 5; i++) n[i] = -n[i];
+    for (int i = 0; i < 5; i++)
+        if (!isfinite(n[i]))
+            return 0;
+    return 1;
+}
+
+/* A rotor V of the Euclidean 4-space e1..e4 (so its action on the 32
+   coefficients is orthogonal: it magnifies no error) with V n ~V along
+   e4 + e5, for n = n5 e5 + w, n5 > 0, n null (|w| = n5): V turns w/|w| into
+   e4, through a half turn in a plane e_j e4 first where w points away from e4. */
+static int to_infinity(const double n[5], ga_mv *V)
+{
+    double w[4], nw = 0.0;
+    for (int i = 0; i < 4; i++) nw = fmax(nw, fabs(n[i]));
+    if (!(nw > 0.0))
+        return 0;
+    double len = 0.0;
+    for (int i = 0; i < 4; i++) w[i] = n[i] / nw, len += w[i] * w[i];
+    len = sqrt(len);
+    for (int i = 0; i < 4; i++) w[i] /= len;
+    ga_mv V1 = ga_mv_scalar(1.0);
+    if (w[3] < 0.0) {
+        int j = 0;
+        for (int i = 1; i < 3; i++)
+            if (fabs(w[i]) < fabs(w[j]))
+                j = i;
+        V1 = ga_mv_gp(ga_mv_blade(GA_BLADE_E1 + j), ga_mv_blade(GA_BLADE_E4));
+        w[j] = -w[j], w[3] = -w[3];
+    }
+    /* (1 + e4 w)/sqrt(2 (1 + w4)) takes w to e4 */
+    ga_mv wv = ga_mv_zero();
+    for (int i = 0; i < 4; i++) wv.c[GA_BLADE_E1 + i] = w[i];
+    ga_mv V2 = ga_mv_gp(ga_mv_blade(GA_BLADE_E4), wv);
+    V2.c[0] += 1.0;
+    *V = ga_mv_gp(ga_mv_scale(V2, 1.0 / sqrt(2.0 * (1.0 + w[3]))), V1);
+    return 1;
+}
+
+static ga_mv sandwich(ga_mv V, ga_mv X) { return ga_mv_gp(ga_mv_gp(V, X), ga_mv_reverse(V)); }
+
+static ga_mv generator_mv(ga_generator g)
+{
+    ga_mv B = ga_mv_zero();
+    B.c[GA_BLADE_E12] = g.e12, B.c[GA_BLADE_E13] = g.e13, B.c[GA_BLADE_E23] = g.e23;
+    B.c[GA_BLADE_E14] = B.c[GA_BLADE_E15] = g.e1n;
+    B.c[GA_BLADE_E24] = B.c[GA_BLADE_E25] = g.e2n;
+    B.c[GA_BLADE_E34] = B.c[GA_BLADE_E35] = g.e3n;
+    return B;
+}
+
+/* log R through the rigid frame of its null part, candidate n as null_normal;
+   GA_ERR_DOMAIN where R is not rigid there (no null part, or not this n) */
+static int log_null_part(ga_mv R, int cand, ga_mv *out)
+{
+    double M[5][5], n[5];
+    ga_mv Rr = ga_mv_reverse(R), V;
+    for (int j = 0; j < 5; j++) {
+        ga_mv y = ga_mv_gp(ga_mv_gp(R, ga_mv_blade(GA_BLADE_E1 + j)), Rr);
+        for (int i = 0; i < 5; i++) M[i][j] = y.c[GA_BLADE_E1 + i] - (i == j);
+    }
+    if (!null_normal(M, cand, n) || !to_infinity(n, &V))
+        return GA_ERR_DOMAIN;
+    ga_rotor r;
+    ga_generator g;
+    int st = ga_rotor_from_mv(sandwich(V, R), 1e-6, &r);
+    if (st != GA_OK)
+        return GA_ERR_DOMAIN;
+    /* A turn t tiny against the rounding of r (|r| u) has an axis b = sin t u
+       known to u |r| / t only, and its tilt off the translation p leaks
+       |p| u / t of p into a perpendicular part, which the log divides by
+       sin t again: an axis ~u |p| / t^2 away (1e4 at t = 1e-10) and a
+       generator too large for exp to reproduce r. Where b is along p to
+       within that rounding, it is taken along p (and where b itself is
+       rounding, as 0): a change of r below its rounding, and the log of the
+       screw along p. */
+    double b[3] = {r.e23, -r.e13, r.e12}, p[3] = {r.e1n, r.e2n, r.e3n};
+    double pp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2], bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    double bp = b[0] * p[0] + b[1] * p[1] + b[2] * p[2];
+    double tilt2 = fmax(bb - bp * bp / pp, 0.0), lim = 64.0 * DBL_EPSILON * fmax(1.0, sqrt(pp));
+    if (bb <= lim * lim) { /* no turn to rounding: the log's own exact case */
+        r.e23 = r.e13 = r.e12 = 0.0;
+        if (ga_rotor_normalize(r, &r) != GA_OK)
+            return GA_ERR_DOMAIN;
+    } else if (pp > 0.0 && tilt2 <= lim * lim) {
+        double k = copysign(sqrt(bb / pp), bp);
+        r.e23 = k * p[0], r.e13 = -k * p[1], r.e12 = k * p[2];
+        if (ga_rotor_normalize(r, &r) != GA_OK)
+            return GA_ERR_DOMAIN;
+    }
+    st = ga_rotor_log_literal(r, &g);
+    if (st != GA_OK)
+        return GA_ERR_DOMAIN;
+    *out = ga_mv_grade(sandwich(ga_mv_reverse(V), generator_mv(g)), 2);
+    return GA_OK;
+}
+
+/* max |exp(B) - R|, INFINITY where exp(B) is not finite (ga_mv_maxabs
+   skips NaN: a log whose exp overflows read as a close one) */
+static double log_residual(ga_mv B, ga_mv R)
+{
+    ga_mv E = ga_mv_exp(B);
+    return finite_mv(E) ? ga_mv_maxabs(ga_mv_sub(E, R)) : INFINITY;
+}
+
+/* log R by the closed forms (the comment above ga_mv_log's helpers) */
+static int log_closed(ga_mv R, double tol, ga_mv *out)
+{
     double r0 = R.c[0];
     ga_mv R2 = ga_mv_grade(R, 2), R4 = ga_mv_grade(R, 4);
     ga_mv W = ga_mv_grade(ga_mv_gp(R2, R4), 2);
@@ -525,8 +698,58 @@ int ga_mv_log(ga_mv R, ga_mv *out)
     }
     if (!finite_mv(B))
         return GA_ERR_DOMAIN;
+    *out = B;
+    return GA_OK;
+}
+
+int ga_mv_log(ga_mv R, ga_mv *out)
+{
+    if (!finite_mv(R))
+        return GA_ERR_NOTFINITE;
+    double scale = ga_mv_maxabs(R), tol = 1e-9;
+    for (int g = 1; g <= 5; g += 2)
+        if (ga_mv_maxabs(ga_mv_grade(R, g)) > tol * scale)
+            return GA_ERR_DOMAIN;
+    ga_mv rr = ga_mv_gp(R, ga_mv_reverse(R));
+    rr.c[0] -= 1.0;
+    if (!(ga_mv_maxabs(rr) <= tol * fmax(1.0, scale * scale)))
+        return GA_ERR_DOMAIN;
+
+    ga_mv B;
+    int st = log_closed(R, tol, &B);
+    double res = st == GA_OK ? log_residual(B, R) : INFINITY;
+    /* R0 < 0 beside a null part: exp(tE + N) with t in (pi/2, pi], where
+       the closed forms lose u (|N|/(pi - t))^4 and fail near pi (a rotation
+       by nearly a full turn times a translation, transversion, ...): the
+       rigid frame, kept where it leaves the smaller residual */
+    if (R.c[0] < 0.0 && !(res <= 4.0 * DBL_EPSILON * fmax(1.0, scale * scale))) {
+        /* log(-R) - pi E, E the unit plane of log(-R)'s elliptic part with
+           the smaller angle (which thus takes the sign, as the principal
+           branch says): for two rotations both near a full turn the Spin(4)
+           form takes J from q = <log(-R)^2>_4 ~ t1 t2, known to u/(t1 t2) */
+        ga_mv Lm, P[2];
+        if (log_closed(ga_mv_scale(R, -1.0), tol, &Lm) == GA_OK && ga_mv_split(Lm, &P[0], &P[1]) == GA_OK) {
+            double l[2] = {ga_mv_gp(P[0], P[0]).c[0], ga_mv_gp(P[1], P[1]).c[0]};
+            int i = l[0] < 0.0 && (!(l[1] < 0.0) || l[0] >= l[1]) ? 0 : 1;
+            if (l[i] < 0.0) {
+                ga_mv Bn = lin(1.0, Lm, -3.14159265358979323846 / sqrt(-l[i]), P[i]);
+                double rn = log_residual(Bn, R);
+                if (rn < res)
+                    res = rn, B = Bn;
+            }
+        }
+    }
+    if (R.c[0] < 0.0 && !(res <= 4.0 * DBL_EPSILON * fmax(1.0, scale * scale)))
+        for (int cand = 0; cand < 2; cand++) {
+            ga_mv Bn;
+            if (log_null_part(R, cand, &Bn) != GA_OK || !finite_mv(Bn))
+                continue;
+            double rn = log_residual(Bn, R);
+            if (rn < res)
+                res = rn, B = Bn;
+        }
     /* no real log (or not a versor): exp(log R) is not R */
-    if (!(ga_mv_maxabs(ga_mv_sub(ga_mv_exp(B), R)) <= tol * scale))
+    if (!(res <= tol * scale))
         return GA_ERR_DOMAIN;
     *out = B;
     return GA_OK;
@@ -555,6 +778,44 @@ static double split_residual(ga_mv b, ga_mv x, ga_mv y)
     return fmax(sum, fmax(ga_mv_maxabs(ga_mv_sub(ga_mv_gp(x, y), ga_mv_gp(y, x))),
                           fmax(ga_mv_maxabs(ga_mv_grade(ga_mv_gp(x, x), 4)),
                                ga_mv_maxabs(ga_mv_grade(ga_mv_gp(y, y), 4)))));
+}
+
+/* b = tE + N split in the rigid frame of its null part (as log_null_part):
+   there b is a generator Omega + T n, and with a the axis of Omega,
+   B2 = (T.a) a n / |a|^2 (the translation along the axis, null) and
+   B1 = Omega + T_perp n (the rotation about the axis), which commute and are
+   2-blades to rounding of |b| whatever t is; the l forms find E from
+   t^2 = -<b^2>_0, known only to u |b|^2. 0 where b has no null vector. */
+static int split_null_part(ga_mv b, int cand, ga_mv *x, ga_mv *y)
+{
+    double M[5][5], n[5];
+    ga_mv V;
+    for (int j = 0; j < 5; j++) {
+        ga_mv v = ga_mv_lc(ga_mv_blade(GA_BLADE_E1 + j), b);
+        for (int i = 0; i < 5; i++) M[i][j] = v.c[GA_BLADE_E1 + i];
+    }
+    if (!null_normal(M, cand, n) || !to_infinity(n, &V))
+        return 0;
+    ga_mv br = ga_mv_grade(sandwich(V, b), 2);
+    static const int in4[3] = {GA_BLADE_E14, GA_BLADE_E24, GA_BLADE_E34},
+                     in5[3] = {GA_BLADE_E15, GA_BLADE_E25, GA_BLADE_E35};
+    double a[3] = {br.c[GA_BLADE_E23], -br.c[GA_BLADE_E13], br.c[GA_BLADE_E12]}, t[3];
+    double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], ta = 0.0, pa = 0.0;
+    for (int i = 0; i < 3; i++) t[i] = 0.5 * br.c[in4[i]] + 0.5 * br.c[in5[i]], ta += t[i] * a[i];
+    ga_mv B1 = ga_mv_zero(), B2 = ga_mv_zero();
+    B1.c[GA_BLADE_E12] = br.c[GA_BLADE_E12], B1.c[GA_BLADE_E13] = br.c[GA_BLADE_E13];
+    B1.c[GA_BLADE_E23] = br.c[GA_BLADE_E23];
+    double tp[3];
+    for (int i = 0; i < 3; i++) tp[i] = aa > 0.0 ? t[i] - ta / aa * a[i] : 0.0, pa += tp[i] * a[i];
+    for (int i = 0; i < 3; i++) {
+        double perp = aa > 0.0 ? tp[i] - pa / aa * a[i] : 0.0; /* once more: T_perp.a is rounding */
+        B1.c[in4[i]] = B1.c[in5[i]] = perp;
+        B2.c[in4[i]] = B2.c[in5[i]] = t[i] - perp;
+    }
+    ga_mv Vr = ga_mv_reverse(V);
+    *x = ga_mv_grade(sandwich(Vr, B1), 2);
+    *y = ga_mv_grade(sandwich(Vr, B2), 2);
+    return 1;
 }
 
 static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
@@ -637,6 +898,15 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
             continue;
         ga_mv x = lin(l1 / dl, b, -0.5 / dl, sq.bq), y = lin(0.5 / dl, sq.bq, -l2 / dl, b);
         double res = split_residual(b, x, y);
+        if (res < best) {
+            best = res;
+            *b1 = x;
+            *b2 = y;
+        }
+    }
+    for (int cand = 0; cand < 2 && best > 8.0 * DBL_EPSILON; cand++) {
+        ga_mv x, y;
+        double res = split_null_part(b, cand, &x, &y) ? split_residual(b, x, y) : INFINITY;
         if (res < best) {
             best = res;
             *b1 = x;
