@@ -441,6 +441,35 @@ static void check_exp_log(long n)
     tk_expect(st == GA_OK && rdiff(ga_rotor_exp(L), m1) < 8 * EPS, "literal log of -T_a (a turn of 2 pi)");
     st = ga_rotor_log(m1, &L);
     tk_expect(st == GA_OK && gdiff(L, gen(v3(0, 0, 0), v3(0, 0, 2))) == 0, "principal log of -T_a is a");
+    /* near a full turn a screw's translation along its axis must not leak:
+       p_perp is perpendicular to the axis only to rounding of |p|, and the
+       literal log divides it by sin(phi) ~ pi - phi (2.4e-12 at 1e-4 before
+       that rounding was taken out again along the axis) */
+    tk_check w_full = tk_begin("   exp(l_literal(R)) = R, screws turning 2 pi - 2d, d in [1e-12, 0.3]",
+                               8 * EPS);
+    for (long i = 0; i < n; i++) {
+        double d = tk_loguni(&rng, 1e-12, 0.3), shift = tk_range(&rng, -3, 3);
+        ga_screw sc = {2 * (PI - d), tk_unit(&rng), vscale(tk_unit(&rng), tk_uni(&rng)), 0, shift};
+        ga_rotor R = ga_rotor_from_screw(sc);
+        /* the axis b = sin(phi) u as a product rounds it: to u absolutely,
+           u / d relative, which tilts it off p (as in ga_mv_log's rigid frame) */
+        R.e12 += tk_range(&rng, -EPS, EPS), R.e13 += tk_range(&rng, -EPS, EPS),
+            R.e23 += tk_range(&rng, -EPS, EPS);
+        st = ga_rotor_log_literal(R, &L);
+        tk_add(&w_full, st == GA_OK ? rdiff(ga_rotor_exp(L), R) / fmax(1, fabs(shift)) : INFINITY);
+    }
+    tk_end(&w_full);
+    /* the rotor that showed it: ga_mv_log's rigid frame of -exp(tE + N),
+       pi - phi = 1e-4, p nearly along the axis (|p_perp| = 1.1e-5): exp of
+       the literal log missed it by 2.4e-12 */
+    ga_rotor rf = {-0.99999999500000003,   -2.6274830373048919e-05, -4.8660830899980295e-05,
+                   8.3317205856422663e-05, -0.41710544675477335,    -0.24360720913890299,
+                   0.13154961530410189,    5.0062633659095169e-05};
+    tk_check w_rf = tk_begin("   exp(l_literal(R)) = R, the rotor near 2 pi from ga_mv_log's rigid frame",
+                             8 * EPS);
+    st = ga_rotor_log_literal(rf, &L);
+    tk_add(&w_rf, st == GA_OK ? rdiff(ga_rotor_exp(L), rf) : INFINITY);
+    tk_end(&w_rf);
 }
 
 static void check_matrix(long n)

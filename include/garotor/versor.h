@@ -58,14 +58,17 @@ ga_mv ga_mv_exp(ga_mv B);
  *  GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_DOMAIN when R is not a rotor to a
  *  relative 1e-9 (odd parts, R ~R != 1, or exp(log R) != R to 1e-9), which is
  *  where R has no real logarithm.
- *  Accuracy: exp(log R) = R to 1e-13 of |R| on the principal domain
- *  (tests/test_versor.c, docs/versors.md), with one known loss: a rotation
- *  by a half-angle delta from a half turn of R's sign beside a null part pN
- *  (-exp(delta E + p N), or exp((pi - delta) E + p N)) is reached only to
- *  about u (|p|/delta)^4 of |R| (5.2e-12 at delta = 0.3, 4.9e-10 at 0.1),
- *  and below delta ~ 0.05 that exceeds the 1e-9 check, so GA_ERR_DOMAIN is
- *  returned although R has a log (13% of draws at delta = 0.03, |p| <= 3;
- *  docs/versors.md). */
+ *  Accuracy (tests/test_versor.c, docs/versors.md): exp(log R) = R to 1e-13
+ *  of |R| on the principal domain and beyond it, measured on 10^4 rotors of
+ *  each family (`test_versor 10`, worst 7.9e-14, for -R of two rotations),
+ *  including a rotation near a full turn beside a null part
+ *  (-exp(delta E + N): -T for a translation T, delta from 1e-12 to 0.3, and
+ *  0) and log(exp(B)) = B to 1e-13 where every elliptic half-angle is below
+ *  pi/2. Where <R>_0 < 0 and the closed forms leave more than rounding, two
+ *  other forms are tried and the one with the smallest |exp(B) - R| kept:
+ *  log(-R) - pi E (E the unit plane of log(-R)'s part with the smaller
+ *  angle, from ga_mv_split), and, beside a null part, the log in the frame
+ *  where R is rigid (docs/versors.md, "A null part"). */
 int ga_mv_log(ga_mv R, ga_mv *out);
 
 /** B's bivector part as a sum B1 + B2 of two commuting 2-blades (B1 B2 =
@@ -76,15 +79,16 @@ int ga_mv_log(ga_mv R, ga_mv *out);
  *  not unique and any one is returned. Otherwise (a rotation and a boost, a
  *  null part) by B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2)
  *  (l2 = 0 tried as well beside a null part), keeping the split with the
- *  smallest residual. A 2-blade gives (B, 0). Accuracy (tests/test_versor.c
- *  section 7, 10^4 rotors per family with `test_versor 10`): the factors of
- *  ga_mv_factor multiply to R, commute and are simple to 2.6e-14 of |R| for
- *  rotations, boosts, null parts, their pairs (isoclinic and near-isoclinic
- *  included) and dense random bivectors; a rotation by t beside a
- *  null part N (a screw with a small turn) only to about 20 u (|B|/t)^3, as
- *  t^2 = -<B^2>_0 is known to u |B|^2 and B1 is B less B2 ~ N; where that
- *  exceeds |q| ~ t |N| (t below ~2e-4 |B|), (B, 0) is returned, simple to
- *  |q|. GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
+ *  smallest residual; a rotation t beside a null part N (a screw, or one
+ *  seen in another conformal frame) in the frame where it is rigid, which
+ *  needs no t^2 (known only to u |B|^2 from <B^2>_0) and holds for any t
+ *  down to 0 (docs/versors.md, "A null part"). A 2-blade gives (B, 0).
+ *  Accuracy (tests/test_versor.c section 7, 10^4 rotors per family with
+ *  `test_versor 10`): the factors of ga_mv_factor multiply to R, commute
+ *  and are simple to 5.3e-14 of |R| for every family (rotations, boosts,
+ *  null parts, their pairs, isoclinic and near-isoclinic, a turn of 1e-12
+ *  to 1e-4 beside a null part, dense random bivectors).
+ *  GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
  *  GA_ERR_DOMAIN when a part overflows. */
 int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
 
