@@ -274,6 +274,8 @@ static ga_mv exp_huge_parts(ga_mv B)
     return out;
 }
 
+static int exp_null_part(ga_mv b, ga_mv *out);
+
 ga_mv ga_mv_exp(ga_mv B)
 {
     /* Beyond max |B| = 8 the coefficients below lose u |B|^2 to the
@@ -285,6 +287,18 @@ ga_mv ga_mv_exp(ga_mv B)
     ga_mv b = ga_mv_grade(B, 2);
     double m = ga_mv_maxabs(b);
     if (ga_mv_isfinite(b) && m > 8.0) {
+        /* a null part larger than the others (both squares below |B|^2/64):
+           there both forms lose ~u |B|^2 (4e-9 for a turn beside a null part
+           of 300), and its rigid frame has the exp exact (a part whose
+           square is that of B, as a huge rotation, is left to exp_huge: the
+           frame's rounding would change its angle by u |B|) */
+        ga_mv r;
+        if (m <= 0x1p240) {
+            bsquare h0 = square_of(b);
+            double q2 = m * m / 64.0;
+            if (fabs(h0.s) <= q2 && sqrt(fabs(h0.qq)) <= q2 && exp_null_part(b, &r))
+                return r;
+        }
         if (m > 0x1p240)
             return exp_huge(b);
         bsquare h = square_of(b);
@@ -548,17 +562,70 @@ static ga_mv generator_mv(ga_generator g)
     return B;
 }
 
+/* The 5x5 matrix of x -> x _| b, whose kernel is b's null vector */
+static void contraction_matrix(ga_mv b, double M[5][5])
+{
+    for (int j = 0; j < 5; j++) {
+        ga_mv v = ga_mv_lc(ga_mv_blade(GA_BLADE_E1 + j), b);
+        for (int i = 0; i < 5; i++) M[i][j] = v.c[GA_BLADE_E1 + i];
+    }
+}
+
+/* The generator of a bivector held in a rigid frame, and the largest part of
+   it that is not rigid (e45, e_i4 - e_i5): rounding when the frame is right */
+static ga_generator rigid_part(ga_mv br, double *rest)
+{
+    ga_generator g = {br.c[GA_BLADE_E12],
+                      br.c[GA_BLADE_E13],
+                      br.c[GA_BLADE_E23],
+                      0.5 * br.c[GA_BLADE_E14] + 0.5 * br.c[GA_BLADE_E15],
+                      0.5 * br.c[GA_BLADE_E24] + 0.5 * br.c[GA_BLADE_E25],
+                      0.5 * br.c[GA_BLADE_E34] + 0.5 * br.c[GA_BLADE_E35]};
+    *rest = fmax(fabs(br.c[GA_BLADE_E45]),
+                 fmax(fabs(0.5 * br.c[GA_BLADE_E14] - 0.5 * br.c[GA_BLADE_E15]),
+                      fmax(fabs(0.5 * br.c[GA_BLADE_E24] - 0.5 * br.c[GA_BLADE_E25]),
+                           fabs(0.5 * br.c[GA_BLADE_E34] - 0.5 * br.c[GA_BLADE_E35]))));
+    return g;
+}
+
+/* exp(b) through the rigid frame of its null part (ga_rotor_exp there, exact
+   for any angle and translation): 0 where b has none, that is where the part
+   of V b ~V that is not rigid exceeds rounding of |b| (two rotations, a
+   boost) for both candidates of n */
+static int exp_null_part(ga_mv b, ga_mv *out)
+{
+    double M[5][5], n[5], m = ga_mv_maxabs(b), best = 16.0 * DBL_EPSILON * m;
+    contraction_matrix(b, M);
+    int found = 0;
+    for (int cand = 0; cand < 2; cand++) {
+        ga_mv V;
+        double rest;
+        if (!null_normal(M, cand, n) || !to_infinity(n, &V))
+            continue;
+        ga_generator g = rigid_part(ga_mv_grade(sandwich(V, b), 2), &rest);
+        if (!(rest <= best))
+            continue;
+        best = rest, found = 1;
+        *out = sandwich(ga_mv_reverse(V), ga_rotor_to_mv(ga_rotor_exp(g)));
+    }
+    return found;
+}
+
 /* log R through the rigid frame of its null part, candidate n as null_normal;
    GA_ERR_DOMAIN where R is not rigid there (no null part, or not this n) */
 static int log_null_part(ga_mv R, int cand, ga_mv *out)
 {
     double M[5][5], n[5];
     ga_mv Rr = ga_mv_reverse(R), V;
-    for (int j = 0; j < 5; j++) {
-        ga_mv y = ga_mv_gp(ga_mv_gp(R, ga_mv_blade(GA_BLADE_E1 + j)), Rr);
-        for (int i = 0; i < 5; i++) M[i][j] = y.c[GA_BLADE_E1 + i] - (i == j);
+    if (cand < 2) {
+        contraction_matrix(ga_mv_grade(R, 2), M);
+    } else {
+        for (int j = 0; j < 5; j++) {
+            ga_mv y = ga_mv_gp(ga_mv_gp(R, ga_mv_blade(GA_BLADE_E1 + j)), Rr);
+            for (int i = 0; i < 5; i++) M[i][j] = y.c[GA_BLADE_E1 + i] - (i == j);
+        }
     }
-    if (!null_normal(M, cand, n) || !to_infinity(n, &V))
+    if (!null_normal(M, cand % 2, n) || !to_infinity(n, &V))
         return GA_ERR_DOMAIN;
     ga_rotor r;
     ga_generator g;
@@ -715,41 +782,65 @@ int ga_mv_log(ga_mv R, ga_mv *out)
     if (!(ga_mv_maxabs(rr) <= tol * fmax(1.0, scale * scale)))
         return GA_ERR_DOMAIN;
 
-    ga_mv B;
-    int st = log_closed(R, tol, &B);
-    double res = st == GA_OK ? log_residual(B, R) : INFINITY;
-    /* R0 < 0 beside a null part: exp(tE + N) with t in (pi/2, pi], where
-       the closed forms lose u (|N|/(pi - t))^4 and fail near pi (a rotation
-       by nearly a full turn times a translation, transversion, ...): the
-       rigid frame, kept where it leaves the smaller residual */
-    if (R.c[0] < 0.0 && !(res <= 4.0 * DBL_EPSILON * fmax(1.0, scale * scale))) {
+    /* Candidates: the closed forms; where they leave more than rounding,
+       the log in the rigid frame of a null part, with n from <R>_2 (entries
+       ~|R|), log(-R) - pi E (R0 < 0), and the rigid frame with n from
+       R x ~R - x (entries ~|R|^2, whose rounding moves the log itself,
+       though not exp(log R), further from B), each n by the metric normal
+       and by M^2. The first in the order: rigid frame from <R>_2 (exact
+       where R has a null part: the closed forms' log of a turn beside a null
+       part of 3000 was 3e-7 from B, this one 1e-9), closed forms, log(-R) -
+       pi E, the others, whose residual |exp(B) - R| is within twice the
+       smallest, or at the floor that exp's own rounding sets, is kept: the
+       residuals of good ones differ by that rounding only. */
+    ga_mv cand[7];
+    double cres[7];
+    int nc = 0;
+    if (log_closed(R, tol, &cand[nc]) == GA_OK)
+        cres[nc] = log_residual(cand[nc], R), nc++;
+    if (!(nc == 1 && cres[0] <= 4.0 * DBL_EPSILON * fmax(1.0, scale * scale))) {
+        ga_mv Lm, P[2], X;
+        /* first in the order */
+        if (log_null_part(R, 0, &X) == GA_OK && finite_mv(X)) {
+            for (int i = nc; i > 0; i--) cand[i] = cand[i - 1], cres[i] = cres[i - 1];
+            cand[0] = X, cres[0] = log_residual(X, R), nc++;
+        }
         /* log(-R) - pi E, E the unit plane of log(-R)'s elliptic part with
            the smaller angle (which thus takes the sign, as the principal
            branch says): for two rotations both near a full turn the Spin(4)
            form takes J from q = <log(-R)^2>_4 ~ t1 t2, known to u/(t1 t2) */
-        ga_mv Lm, P[2];
-        if (log_closed(ga_mv_scale(R, -1.0), tol, &Lm) == GA_OK && ga_mv_split(Lm, &P[0], &P[1]) == GA_OK) {
+        if (R.c[0] < 0.0 && log_closed(ga_mv_scale(R, -1.0), tol, &Lm) == GA_OK &&
+            ga_mv_split(Lm, &P[0], &P[1]) == GA_OK) {
             double l[2] = {ga_mv_gp(P[0], P[0]).c[0], ga_mv_gp(P[1], P[1]).c[0]};
             int i = l[0] < 0.0 && (!(l[1] < 0.0) || l[0] >= l[1]) ? 0 : 1;
             if (l[i] < 0.0) {
-                ga_mv Bn = lin(1.0, Lm, -3.14159265358979323846 / sqrt(-l[i]), P[i]);
-                double rn = log_residual(Bn, R);
-                if (rn < res)
-                    res = rn, B = Bn;
+                cand[nc] = lin(1.0, Lm, -3.14159265358979323846 / sqrt(-l[i]), P[i]);
+                cres[nc] = log_residual(cand[nc], R), nc++;
             }
         }
+        for (int c = 1; c < 4; c++)
+            if (log_null_part(R, c, &cand[nc]) == GA_OK && finite_mv(cand[nc]))
+                cres[nc] = log_residual(cand[nc], R), nc++;
     }
-    if (R.c[0] < 0.0 && !(res <= 4.0 * DBL_EPSILON * fmax(1.0, scale * scale)))
-        for (int cand = 0; cand < 2; cand++) {
-            ga_mv Bn;
-            if (log_null_part(R, cand, &Bn) != GA_OK || !finite_mv(Bn))
-                continue;
-            double rn = log_residual(Bn, R);
-            if (rn < res)
-                res = rn, B = Bn;
-        }
-    /* no real log (or not a versor): exp(log R) is not R */
-    if (!(res <= tol * scale))
+    double res = INFINITY;
+    for (int i = 0; i < nc; i++) res = fmin(res, cres[i]);
+    /* size = |R| + 4 bounds the log's size (a null part |N| gives |R| ~
+       |N|, angles add at most pi), not a candidate's own, which a wrong one
+       could make large; exp of a log of that size is known to ~u size^2,
+       the floor taken as 4 u |R|^2 (8e-15 of |R| at |R| = 3) */
+    double size = scale + 4.0, floor = 4.0 * DBL_EPSILON * fmax(1.0, scale * scale) * scale;
+    int pick = 0;
+    while (pick < nc && !(cres[pick] <= fmax(2.0 * res, floor))) pick++;
+    if (pick == nc)
+        return GA_ERR_DOMAIN;
+    ga_mv B = cand[pick];
+    res = cres[pick];
+    /* no real log (or not a versor): exp(log R) is not R. exp of a log of
+       size |B| is itself known only to ~u |B|^2 of |R| (the rounding of B,
+       magnified: a null part of 3000 conjugated by a dilation and a
+       transversion, 5e-10), so the check allows 64 u size^2 where that is
+       above 1e-9, up to 1e-6 (|R| ~ 2.6e5), beyond which it cannot tell */
+    if (!(res <= fmin(1e-6, fmax(tol, 64.0 * DBL_EPSILON * size * size)) * scale))
         return GA_ERR_DOMAIN;
     *out = B;
     return GA_OK;
@@ -790,10 +881,7 @@ static int split_null_part(ga_mv b, int cand, ga_mv *x, ga_mv *y)
 {
     double M[5][5], n[5];
     ga_mv V;
-    for (int j = 0; j < 5; j++) {
-        ga_mv v = ga_mv_lc(ga_mv_blade(GA_BLADE_E1 + j), b);
-        for (int i = 0; i < 5; i++) M[i][j] = v.c[GA_BLADE_E1 + i];
-    }
+    contraction_matrix(b, M);
     if (!null_normal(M, cand, n) || !to_infinity(n, &V))
         return 0;
     ga_mv br = ga_mv_grade(sandwich(V, b), 2);
