@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """The figures the docs quote from the test programs, against what they print.
 
     doc_figures_check.py BUILD_DIR          check (the default suite runs this)
@@ -28,7 +28,7 @@ program and, per column, where each number comes from:
   parentheses (outside quotes) is for the reader and is skipped.
 - The output is read two ways. A check line of tests/testkit.h,
   "ok   NAME   n=1000    worst 1.425e-15  tol 1.0e-13", gives the fields
-  worst, tol and n of NAME. A program whose first line is not a check line
+  worst, tol and n of NAME ("least X  >= Y": least, and tol for Y). A program whose first line is not a check line
   prints a table: its first line names the columns (separated by two spaces
   or more) and each further line is a row named by its first word; FIELD is a
   column's name (soak_c2_keys: "keys", "v jump", ...).
@@ -51,6 +51,10 @@ in docs/versors.md's tables; soak_c2_keys prints the same either way.
 ga_mv_gp's own code paths (SSE2, AVX2, AVX-512F) give the same bits
 (tests/test_gp_blocks.c).
 
+Before the docs, the checker runs on a page and an output of its own
+(self_test): a figure that differs, a tolerance, a line not printed, a table
+without a comment, and what --fix writes.
+
 --fix writes the printed numbers into the cells in place, nothing else (not
 the labels, not the prose around the table; a missing check stays a
 failure). Exit status 0 when every figure matches (after --fix: when every
@@ -66,7 +70,7 @@ import sys
 NUMBER = re.compile(r"(?<![\w.+-])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])")
 # how tests/testkit.h prints a check that has a measured figure
 CHECK = re.compile(r"^(ok|FAIL)\s+(.*?)\s+n=(\d+)\s+(.*)$")
-WORST = re.compile(r"worst (\S+)\s+tol (\S+)")
+WORST = re.compile(r"(worst|least) (\S+)\s+(?:tol|>=) (\S+)")
 LOOKS_MEASURED = re.compile(r"\b\d\.\d{3}e[-+]\d{2}\b")
 COMMENT = re.compile(r"^<!-- figures(?: not checked)?:")
 SPEC = re.compile(r'([A-Za-z][\w-]*(?: [\w-]+)*) of "([^"]*)"')
@@ -88,7 +92,7 @@ def label(cell):
     return cell.replace("`", "").strip()
 
 
-def read_output(prog, text):
+def read_output(text):
     """{name: {field: printed}} of one program's output; names printed twice
     map to None (ambiguous)."""
     out = {}
@@ -104,7 +108,7 @@ def read_output(prog, text):
         fields = {"n": m.group(3)}
         w = WORST.match(m.group(4))
         if w:
-            fields["worst"], fields["tol"] = w.group(1), w.group(2)
+            fields[w.group(1)], fields["tol"] = w.group(2), w.group(3)
         put(m.group(2), fields)
     if lines and not CHECK.match(lines[0]):
         head = re.split(r"\s{2,}", lines[0].strip())
@@ -247,7 +251,7 @@ def run(build, src, command, cache):
         text = p.stdout.decode("utf-8", "replace")
         if p.returncode != 0:
             raise Fail("%s exits with status %d:\n%s" % (" ".join(command), p.returncode, text[-2000:]))
-        cache[key] = read_output(command[0], text)
+        cache[key] = read_output(text)
     return cache[key]
 
 
@@ -310,12 +314,81 @@ def replace_cells(line, old, new):
     return out + line[pos:]
 
 
+def check_doc(doc, text, build, src, cache, fix):
+    """(text, after --fix), differences, other failures, notes, tables checked) of one page."""
+    fails, differ, checked = [], [], 0
+    lines = text.split("\n")
+    try:
+        found, bare, notes = find_tables(doc, lines)
+    except Fail as e:
+        return text, [], [str(e)], [], 0
+    fails += bare
+    for t, t0, t1 in found:
+        try:
+            out = run(build, src, t.command, cache)
+        except Fail as e:
+            fails.append("%s: %s" % (t.where, e))
+            continue
+        check_table(t, t0, t1, out, fix, fails, differ)
+        checked += 1
+    return "\n".join(lines), differ, fails, notes, checked
+
+
+SELF_DOC = """Some prose with 1.000e-15 in it, not in a table.
+
+<!-- figures: prog (a remark, "quoted" too)
+     column 2: worst of "a: {row}"
+     column 3: tol of "a: {row}", worst of "b"
+     row "Alpha β" is "alpha"
+-->
+
+| family | x | y |
+| --- | --- | --- |
+| Alpha β |  1.000e-15 | held to 1e-13 (and 2.000e-16) |
+| `gamma` | 3.000e-15 | 1e-9, 2.000e-16 |
+| delta | 0 | 1e-13 and 2.000e-16 |
+
+| bare | 4.000e-15 |
+| --- | --- |
+| x | 1 |
+"""
+SELF_OUT = """ok   a: alpha   n=10    worst 1.000e-15  tol 1.0e-13
+ok   a: gamma   n=10    worst 3.001e-15  tol 1.0e-13
+ok   b          n=1     worst 2.000e-16  tol 1.0e-13
+"""
+
+
+def self_test():
+    """The checker on a page of its own, against an output of its own: the
+    failures it must report, and what --fix must write."""
+    cache = {("prog",): read_output(SELF_OUT)}
+    text, differ, fails, _, n = check_doc("self.md", SELF_DOC, "", "", cache, False)
+    want_differ = ['self.md:12: row "gamma", column 2 ("x"): shows 3.000e-15, prog prints worst 3.001e-15 for "a: gamma"',
+                   'self.md:12: row "gamma", column 3 ("y"): shows 1e-9, prog prints tol 1.0e-13 for "a: gamma"']
+    ok = text == SELF_DOC and n == 1 and differ == want_differ and len(fails) == 3 and \
+        fails[0].startswith("self.md:15: a table with a figure written like a test's (4.000e-15)") and \
+        'row "delta", column 2 ("x"): prog prints no worst of "a: delta"' in fails[1] and \
+        'row "delta", column 3 ("y"): prog prints no tol of "a: delta"' in fails[2]
+    text, differ, fails, _, _ = check_doc("self.md", SELF_DOC, "", "", cache, True)
+    ok = ok and differ == want_differ and text == SELF_DOC.replace(
+        "| `gamma` | 3.000e-15 | 1e-9, 2.000e-16 |", "| `gamma` | 3.001e-15 | 1e-13, 2.000e-16 |")
+    text, differ, _, _, _ = check_doc("self.md", text, "", "", cache, False)
+    if not ok or differ:
+        raise Fail("the checker does not find on a page of its own what it should (tests/doc_figures_check.py, "
+                   "self_test)")
+
+
 def main(argv):
     fix = "--fix" in argv
     args = [a for a in argv[1:] if a != "--fix"]
     if len(args) != 1:
         sys.stderr.write(__doc__.split("\n\n")[1] + "\n")
         return 2
+    try:
+        self_test()
+    except Fail as e:
+        print("FAIL: %s" % e)
+        return 1
     build = os.path.abspath(args[0])
     src = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     docs = [os.path.join("docs", f) for f in sorted(os.listdir(os.path.join(src, "docs"))) if f.endswith(".md")]
@@ -324,25 +397,11 @@ def main(argv):
     for doc in docs:
         with open(os.path.join(src, doc), encoding="utf-8") as f:
             text = f.read()
-        lines = text.split("\n")
-        try:
-            found, bare, ns = find_tables(doc, lines)
-        except Fail as e:
-            fails.append(str(e))
-            continue
-        fails += bare
-        notes += ns
-        for t, t0, t1 in found:
-            try:
-                out = run(build, src, t.command, cache)
-            except Fail as e:
-                fails.append("%s: %s" % (t.where, e))
-                continue
-            check_table(t, t0, t1, out, fix, fails, differ)
-            checked += 1
-        if fix and "\n".join(lines) != text:
+        new, d, fl, ns, n = check_doc(doc, text, build, src, cache, fix)
+        differ, fails, notes, checked = differ + d, fails + fl, notes + ns, checked + n
+        if fix and new != text:
             with open(os.path.join(src, doc), "w", encoding="utf-8") as f:
-                f.write("\n".join(lines))
+                f.write(new)
     for n in notes:
         print("note: " + n)
     if fix:
