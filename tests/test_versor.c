@@ -167,10 +167,16 @@ static ga_mv family(tk_rng *r, int f, double amax)
 /* a random conformal rotor: rigid x dilation x transversion, built without exp/log */
 static ga_mv conformal_rotor(tk_rng *r)
 {
-    ga_vec3 a = tk_scale(tk_unit(r), tk_range(r, 0, 1.5)), b = tk_scale(tk_unit(r), tk_range(r, 0, 0.3));
-    ga_mv R = ga_mv_gp(ga_versor_rotation(tk_unit(r), tk_range(r, 0, TK_PI)), ga_versor_translation(a));
+    /* one draw per statement (testkit.h): a size before its direction */
+    double ka = tk_range(r, 0, 1.5);
+    ga_vec3 a = tk_scale(tk_unit(r), ka);
+    double kb = tk_range(r, 0, 0.3);
+    ga_vec3 b = tk_scale(tk_unit(r), kb);
+    double ang = tk_range(r, 0, TK_PI);
+    ga_mv R = ga_mv_gp(ga_versor_rotation(tk_unit(r), ang), ga_versor_translation(a));
+    double s = tk_loguni(r, 0.5, 2.0);
     ga_mv D;
-    if (ga_versor_dilation(tk_scale(tk_unit(r), 0.5), tk_loguni(r, 0.5, 2.0), &D) != GA_OK)
+    if (ga_versor_dilation(tk_scale(tk_unit(r), 0.5), s, &D) != GA_OK)
         return ga_mv_scalar(NAN);
     return ga_mv_gp(ga_mv_gp(R, D), ga_versor_transversion(b));
 }
@@ -239,7 +245,8 @@ int main(int argc, char **argv)
         tk_check c = tk_beginf(1e-13, "exp vs expm(L(B)) 1: %s", fam_name[f]);
         for (long n = 0; n < 1000 * reps; n++) {
             double amax = f == 11 ? TK_PI / 2 : (n % 2 ? 3.0 : 1.5);
-            ga_mv B = conjugated(conformal_rotor(&rng), family(&rng, f, amax));
+            ga_mv B0 = family(&rng, f, amax); /* one draw per statement (testkit.h) */
+            ga_mv B = conjugated(conformal_rotor(&rng), B0);
             tk_add(&c, rel(ga_mv_exp(B), ref_exp(B)));
         }
         tk_end(&c);
@@ -277,7 +284,8 @@ int main(int argc, char **argv)
                1/(pi - t1 - t2) whatever the method: those families keep
                t1 + t2 <= 2.8 */
             int two = f == 3 || f == 4 || f == 7;
-            ga_mv B = conjugated(conformal_rotor(&rng), family(&rng, f, two ? 1.4 : TK_PI / 2 - 1e-9));
+            ga_mv B0 = family(&rng, f, two ? 1.4 : TK_PI / 2 - 1e-9); /* one draw per statement (testkit.h) */
+            ga_mv B = conjugated(conformal_rotor(&rng), B0);
             if (f == 10)
                 B = ga_mv_scale(B, 0.8); /* |angles| < pi/2 for dense ones */
             ga_mv R = ga_mv_exp(B), L = ga_mv_zero();
@@ -420,8 +428,10 @@ int main(int argc, char **argv)
 
     /* 5. versors against Euclidean formulas */
     for (long n = 0; n < 2000 * reps; n++) {
-        ga_vec3 x = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 4)),
-                c = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 3));
+        double kx = tk_range(&rng, 0, 4);
+        ga_vec3 x = tk_scale(tk_unit(&rng), kx);
+        double kc = tk_range(&rng, 0, 3);
+        ga_vec3 c = tk_scale(tk_unit(&rng), kc);
         ga_vec3 u = tk_unit(&rng);
         double d = tk_range(&rng, -2, 2), rr = tk_range(&rng, 0.2, 3), s = tk_loguni(&rng, 0.1, 10);
         double k = tk_range(&rng, 0.3, 3); /* a non-unit plane normal */
@@ -438,7 +448,8 @@ int main(int argc, char **argv)
         if (ga_versor_dilation(c, s, &D) == GA_OK)
             check_map("dilation: c + s (x - c)", D, x,
                       (ga_vec3){c.x + s * xc.x, c.y + s * xc.y, c.z + s * xc.z});
-        ga_vec3 b = tk_scale(tk_unit(&rng), tk_range(&rng, 0, 0.2));
+        double kb = tk_range(&rng, 0, 0.2);
+        ga_vec3 b = tk_scale(tk_unit(&rng), kb);
         double x2 = dot(x, x), den = 1 - 2 * dot(b, x) + dot(b, b) * x2;
         check_map("transversion: (x - |x|^2 b)/(1 - 2 b.x + |b|^2|x|^2)", ga_versor_transversion(b), x,
                   (ga_vec3){(x.x - x2 * b.x) / den, (x.y - x2 * b.y) / den, (x.z - x2 * b.z) / den});
@@ -494,7 +505,8 @@ int main(int argc, char **argv)
         tk_check cs = tk_beginf(1e-13, "factor: R1, R2 simple: %s", fam_name[f]);
         for (long n = 0; n < 1000 * reps; n++) {
             int two = f == 3 || f == 4 || f == 7;
-            ga_mv B = conjugated(conformal_rotor(&rng), family(&rng, f, two ? 1.4 : 1.5));
+            ga_mv B0 = family(&rng, f, two ? 1.4 : 1.5); /* one draw per statement (testkit.h) */
+            ga_mv B = conjugated(conformal_rotor(&rng), B0);
             if (f == 10)
                 B = ga_mv_scale(B, 0.8);
             ga_mv R = ga_mv_exp(B), R1, R2;

@@ -66,7 +66,7 @@ ga_mv ga_mv_exp(ga_mv B);
  *  where R has no real logarithm.
  *  Accuracy (tests/test_versor.c, docs/versors.md): exp(log R) = R to 1e-13
  *  of |R| on the principal domain and beyond it, measured on 10^4 rotors of
- *  each family (`test_versor 10`, worst 7.9e-14, for -R of two rotations),
+ *  each family (`test_versor 10`, worst 8.9e-14, for -R of two rotations),
  *  including a rotation near a full turn beside a null part
  *  (-exp(delta E + N): -T for a translation T, delta from 1e-12 to 0.3, and
  *  0) and log(exp(B)) = B to 1e-13 where every elliptic half-angle is below
