@@ -287,22 +287,18 @@ ga_mv ga_mv_exp(ga_mv B)
     ga_mv b = ga_mv_grade(B, 2);
     double m = ga_mv_maxabs(b);
     if (ga_mv_isfinite(b) && m > 8.0) {
+        if (m > 0x1p240)
+            return exp_huge(b);
+        bsquare h = square_of(b);
+        double m2 = m * m;
         /* a null part larger than the others (both squares below |B|^2/64):
            there both forms lose ~u |B|^2 (4e-9 for a turn beside a null part
            of 300), and its rigid frame has the exp exact (a part whose
            square is that of B, as a huge rotation, is left to exp_huge: the
            frame's rounding would change its angle by u |B|) */
         ga_mv r;
-        if (m <= 0x1p240) {
-            bsquare h0 = square_of(b);
-            double q2 = m * m / 64.0;
-            if (fabs(h0.s) <= q2 && sqrt(fabs(h0.qq)) <= q2 && exp_null_part(b, &r))
-                return r;
-        }
-        if (m > 0x1p240)
-            return exp_huge(b);
-        bsquare h = square_of(b);
-        double m2 = m * m;
+        if (fabs(h.s) <= m2 / 64.0 && sqrt(fabs(h.qq)) <= m2 / 64.0 && exp_null_part(b, &r))
+            return r;
         if (!(fabs(h.s) <= 0x1p-20 * m2 && fabs(h.qq) <= 0x1p-40 * m2 * m2))
             return exp_huge(b);
     }
@@ -447,9 +443,12 @@ static ga_mv unit4(ga_mv q) { return ga_mv_scale(q, 1.0 / sqrt(ga_mv_sp(q, q)));
    the metric, n.M y = 0 for every y, so n is the metric normal of M's
    columns, found by Gaussian elimination with complete pivoting on M^T
    (backward stable: an error in n lies in E's plane, u |M| / t of it, which
-   moves n by only t times that; docs/versors.md). For t below u^(1/3) of
+   R moves by only t times that; docs/versors.md). For t below u^(1/3) of
    |M| those columns are too near a rank of 2; then the columns of M^2,
-   ~ (x.n) n with t^2 of E's plane beside it, give n. */
+   ~ (x.n) n with t^2 of E's plane beside it, give n. For a rotor, M is
+   also that of x -> x _| <R>_2 (R = (c + sE)(1 + N) has <R>_2 = sE + cN,
+   with the same null vector and entries of size |R|, not |R|^2), except
+   where c ~ 0. */
 
 /* The metric normal n (n.c = 0, n5 >= 0) of the columns c of M, or 0 where
    M has rank below 4 (candidate 0), or the largest column of M^2
@@ -611,8 +610,10 @@ static int exp_null_part(ga_mv b, ga_mv *out)
     return found;
 }
 
-/* log R through the rigid frame of its null part, candidate n as null_normal;
-   GA_ERR_DOMAIN where R is not rigid there (no null part, or not this n) */
+/* log R through the rigid frame of its null part, n from <R>_2 (cand 0, 1)
+   or from x -> R x ~R - x (2, 3), by the metric normal (even cand) or M^2
+   (odd); GA_ERR_DOMAIN where R is not rigid there (no null part, or not
+   this n) */
 static int log_null_part(ga_mv R, int cand, ga_mv *out)
 {
     double M[5][5], n[5];
