@@ -610,8 +610,14 @@ static void mv_exp_log(const ga_mv *X)
     if (st == GA_OK) {
         FZ_CHECK(fz_all_finite(L.c, 32), "mv_log: GA_OK with a non-finite result");
         FZ_CHECK(ga_mv_maxabs(mv_sub(L, mv_biv(L))) == 0.0, "mv_log: not a bivector");
-        double d = ga_mv_maxabs(mv_sub(ga_mv_exp(L), *X)) / fmax(1.0, ga_mv_maxabs(*X));
-        FZ_CHECK(d <= 1e-9, "mv_log: GA_OK but exp(log X) misses X by %.3g", d);
+        /* versor.h: to 1e-9, or 64 u size^2 where that is larger (exp of a
+           log of size |L| is known no better), size = min(|X|, |L|) + 4, up
+           to 1e-6 */
+        double mx = ga_mv_maxabs(*X), d = ga_mv_maxabs(mv_sub(ga_mv_exp(L), *X)) / fmax(1.0, mx);
+        double sz = fmin(mx, ga_mv_maxabs(L)) + 4.0,
+               lim = fmin(1e-6, fmax(1e-9, 64.0 * DBL_EPSILON * sz * sz));
+        FZ_CHECK(d <= lim, "mv_log: GA_OK but exp(log X) misses X by %.3g (|X| %.3g, |log X| %.3g)", d, mx,
+                 ga_mv_maxabs(L));
     }
     if (bfin) {
         /* a bivector of the Euclidean 4-space e1234 has only elliptic parts:

@@ -825,23 +825,28 @@ int ga_mv_log(ga_mv R, ga_mv *out)
     }
     double res = INFINITY;
     for (int i = 0; i < nc; i++) res = fmin(res, cres[i]);
-    /* size = |R| + 4 bounds the log's size (a null part |N| gives |R| ~
-       |N|, angles add at most pi), not a candidate's own, which a wrong one
-       could make large; exp of a log of that size is known to ~u size^2,
-       the floor taken as 4 u |R|^2 (8e-15 of |R| at |R| = 3) */
-    double size = scale + 4.0, floor = 4.0 * DBL_EPSILON * fmax(1.0, scale * scale) * scale;
+    /* exp of a log of size |B| is known to ~u |B|^2 of |R| (the rounding of
+       B, magnified): the floor at which candidates are equally good, and
+       the round-trip check below, take size = min(|R|, |B|) (+ 4 in the
+       check: a null part |N| gives |R| ~ |N|, a boost of |B| gives |R| ~
+       e^|B|; a wrong candidate cannot widen its own check by being large) */
+    double size[7];
+    for (int i = 0; i < nc; i++) size[i] = fmin(scale, ga_mv_maxabs(cand[i]));
     int pick = 0;
-    while (pick < nc && !(cres[pick] <= fmax(2.0 * res, floor))) pick++;
+    while (pick < nc &&
+           !(cres[pick] <= fmax(2.0 * res, 4.0 * DBL_EPSILON * fmax(1.0, size[pick] * size[pick]) * scale)))
+        pick++;
     if (pick == nc)
         return GA_ERR_DOMAIN;
     ga_mv B = cand[pick];
+    double sz = size[pick] + 4.0;
     res = cres[pick];
     /* no real log (or not a versor): exp(log R) is not R. exp of a log of
        size |B| is itself known only to ~u |B|^2 of |R| (the rounding of B,
        magnified: a null part of 3000 conjugated by a dilation and a
        transversion, 5e-10), so the check allows 64 u size^2 where that is
-       above 1e-9, up to 1e-6 (|R| ~ 2.6e5), beyond which it cannot tell */
-    if (!(res <= fmin(1e-6, fmax(tol, 64.0 * DBL_EPSILON * size * size)) * scale))
+       above 1e-9, up to 1e-6 (size ~ 2.6e5), beyond which it cannot tell */
+    if (!(res <= fmin(1e-6, fmax(tol, 64.0 * DBL_EPSILON * sz * sz)) * scale))
         return GA_ERR_DOMAIN;
     *out = B;
     return GA_OK;

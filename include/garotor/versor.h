@@ -78,8 +78,8 @@ ga_mv ga_mv_exp(ga_mv B);
  *  part (section 2c: 10 to 3000) exp(log R) = R and log(exp B) = B hold to
  *  32 and 16 u |B|^2 (measured 21 and 4.6 on 3000 rotors): exp of a log
  *  of that size is known to no better, so the 1e-9 check is widened to
- *  64 u |R|^2 where that is larger, up to 1e-6 (|R| ~ 2.6e5), beyond which
- *  GA_ERR_DOMAIN. */
+ *  64 u s^2 (s = min(|R|, |B|) + 4) where that is larger, up to 1e-6
+ *  (s ~ 2.6e5), beyond which GA_ERR_DOMAIN. */
 int ga_mv_log(ga_mv R, ga_mv *out);
 
 /** B's bivector part as a sum B1 + B2 of two commuting 2-blades (B1 B2 =
