@@ -164,6 +164,65 @@ int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origi
  *  there and back) so that it adds no cancellation to the round's own. */
 ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 
+/** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
+ *  a direction of B's subspace lies in A's when the sine of its principal
+ *  angle with A's subspace is at most GA_OBJECT_JOIN_TOL, both objects held
+ *  about a local origin (below) and measured in the Euclidean metric of the
+ *  coefficients; and an input is a blade when the distance of its subspace
+ *  map from a blade's (the k-th smallest singular value of x -> x ^ X over
+ *  the largest) is at most GA_OBJECT_JOIN_TOL. The sines are linear in the
+ *  angle, so the decision is too: objects in special position up to a
+ *  relative 1e-9 of the scene's size count as in special position, and the
+ *  rounding of objects built in a few dozen operations (a few 1e-16) is far
+ *  below it. */
+#define GA_OBJECT_JOIN_TOL 1e-9
+
+/** The join of two direct objects A and B: points (null vectors), point pairs
+ *  and flat points, circles and lines, spheres and planes (grades 1 to 4;
+ *  direct forms: a dual sphere or plane s is ga_mv_dual(s) here, as a vector
+ *  is a point), the smallest blade whose subspace holds both:
+ *    - A ^ B (ga_mv_op, bit for bit) when their subspaces share no direction
+ *      (general position, DFM §5: two distinct points -> their pair, a line
+ *      and a point off it -> their plane, two skew lines -> the whole space);
+ *    - B when B's subspace holds A's, else A when A's holds B's (a point on a
+ *      line -> the line, a circle on a sphere -> the sphere, an object and a
+ *      multiple of itself -> the first);
+ *    - otherwise A ^ c1 ^ ... ^ cr, the c the r directions of B's subspace
+ *      orthogonal to A's (held about the local origin below, then moved
+ *      back): two lines through a common point -> their plane, two circles on
+ *      one sphere -> the sphere, coplanar circles -> the plane, two parallel
+ *      lines -> their plane; up to scale and sign.
+ *  The decisions are made about a local origin (A's centre, or its point
+ *  nearest the origin for a flat; B's if A has none) in units of a length
+ *  near the radii and the distance of the centres (ga_mv_localize), where
+ *  the coefficients are of the scene's size; GA_OBJECT_JOIN_TOL has the
+ *  tolerance. Status: GA_ERR_NOTFINITE for NaN/Inf in A or B (first),
+ *  GA_ERR_SINGULAR for a zero input, GA_ERR_NOTBLADE for mixed grades (a part
+ *  of another grade above GA_POINT_TOL of the largest coefficient) or a
+ *  grade-2 or -3 element that is no blade, GA_ERR_DOMAIN for a scalar or a
+ *  pseudoscalar (grade 0 or 5: no object) and where the result overflows. No
+ *  allocation. */
+int ga_mv_join(ga_mv A, ga_mv B, ga_mv *out);
+
+/** The meet of two direct objects relative to their join J (ga_mv_join), the
+ *  subspace common to both, for objects in any position (DFM §5.6):
+ *    - where J is the whole space, ga_mv_meet(A, B) bit for bit with A and B
+ *      taken as direct (two planes -> their line, two spheres -> their
+ *      circle, a circle crossing a sphere -> a point pair);
+ *    - where one holds the other, the smaller one as given: a point on a line
+ *      -> the point, a circle on a sphere -> the circle, identical objects ->
+ *      B (meet = join = the object, up to scale);
+ *    - otherwise (B _| J^-1) _| A, taken about the local origin of
+ *      ga_mv_join in the Euclidean metric of the coefficients (there every
+ *      blade J is invertible, so a null join, a tangent round, needs nothing
+ *      special; the meet as a subspace does not depend on the metric, its
+ *      scale and sign do): two intersecting lines -> their flat point, two
+ *      parallel lines -> their direction at infinity (u ^ n, read as EMPTY),
+ *      two coplanar or cospherical circles -> a point pair, real, tangent or
+ *      imaginary; a scalar where the two share no point (a point off a line).
+ *  Statuses of ga_mv_join. */
+int ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out);
+
 /** The point of O nearest x (a plane, line, sphere, circle, flat point, or the
  *  nearer point of a pair). GA_ERR_IMAGINARY for an imaginary round,
  *  GA_ERR_DOMAIN where the nearest point is not unique (x at the centre of a
