@@ -442,11 +442,11 @@ static int object_grade(ga_mv X, int *k)
    left singular vectors of the part of b's basis orthogonal to a's
    (modified Gram-Schmidt, twice). */
 typedef struct {
-    double qa[5][5], c[5][5], s[5];
+    double qa[5][5], qb[5][5], c[5][5], s[5];
 } spans;
 static void span_of(ga_mv a, int ka, ga_mv b, int kb, spans *sp)
 {
-    double qb[5][5], R[25], v[25], s[5];
+    double(*qb)[5] = sp->qb, R[25], v[25], s[5];
     int ord[5];
     blade_basis(unit_scaled(a), ka, sp->qa);
     blade_basis(unit_scaled(b), kb, qb);
@@ -507,12 +507,26 @@ static ga_mv lc_euclid(ga_mv a, ga_mv b)
     return r;
 }
 
+/* Whether n lies in the span of the orthonormal q[0..k-1] and c[0..r-1]:
+   the residual of n / |n| after projecting them out at most tol. */
+static int holds_n(double q[5][5], int k, double c[5][5], int r, double tol)
+{
+    double x[5] = {0, 0, 0, sqrt(0.5), sqrt(0.5)};
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < k + r; i++) {
+            const double *b = i < k ? q[i] : c[i - k];
+            double d = dot5(b, x);
+            for (int l = 0; l < 5; l++) x[l] -= d * b[l];
+        }
+    return col_norm(x, 5) <= tol;
+}
+
 static ga_mv vec5(const double *x) { return ga_mv_vector(x[0], x[1], x[2], x[3], x[4]); }
 
 /* The local origin o and length lambda (a power of two) of the pair: o the
    centre of A as ga_object_from_mv reads it roughly (its point closest to the
    origin for a flat), else B's, else 0; lambda near the larger of the radii
-   and the distance of the two centres, 1 when that is 0. Returns the
+   and the distance of the two centres (at least 2^-10 |o|), 1 when that is 0. Returns the
    tolerance of the decisions about (o, lambda): GA_OBJECT_JOIN_TOL, or the
    rounding that moving there may add when that is larger: 64 u |o| / lambda
    of a flat's size (its coefficients grow like the distance), 64 u
@@ -532,6 +546,10 @@ static double local_frame(ga_mv A, ga_mv B, ga_vec3 *o, double *lambda)
         ga_vec3 d = sub3(oa.centre, ob.centre);
         size = fmax(size, sqrt(dot3(d, d)));
     }
+    /* not below 2^-10 |o|: a flat's rounding, a few hundred u |o| from its
+       construction, stays below 2^18 u ~ 3e-11 of lambda (two flats that are
+       the same read as such, however near their centres) */
+    size = fmax(size, 0x1p-10 * sqrt(dot3(*o, *o)));
     *lambda = isfinite(size) && size > 0.0 ? ldexp(1.0, ilogb(size)) : 1.0;
     int round = (ha && oa.kind >= GA_OBJECT_POINTPAIR) || (hb && ob.kind >= GA_OBJECT_POINTPAIR) ||
                 (!ha && is_round(A)) || (!hb && is_round(B));
@@ -579,6 +597,10 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
         } else { /* A ^ c1 ^ ... ^ cr about the local origin, back in the world */
             ga_mv jl = unit_scaled(al);
             for (int i = 0; i < r; i++) jl = ga_mv_op(jl, vec5(sp.c[i]));
+            /* a flat (n in its subspace, as for coplanar circles) has no
+               part A ^ nbar: what rounding left there is dropped */
+            if (holds_n(sp.qa, ka, sp.c, r, tol))
+                jl = scale_n_nbar(jl, 1.0, 0.0);
             if ((st = ga_mv_localize(jl, mul3(o, -1.0 / lam), 1.0 / lam, &j)) != GA_OK)
                 return st;
         }
@@ -590,6 +612,8 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
             double jj = 0.0;
             for (int i = 0; i < 32; i++) jj += jl.c[i] * jl.c[i];
             ga_mv ml = lc_euclid(lc_euclid(bl, ga_mv_scale(ga_mv_reverse(jl), 1.0 / jj)), au);
+            if (holds_n(sp.qa, ka, sp.c, 0, tol) && holds_n(sp.qb, kb, sp.c, 0, tol))
+                ml = scale_n_nbar(ml, 1.0, 0.0); /* both flats: so is the meet */
             if (m == 0)
                 mt = ml; /* a scalar: no common point */
             else if ((st = ga_mv_localize(ml, mul3(o, -1.0 / lam), 1.0 / lam, &mt)) != GA_OK)
