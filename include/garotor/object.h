@@ -167,14 +167,21 @@ ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 /** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
  *  a direction of B's subspace lies in A's when the sine of its principal
  *  angle with A's subspace is at most GA_OBJECT_JOIN_TOL, both objects held
- *  about a local origin (below) and measured in the Euclidean metric of the
- *  coefficients; and an input is a blade when the distance of its subspace
- *  map from a blade's (the k-th smallest singular value of x -> x ^ X over
- *  the largest) is at most GA_OBJECT_JOIN_TOL. The sines are linear in the
- *  angle, so the decision is too: objects in special position up to a
- *  relative 1e-9 of the scene's size count as in special position, and the
- *  rounding of objects built in a few dozen operations (a few 1e-16) is far
- *  below it. */
+ *  about the local origin o and length lambda of ga_mv_join and measured in
+ *  the Euclidean metric of the coefficients (an orthonormal basis of each
+ *  subspace: the right singular vectors of x -> x ^ X, one-sided Jacobi; the
+ *  sines: the singular values of the part of B's basis orthogonal to A's,
+ *  modified Gram-Schmidt twice). Where the rounding that the move to (o,
+ *  lambda) adds is larger, that is the tolerance: 64 u |o| / lambda for two
+ *  flats (at most 64 u 2^10 ~ 7e-12, as lambda >= 2^-10 |o|), 64 u
+ *  (|o| / lambda)^2 with a round or a point (above 1e-9 for rounds some 400
+ *  of their sizes from the origin: hold such scenes about a local origin).
+ *  An input is a blade when the k-th smallest singular value of x -> x ^ X
+ *  (0 for a blade) is at most GA_OBJECT_JOIN_TOL times the largest (|X| for
+ *  a blade). The sines are linear in the angle, so the decisions are too:
+ *  objects in special position up to 1e-9 of lambda count as in special
+ *  position; the rounding of objects built in a few dozen operations is
+ *  far below it. */
 #define GA_OBJECT_JOIN_TOL 1e-9
 
 /** The join of two direct objects A and B: points (null vectors), point pairs
@@ -192,11 +199,13 @@ ga_mv ga_mv_meet(ga_mv A, ga_mv B);
  *      back): two lines through a common point -> their plane, two circles on
  *      one sphere -> the sphere, coplanar circles -> the plane, two parallel
  *      lines -> their plane; up to scale and sign.
- *  The decisions are made about a local origin (A's centre, or its point
- *  nearest the origin for a flat; B's if A has none) in units of a length
- *  near the radii and the distance of the centres (ga_mv_localize), where
- *  the coefficients are of the scene's size; GA_OBJECT_JOIN_TOL has the
- *  tolerance. Status: GA_ERR_NOTFINITE for NaN/Inf in A or B (first),
+ *  The decisions are made about a local origin o (A's centre, or its point
+ *  nearest the origin for a flat; B's if A has none) in units of a power of
+ *  two lambda near the larger of the radii and the distance of the two
+ *  centres, and at least 2^-10 |o| (ga_mv_localize), where the coefficients
+ *  are of the scene's size; GA_OBJECT_JOIN_TOL has the tolerance. A join
+ *  that holds n (a plane of two circles) is returned without A ^ nbar parts,
+ *  as ga_mv_localize does for flats. Status: GA_ERR_NOTFINITE for NaN/Inf in A or B (first),
  *  GA_ERR_SINGULAR for a zero input, GA_ERR_NOTBLADE for mixed grades (a part
  *  of another grade above GA_POINT_TOL of the largest coefficient) or a
  *  grade-2 or -3 element that is no blade, GA_ERR_DOMAIN for a scalar or a
