@@ -565,7 +565,9 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
         return GA_ERR_NOTFINITE;
     if ((st = object_grade(A, &ka)) != GA_OK || (st = object_grade(B, &kb)) != GA_OK)
         return st;
-    ga_mv a = ga_mv_grade(A, ka), b = ga_mv_grade(B, kb), al, bl;
+    /* the subspaces do not depend on the scale: max |coefficient| ~ 1 (by a
+       power of two, exactly), so that nothing below over- or underflows */
+    ga_mv a = unit_scaled(ga_mv_grade(A, ka)), b = unit_scaled(ga_mv_grade(B, kb)), al, bl;
     /* about the local origin, in units of the scene (ga_mv_localize); where
        that overflows, about the origin */
     ga_vec3 o;

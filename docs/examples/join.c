@@ -75,7 +75,8 @@ int main(void)
         char what[32];
         double c = k;
         snprintf(what, sizeof what, "C, circle at (%d, 0, 0)", k);
-        both(what, C, ga_circle_from_points((ga_vec3){c + 1, 0, 0}, (ga_vec3){c, 1, 0}, (ga_vec3){c - 1, 0, 0}));
+        both(what, C,
+             ga_circle_from_points((ga_vec3){c + 1, 0, 0}, (ga_vec3){c, 1, 0}, (ga_vec3){c - 1, 0, 0}));
     }
     ga_mv S = ga_mv_dual(ga_sphere_dual((ga_vec3){0, 0, 0}, 1)); /* the unit sphere, direct */
     both("C, circle x = 0 on S", C,
