@@ -159,9 +159,10 @@ int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origi
  *  or empty for parallel planes); sphere/plane with circle/line: a point pair or
  *  flat point. A vector argument is a dual sphere or plane (converted with
  *  ga_mv_dual). Zero when the objects are not in general position (their
- *  grades sum to less than 5 after dualising, or they share a flat). Two flats
- *  meet directly; with a round, the meet is taken about its centre (translated
- *  there and back) so that it adds no cancellation to the round's own. */
+ *  grades sum to less than 5 after dualising, or they share a flat):
+ *  ga_mv_meet_rel gives their meet then. Two flats meet directly; with a
+ *  round, the meet is taken about its centre (translated there and back) so
+ *  that it adds no cancellation to the round's own. */
 ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 
 /** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
