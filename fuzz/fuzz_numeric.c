@@ -41,6 +41,9 @@
  *                     where every rotation half-angle is at most 1.5 and
  *                     their sum at most 2.8 (the bound is derived at
  *                     mv_exp_log), to log's own 1e-9 elsewhere.
+ *   join, meet_rel    (op "mv", on X and blades made of its doubles) a status
+ *                     of object.h's list, finite results, and join(X, X) = X,
+ *                     meet_rel(X, 2 X) = 2 X bit for bit.
  *   mv text           (op "mv") ga_mv_format then ga_mv_parse gives the same
  *                     doubles; the bytes after the op's doubles are parsed
  *                     as text: a status, and what it reads round-trips.
@@ -442,8 +445,54 @@ static void op_screw(fz_reader *rd)
 
 /* ---- the conformal model ---------------------------------------------------- */
 
+/* ga_mv_join and ga_mv_meet_rel of A and B: a status of object.h's list
+   (NaN/Inf anywhere first), finite results with GA_OK, and where B is A or
+   2 A (the same subspace, decided alike to the bit: scaling by 2 is exact
+   through every step) the join A and the meet B as given. */
+static void join_pair(ga_mv A, ga_mv B, int same)
+{
+    int fin = fz_all_finite(A.c, 32) && fz_all_finite(B.c, 32);
+    ga_mv J, M;
+    int js = ga_mv_join(A, B, &J), ms = ga_mv_meet_rel(A, B, &M);
+    FZ_CHECK(fin ? (js == GA_OK || js == GA_ERR_SINGULAR || js == GA_ERR_NOTBLADE || js == GA_ERR_DOMAIN)
+                 : js == GA_ERR_NOTFINITE,
+             "join status %d", js);
+    FZ_CHECK(fin ? (ms == GA_OK || ms == GA_ERR_SINGULAR || ms == GA_ERR_NOTBLADE || ms == GA_ERR_DOMAIN)
+                 : ms == GA_ERR_NOTFINITE,
+             "meet_rel status %d", ms);
+    if (js == GA_OK)
+        FZ_CHECK(fz_all_finite(J.c, 32), "join: GA_OK with a non-finite result");
+    if (ms == GA_OK)
+        FZ_CHECK(fz_all_finite(M.c, 32), "meet_rel: GA_OK with a non-finite result");
+    if (same && js == GA_OK)
+        FZ_CHECK(!memcmp(&J, &A, sizeof J), "join of A and %s is not A", same == 1 ? "A" : "2 A");
+    if (same && ms == GA_OK)
+        FZ_CHECK(!memcmp(&M, &B, sizeof M), "meet_rel of A and %s is not the second",
+                 same == 1 ? "A" : "2 A");
+}
+
+/* The join and meet of X with itself and 2 X, and of blades made of X's
+   doubles: vectors v1 (X's), v2 (e12..e25), v3 (e34..e45), the 4-vector q
+   (X's): v1 ^ v2 with v2 ^ v3 (sharing v2), v1 with v1 ^ v2 (held), v1 ^ v2
+   with q. */
+static void mv_join(const ga_mv *X)
+{
+    join_pair(*X, *X, 1);
+    ga_mv X2 = ga_mv_scale(*X, 2.0);
+    if (fz_all_finite(X2.c, 32))
+        join_pair(*X, X2, 2);
+    const double *c = X->c;
+    ga_mv v1 = ga_mv_grade(*X, 1), v2 = ga_mv_vector(c[6], c[7], c[8], c[9], c[10]),
+          v3 = ga_mv_vector(c[11], c[12], c[13], c[14], c[15]), q = ga_mv_grade(*X, 4);
+    ga_mv A = ga_mv_op(v1, v2);
+    join_pair(A, ga_mv_op(v2, v3), 0);
+    join_pair(v1, A, 0);
+    join_pair(A, q, 0);
+}
+
 static void mv_any(const ga_mv *X, double lambda)
 {
+    mv_join(X);
     int fin = fz_all_finite(X->c, 32);
     ga_vec3 a, b, c;
     double r, d;

@@ -50,6 +50,9 @@ static acc *kind_acc(const char *k)
     return &kinds[nkinds++];
 }
 
+/* the check that counts measure()'s statuses (scene_join has its own) */
+static const char *status_check = "statuses: GA_OK, or a refusal for rounds far out";
+
 /* one measured read-back: status must be GA_OK (or GA_ERR_PRECISION where allowed), error <= 1e-12 */
 static void measure(const char *kind, int st, double err, int may_refuse)
 {
@@ -61,7 +64,7 @@ static void measure(const char *kind, int st, double err, int may_refuse)
         a->refused++;
         return;
     }
-    tk_add_status(tk_get("statuses: GA_OK, or a refusal for rounds far out"), st, GA_OK);
+    tk_add_status(tk_get(status_check), st, GA_OK);
     if (st != GA_OK)
         return;
     a->n++;
@@ -387,6 +390,223 @@ static void scene_about(tk_rng *t, double D)
 #undef LOC
 }
 
+/* ga_mv_join and ga_mv_meet_rel on random scenes in special position, against
+   Euclid (a stream of their own, so that the lines above print as before).
+   Flats at every distance D: two lines through a common point x (join: their
+   plane; meet: the flat point x), two parallel lines (their plane; the
+   direction at infinity), a line in a plane, a line and itself. Points and
+   rounds at D = 1 (beyond, they are held about a local origin: object.h):
+   a point on a line and off it, coplanar circles (crossing, tangent,
+   imaginary: a point pair), circles on a common sphere (their pair), a circle
+   on a sphere and across one, two point pairs sharing a point. Errors as in
+   scene() (weighted by the sine of the angle that conditions them where one
+   does); the results that must be an input as given (the join of a point
+   and a line through it is the line) are checked bit for bit. */
+static int same_mv(ga_mv a, ga_mv b) { return !memcmp(&a, &b, sizeof a); }
+
+/* The error of a plane read back that should hold x with normal m: the
+   distance of x from it / L, and the tilt of its normal over the scene's size
+   S / L (the displacement it makes at S from x, as the other errors: at D the
+   objects themselves are rounded to u D, which tilts the plane through two
+   lines S apart by u D / S). */
+static double plane_err(ga_object ob, ga_vec3 x, ga_vec3 m, double S, double L)
+{
+    if (ob.kind != GA_OBJECT_PLANE)
+        return INFINITY;
+    return tk_max(fabs(dot(ob.direction, sub(x, ob.centre))) / L, dir_err(ob.direction, m) * S / L);
+}
+
+static void scene_join(tk_rng *t, double D)
+{
+    double S = D == 1.0 ? tk_loguni(t, 0.1, 1) : tk_loguni(t, 1, D);
+    ga_vec3 o = tk_scale(tk_unit(t), D), zero = {0, 0, 0};
+    ga_vec3 x = add(o, tk_scale(tk_unit(t), S * tk_uni(t)));
+    double L = D + 2 * S;
+    ga_vec3 u1 = tk_unit(t), u2 = tk_unit(t);
+    double sn = tk_norm(cross(u1, u2));
+    ga_vec3 m = unit(cross(u1, u2));
+    double al = tk_range(t, 0.2, 1), be = tk_range(t, 0.2, 1), ga = tk_range(t, 0.2, 1),
+           de = tk_range(t, 0.2, 1);
+    ga_mv L1 = ga_line_from_points(sub(x, tk_scale(u1, al * S)), add(x, tk_scale(u1, be * S)));
+    ga_mv L2 = ga_line_from_points(add(x, tk_scale(u2, ga * S)), sub(x, tk_scale(u2, de * S)));
+    ga_mv J, M;
+    ga_object ob;
+    int st;
+    tk_check *stc = tk_get("join, meet_rel: GA_OK on valid objects");
+#define JM(A, B)                                                                                             \
+    do {                                                                                                     \
+        tk_add_status(stc, ga_mv_join((A), (B), &J), GA_OK);                                                 \
+        tk_add_status(stc, ga_mv_meet_rel((A), (B), &M), GA_OK);                                             \
+    } while (0)
+    JM(L1, L2);
+    st = ga_object_from_mv(J, &ob);
+    measure("join line,line (crossing): plane", st, plane_err(ob, x, m, S, L) * sn, 0);
+    st = ga_object_from_mv(M, &ob);
+    measure("meet_rel line,line: flat point", st, obj_err(ob, GA_OBJECT_FLATPOINT, x, 0, zero, L) * sn, 0);
+    /* parallel lines, each the meet of two dual planes of normals n1, n2
+       (so that their directions are the same doubles; lines built from points
+       at D are parallel only to u D / S): at n1.y = d1 + e1, n2.y = d2 + e2
+       for e = 0 and e = (S, S) times U(-1, 1); the points p = a n1 + b n2
+       with [1 k; k 1] (a, b) = (d1, d2) + e; their plane of normal u x (p' - p) */
+    ga_vec3 n1 = tk_unit(t), n2 = tk_unit(t), w;
+    double k12 = dot(n1, n2), det = (1 - k12) * (1 + k12);
+    double d1 = dot(n1, x), d2 = dot(n2, x), e1 = S * tk_range(t, -1, 1), e2 = S * tk_range(t, -1, 1);
+    ga_mv L4 = ga_mv_meet(ga_plane_dual(n1, d1), ga_plane_dual(n2, d2));
+    ga_mv L5 = ga_mv_meet(ga_plane_dual(n1, d1 + e1), ga_plane_dual(n2, d2 + e2));
+    ga_vec3 up = unit(cross(n1, n2));
+    w = add(tk_scale(n1, (e1 - k12 * e2) / det), tk_scale(n2, (e2 - k12 * e1) / det)); /* p' - p */
+    ga_vec3 mw = unit(cross(up, w));
+    JM(L4, L5);
+    st = ga_object_from_mv(J, &ob);
+    measure("join line,line (parallel): plane", st, plane_err(ob, x, mw, S, L) * det, 0);
+    st = ga_object_from_mv(M, &ob);
+    measure("meet_rel parallel lines: at infinity", st,
+            ob.kind == GA_OBJECT_EMPTY ? dir_err(unit(ob.direction), up) * S / L : INFINITY, 0);
+    double off = S * tk_range(t, 0.1, 1);
+    w = unit(cross(u1, tk_unit(t)));
+    mw = unit(cross(u1, w));
+    /* a line in a plane, a line and a multiple of itself, a line and another
+       pair of its points: the inputs as given */
+    ga_mv P = ga_plane_from_points(sub(x, tk_scale(u1, al * S)), add(x, tk_scale(u1, be * S)),
+                                   add(x, tk_scale(u2, ga * S)));
+    tk_check *same = tk_get("join, meet_rel: a line in a plane: the plane, the line");
+    JM(L1, P);
+    tk_add_bool(same, same_mv(J, P) && same_mv(M, L1));
+    JM(P, L1);
+    tk_add_bool(same, same_mv(J, P) && same_mv(M, L1));
+    same = tk_get("join, meet_rel: a line and -2.5 times it: the line, -2.5 L");
+    ga_mv L1s = ga_mv_scale(L1, -2.5);
+    JM(L1, L1s);
+    tk_add_bool(same, same_mv(J, L1) && same_mv(M, L1s));
+    /* the same line through two other points (up to D = 1e2: beyond, points
+       S apart at D, rounded to u D, give lines whose directions differ by
+       u D / S, which the decisions see at some D / S as two lines) */
+    if (D <= 1e2) {
+        same = tk_get("join, meet_rel: a line and the same through other points (D <= 1e2)");
+        ga_mv L1b = ga_line_from_points(add(x, tk_scale(u1, ga * S)), sub(x, tk_scale(u1, de * S)));
+        JM(L1, L1b);
+        tk_add_bool(same, same_mv(J, L1) && same_mv(M, L1b));
+    }
+    /* two planes: in general position, ga_mv_meet bit for bit; their join the whole space */
+    ga_mv P2 = ga_mv_dual(ga_plane_dual(u1, dot(u1, x) + S * tk_uni(t)));
+    JM(P, P2);
+    tk_add_bool(tk_get("meet_rel in general position: ga_mv_meet bit for bit"),
+                same_mv(M, ga_mv_meet(P, P2)));
+    tk_add_bool(tk_get("join of two planes: a pseudoscalar"),
+                ga_mv_maxabs(ga_mv_grade(J, 5)) > 0 && ga_mv_maxabs(ga_mv_sub(J, ga_mv_grade(J, 5))) == 0);
+    if (D != 1.0)
+        return;
+
+    /* a point on L1 and off it (by up to S along w): the line; the plane through both */
+    ga_vec3 xo = add(x, tk_scale(u1, S * tk_range(t, -1, 1)));
+    ga_mv X = ga_point_up(xo);
+    same = tk_get("join, meet_rel: a point on a line: the line, the point");
+    JM(X, L1);
+    tk_add_bool(same, same_mv(J, L1) && same_mv(M, X));
+    ga_vec3 xf = add(xo, tk_scale(w, off));
+    JM(ga_point_up(xf), L1);
+    st = ga_object_from_mv(J, &ob);
+    measure("join point off a line: plane", st, plane_err(ob, x, mw, S, L), 0);
+    tk_add_bool(tk_get("meet_rel of a point off a line: a scalar"),
+                ga_mv_maxabs(ga_mv_sub(M, ga_mv_grade(M, 0))) == 0 && M.c[0] != 0);
+
+    /* coplanar circles about c1 = x and c2 = x + d e (e in the plane of
+       normal m), radii r1, r2, each through three points: the pair at
+       x + h e, r^2 = r1^2 - h^2, along m x e; their join the plane */
+    ga_vec3 a1 = unit(cross(m, tk_unit(t))), a2 = cross(m, a1);
+    double r1 = S * tk_range(t, 0.2, 1), r2 = S * tk_range(t, 0.2, 1), ph = tk_range(t, 0, 2 * TK_PI);
+    ga_vec3 e = add(tk_scale(a1, cos(ph)), tk_scale(a2, sin(ph)));
+    ga_vec3 cp[3][2];
+    double f1 = tk_range(t, 0, 2 * TK_PI), f2 = tk_range(t, 0, 2 * TK_PI);
+    for (int i = 0; i < 3; i++) { /* three points about 120 degrees apart on each */
+        double p1 = f1 + i * 2 * TK_PI / 3 + tk_range(t, -0.5, 0.5),
+               p2 = f2 + i * 2 * TK_PI / 3 + tk_range(t, -0.5, 0.5);
+        cp[i][0] = add(tk_scale(a1, cos(p1)), tk_scale(a2, sin(p1)));
+        cp[i][1] = add(tk_scale(a1, cos(p2)), tk_scale(a2, sin(p2)));
+    }
+    ga_mv C1 = ga_circle_from_points(add(x, tk_scale(cp[0][0], r1)), add(x, tk_scale(cp[1][0], r1)),
+                                     add(x, tk_scale(cp[2][0], r1)));
+    static const char *nm[] = {"meet_rel coplanar circles: pair", "  ... tangent", "  ... imaginary"};
+    static const int want[] = {GA_REALITY_REAL, GA_REALITY_TANGENT, GA_REALITY_IMAGINARY};
+    for (int cs = 0; cs < 3; cs++) {
+        double d = cs == 0 ? tk_range(t, fabs(r1 - r2), r1 + r2)
+                 : cs == 1 ? r1 + r2
+                           : (r1 + r2) * tk_range(t, 1.1, 3);
+        ga_vec3 c2 = add(x, tk_scale(e, d));
+        ga_mv C2 = ga_circle_from_points(add(c2, tk_scale(cp[0][1], r2)), add(c2, tk_scale(cp[1][1], r2)),
+                                         add(c2, tk_scale(cp[2][1], r2)));
+        double h = (d * d + r1 * r1 - r2 * r2) / (2 * d);
+        JM(C1, C2);
+        st = ga_object_from_mv(J, &ob);
+        measure("join coplanar circles: plane", st, plane_err(ob, x, m, S, L), 0);
+        st = ga_object_from_mv(M, &ob);
+        measure(nm[cs], st,
+                obj_err(ob, GA_OBJECT_POINTPAIR, add(x, tk_scale(e, h)), (r1 - h) * (r1 + h), cross(m, e), L),
+                0);
+        tk_add_bool(tk_get("coplanar circles: real, tangent and imaginary pairs classified so"),
+                    st == GA_OK && ob.reality == want[cs]);
+    }
+
+    /* circles on the sphere (c = x, R): in the planes n_i.(y - c) = s_i; their
+       pair on the line of the two planes, at q = c + al n1 + be n2 with
+       q - c along n1, n2 at s1, s2: r^2 = R^2 - |q - c|^2, along n1 x n2 */
+    double R = S * tk_range(t, 0.5, 1);
+    ga_vec3 n[2], ci[2];
+    double s[2];
+    ga_mv C[2];
+    for (int i = 0; i < 2; i++) {
+        n[i] = tk_unit(t);
+        s[i] = R * tk_range(t, -0.9, 0.9);
+        ci[i] = add(x, tk_scale(n[i], s[i]));
+        double rho = sqrt((R - s[i]) * (R + s[i]));
+        ga_vec3 b1 = unit(cross(n[i], tk_unit(t))), b2 = cross(n[i], b1), q3[3];
+        double f = tk_range(t, 0, 2 * TK_PI);
+        for (int k = 0; k < 3; k++) {
+            double p = f + k * 2 * TK_PI / 3 + tk_range(t, -0.5, 0.5);
+            q3[k] = add(ci[i], tk_scale(add(tk_scale(b1, cos(p)), tk_scale(b2, sin(p))), rho));
+        }
+        C[i] = ga_circle_from_points(q3[0], q3[1], q3[2]);
+    }
+    double kn = dot(n[0], n[1]), sq = tk_norm(cross(n[0], n[1]));
+    ga_vec3 qc = add(tk_scale(n[0], (s[0] - kn * s[1]) / (sq * sq)),
+                     tk_scale(n[1], (s[1] - kn * s[0]) / (sq * sq)));
+    JM(C[0], C[1]);
+    st = ga_object_from_mv(J, &ob);
+    measure("join circles on a sphere: sphere", st, obj_err(ob, GA_OBJECT_SPHERE, x, R * R, zero, L), 0);
+    st = ga_object_from_mv(M, &ob);
+    measure("meet_rel circles on a sphere: pair", st,
+            obj_err(ob, GA_OBJECT_POINTPAIR, add(x, qc), R * R - dot(qc, qc), unit(cross(n[0], n[1])), L) *
+                sq * sq,
+            0);
+    /* a circle on the sphere: the sphere, the circle; across a sphere about
+       another centre: ga_mv_meet bit for bit */
+    ga_mv Sd = ga_mv_dual(ga_sphere_dual(x, R));
+    same = tk_get("join, meet_rel: a circle on a sphere: the sphere, the circle");
+    JM(C[0], Sd);
+    tk_add_bool(same, same_mv(J, Sd) && same_mv(M, C[0]));
+    ga_mv S2 = ga_mv_dual(ga_sphere_dual(add(ci[0], tk_scale(tk_unit(t), R * tk_uni(t))), R));
+    JM(C[0], S2);
+    tk_add_bool(tk_get("meet_rel in general position: ga_mv_meet bit for bit"),
+                same_mv(M, ga_mv_meet(C[0], S2)));
+    /* two point pairs sharing the point x: the point (a vector, read as a
+       sphere of radius 0 about it); their join the circle through the three */
+    ga_vec3 pb = add(x, tk_scale(tk_unit(t), S)), pc = add(x, tk_scale(tk_unit(t), S));
+    JM(ga_pointpair_from_points(x, pb), ga_pointpair_from_points(pc, x));
+    st = ga_object_from_mv(M, &ob);
+    measure("meet_rel pairs sharing a point: it", st, obj_err(ob, GA_OBJECT_SPHERE, x, 0, zero, L), 0);
+    st = ga_object_from_mv(J, &ob);
+    {
+        /* the circle through x, pb, pc: centre x + k (circumcentre, as in scene_about) */
+        ga_vec3 d2 = sub(pb, x), d3 = sub(pc, x), nc = cross(d2, d3);
+        ga_vec3 kc = tk_scale(cross(sub(tk_scale(d3, dot(d2, d2)), tk_scale(d2, dot(d3, d3))), nc),
+                              0.5 / dot(nc, nc));
+        measure("join pairs sharing a point: circle", st,
+                obj_err(ob, GA_OBJECT_CIRCLE, add(x, kc), dot(kc, kc), unit(nc), L) * tk_norm(nc) / (S * S),
+                0);
+    }
+#undef JM
+}
+
 int main(void)
 {
     tk_rng t = {14}, ta = {1414};
@@ -395,6 +615,13 @@ int main(void)
     for (int k = 0; k < 5; k++) {
         for (int i = 0; i < 300; i++) scene(&t, dists[k]);
         for (int i = 0; i < 300; i++) scene_about(&ta, dists[k]);
+        flush(dists[k]);
+    }
+    tk_rng tj = {2222};
+    status_check = "join, meet_rel: results read back with GA_OK";
+    printf("join and meet_rel, worst error per kind, per distance D\n");
+    for (int k = 0; k < 5; k++) {
+        for (int i = 0; i < 300; i++) scene_join(&tj, dists[k]);
         flush(dists[k]);
     }
     /* statuses */
@@ -523,6 +750,53 @@ int main(void)
     /* about (0, 1), a unit sphere at 1e4 is refused (at 1e8 it is a plane as stored) */
     tk_expect_status("world: unit sphere at 1e4 refused",
                      ga_object_from_mv(ga_sphere_dual((ga_vec3){1e4, 0, 0}, 1), &ob), GA_ERR_PRECISION);
+    /* ga_mv_join and ga_mv_meet_rel: statuses, and nothing written on failure */
+    {
+        ga_mv Lz = ga_line_from_points(z, ez), nanL = Lz, keep = ga_mv_scalar(7), out = keep;
+        nanL.c[GA_BLADE_E145] = NAN;
+        ga_mv big = ga_mv_scale(Lz, 1e300),
+              big2 = ga_mv_scale(ga_line_from_points(ex, (ga_vec3){1, 1, 0}), 1e300);
+        ga_mv e12e34 = ga_mv_add(ga_mv_blade(GA_BLADE_E12), ga_mv_blade(GA_BLADE_E34));
+        ga_mv e123e345 = ga_mv_add(ga_mv_blade(GA_BLADE_E123), ga_mv_blade(GA_BLADE_E345));
+        struct {
+            const char *what;
+            ga_mv a, b;
+            int want;
+        } cs[] = {
+            {"join, meet_rel: NaN", nanL, Lz, GA_ERR_NOTFINITE},
+            {"join, meet_rel: NaN after a scalar (NaN first)", ga_mv_scalar(1), nanL, GA_ERR_NOTFINITE},
+            {"join, meet_rel: Inf", Lz, ga_mv_scale(Lz, INFINITY), GA_ERR_NOTFINITE},
+            {"join, meet_rel: zero", ga_mv_zero(), Lz, GA_ERR_SINGULAR},
+            {"join, meet_rel: a scalar (grade 0)", Lz, ga_mv_scalar(2), GA_ERR_DOMAIN},
+            {"join, meet_rel: a pseudoscalar (grade 5)", ga_mv_blade(GA_BLADE_E12345), Lz, GA_ERR_DOMAIN},
+            {"join, meet_rel: mixed grades", ga_mv_add(Lz, ga_mv_n()), Lz, GA_ERR_NOTBLADE},
+            {"join, meet_rel: e12 + e34, no blade", e12e34, Lz, GA_ERR_NOTBLADE},
+            {"join, meet_rel: e123 + e345, no blade", Lz, e123e345, GA_ERR_NOTBLADE},
+            {"join, meet_rel: overflow of A ^ B", big, big2, GA_ERR_DOMAIN},
+        };
+        for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+            tk_expect_status(cs[i].what, ga_mv_join(cs[i].a, cs[i].b, &out), cs[i].want);
+            tk_expect_status(cs[i].what, ga_mv_meet_rel(cs[i].a, cs[i].b, &out), cs[i].want);
+            tk_add_bool(tk_get("join, meet_rel: the output untouched on failure"), same_mv(out, keep));
+        }
+        /* by hand: the lines x = 0 and y = 0 of the plane z = 0 meet in the
+           flat point of the origin, their join is that plane; the point (2, 0, 0)
+           on the second: the line, the point */
+        ga_mv Lx = ga_line_from_points(z, ex), Ly = ga_line_from_points(z, (ga_vec3){0, 1, 0}), J, M;
+        tk_expect_status("join of the x and y axes", ga_mv_join(Lx, Ly, &J), GA_OK);
+        tk_expect_status("meet_rel of the x and y axes", ga_mv_meet_rel(Lx, Ly, &M), GA_OK);
+        ga_object oj, om;
+        tk_expect(ga_object_from_mv(J, &oj) == GA_OK && oj.kind == GA_OBJECT_PLANE &&
+                      fabs(fabs(oj.direction.z) - 1) == 0 && tk_norm(oj.centre) == 0,
+                  "join of the x and y axes: the plane z = 0");
+        tk_expect(ga_object_from_mv(M, &om) == GA_OK && om.kind == GA_OBJECT_FLATPOINT &&
+                      tk_norm(om.centre) <= 1e-16,
+                  "meet_rel of the x and y axes: the origin");
+        ga_mv X2 = ga_point_up((ga_vec3){2, 0, 0});
+        tk_expect(ga_mv_join(X2, Lx, &J) == GA_OK && same_mv(J, Lx) && ga_mv_meet_rel(Lx, X2, &M) == GA_OK &&
+                      same_mv(M, X2),
+                  "(2, 0, 0) and the x axis: join the axis, meet the point");
+    }
     /* antiparallel planes: a half turn about a perpendicular axis */
     ga_rotor H;
     ga_vec3 mz = {0, 0, -1};

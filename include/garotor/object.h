@@ -159,10 +159,79 @@ int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origi
  *  or empty for parallel planes); sphere/plane with circle/line: a point pair or
  *  flat point. A vector argument is a dual sphere or plane (converted with
  *  ga_mv_dual). Zero when the objects are not in general position (their
- *  grades sum to less than 5 after dualising, or they share a flat). Two flats
- *  meet directly; with a round, the meet is taken about its centre (translated
- *  there and back) so that it adds no cancellation to the round's own. */
+ *  grades sum to less than 5 after dualising, or they share a flat):
+ *  ga_mv_meet_rel gives their meet then. Two flats meet directly; with a
+ *  round, the meet is taken about its centre (translated there and back) so
+ *  that it adds no cancellation to the round's own. */
 ga_mv ga_mv_meet(ga_mv A, ga_mv B);
+
+/** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
+ *  a direction of B's subspace lies in A's when the sine of its principal
+ *  angle with A's subspace is at most GA_OBJECT_JOIN_TOL, both objects held
+ *  about the local origin o and length lambda of ga_mv_join and measured in
+ *  the Euclidean metric of the coefficients (an orthonormal basis of each
+ *  subspace: the right singular vectors of x -> x ^ X, one-sided Jacobi; the
+ *  sines: the singular values of the part of B's basis orthogonal to A's,
+ *  modified Gram-Schmidt twice). Where the rounding that the move to (o,
+ *  lambda) adds is larger, that is the tolerance: 64 u |o| / lambda for two
+ *  flats (at most 64 u 2^10 ~ 7e-12, as lambda >= 2^-10 |o|), 64 u
+ *  (|o| / lambda)^2 with a round or a point (above 1e-9 for rounds some 400
+ *  of their sizes from the origin: hold such scenes about a local origin).
+ *  An input is a blade when the k-th smallest singular value of x -> x ^ X
+ *  (0 for a blade) is at most GA_OBJECT_JOIN_TOL times the largest (|X| for
+ *  a blade). The sines are linear in the angle, so the decisions are too:
+ *  objects in special position up to 1e-9 of lambda count as in special
+ *  position; the rounding of objects built in a few dozen operations is
+ *  far below it. */
+#define GA_OBJECT_JOIN_TOL 1e-9
+
+/** The join of two direct objects A and B: points (null vectors), point pairs
+ *  and flat points, circles and lines, spheres and planes (grades 1 to 4;
+ *  direct forms: a dual sphere or plane s is ga_mv_dual(s) here, as a vector
+ *  is a point), the smallest blade whose subspace holds both:
+ *    - A ^ B (ga_mv_op, bit for bit) when their subspaces share no direction
+ *      (general position, DFM §5: two distinct points -> their pair, a line
+ *      and a point off it -> their plane, two skew lines -> the whole space);
+ *    - B when B's subspace holds A's, else A when A's holds B's (a point on a
+ *      line -> the line, a circle on a sphere -> the sphere, an object and a
+ *      multiple of itself -> the first);
+ *    - otherwise A ^ c1 ^ ... ^ cr, the c the r directions of B's subspace
+ *      orthogonal to A's (held about the local origin below, then moved
+ *      back): two lines through a common point -> their plane, two circles on
+ *      one sphere -> the sphere, coplanar circles -> the plane, two parallel
+ *      lines -> their plane; up to scale and sign.
+ *  The decisions are made about a local origin o (A's centre, or its point
+ *  nearest the origin for a flat; B's if A has none) in units of a power of
+ *  two lambda near the larger of the radii and the distance of the two
+ *  centres, and at least 2^-10 |o| (ga_mv_localize), where the coefficients
+ *  are of the scene's size; GA_OBJECT_JOIN_TOL has the tolerance. A join
+ *  that holds n (a plane of two circles) is returned without A ^ nbar parts,
+ *  as ga_mv_localize does for flats. Status: GA_ERR_NOTFINITE for NaN/Inf in A or B (first),
+ *  GA_ERR_SINGULAR for a zero input, GA_ERR_NOTBLADE for mixed grades (a part
+ *  of another grade above GA_POINT_TOL of the largest coefficient) or a
+ *  grade-2 or -3 element that is no blade, GA_ERR_DOMAIN for a scalar or a
+ *  pseudoscalar (grade 0 or 5: no object) and where the result overflows. No
+ *  allocation. */
+int ga_mv_join(ga_mv A, ga_mv B, ga_mv *out);
+
+/** The meet of two direct objects relative to their join J (ga_mv_join), the
+ *  subspace common to both, for objects in any position (DFM §5.6):
+ *    - where J is the whole space, ga_mv_meet(A, B) bit for bit with A and B
+ *      taken as direct (two planes -> their line, two spheres -> their
+ *      circle, a circle crossing a sphere -> a point pair);
+ *    - where one holds the other, the smaller one as given: a point on a line
+ *      -> the point, a circle on a sphere -> the circle, identical objects ->
+ *      B (meet = join = the object, up to scale);
+ *    - otherwise (B _| J^-1) _| A, taken about the local origin of
+ *      ga_mv_join in the Euclidean metric of the coefficients (there every
+ *      blade J is invertible, so a null join, a tangent round, needs nothing
+ *      special; the meet as a subspace does not depend on the metric, its
+ *      scale and sign do): two intersecting lines -> their flat point, two
+ *      parallel lines -> their direction at infinity (u ^ n, read as EMPTY),
+ *      two coplanar or cospherical circles -> a point pair, real, tangent or
+ *      imaginary; a scalar where the two share no point (a point off a line).
+ *  Statuses of ga_mv_join. */
+int ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out);
 
 /** The point of O nearest x (a plane, line, sphere, circle, flat point, or the
  *  nearer point of a pair). GA_ERR_IMAGINARY for an imaginary round,
