@@ -9,12 +9,13 @@
  * invariance under a change of world frame (G A_i against G A(t)) and of body
  * frame (A_i H against A(t) H) over 201 samples of the path's range, the
  * largest body velocity and acceleration entries and cga against matrix over
- * 2001 samples. With a second argument, a pose file (t x y z qx qy qz qw a
- * line, quaternions normalised: tests/tum_like.awk's), the growth ratios
- * (ga_path_measure_growth) of lihao2, lihao3 and c2 on it. A measurement
- * (exit status 0 unless a file cannot be read): the soak suite runs it so
- * that it keeps building and running, and tests/doc_figures_check.py checks
- * the tables of docs/schemes.md against what it prints. */
+ * 2001 samples; then decoupled's positions against screw's. With a second
+ * argument, a pose file (t x y z qx qy qz qw a line, quaternions normalised:
+ * tests/tum_like.awk's), the growth ratios (ga_path_measure_growth) of
+ * lihao2, lihao3 and c2 on it. A measurement (exit status 0 unless a file
+ * cannot be read): the soak suite runs it so that it keeps building and
+ * running, and tests/doc_figures_check.py checks the tables of
+ * docs/schemes.md against what it prints. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -147,6 +148,25 @@ int main(int argc, char **argv)
                bo, vmax, amax, cm);
     }
     printf("bspline: from its keys at t = 1, 2, 3 by %.2g, %.2g, %.2g\n", boff[1], boff[2], boff[3]);
+    {
+        /* decoupled's straight chords against screw's helices: the largest
+         * difference of a position coordinate over 2001 samples */
+        ga_path ps, pd;
+        double dp = 0;
+        if (ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, N, t, k, NULL, w[0], sizeof w[0], &ps) ||
+            ga_path_init_mat4(&ga_group_se3, GA_SCHEME_DECOUPLED, N, t, k, NULL, w[1], sizeof w[1], &pd))
+            printf("decoupled: cannot build\n");
+        else {
+            for (int j = 0; j <= 2000; ++j) {
+                double tj = j == 2000 ? t[N - 1] : t[0] + (t[N - 1] - t[0]) * j / 2000;
+                ga_mat4 a, b;
+                ga_path_eval(&ps, tj, &a);
+                ga_path_eval(&pd, tj, &b);
+                for (int q = 3; q < 12; q += 4) dp = tk_max(dp, fabs(a.m[q] - b.m[q]));
+            }
+            printf("decoupled: positions from screw's by up to %.3g\n", dp);
+        }
+    }
     fclose(f);
     if (argc < 3)
         return 0;
