@@ -1,14 +1,21 @@
-/* tests/soak_c2_keys.c: the figures of docs/schemes.md for c2 beside lihao3,
- * smooth and decoupled-c2 on the five keys of docs/figures/schemes.keys
- * (argument: that file): through the keys, the velocity and acceleration
- * jumps at the interior keys, invariance under a change of world frame
- * (G A_i) and of body frame (A_i H) over 201 samples, the largest body
- * velocity and acceleration entries and cga against matrix over 2001
- * samples. With a second argument, a pose file (t x y z qx qy qz qw a line,
- * quaternions normalised: tests/tum_like.awk's), the growth ratios
- * (ga_path_measure_growth) of lihao2, lihao3 and c2 on it. A measurement
- * (exit status 0 unless a file cannot be read): the soak suite runs it so
- * that it keeps building and running. */
+/* tests/soak_c2_keys.c: the figures of docs/schemes.md ("At a glance" and
+ * c2's table) on the five keys of docs/figures/schemes.keys (argument: that
+ * file), one row per scheme (quadratic on the first three keys; bspline, and
+ * lihao3-even beside it, at the even times 0, 1, 2, 3, 4): through the keys
+ * (largest matrix-entry difference between each segment's ends and its keys;
+ * bspline: between A(t_i) and A_i for the keys in its range, also printed
+ * one by one), the velocity and acceleration jumps (body frame, per unit t)
+ * between the segments meeting at each interior key (bspline: knot),
+ * invariance under a change of world frame (G A_i against G A(t)) and of body
+ * frame (A_i H against A(t) H) over 201 samples of the path's range, the
+ * largest body velocity and acceleration entries and cga against matrix over
+ * 2001 samples; then decoupled's positions against screw's. With a second
+ * argument, a pose file (t x y z qx qy qz qw a line, quaternions normalised:
+ * tests/tum_like.awk's), the growth ratios (ga_path_measure_growth) of
+ * lihao2, lihao3 and c2 on it. A measurement (exit status 0 unless a file
+ * cannot be read): the soak suite runs it so that it keeps building and
+ * running, and tests/doc_figures_check.py checks the tables of
+ * docs/schemes.md against what it prints. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -61,35 +68,67 @@ int main(int argc, char **argv)
     ga_mat4 G = motion(70, (ga_vec3){1, 2, 3}, (ga_vec3){3, -2, 1}),
             H = motion(50, (ga_vec3){2, -1, 0.5}, (ga_vec3){-1, 0.5, 2});
     for (int i = 0; i < N; ++i) kg[i] = ga_mat4_mul(G, k[i]), kh[i] = ga_mat4_mul(k[i], H);
-    const ga_scheme sc[4] = {GA_SCHEME_C2, GA_SCHEME_LIHAO3, GA_SCHEME_SMOOTH, GA_SCHEME_DECOUPLED_C2};
-    static double w[4][8192];
     printf("%-13s %-9s %-9s %-9s %-9s %-9s %-7s %-7s %s\n", "scheme", "keys", "v jump", "a jump", "world",
            "body", "max v", "max a", "cga-matrix");
-    for (int s = 0; s < 4; ++s) {
+    /* every scheme on the five keys; quadratic on the first three; bspline
+     * (and lihao3-even beside it) at the even times 0, 1, 2, 3, 4 */
+    static const double even[N] = {0, 1, 2, 3, 4};
+    const struct {
+        ga_scheme s;
+        const char *name;
+        int n;
+        const double *t;
+    } row[] = {{GA_SCHEME_SCREW, "screw", N, t},
+               {GA_SCHEME_BIVECTOR, "bivector", N, t},
+               {GA_SCHEME_QUADRATIC, "quadratic", 3, t},
+               {GA_SCHEME_SMOOTH, "smooth", N, t},
+               {GA_SCHEME_LIHAO2, "lihao2", N, t},
+               {GA_SCHEME_LIHAO3, "lihao3", N, t},
+               {GA_SCHEME_BSPLINE, "bspline", N, even},
+               {GA_SCHEME_C2, "c2", N, t},
+               {GA_SCHEME_DECOUPLED_C2, "decoupled-c2", N, t},
+               {GA_SCHEME_LIHAO3, "lihao3-even", N, even}};
+    static double w[4][8192];
+    double boff[N] = {0};
+    for (size_t s = 0; s < sizeof row / sizeof row[0]; ++s) {
         ga_path p, pg, ph, pc;
-        if (ga_path_init_mat4(&ga_group_se3, sc[s], N, t, k, NULL, w[0], sizeof w[0], &p) ||
-            ga_path_init_mat4(&ga_group_se3, sc[s], N, t, kg, NULL, w[1], sizeof w[1], &pg) ||
-            ga_path_init_mat4(&ga_group_se3, sc[s], N, t, kh, NULL, w[2], sizeof w[2], &ph) ||
-            ga_path_init_mat4(&ga_group_cga, sc[s], N, t, k, NULL, w[3], sizeof w[3], &pc)) {
-            printf("%s: cannot build\n", ga_scheme_name(sc[s]));
+        const int n = row[s].n;
+        const double *ts = row[s].t;
+        if (ga_path_init_mat4(&ga_group_se3, row[s].s, n, ts, k, NULL, w[0], sizeof w[0], &p) ||
+            ga_path_init_mat4(&ga_group_se3, row[s].s, n, ts, kg, NULL, w[1], sizeof w[1], &pg) ||
+            ga_path_init_mat4(&ga_group_se3, row[s].s, n, ts, kh, NULL, w[2], sizeof w[2], &ph) ||
+            ga_path_init_mat4(&ga_group_cga, row[s].s, n, ts, k, NULL, w[3], sizeof w[3], &pc)) {
+            printf("%s: cannot build\n", row[s].name);
             continue;
         }
-        double keys = 0, vj = 0, aj = 0, wo = 0, bo = 0, vmax = 0, amax = 0, cm = 0;
+        double keys = 0, vj = 0, aj = 0, wo = 0, bo = 0, vmax = 0, amax = 0, cm = 0, t0, t1;
         ga_mat4 a, b, c;
-        for (int i = 0; i + 1 < N; ++i) {
-            ga_path_eval_segment(&p, i, 0.0, &a);
-            ga_path_eval_segment(&p, i, 1.0, &b);
-            keys = tk_max(keys, tk_max(md(a, k[i]), md(b, k[i + 1])));
-            if (i + 2 < N) {
-                double v0[6], a0[6], v1[6], a1[6];
-                ga_path_differentiate_segment(&p, i, 1.0, GA_FRAME_BODY, v0, a0);
-                ga_path_differentiate_segment(&p, i + 1, 0.0, GA_FRAME_BODY, v1, a1);
-                vj = tk_max(vj, vd(v0, v1));
-                aj = tk_max(aj, vd(a0, a1));
+        const size_t ns = ga_path_segments(&p);
+        ga_path_range(&p, &t0, &t1);
+        if (row[s].s == GA_SCHEME_BSPLINE) {
+            /* not through its keys: how far from those in its range */
+            for (int i = 1; i + 1 < n; ++i) {
+                ga_path_eval(&p, ts[i], &a);
+                boff[i] = md(a, k[i]);
+                keys = tk_max(keys, boff[i]);
+            }
+        } else {
+            for (size_t i = 0; i < ns; ++i) {
+                ga_path_eval_segment(&p, i, 0.0, &a);
+                ga_path_eval_segment(&p, i, 1.0, &b);
+                keys = tk_max(keys, tk_max(md(a, k[i]), md(b, k[i + 1])));
             }
         }
+        for (size_t i = 0; i + 1 < ns; ++i) {
+            /* the two sides of the joint between segments i and i + 1 */
+            double v0[6], a0[6], v1[6], a1[6];
+            ga_path_differentiate_segment(&p, i, 1.0, GA_FRAME_BODY, v0, a0);
+            ga_path_differentiate_segment(&p, i + 1, 0.0, GA_FRAME_BODY, v1, a1);
+            vj = tk_max(vj, vd(v0, v1));
+            aj = tk_max(aj, vd(a0, a1));
+        }
         for (int j = 0; j <= 200; ++j) {
-            double tj = j == 200 ? t[N - 1] : t[0] + (t[N - 1] - t[0]) * j / 200;
+            double tj = j == 200 ? t1 : t0 + (t1 - t0) * j / 200;
             ga_path_eval(&p, tj, &a);
             ga_path_eval(&pg, tj, &b);
             ga_path_eval(&ph, tj, &c);
@@ -97,7 +136,7 @@ int main(int argc, char **argv)
             bo = tk_max(bo, md(c, ga_mat4_mul(a, H)));
         }
         for (int j = 0; j <= 2000; ++j) {
-            double tj = j == 2000 ? t[N - 1] : t[0] + (t[N - 1] - t[0]) * j / 2000, v[6], ac[6];
+            double tj = j == 2000 ? t1 : t0 + (t1 - t0) * j / 2000, v[6], ac[6];
             ga_rotor r;
             ga_path_eval(&p, tj, &a);
             ga_path_eval(&pc, tj, &r);
@@ -105,8 +144,28 @@ int main(int argc, char **argv)
             ga_path_differentiate(&p, tj, GA_FRAME_BODY, v, ac);
             for (int q = 0; q < 6; ++q) vmax = tk_max(vmax, fabs(v[q])), amax = tk_max(amax, fabs(ac[q]));
         }
-        printf("%-13s %-9.2g %-9.2g %-9.2g %-9.2g %-9.2g %-7.3g %-7.3g %.2g\n", ga_scheme_name(sc[s]), keys,
-               vj, aj, wo, bo, vmax, amax, cm);
+        printf("%-13s %-9.2g %-9.2g %-9.2g %-9.2g %-9.2g %-7.3g %-7.3g %.2g\n", row[s].name, keys, vj, aj, wo,
+               bo, vmax, amax, cm);
+    }
+    printf("bspline: from its keys at t = 1, 2, 3 by %.2g, %.2g, %.2g\n", boff[1], boff[2], boff[3]);
+    {
+        /* decoupled's straight chords against screw's helices: the largest
+         * difference of a position coordinate over 2001 samples */
+        ga_path ps, pd;
+        double dp = 0;
+        if (ga_path_init_mat4(&ga_group_se3, GA_SCHEME_SCREW, N, t, k, NULL, w[0], sizeof w[0], &ps) ||
+            ga_path_init_mat4(&ga_group_se3, GA_SCHEME_DECOUPLED, N, t, k, NULL, w[1], sizeof w[1], &pd))
+            printf("decoupled: cannot build\n");
+        else {
+            for (int j = 0; j <= 2000; ++j) {
+                double tj = j == 2000 ? t[N - 1] : t[0] + (t[N - 1] - t[0]) * j / 2000;
+                ga_mat4 a, b;
+                ga_path_eval(&ps, tj, &a);
+                ga_path_eval(&pd, tj, &b);
+                for (int q = 3; q < 12; q += 4) dp = tk_max(dp, fabs(a.m[q] - b.m[q]));
+            }
+            printf("decoupled: positions from screw's by up to %.3g\n", dp);
+        }
     }
     fclose(f);
     if (argc < 3)
