@@ -245,6 +245,7 @@ static coeffs exp_coeffs(double s, double qq)
    2^-*e (*c = 2^-e cosh t, the bivector 2^-e (sinh t / t) Bi, finite), for
    the caller to scale at the end; *e = 0 otherwise. */
 static ga_mv big_factor(ga_mv Y, double t, double d, int room, double *c, int *e);
+static ga_mv factor_scaled(double g, double f, ga_mv Y, int n, int room, double *c, int *e);
 static ga_mv scaled_factor(ga_mv Xp, int k, double w, int room, double *c, int *e)
 {
     ga_mv X;
@@ -263,10 +264,9 @@ static ga_mv scaled_factor(ga_mv Xp, int k, double w, int room, double *c, int *
     double lp = w * ga_mv_sp(Xp, Xp), r = sqrt(fabs(lp)), t = ldexp(r, k);
     if (!isfinite(t))
         t = DBL_MAX; /* an angle beyond DBL_MAX: only known to be huge */
-    if (r == 0.0) {  /* a null part: exp = 1 + Bi, as large as it is */
-        *c = 1.0;
-        return X;
-    }
+    if (r == 0.0)    /* a null part: exp = 1 + Bi = 2^k (2^-k + Xi'), as large as it is
+                        (beyond DBL_MAX, X holds Inf, which met the other factor's zeros) */
+        return factor_scaled(ldexp(1.0, -k), 1.0, Xp, k, room, c, e);
     if (lp > 0.0 && t > BIG_R) /* (sinh t / t) 2^k Xp = (sinh t / r) Xp */
         return big_factor(Xp, t, r, room, c, e);
     *c = lp < 0.0 ? cos(t) : cosh(t);
@@ -284,8 +284,15 @@ static ga_mv scaled_factor(ga_mv Xp, int k, double w, int room, double *c, int *
 static ga_mv big_factor(ga_mv Y, double t, double d, int room, double *c, int *e)
 {
     int n;
-    double g = half_exp_big(t, &n), f = g / d;
-    double mx = fmax(g, ga_mv_maxabs(Y) * f);
+    double g = half_exp_big(t, &n);
+    return factor_scaled(g, g / d, Y, n, room, c, e);
+}
+
+/* 2^n (g + f Y) as 2^*e (*c + the bivector returned), with 2^p of 2^n
+   applied (p as in big_factor) and *e = n - p */
+static ga_mv factor_scaled(double g, double f, ga_mv Y, int n, int room, double *c, int *e)
+{
+    double mx = fmax(fmax(g, ga_mv_maxabs(Y) * f), DBL_MIN);
     int p = room - ilogb(mx);
     p = p < 0 ? 0 : p > n ? n : p;
     ga_mv V;
