@@ -589,5 +589,33 @@ int main(void)
         tk_end(&c_far);
     }
 
+    /* ---- angles whose square overflows (|w| from 1e154 to 1e308) -------------- */
+    /* se3_exp of such a twist lost the n n^T term with th^2 (cos th I +
+       sin th [n]x, no rotation) and gave NaN with a translation; rotor_exp
+       gave NaN. Both give the rotation by the double angle: se3_exp passes
+       se3_check and agrees with the rotor's matrix to 1e-13 / max(1, |t|) (both take the angle from the same
+       rounding of the norm), and the translation along the axis is v's, to 1e-13 |v| */
+    {
+        tk_rng s = {0x5e3b16}; /* its own stream */
+        tk_check rig = tk_begin("se3_exp of an angle 1e154..1e308: passes se3_check(GA_SE3_TOL)", 0);
+        tk_check agr = tk_begin("se3_exp = rotor_to_mat4(rotor_exp) there, / max(1,|t|)", 1e-13);
+        tk_check axi = tk_begin("its translation along the axis is v's, / |v|", 1e-13);
+        for (long i = 0; i < 2000; i++) {
+            ga_vec3 u = tk_unit(&s), d = tk_unit(&s);
+            double th = tk_loguni(&s, 1e154, 1e308), vs = i % 2 ? tk_loguni(&s, 1e-3, 1e300) : 0.0;
+            ga_twist xi = {tk_scale(u, th), tk_scale(d, vs)};
+            ga_mat4 m = ga_se3_exp(xi);
+            ga_mat4 r = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(xi)));
+            tk_add_status(&rig, ga_se3_check(m, GA_SE3_TOL), GA_OK);
+            tk_add(&agr, mat_err(m, r));
+            double along = m.m[3] * u.x + m.m[7] * u.y + m.m[11] * u.z,
+                   want = vs * (d.x * u.x + d.y * u.y + d.z * u.z);
+            tk_add(&axi, vs > 0 ? fabs(along - want) / vs : 0.0);
+        }
+        tk_end(&rig);
+        tk_end(&agr);
+        tk_end(&axi);
+    }
+
     return tk_finish("test_mat4");
 }

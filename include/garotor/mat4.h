@@ -91,7 +91,10 @@ ga_mat4 ga_se3_inverse(ga_mat4 m);
  *    V = I + ((1 - cos th)/th^2) S + ((th - sin th)/th^3) S^2,   th = |w|.
  *  The three coefficients are summed from their Taylor series for th < 1, so
  *  a rotation of 1e-12 rad under a translation of 1e6 keeps full relative
- *  accuracy; any th is accepted (no reduction to [0, pi] is needed for exp).
+ *  accuracy; any th is accepted (no reduction to [0, pi] is needed for exp),
+ *  also beyond ~1e154, where th^2 overflows: there R and t from the half
+ *  angle |w/2| and the unit axis (the rotation by the double angle, as
+ *  ga_rotor_exp gives it).
  *  The result is exactly homogeneous (last row 0 0 0 1). NaN in, NaN out. */
 ga_mat4 ga_se3_exp(ga_twist xi);
 
