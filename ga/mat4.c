@@ -1334,6 +1334,45 @@ static double log_divdiff(double t, double x, double y, double lx, double ly, do
     return t * (2.0 * atanh(z)) / d;
 }
 
+/* The sign of det A from Gaussian elimination with partial pivoting run to
+ * the end (no pivot test) on A with its rows scaled by powers of two to a
+ * largest entry in [1, 2) (the sign is unchanged): -1, 0 (a zero row or
+ * pivot) or 1. */
+static int lu4_det_sign(ga_mat4 a)
+{
+    int sign = 1;
+    for (int i = 0; i < 4; i++) {
+        double mr = 0.0;
+        for (int j = 0; j < 4; j++) mr = fmax(mr, fabs(M(a, i, j)));
+        if (!(mr > 0.0))
+            return 0;
+        int e = ilogb(mr);
+        for (int j = 0; j < 4; j++) M(a, i, j) = ldexp(M(a, i, j), -e);
+    }
+    for (int k = 0; k < 4; k++) {
+        int p = k;
+        for (int i = k + 1; i < 4; i++)
+            if (fabs(M(a, i, k)) > fabs(M(a, p, k)))
+                p = i;
+        if (p != k) {
+            sign = -sign;
+            for (int j = 0; j < 4; j++) {
+                double t = M(a, k, j);
+                M(a, k, j) = M(a, p, j);
+                M(a, p, j) = t;
+            }
+        }
+        if (M(a, k, k) == 0.0)
+            return 0;
+        sign = M(a, k, k) < 0.0 ? -sign : sign;
+        for (int i = k + 1; i < 4; i++) {
+            double l = M(a, i, k) / M(a, k, k);
+            for (int j = k + 1; j < 4; j++) M(a, i, j) -= l * M(a, k, j);
+        }
+    }
+    return sign;
+}
+
 int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
 {
     /* [8/8] Pade approximant of log(1 + x) in partial fractions: 8-point
@@ -1353,8 +1392,16 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
     if (!mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
     lu4 f;
-    if (lu4_factor(a, &f) != GA_OK)
-        return GA_ERR_SINGULAR; /* eigenvalue 0: no log */
+    if (lu4_factor(a, &f) != GA_OK) {
+        /* numerically singular. A negative determinant (the LU's, run to
+         * the end) is an odd number of negative real eigenvalues (a complex
+         * pair gives |l|^2 > 0): no real logarithm at all, GA_ERR_DOMAIN, as
+         * for a well-conditioned A below; only det >= 0 is GA_ERR_SINGULAR
+         * (an ill-conditioned block with eigenvalues 5.1e15, 38, -4.5, a
+         * lihao2 factor on affine keys, met the pivot test first and was
+         * GA_ERR_SINGULAR) */
+        return lu4_det_sign(a) < 0 ? GA_ERR_DOMAIN : GA_ERR_SINGULAR;
+    }
 
     /* The real Schur form A = Q T Q^T (Al-Mohy & Higham 2012, Alg. 4.1 works
      * on the Schur factor; real arithmetic as in Al-Mohy, Higham & Relton

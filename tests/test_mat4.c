@@ -589,6 +589,42 @@ int main(void)
         tk_end(&c_far);
     }
 
+    /* ---- logm: no real log however ill-conditioned -------------------------- */
+    /* det < 0 is a negative real eigenvalue: GA_ERR_DOMAIN, also where the
+       LU's pivot test calls A singular first (it said GA_ERR_SINGULAR; a
+       lihao2 factor on affine keys had eigenvalues 5.1e15, 38, -4.5). Exact
+       cases: the block [a a; a a-d] (a = 1e16, 2^60, 3e17; d = 2, 4, 6 ulps
+       of a, about 4 eps a) has det -a d exactly, eigenvalues near 2a and
+       -d/2, and its second pivot -d fails the test (15 of the 18 did;
+       equilibration cannot help: both rows have the same scale); in a
+       homogeneous matrix with a
+       translation, or beside a 2x2 rotation. d = 0 (rank 1 block) stays
+       GA_ERR_SINGULAR */
+    {
+        static const double as[3] = {1e16, 0x1p60, 3e17};
+        tk_check dom = tk_begin("logm of [a a; a a-d] blocks, det -a d < 0, d 2..6 ulps of a: GA_ERR_DOMAIN",
+                                0);
+        tk_check sng = tk_begin("logm of [a a; a a] blocks (det 0): GA_ERR_SINGULAR", 0);
+        for (int ai = 0; ai < 3; ai++)
+            for (int k = 0; k <= 3; k++)
+                for (int form = 0; form < 2; form++) {
+                    double a = as[ai], d = k * 2.0 * ldexp(DBL_EPSILON, ilogb(a)); /* k ulps */
+                    ga_mat4 m = ga_mat4_identity(), out;
+                    m.m[0] = m.m[1] = m.m[4] = a;
+                    m.m[5] = a - d;
+                    if (form == 0)
+                        m.m[3] = 3.0, m.m[7] = -2.0, m.m[11] = 0.5;
+                    else /* beside a rotation by 0.3 in axes 2, 3 */
+                        m.m[10] = m.m[15] = cos(0.3), m.m[11] = -sin(0.3), m.m[14] = sin(0.3);
+                    if (k == 0)
+                        tk_add_status(&sng, ga_mat4_logm(m, &out), GA_ERR_SINGULAR);
+                    else
+                        tk_add_status(&dom, ga_mat4_logm(m, &out), GA_ERR_DOMAIN);
+                }
+        tk_end(&dom);
+        tk_end(&sng);
+    }
+
     /* ---- angles whose square overflows (|w| from 1e154 to 1e308) -------------- */
     /* se3_exp of such a twist lost the n n^T term with th^2 (cos th I +
        sin th [n]x, no rotation) and gave NaN with a translation; rotor_exp

@@ -179,7 +179,10 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
  *   - the domain decided from the eigenvalues: GA_ERR_DOMAIN for a real
  *     eigenvalue < 0 or a complex pair within GA_MAT4_LOGM_AXIS_TOL of the
  *     negative real axis, and nothing else; GA_ERR_SINGULAR for an
- *     eigenvalue 0 or a numerically singular a (as ga_mat4_inverse);
+ *     eigenvalue 0 or a numerically singular a (as ga_mat4_inverse) whose
+ *     determinant (the LU's, run to the end) is not negative: one with
+ *     det < 0 has a negative real eigenvalue however ill-conditioned it
+ *     is, GA_ERR_DOMAIN;
  *   - square roots T_k = T^(1/2^k) by the real block recurrence (Higham
  *     1987), 2x2 blocks of complex pairs in closed form (B = aI + N with
  *     N^2 = -w^2 I, so f(B) = Re f(a + iw) I + Im f(a + iw)/w N), with
