@@ -651,6 +651,10 @@ static void mv_exp_log(const ga_mv *X)
     /* NaN in, NaN out; exp reads the bivector part only */
     if (!bfin)
         FZ_CHECK(!fz_all_finite(R.c, 32), "mv_exp: NaN/Inf in, finite out");
+    /* finite in: never NaN out (a hyperbolic part beyond ~710 overflows to
+       +-Inf, as exp does; it gave inf * 0 = NaN) */
+    for (int i = 0; bfin && i < 32; i++)
+        FZ_CHECK(!isnan(R.c[i]), "mv_exp: finite in, NaN out (coefficient %d)", i);
     FZ_CHECK(ga_mv_maxabs(mv_sub(R, ga_mv_exp(B))) == 0.0, "mv_exp reads more than the bivector part");
     /* log of anything: GA_OK, GA_ERR_DOMAIN, or NOTFINITE exactly for NaN/Inf */
     int st = ga_mv_log(*X, &L);

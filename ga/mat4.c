@@ -283,6 +283,39 @@ ga_mat4 ga_se3_exp(ga_twist xi)
     /* th = |w|: w.w overflows only for |w| > 1e154; then the scaled norm, so
      * that sin and cos still see the angle */
     double t2 = dot3(w, w), th = t2 <= DBL_MAX ? sqrt(t2) : norm3(w), a, b, c, co;
+    if (isinf(t2)) {
+        /* th beyond ~1.3e154: b and c below lost th^2 (b = c = 0 left R =
+         * cos th I + a [w]x, not a rotation, and c w x (w x v) gave NaN).
+         * From the half angle h = |w/2| (th itself overflows from ~1.8e308),
+         * as ga_rotor_exp: the unit axis n = (w/2)/h, sin th = 2 sin h cos h,
+         * 1 - cos th = 2 sin^2 h, R = cos th I + sin th [n]x +
+         * (1 - cos th) n n^T and t = (n.v) n + (sin th/th) v_perp +
+         * ((1 - cos th)/th) n x v (v_perp = v - (n.v) n): Eberly's V v with
+         * (th - sin th)/th^3 S^2 v written as -(1 - sin th/th) v_perp and
+         * added to v without cancellation. The rotation is exact for the
+         * double angle, which is known only to its ulp. */
+        /* h as ga_rotor_exp takes phi (the sqrt of the dot product of w/2
+         * 2^-600, times 2^600), bit for bit: an ulp of h is more than a
+         * radian, so another rounding of the norm (hypot) turns by another
+         * angle altogether */
+        ga_vec3 w2 = v3(0x1p-601 * w.x, 0x1p-601 * w.y, 0x1p-601 * w.z);
+        double ns = sqrt(dot3(w2, w2)), h = ns * 0x1p600;
+        double sh = sin(h), ch = cos(h), sn = 2.0 * sh * ch, k = 2.0 * sh * sh;
+        double tw = 2.0 * h; /* Inf beyond DBL_MAX: sn / tw = k / tw = 0, their limits */
+        ga_vec3 n = v3(w2.x / ns, w2.y / ns, w2.z / ns);
+        co = ch * ch - sh * sh;
+        double nv = dot3(n, v);
+        ga_vec3 vpar = v3(nv * n.x, nv * n.y, nv * n.z), vperp = axpy3(-1.0, vpar, v);
+        ga_vec3 tt = axpy3(k / tw, cross3(n, v), axpy3(sn / tw, vperp, vpar));
+        double kx = k * n.x, ky = k * n.y, kz = k * n.z, sx = sn * n.x, sy = sn * n.y, sz = sn * n.z;
+        /* clang-format off */
+        ga_mat4 rr = {{co + kx * n.x, kx * n.y - sz, kx * n.z + sy, tt.x,
+                       ky * n.x + sz, co + ky * n.y, ky * n.z - sx, tt.y,
+                       kz * n.x - sy, kz * n.y + sx, co + kz * n.z, tt.z,
+                       0.0, 0.0, 0.0, 1.0}};
+        /* clang-format on */
+        return rr;
+    }
     if (th < 1.0) {
         /* the series, no trig call and no division; cos th = 1 - b th^2 (Rodrigues) */
         a = b = c = 0.0;
@@ -1301,6 +1334,45 @@ static double log_divdiff(double t, double x, double y, double lx, double ly, do
     return t * (2.0 * atanh(z)) / d;
 }
 
+/* The sign of det A from Gaussian elimination with partial pivoting run to
+ * the end (no pivot test) on A with its rows scaled by powers of two to a
+ * largest entry in [1, 2) (the sign is unchanged): -1, 0 (a zero row or
+ * pivot) or 1. */
+static int lu4_det_sign(ga_mat4 a)
+{
+    int sign = 1;
+    for (int i = 0; i < 4; i++) {
+        double mr = 0.0;
+        for (int j = 0; j < 4; j++) mr = fmax(mr, fabs(M(a, i, j)));
+        if (!(mr > 0.0))
+            return 0;
+        int e = ilogb(mr);
+        for (int j = 0; j < 4; j++) M(a, i, j) = ldexp(M(a, i, j), -e);
+    }
+    for (int k = 0; k < 4; k++) {
+        int p = k;
+        for (int i = k + 1; i < 4; i++)
+            if (fabs(M(a, i, k)) > fabs(M(a, p, k)))
+                p = i;
+        if (p != k) {
+            sign = -sign;
+            for (int j = 0; j < 4; j++) {
+                double t = M(a, k, j);
+                M(a, k, j) = M(a, p, j);
+                M(a, p, j) = t;
+            }
+        }
+        if (M(a, k, k) == 0.0)
+            return 0;
+        sign = M(a, k, k) < 0.0 ? -sign : sign;
+        for (int i = k + 1; i < 4; i++) {
+            double l = M(a, i, k) / M(a, k, k);
+            for (int j = k + 1; j < 4; j++) M(a, i, j) -= l * M(a, k, j);
+        }
+    }
+    return sign;
+}
+
 int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
 {
     /* [8/8] Pade approximant of log(1 + x) in partial fractions: 8-point
@@ -1320,8 +1392,16 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
     if (!mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
     lu4 f;
-    if (lu4_factor(a, &f) != GA_OK)
-        return GA_ERR_SINGULAR; /* eigenvalue 0: no log */
+    if (lu4_factor(a, &f) != GA_OK) {
+        /* numerically singular. A negative determinant (the LU's, run to
+         * the end) is an odd number of negative real eigenvalues (a complex
+         * pair gives |l|^2 > 0): no real logarithm at all, GA_ERR_DOMAIN, as
+         * for a well-conditioned A below; only det >= 0 is GA_ERR_SINGULAR
+         * (an ill-conditioned block with eigenvalues 5.1e15, 38, -4.5, a
+         * lihao2 factor on affine keys, met the pivot test first and was
+         * GA_ERR_SINGULAR) */
+        return lu4_det_sign(a) < 0 ? GA_ERR_DOMAIN : GA_ERR_SINGULAR;
+    }
 
     /* The real Schur form A = Q T Q^T (Al-Mohy & Higham 2012, Alg. 4.1 works
      * on the Schur factor; real arithmetic as in Al-Mohy, Higham & Relton

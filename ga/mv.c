@@ -392,12 +392,22 @@ static int read_number(const char **s, double *out)
         k++;
         while (p[k] >= '0' && p[k] <= '9') k++;
     }
-    char tmp[400];
-    if (k >= sizeof tmp)
-        return 0;
-    memcpy(tmp, p, k);
-    tmp[k] = '\0';
-    *out = strtod(tmp, NULL);
+    /* strtod on the text itself where it stops where the number does (it
+       reads a decimal of any length, as the tool's reader does); where it
+       would read on ("2e12": 2 e12 here, 2x10^12 to strtod), on a copy of
+       the number alone. A beyond-range decimal is what strtod makes of it:
+       +-Inf (GA_ERR_NOTFINITE in ga_mv_parse), 0 or a subnormal below. */
+    char *end;
+    double v = strtod(p, &end);
+    if (end != p + k) {
+        char tmp[400];
+        if (k >= sizeof tmp)
+            return 0; /* a mantissa of 400 characters or more glued to a blade name */
+        memcpy(tmp, p, k);
+        tmp[k] = '\0';
+        v = strtod(tmp, NULL);
+    }
+    *out = v;
     *s = p + k;
     return 1;
 }

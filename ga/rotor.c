@@ -290,6 +290,21 @@ ga_rotor ga_rotor_exp(ga_generator g)
         double k = estrin9(k_taylor, phi2, y2, y4, y8);
         /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
         p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
+    } else if (isinf(phi2)) {
+        /* phi = |beta| beyond ~1.3e154 (a twist's angle beyond ~2.7e154),
+         * where phi^2 overflows (and gave NaN): the scaled norm, the unit
+         * axis u = beta / phi, c_par = (u.c) u and sinc (beta.c) =
+         * sin phi (u.c), so that libm's sin and cos see the angle, as
+         * ga_se3_exp does; the rotation is exact for the double angle, but
+         * an angle that large is known only to its ulp (>= 2 from 2^53) */
+        vec bs = v_scale(beta, 0x1p-600);
+        double ns = sqrt(v_dot(bs, bs)), phi = ns * 0x1p600, sn = sin(phi);
+        vec u = v_div(bs, ns);
+        double uc = v_dot(u, c);
+        cs = cos(phi);
+        sinc = sn / phi;
+        p = v_add(v_scale(c, sinc), v_scale(u, (cs - sinc) * uc));
+        return rotor_make(cs, v_scale(u, sn), p, sn * uc);
     } else {
         double phi = sqrt(phi2), m = bc / phi2; /* c_par = m beta */
         if (phi <= 3 * GA_PI / 4) {

@@ -207,8 +207,9 @@ static int cga_inverse(const void *a, void *out)
 }
 /* exp and log report a result that is not finite (the group's contract: a
  * status, never Inf or NaN with GA_OK). NaN/Inf in is GA_ERR_NOTFINITE; finite
- * in and not finite out is GA_ERR_DOMAIN: ga_rotor_exp of an angle beyond ~1e154
- * (phi^2 overflows) or of a translation near DBL_MAX, a twist = 2 generator
+ * in and not finite out is GA_ERR_DOMAIN: ga_rotor_exp of a translation near
+ * DBL_MAX (an angle beyond ~1e154 was one too, until its phi^2 no longer
+ * overflowed), a twist = 2 generator
  * beyond DBL_MAX (found by fuzz/fuzz_path and fuzz/fuzz_tool: `garotor exp`
  * printed nan; fuzz/regress/path/cga-exp-overflow replays it). */
 static int finite_status(const double *in, int n_in, const double *out, int n_out)

@@ -589,5 +589,69 @@ int main(void)
         tk_end(&c_far);
     }
 
+    /* ---- logm: no real log however ill-conditioned -------------------------- */
+    /* det < 0 is a negative real eigenvalue: GA_ERR_DOMAIN, also where the
+       LU's pivot test calls A singular first (it said GA_ERR_SINGULAR; a
+       lihao2 factor on affine keys had eigenvalues 5.1e15, 38, -4.5). Exact
+       cases: the block [a a; a a-d] (a = 1e16, 2^60, 3e17; d = 2, 4, 6 ulps
+       of a, about 4 eps a) has det -a d exactly, eigenvalues near 2a and
+       -d/2, and its second pivot -d fails the test (15 of the 18 did;
+       equilibration cannot help: both rows have the same scale); in a
+       homogeneous matrix with a
+       translation, or beside a 2x2 rotation. d = 0 (rank 1 block) stays
+       GA_ERR_SINGULAR */
+    {
+        static const double as[3] = {1e16, 0x1p60, 3e17};
+        tk_check dom = tk_begin("logm of [a a; a a-d] blocks, det -a d < 0, d 2..6 ulps of a: GA_ERR_DOMAIN",
+                                0);
+        tk_check sng = tk_begin("logm of [a a; a a] blocks (det 0): GA_ERR_SINGULAR", 0);
+        for (int ai = 0; ai < 3; ai++)
+            for (int k = 0; k <= 3; k++)
+                for (int form = 0; form < 2; form++) {
+                    double a = as[ai], d = k * 2.0 * ldexp(DBL_EPSILON, ilogb(a)); /* k ulps */
+                    ga_mat4 m = ga_mat4_identity(), out;
+                    m.m[0] = m.m[1] = m.m[4] = a;
+                    m.m[5] = a - d;
+                    if (form == 0)
+                        m.m[3] = 3.0, m.m[7] = -2.0, m.m[11] = 0.5;
+                    else /* beside a rotation by 0.3 in axes 2, 3 */
+                        m.m[10] = m.m[15] = cos(0.3), m.m[11] = -sin(0.3), m.m[14] = sin(0.3);
+                    if (k == 0)
+                        tk_add_status(&sng, ga_mat4_logm(m, &out), GA_ERR_SINGULAR);
+                    else
+                        tk_add_status(&dom, ga_mat4_logm(m, &out), GA_ERR_DOMAIN);
+                }
+        tk_end(&dom);
+        tk_end(&sng);
+    }
+
+    /* ---- angles whose square overflows (|w| from 1e154 to 1e308) -------------- */
+    /* se3_exp of such a twist lost the n n^T term with th^2 (cos th I +
+       sin th [n]x, no rotation) and gave NaN with a translation; rotor_exp
+       gave NaN. Both give the rotation by the double angle: se3_exp passes
+       se3_check and agrees with the rotor's matrix to 1e-13 / max(1, |t|) (both take the angle from the same
+       rounding of the norm), and the translation along the axis is v's, to 1e-13 |v| */
+    {
+        tk_rng s = {0x5e3b16}; /* its own stream */
+        tk_check rig = tk_begin("se3_exp of an angle 1e154..1e308: passes se3_check(GA_SE3_TOL)", 0);
+        tk_check agr = tk_begin("se3_exp = rotor_to_mat4(rotor_exp) there, / max(1,|t|)", 1e-13);
+        tk_check axi = tk_begin("its translation along the axis is v's, / |v|", 1e-13);
+        for (long i = 0; i < 2000; i++) {
+            ga_vec3 u = tk_unit(&s), d = tk_unit(&s);
+            double th = tk_loguni(&s, 1e154, 1e308), vs = i % 2 ? tk_loguni(&s, 1e-3, 1e300) : 0.0;
+            ga_twist xi = {tk_scale(u, th), tk_scale(d, vs)};
+            ga_mat4 m = ga_se3_exp(xi);
+            ga_mat4 r = ga_rotor_to_mat4(ga_rotor_exp(ga_twist_to_generator(xi)));
+            tk_add_status(&rig, ga_se3_check(m, GA_SE3_TOL), GA_OK);
+            tk_add(&agr, mat_err(m, r));
+            double along = m.m[3] * u.x + m.m[7] * u.y + m.m[11] * u.z,
+                   want = vs * (d.x * u.x + d.y * u.y + d.z * u.z);
+            tk_add(&axi, vs > 0 ? fabs(along - want) / vs : 0.0);
+        }
+        tk_end(&rig);
+        tk_end(&agr);
+        tk_end(&axi);
+    }
+
     return tk_finish("test_mat4");
 }

@@ -189,6 +189,35 @@ int main(void)
     expect_parse("1e999", GA_ERR_ARG, one); /* 1 e999: no such blade */
     expect_parse("1e+999", GA_ERR_NOTFINITE, one);
     expect_parse("1e+999e3", GA_ERR_NOTFINITE, one);
+    /* beyond the double range as the tool's reader (strtod) takes it: above,
+       +-Inf, refused as not finite; below, 0 or a subnormal. "1e400" is
+       1 e400 (as "1e999" above): an unknown name, not a number */
+    expect_parse("1e400", GA_ERR_ARG, one);
+    expect_parse("1E400", GA_ERR_NOTFINITE, one);
+    expect_parse("-1e+400 e12", GA_ERR_NOTFINITE, one);
+    expect_parse("1 + 1e+400e12", GA_ERR_NOTFINITE, one);
+    expect_parse("1e-400", GA_OK, ga_mv_zero());
+    expect_parse("-4e-324e3", GA_OK, term(GA_BLADE_E3, -0x1p-1074));
+    /* a decimal of any length, as the tool reads it (one of 400 characters
+       or more was refused); only a mantissa that long glued to a blade name
+       is not read */
+    {
+        static char big[1200];
+        size_t n = 0;
+        big[n++] = '0', big[n++] = '.';
+        for (int i = 0; i < 450; i++) big[n++] = '0';
+        memcpy(big + n, "25e+451", 8); /* 0.(450 zeros)25 x 10^451 = 2.5 */
+        expect_parse(big, GA_OK, ga_mv_scalar(2.5));
+        memcpy(big + n, "25E+451 e12", 12);
+        expect_parse(big, GA_OK, term(GA_BLADE_E12, 2.5));
+        memcpy(big + n, "25e12", 6);
+        expect_parse(big, GA_ERR_ARG, one);
+        n = 0;
+        big[n++] = '1';
+        for (int i = 0; i < 999; i++) big[n++] = '0';
+        big[n] = '\0'; /* 10^999 */
+        expect_parse(big, GA_ERR_NOTFINITE, one);
+    }
     tk_add_status(tk_get("parse: NULL text"), ga_mv_parse(NULL, &one), GA_ERR_ARG);
 
     /* inner products against their definitions */

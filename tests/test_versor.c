@@ -592,5 +592,142 @@ int main(int argc, char **argv)
         ga_mv R = ga_mv_exp(bv(2e154, 0.5, 0, 0, 0));
         tk_expect(ga_mv_isfinite(R) && tk_mv_maxabs(R) <= 1, "exp(2e154 e12 + 0.5 e34): finite, |R| <= 1");
     }
+
+    /* 6b. a hyperbolic part beyond ~710 overflows as exp does: +-Inf where
+       the true coefficient is beyond DBL_MAX, with its sign, the value where
+       it is in range, 0 where it is 0, never NaN (cosh, sinh and the
+       coefficient formulas gave inf * 0 and inf - inf: NaN everywhere) */
+    {
+        tk_rng rng6b = {0x6b6b}; /* its own stream */
+        /* exp(t e45) = cosh t + sinh t e45, exactly 0 elsewhere */
+        static const double ts[] = {711.0, 1000.0, 1e5, 1e300, DBL_MAX};
+        for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++)
+            for (int sg = 1; sg >= -1; sg -= 2) {
+                ga_mv R = ga_mv_exp(bv(0, 0, 0, sg * ts[i], 0));
+                int ok = R.c[0] == INFINITY && R.c[GA_BLADE_E45] == sg * INFINITY;
+                for (int j = 0; j < 32; j++) ok = ok && (j == 0 || j == GA_BLADE_E45 || R.c[j] == 0.0);
+                char what[96];
+                snprintf(what, sizeof what, "exp(%+g e45) = Inf %c Inf e45, 0 elsewhere", sg * ts[i],
+                         sg > 0 ? '+' : '-');
+                tk_expect(ok, what);
+            }
+        /* a part beside it: exp(1000 e45 + 1e300 e12) = e^1000/2 (1 + e45)
+           (cos 1e300 + sin 1e300 e12), cos 1e300 = -0.575, sin 1e300 = -0.818 */
+        ga_mv R = ga_mv_exp(bv(1e300, 0, 0, 1000, 0));
+        tk_expect(R.c[0] == -INFINITY && R.c[GA_BLADE_E12] == -INFINITY && R.c[GA_BLADE_E45] == -INFINITY &&
+                      R.c[GA_BLADE_E1245] == -INFINITY && tk_mv_maxabs(ga_mv_grade(R, 4)) == INFINITY,
+                  "exp(1000 e45 + 1e300 e12): -Inf on 1, e12, e45, e1245");
+        /* finite where the true coefficient is: exp(t e45 + eps e14), a
+           2-blade of square t^2 - eps^2, has e14 coefficient
+           eps sinh(t)/t = eps e^(t/2) / (2t) e^(t/2), finite for tiny eps */
+        tk_check fin = tk_begin("exp overflow: a finite coefficient beside Inf (rel, / u t)", 4.0);
+        tk_check inf = tk_begin("exp overflow: Inf of the right sign, no NaN (count bad)", 0.0);
+        for (long n = 0; n < 2000 * reps; n++) {
+            double t = tk_range(&rng6b, 711, 1400), eps = tk_loguni(&rng6b, 1e-320, 1e-290);
+            eps = n % 2 ? eps : -eps;
+            double h = exp(0.5 * t), want = eps * h / (2.0 * t) * h;
+            ga_mv Bf = bv(0, 0, 0, t, 0);
+            Bf.c[GA_BLADE_E14] = eps;
+            ga_mv Rf = ga_mv_exp(Bf);
+            if (isfinite(want) && fabs(want) >= DBL_MIN)
+                tk_add(&fin, fabs(Rf.c[GA_BLADE_E14] - want) / fabs(want) / (DBL_EPSILON * t));
+            tk_add(&inf, !(Rf.c[0] == INFINITY && Rf.c[GA_BLADE_E45] == INFINITY &&
+                           Rf.c[GA_BLADE_E14] == (isfinite(want) ? Rf.c[GA_BLADE_E14] : want)));
+        }
+        /* in general position: V (t e45 + th e12) ~V for a conformal rotor V
+           has exp = e^t/2 W (1 - O(e^-2t)), W = V (1 + e45)(cos th + sin th
+           e12) ~V, up to the rounding of the conjugation: a change of B by
+           u |B|, of the coefficients by about u t |W| (9.9 u t e^t/2 max|W| in
+           10000 draws, test_versor 10: 16 is allowed). t in [600, 1400], where e^t/2 W_i =
+           W_i h (h/2), h = e^(t/2), with every product in range, is finite
+           for some coefficients and beyond DBL_MAX for others: each finite
+           one to 16 u t e^t/2 max|W|, each other the Inf of its sign (or
+           within that of DBL_MAX); t in [1420, 1e5], where the change is
+           below 1e-10 |W|: each coefficient with |W_i| > 1e-6 max|W| the Inf
+           of its sign; t in (1e5, 1e300], where 2^-1074 e^t/2 overflows: 0
+           or +-Inf, never NaN (the sign is then that of the rounded B, which
+           is no longer V's) */
+        tk_check gen = tk_begin("exp overflow: conjugated, t <= 1400 (err / (u t e^t/2 |W|))", 16.0);
+        tk_check sgn = tk_begin("exp overflow: conjugated, t in [1420, 1e5]: Inf of W's sign (bad)", 0.0);
+        tk_check big = tk_begin("exp overflow: conjugated, t in (1e5, 1e300]: 0 or Inf, no NaN (bad)", 0.0);
+        for (long n = 0; n < 3000 * reps; n++) {
+            ga_mv V = conformal_rotor(&rng6b);
+            double t = n % 3 == 0 ? tk_range(&rng6b, 600, 1400)
+                     : n % 3 == 1 ? tk_range(&rng6b, 1420, 1e5)
+                                  : tk_loguni(&rng6b, 1e5, 1e300);
+            double th = n % 2 == 0 ? 0.0 : tk_range(&rng6b, -3, 3);
+            ga_mv Rg = ga_mv_exp(conjugated(V, bv(th, 0, 0, t, 0)));
+            ga_mv W = ga_mv_scalar(1.0), Rth = ga_mv_scalar(cos(th));
+            W.c[GA_BLADE_E45] = 1.0;
+            Rth.c[GA_BLADE_E12] = sin(th);
+            W = ga_mv_gp(ga_mv_gp(V, ga_mv_gp(W, Rth)), ga_mv_reverse(V));
+            double wm = tk_mv_maxabs(W), h = exp(0.5 * t), worst = 0.0;
+            int bad = 0;
+            for (int j = 0; j < 32; j++) {
+                if (n % 3 == 0) {
+                    /* in units of u t e^t/2 wm, all times 2^-1000 (e^t/2 W_j may overflow) */
+                    double h2 = ldexp(0.5 * h, -1000), want = W.c[j] * h * h2,
+                           unit = DBL_EPSILON * t * (h * wm) * h2;
+                    double got = ldexp(Rg.c[j], -1000), top = ldexp(DBL_MAX, -1000);
+                    double err = fabs(got - want) / unit;
+                    /* beyond DBL_MAX: an Inf of want's sign where want or its error bound
+                       (16 unit) reaches DBL_MAX (either sign where want is within that bound
+                       of 0: the rounding of the conjugation, e^t/2 times it), a finite
+                       coefficient only within that of DBL_MAX */
+                    if (isinf(got))
+                        err = fabs(want) + 16 * unit >= top &&
+                                      (signbit(got) == signbit(want) || fabs(want) <= 16 * unit)
+                                ? 0.0
+                                : INFINITY;
+                    else if (fabs(want) > top)
+                        err = signbit(got) == signbit(want) && fabs(got) >= top - 16 * unit ? 0.0 : INFINITY;
+                    worst = fmax(worst, err);
+                } else if (n % 3 == 1)
+                    bad |= isnan(Rg.c[j]) ||
+                           (fabs(W.c[j]) > 1e-6 * wm && Rg.c[j] != copysign(INFINITY, W.c[j]));
+                else
+                    bad |= !(Rg.c[j] == 0.0 || isinf(Rg.c[j]));
+            }
+            if (n % 3 == 0)
+                tk_add(&gen, worst);
+            else
+                tk_add(n % 3 == 1 ? &sgn : &big, bad);
+        }
+        /* beside a null part, on the route of the coefficients (both parts
+           near null against |B|): B = c (e14 + e15) + t e45, c >= 2^11 t, is a
+           2-blade of square t^2, exp(B) = cosh t + (sinh t / t) B; each
+           coefficient to 4 u t, or the Inf of its sign where e^t/2 times it
+           is beyond DBL_MAX (scaled by 2^-1000 to compare) */
+        tk_check nul = tk_begin("exp overflow: beside a null part (err / (u t |coefficient|))", 4.0);
+        for (long n = 0; n < 1000 * reps; n++) {
+            double t = tk_range(&rng6b, 600, 1400), c = tk_loguni(&rng6b, 2048 * t, 1e30) * (n % 2 ? 1 : -1);
+            ga_mv Bn = bv(0, 0, 0, t, 0);
+            Bn.c[GA_BLADE_E14] = Bn.c[GA_BLADE_E15] = c;
+            ga_mv Rn = ga_mv_exp(Bn);
+            double h = exp(0.5 * t), h2 = ldexp(0.5 * h, -1000), top = ldexp(DBL_MAX, -1000), worst = 0.0;
+            double want[4] = {h * h2, h * h2, c / t * h * h2, c / t * h * h2};
+            static const int at[4] = {0, GA_BLADE_E45, GA_BLADE_E14, GA_BLADE_E15};
+            for (int j = 0; j < 4; j++) {
+                double got = ldexp(Rn.c[at[j]], -1000);
+                if (isinf(got) || fabs(want[j]) > top)
+                    worst = fmax(worst, got == copysign(INFINITY, want[j]) &&
+                                                fabs(want[j]) >= top * (1 - 16 * DBL_EPSILON * t)
+                                            ? 0.0
+                                            : INFINITY);
+                else
+                    worst = fmax(worst, fabs(got - want[j]) / (DBL_EPSILON * t * fabs(want[j])));
+            }
+            for (int j = 0; j < 32; j++)
+                if (j != 0 && j != GA_BLADE_E45 && j != GA_BLADE_E14 && j != GA_BLADE_E15 && Rn.c[j] != 0.0)
+                    worst = INFINITY;
+            tk_add(&nul, worst);
+        }
+        tk_end(&fin);
+        tk_end(&inf);
+        tk_end(&nul);
+        tk_end(&gen);
+        tk_end(&sgn);
+        tk_end(&big);
+    }
     return tk_finish("test_versor");
 }

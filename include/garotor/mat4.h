@@ -91,7 +91,10 @@ ga_mat4 ga_se3_inverse(ga_mat4 m);
  *    V = I + ((1 - cos th)/th^2) S + ((th - sin th)/th^3) S^2,   th = |w|.
  *  The three coefficients are summed from their Taylor series for th < 1, so
  *  a rotation of 1e-12 rad under a translation of 1e6 keeps full relative
- *  accuracy; any th is accepted (no reduction to [0, pi] is needed for exp).
+ *  accuracy; any th is accepted (no reduction to [0, pi] is needed for exp),
+ *  also beyond ~1e154, where th^2 overflows: there R and t from the half
+ *  angle |w/2| and the unit axis (the rotation by the double angle, as
+ *  ga_rotor_exp gives it).
  *  The result is exactly homogeneous (last row 0 0 0 1). NaN in, NaN out. */
 ga_mat4 ga_se3_exp(ga_twist xi);
 
@@ -176,7 +179,10 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
  *   - the domain decided from the eigenvalues: GA_ERR_DOMAIN for a real
  *     eigenvalue < 0 or a complex pair within GA_MAT4_LOGM_AXIS_TOL of the
  *     negative real axis, and nothing else; GA_ERR_SINGULAR for an
- *     eigenvalue 0 or a numerically singular a (as ga_mat4_inverse);
+ *     eigenvalue 0 or a numerically singular a (as ga_mat4_inverse) whose
+ *     determinant (the LU's, run to the end) is not negative: one with
+ *     det < 0 has a negative real eigenvalue however ill-conditioned it
+ *     is, GA_ERR_DOMAIN;
  *   - square roots T_k = T^(1/2^k) by the real block recurrence (Higham
  *     1987), 2x2 blocks of complex pairs in closed form (B = aI + N with
  *     N^2 = -w^2 I, so f(B) = Re f(a + iw) I + Im f(a + iw)/w N), with

@@ -123,9 +123,13 @@ int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len);
  *  ("2e12", "2 e12", "2*e12"); a blade given twice adds up. A number's
  *  exponent is written with its sign ("1e+12", "2.5e-3") or with 'E'
  *  ("1E12"): 'e' followed by a digit begins a blade name, so "2e12" is 2 e12,
- *  as ganja.js prints it. GA_ERR_ARG for anything else (an empty text, an
- *  unknown name, "e21", "nan"), GA_ERR_NOTFINITE for a number that
- *  overflows; *out untouched then. */
+ *  as ganja.js prints it. A number is read as the tool's reader reads it
+ *  (strtod, any length): beyond the double range ("1e+400", "1E400") it is
+ *  GA_ERR_NOTFINITE, as the tool reports "number K is not finite"; below the
+ *  smallest subnormal ("1e-400") it reads as 0, as there. "1e400" is 1 e400,
+ *  an unknown name: GA_ERR_ARG. GA_ERR_ARG for anything else (an empty
+ *  text, an unknown name, "e21", "nan", a mantissa of 400 characters or
+ *  more glued to a blade name); *out untouched on any error. */
 int ga_mv_parse(const char *text, ga_mv *out);
 
 /* ---- norm and inverse ------------------------------------------------- */

@@ -161,8 +161,10 @@ ga_twist ga_generator_to_twist(ga_generator b);
  *  (pure translations and small angles included). For phi = |beta| <= pi/4,
  *  cos phi, sinc phi and (cos phi - sinc phi)/phi^2 are Taylor series in
  *  phi^2; up to 3 pi/4 (rotations up to 3 pi/2) the same series after
- *  reduction by pi/2, no libm call; beyond, libm's sin and cos. Any angle is
- *  accepted. NaN in, NaN out. */
+ *  reduction by pi/2, no libm call; beyond, libm's sin and cos. Any finite
+ *  angle is accepted, also beyond ~1e154 where phi^2 overflows (the scaled
+ *  norm there): the rotation by the double angle, as ga_se3_exp gives it.
+ *  NaN in, NaN out. */
 ga_rotor ga_rotor_exp(ga_generator b);
 
 /** The principal logarithm l(R) (W-L Thm 9, made robust): the generator of the

@@ -43,8 +43,13 @@ extern "C" {
  *  below u |B|, rounding only, that is no 2-blade) takes Newton steps
  *  R (3 - ~R R)/2 onto it. So a bivector whose parts are all elliptic has a
  *  finite exp on the group at any finite size (tests/test_versor.c,
- *  section 6: to 1.8e308), and exactly cos t + sin t e12 for t e12; a
- *  hyperbolic part beyond ~710 overflows, as exp does. Both near null
+ *  section 6: to 1.8e308), and exactly cos t + sin t e12 for t e12. A
+ *  hyperbolic part t (Bi^2 = t^2 > 0) beyond 710.475 overflows as exp
+ *  does: a coefficient is +-Inf with the true coefficient's sign where that
+ *  is beyond DBL_MAX, its value where it is in range (the factor's 2^e of
+ *  e^t/2 is applied last), 0 where it is 0, never NaN for finite B; each
+ *  is known to ~u t e^t/2 times the largest, so one below that may be Inf
+ *  (section 6b). Both near null
  *  (|li| <= 2^-20 |B|^2) keep the coefficients. An angle of such B is known
  *  to u |B| radians, a part below u |B| only as rounding. */
 ga_mv ga_mv_exp(ga_mv B);
