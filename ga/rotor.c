@@ -390,7 +390,7 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
            that along u, where exp does not damp it (the translation along the
            axis): 2.4e-12 of |p| at pi - phi = 1e-4 in exp(l(R)) - R. Taken
            out again, it is rounding of |c_perp|. */
-        if (s < 0.0)
+        if (!principal && s < 0.0) /* (the principal log has s >= 0) */
             cperp = v_sub(cperp, v_scale(u, v_dot(cperp, u)));
         c = v_add(cperp, v_scale(u, cpar));
         /* finite when rotor_near_group(r) (|p| <= 1e150, phi/|b| <= pi 2^450);
