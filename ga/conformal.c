@@ -56,7 +56,7 @@ static ga_mv point_up(ga_vec3 x, double lambda)
     return ga_mv_vector(y.x, y.y, y.z, 0.5 * (y2 - 1.0), 0.5 * (y2 + 1.0));
 }
 
-int ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out)
+ga_status ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out)
 {
     if (!isfinite(lambda) || !isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
         return GA_ERR_NOTFINITE;
@@ -98,7 +98,7 @@ static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
     return GA_OK;
 }
 
-int ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
+ga_status ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
 {
     if (!isfinite(lambda))
         return GA_ERR_NOTFINITE;
@@ -118,7 +118,7 @@ int ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
     return GA_OK;
 }
 
-int ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 1.0, out); }
+ga_status ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 1.0, out); }
 
 /* ---- objects ---------------------------------------------------------------- */
 
@@ -227,7 +227,7 @@ static int dual_sphere_params(ga_mv s, ga_vec3 *centre, double *radius)
     return GA_OK;
 }
 
-int ga_sphere_params(ga_mv S, ga_vec3 *centre, double *radius)
+ga_status ga_sphere_params(ga_mv S, ga_vec3 *centre, double *radius)
 {
     ga_mv s;
     int st = dual_vector(S, &s);
@@ -247,7 +247,7 @@ static int dual_plane_params(ga_mv p, ga_vec3 *normal, double *distance)
     return GA_OK;
 }
 
-int ga_plane_params(ga_mv P, ga_vec3 *normal, double *distance)
+ga_status ga_plane_params(ga_mv P, ga_vec3 *normal, double *distance)
 {
     ga_mv p;
     int st = dual_vector(P, &p);
@@ -264,7 +264,7 @@ static ga_mv line_of(ga_vec3 u, ga_vec3 p)
     return L;
 }
 
-int ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
+ga_status ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
 {
     if (!ga_mv_isfinite(L))
         return GA_ERR_NOTFINITE;
@@ -306,7 +306,7 @@ static int carrier(ga_mv X, ga_mv flat, ga_vec3 *centre, double *radius)
     return dual_sphere_params(ga_mv_grade(sigma, 1), centre, radius);
 }
 
-int ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
+ga_status ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
 {
     if (!ga_mv_isfinite(PP))
         return GA_ERR_NOTFINITE;
@@ -331,7 +331,7 @@ int ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
     return GA_OK;
 }
 
-int ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal)
+ga_status ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal)
 {
     if (!ga_mv_isfinite(C))
         return GA_ERR_NOTFINITE;

@@ -188,7 +188,7 @@ static ga_mat4 lu4_solve(const lu4 *f, ga_mat4 b)
     return b;
 }
 
-int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
+ga_status ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
 {
     lu4 f;
     if (!mat4_isfinite(&a))
@@ -252,7 +252,7 @@ static inline int se3_check(const ga_mat4 *m, double tol)
     return GA_OK;
 }
 
-int ga_se3_check(ga_mat4 m, double tol) { return se3_check(&m, tol); }
+ga_status ga_se3_check(ga_mat4 m, double tol) { return se3_check(&m, tol); }
 
 ga_mat4 ga_se3_inverse(ga_mat4 m)
 {
@@ -433,7 +433,7 @@ static inline ga_twist se3_log_core(const ga_mat4 *m)
     return xi;
 }
 
-int ga_se3_log(ga_mat4 m, ga_twist *out)
+ga_status ga_se3_log(ga_mat4 m, ga_twist *out)
 {
     int st = se3_check(&m, GA_SE3_TOL);
     if (st != GA_OK)
@@ -448,7 +448,7 @@ int ga_se3_log(ga_mat4 m, ga_twist *out)
     return GA_OK;
 }
 
-int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
+ga_status ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
 {
     int st = ga_se3_check(h0, GA_SE3_TOL);
     if (st == GA_OK)
@@ -742,7 +742,7 @@ static void expm_fix_blocks(ga_mat4 *x, const ga_mat4 *a, int k, int plain, cons
     }
 }
 
-int ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
+ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
 {
     /* theta_m: the largest alpha for which r_m(A) = e^(A + E) with
      * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3) for m <= 9, and
@@ -1384,7 +1384,7 @@ static int lu4_det_sign(ga_mat4 a)
     return sign;
 }
 
-int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
+ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
 {
     /* [8/8] Pade approximant of log(1 + x) in partial fractions: 8-point
      * Gauss-Legendre on log(I + X) = int_0^1 X (I + t X)^{-1} dt (Higham 2001).
@@ -1774,7 +1774,7 @@ int ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
  * X_0 = R with ||R^T R - I|| <= 1e-3: the error e_k = ||X_k^T X_k - I|| obeys
  * e_{k+1} ~ e_k^2 / 4, so three steps reach rounding; the loop stops when a
  * step changes no entry by more than 4 ulp, at most 8 steps. */
-int ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out)
+ga_status ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out)
 {
     if (!(tol >= 0.0 && tol <= GA_SE3_NORMALIZE_TOL))
         return GA_ERR_ARG;

@@ -7,6 +7,7 @@
  * Everything below is that rule, applied to all 32 x 32 pairs.
  */
 #include <garotor/mv.h>
+#include <garotor/numtext.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -118,27 +119,19 @@ double ga_mv_maxabs(ga_mv a)
  *
  * (a's blade, then b's; op keeps disjoint pairs, lc the pairs with a's blade
  * a subset of b's), so each sum is rounded as that loop rounds it. */
-/* On x86-64 Linux with gcc, ga_mv_gp is the same product in vectors
- * (mv_gp_blocks2, 4, 8 of mv_products.inc: gcc's vector extensions), compiled
- * three times, for SSE2 in vectors of 2 doubles, AVX2 in 4 and AVX-512F in
- * 8, and the dynamic loader picks the one the CPU runs (an ifunc). Each does
- * mv_gp_dense's operations in its order (no FMA: -ffp-contract=off), so all
- * give the same bits. In garotor-bench gp_full took 166-189 ns with the old
- * AVX-512F clone of the straight-line mv_gp_dense (220-227 ns as SSE2 only);
- * see CHANGELOG.md for the figures of the vectors. -Dc_args=-DGA_NO_TARGET_CLONES
- * turns it off (mv_gp_dense, for the compiler's own target). */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&                 \
-    !defined(GA_NO_TARGET_CLONES)
-#define GA_DENSE_BLOCKS 1
+/* With gcc on x86-64 (GA_DENSE_BLOCKS), ga_mv_gp is the same product in
+ * vectors, compiled for SSE2 (2 doubles), AVX2 (4) and AVX-512F (8); where the
+ * C library resolves ifuncs (glibc) and the compiler has the attribute
+ * (GA_HAVE_IFUNC, from meson), the dynamic loader picks the widest the CPU
+ * runs. Elsewhere (musl, which has no IRELATIVE relocations) the SSE2 form
+ * serves every CPU. All give mv_gp_dense's bits (docs/benchmarks.md has the
+ * speeds). */
+#include "internal/gp_dense.h"
+#if defined(GA_DENSE_BLOCKS) && defined(__GLIBC__) && defined(GA_HAVE_IFUNC)
+#define GA_GP_IFUNC 1
 #endif
-#if defined(__GNUC__)
-#define GA_DENSE_FN static inline __attribute__((always_inline)) /* into each target below */
-#else
-#define GA_DENSE_FN static inline
-#endif
-#include "mv_products.inc"
 
-#ifdef GA_DENSE_BLOCKS
+#ifdef GA_GP_IFUNC
 __attribute__((target("avx512f"))) static ga_mv gp_avx512f(ga_mv a, ga_mv b)
 {
     ga_mv r;
@@ -166,6 +159,13 @@ static gp_fn gp_resolve(void)
                                              : gp_sse2;
 }
 ga_mv ga_mv_gp(ga_mv a, ga_mv b) __attribute__((ifunc("gp_resolve")));
+#elif defined(GA_DENSE_BLOCKS)
+ga_mv ga_mv_gp(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_gp_blocks2(a.c, b.c, r.c);
+    return r;
+}
 #else
 ga_mv ga_mv_gp(ga_mv a, ga_mv b)
 {
@@ -272,7 +272,7 @@ double ga_mv_norm2(ga_mv a) { return ga_mv_sp(a, ga_mv_reverse(a)); }
 
 double ga_mv_norm(ga_mv a) { return sqrt(fabs(ga_mv_norm2(a))); }
 
-int ga_mv_inverse(ga_mv a, ga_mv *out)
+ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
 {
     if (!ga_mv_isfinite(a))
         return GA_ERR_NOTFINITE;
@@ -305,16 +305,9 @@ int ga_mv_inverse(ga_mv a, ga_mv *out)
 
 /* ---- text ------------------------------------------------------------------ */
 
-/* The shortest decimal that reads back as the same double, the tool's writer
- * (tools/numtext.c, Schubfach), compiled here as static functions: no
- * allocation, no locale, nothing exported. */
-#define NT_API static
-#define NT_WRITE_ONLY
-#include "../tools/numtext.c"
-
 /* One term: " - " / " + " between terms ("-" first), the coefficient in
-   nt_write's shortest form unless it is +-1 on a blade, then the blade's name. */
-int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
+   ga_double_format's shortest form unless it is +-1 on a blade, then the blade's name. */
+ga_status ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
 {
     if (!ga_mv_isfinite(a))
         return GA_ERR_NOTFINITE;
@@ -325,8 +318,8 @@ int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
         if (v == 0.0)
             continue;
         const char *sep = signbit(v) ? (n ? " - " : "-") : (n ? " + " : "");
-        char num[NT_BUF];
-        size_t k = i > 0 && fabs(v) == 1.0 ? 0 : nt_write(fabs(v), num);
+        char num[GA_DOUBLE_TEXT_MAX];
+        size_t k = i > 0 && fabs(v) == 1.0 ? 0 : ga_double_format(fabs(v), num);
         size_t ls = strlen(sep), ln = strlen(blade_names[i]);
         if (ls + k + ln >= sizeof tmp - n)
             return GA_ERR_ARG; /* cannot happen: GA_MV_TEXT_MAX is the longest text */
@@ -412,7 +405,7 @@ static int read_number(const char **s, double *out)
     return 1;
 }
 
-int ga_mv_parse(const char *text, ga_mv *out)
+ga_status ga_mv_parse(const char *text, ga_mv *out)
 {
     if (!text)
         return GA_ERR_ARG;

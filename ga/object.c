@@ -152,12 +152,12 @@ static int classify(ga_mv X, int strict, ga_object *o)
     return GA_OK;
 }
 
-int ga_object_from_mv(ga_mv X, ga_object *out) { return classify(X, 1, out); }
+ga_status ga_object_from_mv(ga_mv X, ga_object *out) { return classify(X, 1, out); }
 
 static ga_mv translate(ga_mv X, ga_vec3 a);
 static int finite3(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
-int ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out)
+ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out)
 {
     if (!finite3(origin) || !isfinite(lambda))
         return GA_ERR_NOTFINITE;
@@ -203,7 +203,7 @@ static ga_mv scale_n_nbar(ga_mv X, double kn, double kb)
     return X;
 }
 
-int ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
+ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
 {
     if (!ga_mv_isfinite(X) || !finite3(origin) || !isfinite(lambda))
         return GA_ERR_NOTFINITE;
@@ -258,7 +258,7 @@ int ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
     return GA_OK;
 }
 
-int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out)
+ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out)
 {
     double r[8] = {R.s, R.e12, R.e13, R.e23, R.e1n, R.e2n, R.e3n, R.e123n};
     for (int i = 0; i < 8; i++)
@@ -631,9 +631,9 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
     return GA_OK;
 }
 
-int ga_mv_join(ga_mv A, ga_mv B, ga_mv *out) { return join_meet(A, B, out, NULL); }
+ga_status ga_mv_join(ga_mv A, ga_mv B, ga_mv *out) { return join_meet(A, B, out, NULL); }
 
-int ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out) { return join_meet(A, B, NULL, out); }
+ga_status ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out) { return join_meet(A, B, NULL, out); }
 
 /* The object of O, refusing what has no nearest point. */
 static int read_real(ga_mv O, ga_object *o)
@@ -665,7 +665,7 @@ static int onto_round(ga_vec3 c, double r, ga_vec3 d, ga_vec3 *out)
     return GA_OK;
 }
 
-int ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
+ga_status ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
 {
     ga_object o;
     int st = read_real(O, &o);
@@ -685,7 +685,7 @@ int ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
     }
 }
 
-int ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
+ga_status ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
 {
     ga_vec3 p;
     int st = ga_point_project(x, O, &p);
@@ -694,7 +694,7 @@ int ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
     return st;
 }
 
-int ga_point_distance(ga_vec3 x, ga_mv O, double *out)
+ga_status ga_point_distance(ga_vec3 x, ga_mv O, double *out)
 {
     ga_vec3 d;
     int st = ga_point_reject(x, O, &d);
@@ -791,7 +791,7 @@ static int round_angle(const ga_object *a, const ga_object *b, double *out)
     return GA_OK;
 }
 
-int ga_object_angle(ga_mv A, ga_mv B, double *out)
+ga_status ga_object_angle(ga_mv A, ga_mv B, double *out)
 {
     ga_object a, b;
     int st = read_real_pair(A, B, &a, &b);
@@ -823,7 +823,7 @@ static ga_rotor turn(ga_vec3 a, ga_vec3 b)
     return ga_rotor_rotation(x, atan2(sn, cs));
 }
 
-int ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
+ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
 {
     ga_object a, b;
     int st = read_real_pair(A, B, &a, &b);

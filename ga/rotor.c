@@ -109,7 +109,7 @@ static double rotor_drift(ga_rotor r)
     return fmax(fabs(q2 - 1.0), 2.0 * fabs(rotor_pq3(r)) / fmax(1.0, psize));
 }
 
-int ga_rotor_check(ga_rotor r, double tol)
+ga_status ga_rotor_check(ga_rotor r, double tol)
 {
     if (!rotor_isfinite(r))
         return GA_ERR_NOTFINITE;
@@ -146,7 +146,7 @@ static inline ga_rotor rotor_project(ga_rotor r, double k)
     return rotor_make(s, b, v_add(p, v_scale(b, mu)), p4 - mu * s);
 }
 
-int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
+ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out)
 {
     if (!rotor_isfinite(r))
         return GA_ERR_NOTFINITE;
@@ -185,7 +185,7 @@ int ga_rotor_normalize(ga_rotor r, ga_rotor *out)
     return GA_OK;
 }
 
-int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
+ga_status ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
 {
     static const int inside[12] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13,   GA_BLADE_E23,
                                    GA_BLADE_E14,    GA_BLADE_E15, GA_BLADE_E24,   GA_BLADE_E25,
@@ -461,12 +461,12 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
     return GA_OK;
 }
 
-int ga_rotor_log(ga_rotor r, ga_generator *out) { return rotor_log(r, 1, out); }
-int ga_rotor_log_literal(ga_rotor r, ga_generator *out) { return rotor_log(r, 0, out); }
+ga_status ga_rotor_log(ga_rotor r, ga_generator *out) { return rotor_log(r, 1, out); }
+ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out) { return rotor_log(r, 0, out); }
 
 /* ---- screws ---------------------------------------------------------------- */
 
-int ga_rotor_to_screw(ga_rotor r, ga_screw *out)
+ga_status ga_rotor_to_screw(ga_rotor r, ga_screw *out)
 {
     ga_generator g;
     int st = ga_rotor_log(r, &g);
@@ -528,7 +528,7 @@ ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t) { return ga_rotor_from_quat_in
 
 ga_mat4 ga_rotor_to_mat4(ga_rotor r) { return ga_rotor_to_mat4_inline(r); }
 
-int ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out) { return ga_rotor_from_mat4_inline(mm, out); }
+ga_status ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out) { return ga_rotor_from_mat4_inline(mm, out); }
 
 ga_dualquat ga_rotor_to_dualquat(ga_rotor r)
 {
@@ -542,7 +542,7 @@ ga_rotor ga_rotor_from_dualquat(ga_dualquat d)
     return r;
 }
 
-int ga_quat_normalize(ga_quat q, double tol, ga_quat *out)
+ga_status ga_quat_normalize(ga_quat q, double tol, ga_quat *out)
 {
     if (!(tol >= 0.0 && tol <= GA_SE3_NORMALIZE_TOL))
         return GA_ERR_ARG;

@@ -1,7 +1,7 @@
 /* garotor/status.c: the words for the status codes of types.h. */
 #include <garotor/types.h>
 
-const char *ga_status_string(int status)
+const char *ga_status_string(ga_status status)
 {
     switch (status) {
     case GA_OK: return "ok";

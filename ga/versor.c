@@ -931,7 +931,7 @@ static int log_closed(ga_mv R, double tol, ga_mv *out)
     return GA_OK;
 }
 
-int ga_mv_log(ga_mv R, ga_mv *out)
+ga_status ga_mv_log(ga_mv R, ga_mv *out)
 {
     if (!finite_mv(R))
         return GA_ERR_NOTFINITE;
@@ -1170,7 +1170,7 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
     }
 }
 
-int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
+ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
 {
     ga_mv b = ga_mv_grade(B, 2);
     if (!finite_mv(b))
@@ -1193,7 +1193,7 @@ int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
     return GA_OK;
 }
 
-int ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2)
+ga_status ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2)
 {
     ga_mv L, B1, B2;
     int st = ga_mv_log(R, &L);
@@ -1208,7 +1208,7 @@ int ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2)
 
 /* ---- versors ----------------------------------------------------------------- */
 
-int ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
+ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
 {
     if (!finite_mv(V) || !finite_mv(X))
         return GA_ERR_NOTFINITE;
@@ -1235,7 +1235,7 @@ ga_mv ga_versor_reflection(ga_vec3 normal, double distance) { return ga_plane_du
 
 ga_mv ga_versor_inversion(ga_vec3 centre, double radius) { return ga_sphere_dual(centre, radius); }
 
-int ga_versor_dilation(ga_vec3 c, double s, ga_mv *out)
+ga_status ga_versor_dilation(ga_vec3 c, double s, ga_mv *out)
 {
     if (!isfinite(s) || !isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z))
         return GA_ERR_NOTFINITE;

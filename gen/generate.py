@@ -777,10 +777,10 @@ def gen_rotor_sandwich():
     return text, counts
 
 
-# ---- 7. powers of ten for the shortest-decimal writer (tools/numtext_table.inc)
+# ---- 7. powers of ten for the shortest-decimal writer (ga/numtext_table.inc)
 
 # The tool writes each double as the shortest decimal that reads back as it
-# (tools/numtext.c, after Giulietti's Schubfach). It needs, for every k with
+# (ga/numtext.c, after Giulietti's Schubfach). It needs, for every k with
 # 10^k between the doubles' extremes, g(k) = floor(beta) + 1 where
 # 10^-k = beta 2^r, 2^125 <= beta < 2^126: an overestimate of 10^-k by less
 # than one unit in its 126th bit, split into two 63-bit halves. Also the three
@@ -838,7 +838,7 @@ def gen_numtext_table():
     head = [HEADER, '',
             'g(k) for 10^-k = beta 2^r, 2^125 <= beta < 2^126: floor(beta) + 1, as two',
             '63-bit halves {g >> 63, g mod 2^63}, for k = NT_K_MIN .. NT_K_MAX (row k - NT_K_MIN).',
-            'tools/numtext.c includes it; section 7 of the script derives it.']
+            'ga/numtext.c includes it; section 7 of the script derives it.']
     out = comment_block(head) + [
         '#define NT_K_MIN (%d)' % k_min, '#define NT_K_MAX %d' % k_max,
         '#define NT_LOG10_2 %dLL' % NT_LOG10_2[0], '#define NT_LOG10_2_SHIFT %d' % NT_LOG10_2[1],
@@ -855,7 +855,7 @@ GENERATED = [
     ('interp/se3_dexp.inc', gen_se3_dexp),
     ('ga/mv_products.inc', gen_dense_products),
     ('ga/rotor_sandwich.inc', gen_rotor_sandwich),
-    ('tools/numtext_table.inc', gen_numtext_table),
+    ('ga/numtext_table.inc', gen_numtext_table),
 ]
 
 

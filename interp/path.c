@@ -25,7 +25,7 @@ static const char *const eval_names[] = {"direct", "euler", "exact"};
 
 const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < GA_SCHEME_COUNT ? scheme_names[s] : "?"; }
 
-int ga_scheme_by_name(const char *name, ga_scheme *out)
+ga_status ga_scheme_by_name(const char *name, ga_scheme *out)
 {
     for (unsigned i = 0; name && i < GA_SCHEME_COUNT; ++i)
         if (strcmp(name, scheme_names[i]) == 0) {
@@ -37,7 +37,7 @@ int ga_scheme_by_name(const char *name, ga_scheme *out)
 
 const char *ga_eval_name(ga_eval e) { return (unsigned)e < 3 ? eval_names[e] : "?"; }
 
-int ga_eval_by_name(const char *name, ga_eval *out)
+ga_status ga_eval_by_name(const char *name, ga_eval *out)
 {
     for (unsigned i = 0; name && i < 3; ++i)
         if (strcmp(name, eval_names[i]) == 0) {
@@ -1271,14 +1271,15 @@ static int init(const ga_group *g, ga_scheme s, size_t n, const double *times, c
     return st;
 }
 
-int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
-                 const double *velocities, void *work, size_t work_bytes, ga_path *out)
+ga_status ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
+                       const double *velocities, void *work, size_t work_bytes, ga_path *out)
 {
     return init(g, s, n, times, keys, 0, velocities, work, work_bytes, out);
 }
 
-int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times, const ga_mat4 *keys,
-                      const double *velocities, void *work, size_t work_bytes, ga_path *out)
+ga_status ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times,
+                            const ga_mat4 *keys, const double *velocities, void *work, size_t work_bytes,
+                            ga_path *out)
 {
     return init(g, s, n, times, keys, 1, velocities, work, work_bytes, out);
 }
@@ -1364,15 +1365,15 @@ static int append(ga_path *p, double t, const void *key, int mat4)
     return st;
 }
 
-int ga_path_append(ga_path *p, double t, const void *key) { return append(p, t, key, 0); }
+ga_status ga_path_append(ga_path *p, double t, const void *key) { return append(p, t, key, 0); }
 
-int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key) { return append(p, t, &key, 1); }
+ga_status ga_path_append_mat4(ga_path *p, double t, ga_mat4 key) { return append(p, t, &key, 1); }
 
 /* ---- evaluation ---------------------------------------------------------------- */
 
 size_t ga_path_segments(const ga_path *p) { return p ? nseg(p) : 0; }
 
-int ga_path_range(const ga_path *p, double *t0, double *t1)
+ga_status ga_path_range(const ga_path *p, double *t0, double *t1)
 {
     if (!p || !t0 || !t1)
         return GA_ERR_ARG;
@@ -1381,7 +1382,7 @@ int ga_path_range(const ga_path *p, double *t0, double *t1)
     return GA_OK;
 }
 
-int ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1)
+ga_status ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1)
 {
     if (!p || !t0 || !t1 || seg >= nseg(p))
         return GA_ERR_ARG;
@@ -1390,7 +1391,7 @@ int ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1)
     return GA_OK;
 }
 
-int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
+ga_status ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
 {
     size_t m = nseg(p);
     if (!(t >= knot(p, 0) && t <= knot(p, m)))
@@ -1510,7 +1511,7 @@ static int screw_at(const double *k01, const double *k23, double phi2, double u,
     return z == 0.0 ? GA_OK : GA_ERR_DOMAIN;
 }
 
-int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
+ga_status ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out)
 {
     if (!p || !out || seg >= nseg(p) || !isfinite(u))
         return GA_ERR_ARG;
@@ -1566,7 +1567,7 @@ static int eval_direct(const ga_path *p, size_t seg, double u, void *out)
     return ga_path_eval_segment(p, seg, u, out);
 }
 
-int ga_path_eval(const ga_path *p, double t, void *out)
+ga_status ga_path_eval(const ga_path *p, double t, void *out)
 {
     size_t seg;
     double u;
@@ -1617,7 +1618,7 @@ static int velocity_u(const ga_path *p, size_t seg, double u, double *v)
     return GA_OK;
 }
 
-int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v)
+ga_status ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v)
 {
     if (!p || !v || seg >= nseg(p) || !isfinite(u))
         return GA_ERR_ARG;
@@ -1633,7 +1634,7 @@ int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v)
     return GA_OK;
 }
 
-int ga_path_velocity(const ga_path *p, double t, double *v)
+ga_status ga_path_velocity(const ga_path *p, double t, double *v)
 {
     size_t seg;
     double u;
@@ -1662,7 +1663,7 @@ static size_t part_norms(const ga_group *g, const double *x, double *nrm)
     return parts;
 }
 
-int ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
+ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
 {
     if (!p || !out)
         return GA_ERR_ARG;
@@ -1889,7 +1890,7 @@ static int accel_u(const ga_path *p, size_t seg, double u, double *v, double *a)
     return GA_OK;
 }
 
-int ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a)
+ga_status ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a)
 {
     if (!p || !a || seg >= nseg(p) || !isfinite(u))
         return GA_ERR_ARG;
@@ -1905,12 +1906,13 @@ int ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double 
     return GA_OK;
 }
 
-int ga_path_acceleration(const ga_path *p, double t, double *a)
+ga_status ga_path_acceleration(const ga_path *p, double t, double *a)
 {
     return ga_path_differentiate(p, t, GA_FRAME_BODY, NULL, a);
 }
 
-int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a)
+ga_status ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v,
+                                        double *a)
 {
     if (!p || seg >= nseg(p) || !isfinite(u) || (unsigned)f > GA_FRAME_SPATIAL)
         return GA_ERR_ARG;
@@ -1941,7 +1943,7 @@ int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_fra
     return GA_OK;
 }
 
-int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, double *a)
+ga_status ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, double *a)
 {
     size_t seg;
     double u;
@@ -2081,8 +2083,8 @@ static void exact_output(const ga_path_stepper *s, void *out)
 
 /* ---- samplers --------------------------------------------------------------------- */
 
-int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
-                         ga_path_stepper *s)
+ga_status ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
+                               ga_path_stepper *s)
 {
     if (!s || !p || n < 1 || (unsigned)ev > GA_EVAL_EXACT)
         return GA_ERR_ARG;
@@ -2150,7 +2152,7 @@ static int screw_next(ga_path_stepper *s, size_t seg, double u, void *out)
     return st;
 }
 
-int ga_path_stepper_next(ga_path_stepper *s, void *out)
+ga_status ga_path_stepper_next(ga_path_stepper *s, void *out)
 {
     if (!s || !out || s->k >= s->n)
         return GA_ERR_ARG;
@@ -2193,8 +2195,8 @@ int ga_path_stepper_next(ga_path_stepper *s, void *out)
     return st;
 }
 
-int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
-                           void *out)
+ga_status ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
+                                 void *out)
 {
     ga_path_stepper s;
     int st = ga_path_stepper_init(p, ev, step, n, t0, t1, &s);
@@ -2205,7 +2207,7 @@ int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n, 
     return st;
 }
 
-int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times, void *out)
+ga_status ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times, void *out)
 {
     if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT)
         return GA_ERR_ARG;

@@ -1095,7 +1095,11 @@ static PyObject *Path_get_range(PathObject *self, void *c)
     double t0, t1;
     if (!path_ready(self))
         return NULL;
-    ga_path_range(&self->path, &t0, &t1);
+    int st = ga_path_range(&self->path, &t0, &t1);
+    if (st != GA_OK) {
+        PyErr_SetString(PyExc_ValueError, ga_status_string(st));
+        return NULL;
+    }
     return Py_BuildValue("(dd)", t0, t1);
 }
 static PyObject *Path_get_group(PathObject *self, void *c)

@@ -2,6 +2,7 @@
 # The naming scheme of docs/conventions.md, checked on the built library and
 # the public headers:
 #   - every symbol the shared library exports starts with ga_;
+#   - it exports exactly the functions and data the headers declare GA_API;
 #   - enumerator families cannot collide: for each enum of the public headers,
 #     its family prefix (the longest common prefix of its members, the first
 #     member left out as it may be the family's zero, GA_OK) begins no member
@@ -24,6 +25,29 @@ if [ -n "$so" ] && command -v nm >/dev/null 2>&1; then
     fi
 else
     echo "skip no shared library or nm: exported symbols not checked"
+fi
+
+# the ABI: the shared library exports exactly what the headers declare GA_API
+# (include/garotor/export.h), functions and data, no more and no fewer
+if [ -n "$so" ] && command -v nm >/dev/null 2>&1; then
+    tmp=${TMPDIR:-/tmp}/garotor-abi.$$
+    nm -D --defined-only "$so" | awk '{print $3}' | grep -v '^__' | sort -u >"$tmp.so"
+    cat "$src"/include/garotor/*.h | tr '\n' ' ' | sed 's/;/;\n/g' | grep 'GA_API' |
+        grep -o 'ga_[A-Za-z0-9_]*[[:space:]]*[(;]' | sed 's/[[:space:]]*[(;]$//' | sort -u >"$tmp.h"
+    extra=$(comm -23 "$tmp.so" "$tmp.h" | tr '\n' ' ')
+    missing=$(comm -13 "$tmp.so" "$tmp.h" | tr '\n' ' ')
+    n=$(wc -l <"$tmp.h")
+    rm -f "$tmp.so" "$tmp.h"
+    if [ -n "$extra" ]; then
+        echo "FAIL exported but not declared GA_API in include/garotor/: $extra"
+        fail=1
+    fi
+    if [ -n "$missing" ]; then
+        echo "FAIL declared GA_API but not exported: $missing"
+        fail=1
+    fi
+    [ -z "$extra$missing" ] && echo "ok   the library exports exactly the $n names its headers declare GA_API"
+    [ "$n" -ge 100 ] || { echo "FAIL only $n GA_API declarations found in the headers"; fail=1; }
 fi
 
 # one line per enum: its members, space-separated

@@ -104,44 +104,44 @@ int main(int argc, char **argv)
         double keys = 0, vj = 0, aj = 0, wo = 0, bo = 0, vmax = 0, amax = 0, cm = 0, t0, t1;
         ga_mat4 a, b, c;
         const size_t ns = ga_path_segments(&p);
-        ga_path_range(&p, &t0, &t1);
+        TK_OK(ga_path_range(&p, &t0, &t1));
         if (row[s].s == GA_SCHEME_BSPLINE) {
             /* not through its keys: how far from those in its range */
             for (int i = 1; i + 1 < n; ++i) {
-                ga_path_eval(&p, ts[i], &a);
+                TK_OK(ga_path_eval(&p, ts[i], &a));
                 boff[i] = md(a, k[i]);
                 keys = tk_max(keys, boff[i]);
             }
         } else {
             for (size_t i = 0; i < ns; ++i) {
-                ga_path_eval_segment(&p, i, 0.0, &a);
-                ga_path_eval_segment(&p, i, 1.0, &b);
+                TK_OK(ga_path_eval_segment(&p, i, 0.0, &a));
+                TK_OK(ga_path_eval_segment(&p, i, 1.0, &b));
                 keys = tk_max(keys, tk_max(md(a, k[i]), md(b, k[i + 1])));
             }
         }
         for (size_t i = 0; i + 1 < ns; ++i) {
             /* the two sides of the joint between segments i and i + 1 */
             double v0[6], a0[6], v1[6], a1[6];
-            ga_path_differentiate_segment(&p, i, 1.0, GA_FRAME_BODY, v0, a0);
-            ga_path_differentiate_segment(&p, i + 1, 0.0, GA_FRAME_BODY, v1, a1);
+            TK_OK(ga_path_differentiate_segment(&p, i, 1.0, GA_FRAME_BODY, v0, a0));
+            TK_OK(ga_path_differentiate_segment(&p, i + 1, 0.0, GA_FRAME_BODY, v1, a1));
             vj = tk_max(vj, vd(v0, v1));
             aj = tk_max(aj, vd(a0, a1));
         }
         for (int j = 0; j <= 200; ++j) {
             double tj = j == 200 ? t1 : t0 + (t1 - t0) * j / 200;
-            ga_path_eval(&p, tj, &a);
-            ga_path_eval(&pg, tj, &b);
-            ga_path_eval(&ph, tj, &c);
+            TK_OK(ga_path_eval(&p, tj, &a));
+            TK_OK(ga_path_eval(&pg, tj, &b));
+            TK_OK(ga_path_eval(&ph, tj, &c));
             wo = tk_max(wo, md(b, ga_mat4_mul(G, a)));
             bo = tk_max(bo, md(c, ga_mat4_mul(a, H)));
         }
         for (int j = 0; j <= 2000; ++j) {
             double tj = j == 2000 ? t1 : t0 + (t1 - t0) * j / 2000, v[6], ac[6];
             ga_rotor r;
-            ga_path_eval(&p, tj, &a);
-            ga_path_eval(&pc, tj, &r);
+            TK_OK(ga_path_eval(&p, tj, &a));
+            TK_OK(ga_path_eval(&pc, tj, &r));
             cm = tk_max(cm, md(a, ga_rotor_to_mat4(r)));
-            ga_path_differentiate(&p, tj, GA_FRAME_BODY, v, ac);
+            TK_OK(ga_path_differentiate(&p, tj, GA_FRAME_BODY, v, ac));
             for (int q = 0; q < 6; ++q) vmax = tk_max(vmax, fabs(v[q])), amax = tk_max(amax, fabs(ac[q]));
         }
         printf("%-13s %-9.2g %-9.2g %-9.2g %-9.2g %-9.2g %-7.3g %-7.3g %.2g\n", row[s].name, keys, vj, aj, wo,
@@ -160,8 +160,8 @@ int main(int argc, char **argv)
             for (int j = 0; j <= 2000; ++j) {
                 double tj = j == 2000 ? t[N - 1] : t[0] + (t[N - 1] - t[0]) * j / 2000;
                 ga_mat4 a, b;
-                ga_path_eval(&ps, tj, &a);
-                ga_path_eval(&pd, tj, &b);
+                TK_OK(ga_path_eval(&ps, tj, &a));
+                TK_OK(ga_path_eval(&pd, tj, &b));
                 for (int q = 3; q < 12; q += 4) dp = tk_max(dp, fabs(a.m[q] - b.m[q]));
             }
             printf("decoupled: positions from screw's by up to %.3g\n", dp);

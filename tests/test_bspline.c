@@ -84,7 +84,7 @@ static double vscale(const ga_path *p)
 {
     double s = 0.0, t0, t1;
     for (size_t i = 0; i + 1 < p->n; ++i) s = fmax(s, vnorm(p->coef + i * p->group->dim, p->group->dim));
-    ga_path_segment_range(p, 0, &t0, &t1);
+    TK_OK(ga_path_segment_range(p, 0, &t0, &t1));
     return fmax(s, 1.0) / (t1 - t0);
 }
 
@@ -115,15 +115,15 @@ static void fd_seg(const ga_path *p, size_t seg, double u, double e, double *v, 
 {
     const ga_group *g = p->group;
     double ta, tb, A[16], P[16], M[16], yp[12], ym[12], vp[12], vm[12];
-    ga_path_segment_range(p, seg, &ta, &tb);
+    TK_OK(ga_path_segment_range(p, seg, &ta, &tb));
     double du = e / (tb - ta);
-    ga_path_eval_segment(p, seg, u, A);
-    ga_path_eval_segment(p, seg, u + du, P);
-    ga_path_eval_segment(p, seg, u - du, M);
+    TK_OK(ga_path_eval_segment(p, seg, u, A));
+    TK_OK(ga_path_eval_segment(p, seg, u + du, P));
+    TK_OK(ga_path_eval_segment(p, seg, u - du, M));
     body_log(g, A, P, yp);
     body_log(g, A, M, ym);
-    ga_path_differentiate_segment(p, seg, u + du, GA_FRAME_BODY, vp, NULL);
-    ga_path_differentiate_segment(p, seg, u - du, GA_FRAME_BODY, vm, NULL);
+    TK_OK(ga_path_differentiate_segment(p, seg, u + du, GA_FRAME_BODY, vp, NULL));
+    TK_OK(ga_path_differentiate_segment(p, seg, u - du, GA_FRAME_BODY, vm, NULL));
     for (size_t i = 0; i < g->dim; ++i) {
         v[i] = (yp[i] - ym[i]) / (2 * e);
         a[i] = (vp[i] - vm[i]) / (2 * e);
@@ -158,7 +158,7 @@ static void test_derivatives(tk_rng *r)
         for (size_t s = 0; s < ga_path_segments(&b.p); ++s)
             for (int q = 0; q < 4; ++q) {
                 double u = 0.05 + 0.3 * q, v[12], a[12], vf[12], af[12], vf2[12], af2[12];
-                ga_path_differentiate_segment(&b.p, s, u, GA_FRAME_BODY, v, a);
+                TK_OK(ga_path_differentiate_segment(&b.p, s, u, GA_FRAME_BODY, v, a));
                 fd_seg(&b.p, s, u, 1e-4, vf, af);
                 fd_seg(&b.p, s, u, 5e-5, vf2, af2);
                 double ev = vdiff(v, vf, d) / vs, ev2 = vdiff(v, vf2, d) / vs;
@@ -167,20 +167,20 @@ static void test_derivatives(tk_rng *r)
                 tk_add(&c_a, ea);
                 tk_add_bool(&c_fall, (ev <= 1e-9 || ev >= 3 * ev2) && (ea <= 1e-9 || ea >= 3 * ea2));
                 double m[16], vsp[12], asp[12], adv[12], ada[12], v1[12], a1[12], ta, tb;
-                ga_path_eval_segment(&b.p, s, u, m);
-                ga_path_differentiate_segment(&b.p, s, u, GA_FRAME_SPATIAL, vsp, asp);
+                TK_OK(ga_path_eval_segment(&b.p, s, u, m));
+                TK_OK(ga_path_differentiate_segment(&b.p, s, u, GA_FRAME_SPATIAL, vsp, asp));
                 g->adjoint(m, v, adv);
                 g->adjoint(m, a, ada);
                 tk_add(&c_sp, fmax(vdiff(vsp, adv, d) / vs, vdiff(asp, ada, d) / vs2) /
                                   fmax(1.0, ga_mat4_norm1(g->to_mat4(m))));
-                ga_path_velocity_segment(&b.p, s, u, v1);
-                ga_path_acceleration_segment(&b.p, s, u, a1);
+                TK_OK(ga_path_velocity_segment(&b.p, s, u, v1));
+                TK_OK(ga_path_acceleration_segment(&b.p, s, u, a1));
                 tk_add_bool(&c_api, vdiff(v, v1, d) == 0.0 && vdiff(a, a1, d) == 0.0);
-                ga_path_segment_range(&b.p, s, &ta, &tb);
+                TK_OK(ga_path_segment_range(&b.p, s, &ta, &tb));
                 double t = ta + 0.5 * (tb - ta);
-                ga_path_differentiate(&b.p, t, GA_FRAME_BODY, v, a);
-                ga_path_velocity(&b.p, t, v1);
-                ga_path_acceleration(&b.p, t, a1);
+                TK_OK(ga_path_differentiate(&b.p, t, GA_FRAME_BODY, v, a));
+                TK_OK(ga_path_velocity(&b.p, t, v1));
+                TK_OK(ga_path_acceleration(&b.p, t, a1));
                 tk_add_bool(&c_api, vdiff(v, v1, d) == 0.0 && vdiff(a, a1, d) == 0.0);
             }
     }
@@ -222,31 +222,31 @@ static void test_c2(tk_rng *r)
         int lst = g == &ga_group_affine ? -1 : mkpath(&l, g, GA_SCHEME_LIHAO3, &k);
         for (size_t s = 0; s + 1 < ga_path_segments(&b.p); ++s) {
             double e0[16], e1[16], v0[12], a0[12], v1[12], a1[12], ta, tk;
-            ga_path_eval_segment(&b.p, s, 1.0, e0);
-            ga_path_eval_segment(&b.p, s + 1, 0.0, e1);
+            TK_OK(ga_path_eval_segment(&b.p, s, 1.0, e0));
+            TK_OK(ga_path_eval_segment(&b.p, s + 1, 0.0, e1));
             tk_add(&c_pose, mdiff(g->to_mat4(e0), g->to_mat4(e1)) / sc);
-            ga_path_differentiate_segment(&b.p, s, 1.0, GA_FRAME_BODY, v0, a0);
-            ga_path_differentiate_segment(&b.p, s + 1, 0.0, GA_FRAME_BODY, v1, a1);
+            TK_OK(ga_path_differentiate_segment(&b.p, s, 1.0, GA_FRAME_BODY, v0, a0));
+            TK_OK(ga_path_differentiate_segment(&b.p, s + 1, 0.0, GA_FRAME_BODY, v1, a1));
             tk_add(&c_vel, vdiff(v0, v1, d) / vs);
             tk_add(&c_acc, vdiff(a0, a1, d) / vs2);
-            ga_path_segment_range(&b.p, s, &ta, &tk);
+            TK_OK(ga_path_segment_range(&b.p, s, &ta, &tk));
             double prev = NAN;
             for (double e = 1e-3; e > 0.9e-6; e /= 2) {
                 double ap[12], am[12];
-                ga_path_acceleration(&b.p, tk + e, ap);
-                ga_path_acceleration(&b.p, tk - e, am);
+                TK_OK(ga_path_acceleration(&b.p, tk + e, ap));
+                TK_OK(ga_path_acceleration(&b.p, tk - e, am));
                 double j = vdiff(ap, am, d) / vs2;
                 if (!isnan(prev))
                     tk_add_bool(&c_lin, prev / j >= 1.8 && prev / j <= 2.2);
                 prev = j;
             }
             double ap[12], am[12];
-            ga_path_acceleration(&b.p, tk + 1e-6, ap);
-            ga_path_acceleration(&b.p, tk - 1e-6, am);
+            TK_OK(ga_path_acceleration(&b.p, tk + 1e-6, ap));
+            TK_OK(ga_path_acceleration(&b.p, tk - 1e-6, am));
             tk_add(&c_shr, vdiff(ap, am, d) / vs2);
             if (lst == GA_OK) {
-                ga_path_acceleration(&l.p, tk + 1e-6, ap);
-                ga_path_acceleration(&l.p, tk - 1e-6, am);
+                TK_OK(ga_path_acceleration(&l.p, tk + 1e-6, ap));
+                TK_OK(ga_path_acceleration(&l.p, tk - 1e-6, am));
                 tk_add(&c_c1, vdiff(ap, am, d) / vs2);
             }
         }
@@ -278,16 +278,16 @@ static void test_cga_matrix(tk_rng *r)
         }
         double vs = vscale(&bm.p), vs2 = vs * vs, sc = 1.0, t0, t1;
         for (int i = 0; i < k.n; ++i) sc = fmax(sc, ga_mat4_norm1(k.m[i]));
-        ga_path_range(&bm.p, &t0, &t1);
+        TK_OK(ga_path_range(&bm.p, &t0, &t1));
         for (int j = 0; j <= 40; ++j) {
             double t = j == 40 ? t1 : t0 + (t1 - t0) * j / 40.0, vc[6], ac[6], vm[6], am[6];
             tk_add(&c_p, mdiff(pose_at(&bc.p, t), pose_at(&bm.p, t)) / sc);
-            ga_path_differentiate(&bc.p, t, GA_FRAME_BODY, vc, ac);
-            ga_path_differentiate(&bm.p, t, GA_FRAME_BODY, vm, am);
+            TK_OK(ga_path_differentiate(&bc.p, t, GA_FRAME_BODY, vc, ac));
+            TK_OK(ga_path_differentiate(&bm.p, t, GA_FRAME_BODY, vm, am));
             tk_add(&c_v, vdiff(vc, vm, 6) / vs);
             tk_add(&c_a, vdiff(ac, am, 6) / vs2);
-            ga_path_differentiate(&bc.p, t, GA_FRAME_SPATIAL, vc, ac);
-            ga_path_differentiate(&bm.p, t, GA_FRAME_SPATIAL, vm, am);
+            TK_OK(ga_path_differentiate(&bc.p, t, GA_FRAME_SPATIAL, vc, ac));
+            TK_OK(ga_path_differentiate(&bm.p, t, GA_FRAME_SPATIAL, vm, am));
             tk_add(&c_s, fmax(vdiff(vc, vm, 6) / vs, vdiff(ac, am, 6) / vs2) / sc);
         }
     }
@@ -323,12 +323,12 @@ static void test_screw(tk_rng *r)
         }
         double sc = 1.0, xs = vnorm(x, 6) / h, t0, t1;
         for (int i = 0; i < k.n; ++i) sc = fmax(sc, ga_mat4_norm1(k.m[i]));
-        ga_path_range(&b.p, &t0, &t1);
+        TK_OK(ga_path_range(&b.p, &t0, &t1));
         for (int j = 0; j <= 30; ++j) {
             double t = j == 30 ? t1 : t0 + (t1 - t0) * j / 30.0, s = (t - k.t[0]) / h, v[6], a[6];
             ga_mat4 want = ga_mat4_mul(a0, ga_se3_exp((ga_twist){tk_scale(xi.w, s), tk_scale(xi.v, s)}));
             tk_add(&c_p, mdiff(pose_at(&b.p, t), want) / sc);
-            ga_path_differentiate(&b.p, t, GA_FRAME_BODY, v, a);
+            TK_OK(ga_path_differentiate(&b.p, t, GA_FRAME_BODY, v, a));
             double xh[6];
             for (int i = 0; i < 6; ++i) xh[i] = x[i] / h;
             tk_add(&c_v, vdiff(v, xh, 6) / xs);
@@ -359,7 +359,7 @@ static void test_eval(tk_rng *r)
         }
         double sc = 1.0, t0, t1;
         for (int i = 0; i < k.n; ++i) sc = fmax(sc, ga_mat4_norm1(k.m[i]));
-        ga_path_range(&b.p, &t0, &t1);
+        TK_OK(ga_path_range(&b.p, &t0, &t1));
         enum { NS = 2000 };
         static double ex[NS * 16], di[NS * 16];
         size_t es = g->elem_size / sizeof(double);
@@ -373,8 +373,8 @@ static void test_eval(tk_rng *r)
         for (double step = 1.0 / 64; step >= 1.0 / 512; step /= 2) {
             enum { NE = 61 };
             static double eu[NE * 16], dr[NE * 16];
-            ga_path_sample_uniform(&b.p, GA_EVAL_EULER, step, NE, t0, t1, eu);
-            ga_path_sample_uniform(&b.p, GA_EVAL_DIRECT, 1.0, NE, t0, t1, dr);
+            TK_OK(ga_path_sample_uniform(&b.p, GA_EVAL_EULER, step, NE, t0, t1, eu));
+            TK_OK(ga_path_sample_uniform(&b.p, GA_EVAL_DIRECT, 1.0, NE, t0, t1, dr));
             double e = 0.0;
             for (size_t j = 0; j < NE; ++j)
                 e = tk_max(e, mdiff(g->to_mat4(eu + j * es), g->to_mat4(dr + j * es)) / sc);
@@ -393,13 +393,13 @@ static void test_eval(tk_rng *r)
             continue;
         }
         double s0, s1;
-        ga_path_range(&b2.p, &s0, &s1);
+        TK_OK(ga_path_range(&b2.p, &s0, &s1));
         for (int j = 0; j < 20; ++j) { /* s1 itself: a segment end here, a start there */
             double t = s0 + (s1 - s0) * j / 20.0, e1[16], e2[16], v1[12], v2[12], a1[12], a2[12];
-            ga_path_eval(&b.p, t, e1);
-            ga_path_eval(&b2.p, t, e2);
-            ga_path_differentiate(&b.p, t, GA_FRAME_SPATIAL, v1, a1);
-            ga_path_differentiate(&b2.p, t, GA_FRAME_SPATIAL, v2, a2);
+            TK_OK(ga_path_eval(&b.p, t, e1));
+            TK_OK(ga_path_eval(&b2.p, t, e2));
+            TK_OK(ga_path_differentiate(&b.p, t, GA_FRAME_SPATIAL, v1, a1));
+            TK_OK(ga_path_differentiate(&b2.p, t, GA_FRAME_SPATIAL, v2, a2));
             tk_add_bool(&c_loc, memcmp(e1, e2, g->elem_size) == 0 && memcmp(v1, v2, g->dim * 8) == 0 &&
                                     memcmp(a1, a2, g->dim * 8) == 0);
         }
@@ -430,7 +430,7 @@ static void test_errors(tk_rng *r)
     }
     tk_expect_status("bspline: 6 even keys -> ok", mkpath(&b, &ga_group_cga, GA_SCHEME_BSPLINE, &k), GA_OK);
     double t0 = 0, t1 = 0, e[16], v[6];
-    ga_path_range(&b.p, &t0, &t1);
+    TK_OK(ga_path_range(&b.p, &t0, &t1));
     tk_expect(t0 == k.t[1] && t1 == k.t[4] && ga_path_segments(&b.p) == 3,
               "bspline: range [t_1, t_{n-2}], n-3 segments");
     tk_expect_status("bspline: eval before t_1 -> GA_ERR_ARG", ga_path_eval(&b.p, k.t[1] - 1e-9, e),
@@ -446,7 +446,7 @@ static void test_errors(tk_rng *r)
     tk_expect_status("bspline: samples from t_0 -> GA_ERR_ARG",
                      ga_path_sample_uniform(&b.p, GA_EVAL_DIRECT, 1.0, 3, k.t[0], k.t[4], sm), GA_ERR_ARG);
     /* approximating: the knot's pose is no key */
-    ga_path_eval(&b.p, k.t[2], e);
+    TK_OK(ga_path_eval(&b.p, k.t[2], e));
     tk_expect(mdiff(ga_group_cga.to_mat4(e), k.m[2]) > 1e-3, "bspline: the key is not hit at its time");
     /* uneven times */
     keyset ku = k;

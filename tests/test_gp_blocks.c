@@ -1,6 +1,6 @@
 /* tests/test_gp_blocks.c: the vector forms of the geometric product
  * (mv_gp_blocks2, 4 and 8 of ga/mv_products.inc, which ga_mv_gp runs on
- * x86-64 Linux with gcc) against the straight-line mv_gp_dense, bit for bit,
+ * x86-64 with gcc) against the straight-line mv_gp_dense, bit for bit,
  * each width on the instruction set ga/mv.c compiles it for (where the CPU
  * has it); and ga_mv_gp, whichever the loader picked, against mv_gp_dense.
  * Inputs: dense random multivectors, with zeros, negative zeros and
@@ -12,16 +12,7 @@
 
 #include "testkit.h"
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&                 \
-    !defined(GA_NO_TARGET_CLONES)
-#define GA_DENSE_BLOCKS 1
-#endif
-#if defined(__GNUC__)
-#define GA_DENSE_FN static inline __attribute__((always_inline))
-#else
-#define GA_DENSE_FN static inline
-#endif
-#include "../ga/mv_products.inc"
+#include "../ga/internal/gp_dense.h"
 
 #ifdef GA_DENSE_BLOCKS
 __attribute__((target("avx512f"))) static void gp8(const double *a, const double *b, double *r)

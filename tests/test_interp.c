@@ -273,9 +273,9 @@ static void fd_velocity(const ga_path *p, int seg, double u, int sgn, double eps
     const ga_group *g = p->group;
     double a[16], b1[16], b2[16], y1[12], y2[12];
     double h = p->t[seg + 1] - p->t[seg];
-    ga_path_eval_segment(p, (size_t)seg, u, a);
-    ga_path_eval_segment(p, (size_t)seg, u + sgn * eps / h, b1);
-    ga_path_eval_segment(p, (size_t)seg, u + sgn * 2 * eps / h, b2);
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u, a));
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u + sgn * eps / h, b1));
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u + sgn * 2 * eps / h, b2));
     body_log(g, a, b1, y1);
     body_log(g, a, b2, y2);
     for (size_t i = 0; i < g->dim; ++i) v[i] = sgn * (4 * y1[i] - y2[i]) / (2 * eps);
@@ -287,9 +287,9 @@ static void fd_central(const ga_path *p, int seg, double u, double eps, double *
     const ga_group *g = p->group;
     double a[16], b1[16], b2[16], y1[12], y2[12];
     double h = p->t[seg + 1] - p->t[seg];
-    ga_path_eval_segment(p, (size_t)seg, u, a);
-    ga_path_eval_segment(p, (size_t)seg, u + eps / h, b1);
-    ga_path_eval_segment(p, (size_t)seg, u - eps / h, b2);
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u, a));
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u + eps / h, b1));
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u - eps / h, b2));
     body_log(g, a, b1, y1);
     body_log(g, a, b2, y2);
     for (size_t i = 0; i < g->dim; ++i) v[i] = (y1[i] - y2[i]) / (2 * eps);
@@ -411,8 +411,8 @@ static void test_keys(tk_rng *r)
                 if (s == GA_SCHEME_SMOOTH) { /* and C1 there: X' is continuous */
                     int d = (int)gs[gi]->dim;
                     double va[12], vb[12];
-                    ga_path_velocity_segment(&b.p, (size_t)i, 0.5, va);
-                    ga_path_velocity_segment(&b.p, (size_t)i, nextafter(0.5, 1.0), vb);
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)i, 0.5, va));
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)i, nextafter(0.5, 1.0), vb));
                     double ev = vdiff(va, vb, d) / fmax(sc, vnorm(va, d));
                     worst_midv = fmax(worst_midv, ev / cond);
                     tk_add_tol(&c_midv, ev, 10 * tol);
@@ -490,7 +490,7 @@ static void test_c1(tk_rng *r)
             for (int i = 0; i + 1 < kk.n; ++i)
                 for (int q = 1; q <= 3; ++q) {
                     double u = 0.25 * q + 0.01, va[12], vf[12];
-                    ga_path_velocity_segment(&b.p, (size_t)i, u, va);
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)i, u, va));
                     fd_central(&b.p, i, u, 1e-5, vf);
                     double e = vdiff(va, vf, d) / fmax(sc, vnorm(va, d));
                     tk_add(&c_int, e);
@@ -499,16 +499,16 @@ static void test_c1(tk_rng *r)
                 /* screw and bivector: show that the test does see a kink */
                 for (int i = 1; i + 1 < kk.n; ++i) {
                     double vl[12], vr[12];
-                    ga_path_velocity_segment(&b.p, (size_t)(i - 1), 1.0, vl);
-                    ga_path_velocity_segment(&b.p, (size_t)i, 0.0, vr);
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)(i - 1), 1.0, vl));
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)i, 0.0, vr));
                     tk_add(&c_kink, vdiff(vl, vr, d) / fmax(1, vnorm(vr, d)));
                 }
                 continue;
             }
             for (int i = 1; i + 1 < kk.n; ++i) {
                 double vl[12], vr[12];
-                ga_path_velocity_segment(&b.p, (size_t)(i - 1), 1.0, vl);
-                ga_path_velocity_segment(&b.p, (size_t)i, 0.0, vr);
+                TK_OK(ga_path_velocity_segment(&b.p, (size_t)(i - 1), 1.0, vl));
+                TK_OK(ga_path_velocity_segment(&b.p, (size_t)i, 0.0, vr));
                 double vs = fmax(1.0, vnorm(vr, d));
                 double e = vdiff(vl, vr, d) / vs;
                 tk_add_tol(&c_an, e, 10 * vtol);
@@ -541,12 +541,12 @@ static void test_c1(tk_rng *r)
             if (s == GA_SCHEME_LIHAO3 && vv) { /* the requested velocity at every key */
                 for (int i = 0; i < kk.n; ++i) {
                     double v[12];
-                    ga_path_velocity_segment(&b.p, (size_t)(i < kk.n - 1 ? i : i - 1),
-                                             i < kk.n - 1 ? 0.0 : 1.0, v);
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)(i < kk.n - 1 ? i : i - 1),
+                                                   i < kk.n - 1 ? 0.0 : 1.0, v));
                     double e = vdiff(v, vel + i * d, d) / fmax(1, vnorm(vel + i * d, d));
                     tk_add_tol(&c_req, e, vtol);
                     if (i > 0) {
-                        ga_path_velocity_segment(&b.p, (size_t)(i - 1), 1.0, v);
+                        TK_OK(ga_path_velocity_segment(&b.p, (size_t)(i - 1), 1.0, v));
                         e = vdiff(v, vel + i * d, d) / fmax(1, vnorm(vel + i * d, d));
                         tk_add_tol(&c_req, e, vtol);
                     }
@@ -554,7 +554,7 @@ static void test_c1(tk_rng *r)
             }
             if (s == GA_SCHEME_LIHAO2 && vv) {
                 double v[12];
-                ga_path_velocity_segment(&b.p, 0, 0.0, v);
+                TK_OK(ga_path_velocity_segment(&b.p, 0, 0.0, v));
                 double e = vdiff(v, vel, d) / fmax(1, vnorm(vel, d));
                 tk_add_tol(&c_req, e, vtol);
             }
@@ -790,7 +790,7 @@ static void test_screw(tk_rng *r)
             for (int q = 0; q <= 10; ++q) {
                 double u = q / 10.0;
                 ga_mat4 geo;
-                ga_se3_geodesic(k.m[i], k.m[i + 1], u, &geo);
+                TK_OK(ga_se3_geodesic(k.m[i], k.m[i + 1], u, &geo));
                 ga_mat4 ps = at_seg(&a.p, i, u), pc = at_seg(&b.p, i, u);
                 tk_add(&e_geo, mdiff(ps, geo) / k.scale);
                 double xu[6], e[8], wl[8];
@@ -953,8 +953,8 @@ static void test_identities(tk_rng *r)
         ga_mat4 rel = mmul(ga_se3_inverse(A), Bm);
         ga_twist B = rand_twist(r, 0.5, 0.5), mB = {{-B.w.x, -B.w.y, -B.w.z}, {-B.v.x, -B.v.y, -B.v.z}};
         ga_twist C16, C27, D = rand_twist(r, 0.5, 0.5);
-        ga_se3_log(mmul(ga_se3_exp(mB), rel), &C16);
-        ga_se3_log(mmul(ga_se3_exp(B), rel), &C27);
+        TK_OK(ga_se3_log(mmul(ga_se3_exp(mB), rel), &C16));
+        TK_OK(ga_se3_log(mmul(ga_se3_exp(B), rel), &C27));
         tk_add(&e16, mdiff(mmul(ga_se3_exp(B), ga_se3_exp(C16)), rel));
         tk_add(&e27, mdiff(mmul(ga_se3_exp(B), ga_se3_exp(C27)), rel));
         /* eq. 25: M'(1) = B^ rel + 2 rel C^ + rel D^ for M = e^{uB} e^{u^2 C} e^{(u^3-u^2) D} */
@@ -1085,8 +1085,8 @@ static double euler_error(const ga_path *p, double h, int nsamp)
 {
     ga_path_stepper se, sd;
     double a[16], b[16], e = 0;
-    ga_path_stepper_init(p, GA_EVAL_EULER, h, (size_t)nsamp, p->t[0], p->t[p->n - 1], &se);
-    ga_path_stepper_init(p, GA_EVAL_DIRECT, 0, (size_t)nsamp, p->t[0], p->t[p->n - 1], &sd);
+    TK_OK(ga_path_stepper_init(p, GA_EVAL_EULER, h, (size_t)nsamp, p->t[0], p->t[p->n - 1], &se));
+    TK_OK(ga_path_stepper_init(p, GA_EVAL_DIRECT, 0, (size_t)nsamp, p->t[0], p->t[p->n - 1], &sd));
     for (int k = 0; k < nsamp; ++k) {
         if (ga_path_stepper_next(&se, a) || ga_path_stepper_next(&sd, b))
             return NAN;
@@ -1176,8 +1176,8 @@ static void test_exact(tk_rng *r)
         if (st)
             continue;
         ga_path_stepper sx, sd;
-        ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, (size_t)runs[q].n, kk.t[0], kk.t[3], &sx);
-        ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, (size_t)runs[q].n, kk.t[0], kk.t[3], &sd);
+        TK_OK(ga_path_stepper_init(&b.p, GA_EVAL_EXACT, 0, (size_t)runs[q].n, kk.t[0], kk.t[3], &sx));
+        TK_OK(ga_path_stepper_init(&b.p, GA_EVAL_DIRECT, 0, (size_t)runs[q].n, kk.t[0], kk.t[3], &sd));
         double e = 0, a[16], c[16];
         clock_t c0 = clock();
         for (long j = 0; j < runs[q].n; ++j) {
@@ -1203,11 +1203,11 @@ static void test_exact(tk_rng *r)
         return;
     double buf[3][101 * 8];
     tk_check c_batch = tk_begin("batch uniform (exact) == batch at times (direct), / scale", 1e-12);
-    ga_path_sample_uniform(&b.p, GA_EVAL_EXACT, 0, 101, k.t[0], k.t[3], buf[0]);
+    TK_OK(ga_path_sample_uniform(&b.p, GA_EVAL_EXACT, 0, 101, k.t[0], k.t[3], buf[0]));
     double times[101];
     for (int j = 0; j < 101; ++j) times[j] = k.t[0] + (k.t[3] - k.t[0]) * j / 100.0;
     times[100] = k.t[3];
-    ga_path_sample(&b.p, GA_EVAL_DIRECT, 0, 101, times, buf[1]);
+    TK_OK(ga_path_sample(&b.p, GA_EVAL_DIRECT, 0, 101, times, buf[1]));
     for (int j = 0; j < 101; ++j)
         tk_add(&c_batch,
                mdiff(ga_group_cga.to_mat4(buf[0] + 8 * j), ga_group_cga.to_mat4(buf[1] + 8 * j)) / k.scale);
@@ -1224,8 +1224,8 @@ static void test_exact(tk_rng *r)
 static void fd_accel(const ga_path *p, int seg, double u, ga_frame f, double e, double *a)
 {
     double vp[12], vm[12], h = p->t[seg + 1] - p->t[seg];
-    ga_path_differentiate_segment(p, (size_t)seg, u + e / h, f, vp, NULL);
-    ga_path_differentiate_segment(p, (size_t)seg, u - e / h, f, vm, NULL);
+    TK_OK(ga_path_differentiate_segment(p, (size_t)seg, u + e / h, f, vp, NULL));
+    TK_OK(ga_path_differentiate_segment(p, (size_t)seg, u - e / h, f, vm, NULL));
     for (size_t i = 0; i < p->group->dim; ++i) a[i] = (vp[i] - vm[i]) / (2 * e);
 }
 
@@ -1260,25 +1260,25 @@ static void test_accel(tk_rng *r)
                 for (int q = 1; q <= 3; ++q) {
                     double u = 0.25 * q + 0.01, a[12], af[12], af2[12], v[12], v0[12];
                     double vs[12], as[12], asf[12], m[16], adv[12];
-                    ga_path_acceleration_segment(&b.p, (size_t)i, u, a);
+                    TK_OK(ga_path_acceleration_segment(&b.p, (size_t)i, u, a));
                     fd_accel(&b.p, i, u, GA_FRAME_BODY, 1e-4, af);
                     fd_accel(&b.p, i, u, GA_FRAME_BODY, 5e-5, af2);
                     double e1 = vdiff(a, af, d) / fmax(sc2, vnorm(a, d));
                     double e2 = vdiff(a, af2, d) / fmax(sc2, vnorm(a, d));
                     tk_add(&c_fd, e1);
                     tk_add_bool(&c_fall, e1 <= 1e-9 || e1 >= 3 * e2);
-                    ga_path_differentiate_segment(&b.p, (size_t)i, u, GA_FRAME_BODY, v, NULL);
-                    ga_path_velocity_segment(&b.p, (size_t)i, u, v0);
+                    TK_OK(ga_path_differentiate_segment(&b.p, (size_t)i, u, GA_FRAME_BODY, v, NULL));
+                    TK_OK(ga_path_velocity_segment(&b.p, (size_t)i, u, v0));
                     tk_add_bool(&c_vel, vdiff(v, v0, d) == 0.0);
-                    ga_path_differentiate_segment(&b.p, (size_t)i, u, GA_FRAME_SPATIAL, vs, as);
-                    ga_path_eval_segment(&b.p, (size_t)i, u, m);
+                    TK_OK(ga_path_differentiate_segment(&b.p, (size_t)i, u, GA_FRAME_SPATIAL, vs, as));
+                    TK_OK(ga_path_eval_segment(&b.p, (size_t)i, u, m));
                     gs[gi]->adjoint(m, v, adv);
                     fd_accel(&b.p, i, u, GA_FRAME_SPATIAL, 1e-4, asf);
                     tk_add(&c_sp, fmax(vdiff(vs, adv, d) / fmax(sc2, vnorm(vs, d)),
                                        vdiff(as, asf, d) / fmax(sc2, vnorm(as, d))));
                     if (other == GA_OK) {
                         double am[12];
-                        ga_path_acceleration_segment(&bm.p, (size_t)i, u, am);
+                        TK_OK(ga_path_acceleration_segment(&bm.p, (size_t)i, u, am));
                         tk_add(&c_cm, vdiff(a, am, d) / sc2);
                     }
                 }
@@ -1361,8 +1361,8 @@ static void seg_checks(const ga_path *p, const ga_path *pm, const keyset *k, int
     tk_add(c_key, fmax(mdiff(at_seg(p, i, 0.0), k->m[i]), mdiff(at_seg(p, i, 1.0), k->m[i + 1])) / sc);
     for (int q = 0; q <= 4; ++q) {
         double u = 0.25 * q, v[6], a[6], vm[6], am[6], vf[6], af[6];
-        ga_path_differentiate_segment(p, (size_t)i, u, GA_FRAME_BODY, v, a);
-        ga_path_differentiate_segment(pm, (size_t)i, u, GA_FRAME_BODY, vm, am);
+        TK_OK(ga_path_differentiate_segment(p, (size_t)i, u, GA_FRAME_BODY, v, a));
+        TK_OK(ga_path_differentiate_segment(pm, (size_t)i, u, GA_FRAME_BODY, vm, am));
         tk_add(c_cm, fmax(mdiff(at_seg(p, i, u), at_seg(pm, i, u)) / sc,
                           fmax(vdiff(v, vm, 6) / sc, vdiff(a, am, 6) / sc2)));
         fd_central(p, i, u, 1e-5, vf);
@@ -1408,8 +1408,8 @@ static void test_decoupled(tk_rng *r)
                 seg_checks(&b.p, &bm.p, &k, i, &c_key, &c_cm, &c_v, &c_a);
                 if (i + 2 < k.n) { /* key i + 1: arriving against leaving */
                     double v0[6], a0[6], v1[6], a1[6];
-                    ga_path_differentiate_segment(&b.p, (size_t)i, 1.0, GA_FRAME_BODY, v0, a0);
-                    ga_path_differentiate_segment(&b.p, (size_t)(i + 1), 0.0, GA_FRAME_BODY, v1, a1);
+                    TK_OK(ga_path_differentiate_segment(&b.p, (size_t)i, 1.0, GA_FRAME_BODY, v0, a0));
+                    TK_OK(ga_path_differentiate_segment(&b.p, (size_t)(i + 1), 0.0, GA_FRAME_BODY, v1, a1));
                     if (si == 1) {
                         tk_add(&c_c1, vdiff(v0, v1, 6) / fmax(sc, vnorm(v0, 6)));
                         tk_add(&c_c2, vdiff(a0, a1, 6) / fmax(sc2, vnorm(a0, 6)));
@@ -1504,9 +1504,9 @@ static void fd_accel_pose(const ga_path *p, int seg, double u, int sgn, double e
 {
     const ga_group *g = p->group;
     double m0[16], m[16], y[3][12], h = p->t[seg + 1] - p->t[seg];
-    ga_path_eval_segment(p, (size_t)seg, u, m0);
+    TK_OK(ga_path_eval_segment(p, (size_t)seg, u, m0));
     for (int j = 0; j < 3; ++j) {
-        ga_path_eval_segment(p, (size_t)seg, u + sgn * (j + 1) * eps / h, m);
+        TK_OK(ga_path_eval_segment(p, (size_t)seg, u + sgn * (j + 1) * eps / h, m));
         body_log(g, m0, m, y[j]);
     }
     for (size_t i = 0; i < g->dim; ++i) a[i] = (-5 * y[0][i] + 4 * y[1][i] - y[2][i]) / (eps * eps);
@@ -1561,8 +1561,8 @@ static void test_c2_uneven(void)
             double wbig = 1.0, th[MAXK];
             for (int i = 0; i < k.n; ++i) {
                 double v[6], a[6];
-                ga_path_differentiate_segment(&b.p, (size_t)(i + 1 < k.n ? i : i - 1),
-                                              i + 1 < k.n ? 0.0 : 1.0, GA_FRAME_BODY, v, a);
+                TK_OK(ga_path_differentiate_segment(&b.p, (size_t)(i + 1 < k.n ? i : i - 1),
+                                                    i + 1 < k.n ? 0.0 : 1.0, GA_FRAME_BODY, v, a));
                 wbig = fmax(wbig, vnorm(v, 6));
                 ga_twist x;
                 if (i + 1 < k.n && ga_se3_log(ga_mat4_mul(ga_se3_inverse(k.m[i]), k.m[i + 1]), &x) == GA_OK)
@@ -1571,8 +1571,8 @@ static void test_c2_uneven(void)
             }
             for (int i = 0; i + 2 < k.n; ++i) {
                 double v0[6], a0[6], v1[6], a1[6], hl = k.t[i + 1] - k.t[i], hr = k.t[i + 2] - k.t[i + 1];
-                ga_path_differentiate_segment(&b.p, (size_t)i, 1.0, GA_FRAME_BODY, v0, a0);
-                ga_path_differentiate_segment(&b.p, (size_t)i + 1, 0.0, GA_FRAME_BODY, v1, a1);
+                TK_OK(ga_path_differentiate_segment(&b.p, (size_t)i, 1.0, GA_FRAME_BODY, v0, a0));
+                TK_OK(ga_path_differentiate_segment(&b.p, (size_t)i + 1, 0.0, GA_FRAME_BODY, v1, a1));
                 double sv = fmax(wbig, fmax(th[i] / hl, th[i + 1] / hr));
                 double sa = fmax(fmax(wbig / hl, wbig / hr), fmax(th[i] / (hl * hl), th[i + 1] / (hr * hr)));
                 sa = fmax(sa, wbig * wbig);
@@ -1631,8 +1631,8 @@ static void test_c2(tk_rng *r)
             seg_checks(&b.p, &bm.p, &k, i, &c_key, &c_cm, &c_v, &c_a);
             if (i + 2 < k.n) { /* key i + 1: arriving against leaving */
                 double v0[6], a0[6], v1[6], a1[6];
-                ga_path_differentiate_segment(&bm.p, (size_t)i, 1.0, GA_FRAME_BODY, v0, a0);
-                ga_path_differentiate_segment(&bm.p, (size_t)(i + 1), 0.0, GA_FRAME_BODY, v1, a1);
+                TK_OK(ga_path_differentiate_segment(&bm.p, (size_t)i, 1.0, GA_FRAME_BODY, v0, a0));
+                TK_OK(ga_path_differentiate_segment(&bm.p, (size_t)(i + 1), 0.0, GA_FRAME_BODY, v1, a1));
                 double as = fmax(sc2, vnorm(a0, 6));
                 tk_add(&c_c1, vdiff(v0, v1, 6) / fmax(sc, vnorm(v0, 6)));
                 tk_add(&c_c2, vdiff(a0, a1, 6) / as);

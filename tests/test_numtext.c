@@ -3,8 +3,8 @@
  *
  * For every double tried (seeded: random bit patterns, subnormals, every
  * power of two and its neighbours, integers, short decimals, the extremes):
- *   - the text nt_write gives reads back (strtod) as the same double, bit for
- *     bit, and has the digits nt_shortest gives;
+ *   - the text ga_double_format gives reads back (strtod) as the same double, bit for
+ *     bit, and has the digits ga_double_shortest gives;
  *   - no shorter decimal reads back: the nearest decimal of one digit fewer
  *     (printf's %.*e, correctly rounded) does not;
  *   - where the nearest decimal of as many digits reads back, it is the one
@@ -16,7 +16,7 @@
  *     number of digits written.
  * An argument N multiplies the random counts (a soak: `test_numtext 100`).
  */
-#include "../tools/numtext.h"
+#include <garotor/numtext.h>
 #include "testkit.h"
 
 #include <stdlib.h>
@@ -69,15 +69,16 @@ static int round_trips(double x, int p, char *buf, size_t size)
 static void check(double x, int most_digits, tk_check *trip, tk_check *shortest, tk_check *nearest,
                   tk_check *reference)
 {
-    char buf[NT_BUF + 8], ref[64];
-    size_t len = nt_write(x, buf);
+    char buf[GA_DOUBLE_TEXT_MAX + 8], ref[64];
+    size_t len = ga_double_format(x, buf);
     uint64_t f, rf;
-    int e, re, n = nt_shortest(x, &f, &e);
+    int e, re, n = ga_double_shortest(x, &f, &e);
     n_tried++;
-    tk_add_bool(trip, strlen(buf) == len && len < NT_BUF && bits_of(strtod(buf, NULL)) == bits_of(x));
-    /* the text has exactly the digits of nt_shortest: those of its
+    tk_add_bool(trip,
+                strlen(buf) == len && len < GA_DOUBLE_TEXT_MAX && bits_of(strtod(buf, NULL)) == bits_of(x));
+    /* the text has exactly the digits of ga_double_shortest: those of its
        significand, less the zeros that only place the point */
-    char sig[NT_BUF];
+    char sig[GA_DOUBLE_TEXT_MAX];
     int k = 0;
     for (const char *c = buf; *c && *c != 'e'; c++)
         if (*c >= '0' && *c <= '9' && (k || *c != '0'))
@@ -86,10 +87,10 @@ static void check(double x, int most_digits, tk_check *trip, tk_check *shortest,
     uint64_t g = 0;
     for (int i = 0; i < k && i < 19; i++) g = g * 10 + (uint64_t)(sig[i] - '0');
     tk_add_bool(trip, x == 0.0 ? f == 0 && n == 1 && k == 0 : k == n && g == f && n <= 17 && f % 10 != 0);
-    /* nt_write lays the digits out as nt_layout does */
-    char dig[24], lay[NT_BUF + 8];
+    /* ga_double_format lays the digits out as ga_decimal_format does */
+    char dig[24], lay[GA_DOUBLE_TEXT_MAX + 8];
     snprintf(dig, sizeof dig, "%llu", (unsigned long long)f);
-    nt_layout(signbit(x) != 0, dig, f ? n : 0, e, lay);
+    ga_decimal_format(signbit(x) != 0, dig, f ? n : 0, e, lay);
     tk_add_bool(trip, strcmp(lay, buf) == 0 || (x == 0.0 && signbit(x) && strcmp(buf, "-0") == 0));
     if (x == 0.0)
         return;
@@ -121,8 +122,8 @@ int main(int argc, char **argv)
     if (scale < 1)
         scale = 1;
     tk_rng rng = {20261201};
-    tk_check trip =
-        tk_begin("numtext: the text reads back as x, has nt_shortest's digits, nt_layout's layout", 0);
+    tk_check trip = tk_begin(
+        "numtext: the text reads back as x, has ga_double_shortest's digits, ga_decimal_format's layout", 0);
     tk_check shortest = tk_begin("numtext: no decimal of one digit fewer reads back", 0);
     tk_check nearest = tk_begin("numtext: the nearest of its length (or a binade's bottom)", 0);
     tk_check reference = tk_begin("numtext: no longer than the least %.{p-1}e that reads back", 0);
@@ -230,8 +231,8 @@ int main(int argc, char **argv)
     };
     tk_check lay = tk_begin("numtext: the layout of hand-picked numbers", 0);
     for (size_t i = 0; i < sizeof layout / sizeof *layout; i++) {
-        char buf[NT_BUF];
-        nt_write(layout[i].x, buf);
+        char buf[GA_DOUBLE_TEXT_MAX];
+        ga_double_format(layout[i].x, buf);
         int ok = strcmp(buf, layout[i].text) == 0;
         if (!ok)
             printf("  %s written as %s\n", layout[i].text, buf);

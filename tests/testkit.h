@@ -250,6 +250,19 @@ typedef struct {
 
 static int tk_failures;
 
+/** TK_OK(call): a call whose status the test relies on but does not
+ *  otherwise check (an evaluation feeding a finite difference, a reference
+ *  value): anything but GA_OK is a failure, reported with the call and its
+ *  line. */
+#define TK_OK(call) tk_ok_((call), #call, __FILE__, __LINE__)
+static inline void tk_ok_(ga_status st, const char *call, const char *file, int line)
+{
+    if (st != GA_OK) {
+        printf("FAIL %s:%d: %s returned %d (%s)\n", file, line, call, st, ga_status_string(st));
+        tk_failures++;
+    }
+}
+
 static inline tk_check tk_begin(const char *name, double tol)
 {
     tk_check c;

@@ -9,7 +9,7 @@
  * then leaves neither the samples' file nor the picture. */
 #include "cli.h"
 #include "html.h"
-#include "numtext.h"
+#include <garotor/numtext.h>
 #include "svg.h"
 #include "timetext.h"
 
@@ -228,7 +228,7 @@ static void computed_stamp(const timebase *tb, double rel, double off, char *buf
     } else
         tt_shortest(rel, &o);
     if (tt_add(&tb->ref, &o, 0, &o)) /* cannot happen (timetext.h) */
-        nt_write(tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel), buf);
+        ga_double_format(tt_to_double(&tb->ref, 0) + (tb->ns ? off : rel), buf);
     else
         tt_format(&o, buf);
 }
@@ -268,17 +268,19 @@ static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *
 {
     size_t m = ga_path_segments(p);
     double r0, r1, s0, s1;
-    ga_path_range(p, &r0, &r1);
-    if (t >= r0 && t <= r1)
-        return 0;
+    if (ga_path_range(p, &r0, &r1) != GA_OK || (t >= r0 && t <= r1))
+        return 0; /* a built path has a range: ga_path_sample reports the rest */
     int after = t > r1;
     if (extrap == 1 || m == 0) {
         *seg = SIZE_MAX;
         *u = after;
     } else {
         *seg = after ? m - 1 : 0;
-        ga_path_segment_range(p, *seg, &s0, &s1);
-        *u = (t - s0) / (s1 - s0);
+        if (ga_path_segment_range(p, *seg, &s0, &s1) != GA_OK) {
+            *seg = SIZE_MAX; /* cannot happen for a built path: hold the end */
+            *u = after;
+        } else
+            *u = (t - s0) / (s1 - s0);
     }
     return 1;
 }
@@ -297,8 +299,9 @@ static int sample_extrapolated(const ga_path *p, ga_eval ev, double step, int ex
             st = ga_path_sample(p, ev, step, 1, at + k, o);
         else if (seg == SIZE_MAX) { /* the range's end: the end key, or bspline's end pose */
             double r0, r1;
-            ga_path_range(p, &r0, &r1);
-            st = ga_path_eval(p, u > 0 ? r1 : r0, o);
+            st = ga_path_range(p, &r0, &r1);
+            if (st == GA_OK)
+                st = ga_path_eval(p, u > 0 ? r1 : r0, o);
         } else
             st = ga_path_eval_segment(p, seg, u, o);
         if (st != GA_OK)
@@ -424,7 +427,7 @@ static const char *stamp_of(const sampler *s, size_t k, double t, double off, ch
     if (s->kind == GIVEN)
         return s->at_text[k];
     if (s->tb->ref.n == 0 && !s->tb->ns) /* the reference is 0: t itself */
-        nt_write(t == 0.0 ? 0.0 : t, buf);
+        ga_double_format(t == 0.0 ? 0.0 : t, buf);
     else
         computed_stamp(s->tb, t, off, buf);
     return buf;

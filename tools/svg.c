@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "numtext.h"
+#include <garotor/numtext.h>
 #include "textio.h"
 
 /* ---- small vector helpers ------------------------------------------------ */
@@ -390,8 +390,9 @@ int svg_write(const char *file, const svg_picture *pic)
             num(f, x + 7);
             fputs("\" y=\"", f);
             num(f, y - 7);
-            char tb[NT_BUF]; /* the shortest text of the key's time: t=1305031102.1758, not 1.30503e+09 */
-            nt_write(pic->key_t[k], tb);
+            char tb[GA_DOUBLE_TEXT_MAX]; /* the shortest text of the key's time: t=1305031102.1758,
+                                            not 1.30503e+09 */
+            ga_double_format(pic->key_t[k], tb);
             fprintf(f, "\">t=%s</text>\n", tb);
         }
     }

@@ -2,7 +2,7 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "textio.h"
 
-#include "numtext.h"
+#include <garotor/numtext.h>
 
 #include <errno.h>
 #include <math.h>
@@ -294,7 +294,7 @@ static void put_numbers(tio_out *o, const char *lead, size_t llen, const double 
     char line[4096];
     size_t k = 0;
     if (llen) {
-        if (llen > sizeof line - 1 - NT_BUF) {
+        if (llen > sizeof line - 1 - GA_DOUBLE_TEXT_MAX) {
             fwrite(lead, 1, llen, o->fp);
         } else {
             memcpy(line, lead, llen);
@@ -302,13 +302,13 @@ static void put_numbers(tio_out *o, const char *lead, size_t llen, const double 
         }
     }
     for (int i = 0; i < n; i++) {
-        if (k + NT_BUF + 2 > sizeof line) {
+        if (k + GA_DOUBLE_TEXT_MAX + 2 > sizeof line) {
             fwrite(line, 1, k, o->fp);
             k = 0;
         }
         if (i || llen)
             line[k++] = ' ';
-        k += nt_write(v[i] == 0.0 ? 0.0 : v[i], line + k);
+        k += ga_double_format(v[i] == 0.0 ? 0.0 : v[i], line + k);
     }
     line[k++] = '\n';
     fwrite(line, 1, k, o->fp);

@@ -1,7 +1,7 @@
 /* tools/timetext.c: see timetext.h. */
 #include "timetext.h"
 
-#include "numtext.h"
+#include <garotor/numtext.h>
 
 #include <ctype.h>
 #include <stdio.h>
@@ -171,7 +171,7 @@ double tt_to_double(const tt_dec *a, int shift)
 void tt_shortest(double x, tt_dec *out)
 {
     uint64_t f;
-    int e, n = nt_shortest(x, &f, &e);
+    int e, n = ga_double_shortest(x, &f, &e);
     out->neg = f != 0 && x < 0.0;
     out->n = f ? n : 0;
     out->exp = f ? e : 0;
@@ -184,5 +184,5 @@ void tt_format(const tt_dec *a, char *buf)
 {
     char dig[TT_DIG];
     for (int i = 0; i < a->n; i++) dig[i] = (char)('0' + a->d[i]);
-    nt_layout(a->neg, dig, a->n, a->exp, buf);
+    ga_decimal_format(a->neg, dig, a->n, a->exp, buf);
 }

@@ -37,7 +37,7 @@ double tt_to_double(const tt_dec *a, int shift);
 void tt_shortest(double x, tt_dec *out);
 /** 1 if a is a whole number. */
 int tt_is_integer(const tt_dec *a);
-/** a written out in the layout of every number the tool writes (nt_layout:
+/** a written out in the layout of every number the tool writes (ga_decimal_format:
  *  positional, 1305031102.1858 or 0.001, when its leading digit is between
  *  the places 10^20 and 10^-7, else d.ddde+XX); buf holds at least
  *  TT_DIG + 32 bytes. */

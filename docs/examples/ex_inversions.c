@@ -4,14 +4,24 @@
  * -o ex_inversions */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <garotor/garotor.h>
+
+/* a status other than GA_OK ends the program, naming the call */
+static void check(ga_status status, const char *call)
+{
+    if (status != GA_OK) {
+        fprintf(stderr, "%s: %s\n", call, ga_status_string(status));
+        exit(1);
+    }
+}
 
 static void show(const char *what, ga_mv x)
 {
     char text[GA_MV_TEXT_MAX];
     size_t len;
-    ga_mv_format(x, text, sizeof text, &len);
+    check(ga_mv_format(x, text, sizeof text, &len), "ga_mv_format");
     printf("%-20s %s\n", what, text);
 }
 
@@ -26,7 +36,7 @@ int main(void)
     double w = ga_mv_sp(V, ga_mv_reverse(V)); /* V ~V: a positive scalar */
     show("S2 S1 / sqrt(V ~V)", ga_mv_scale(V, 1 / sqrt(w)));
     ga_mv D;
-    ga_versor_dilation(o, 4, &D);
+    check(ga_versor_dilation(o, 4, &D), "ga_versor_dilation");
     show("dilation by 4", D);
     ga_mv Y;
     ga_vec3 y;

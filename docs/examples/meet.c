@@ -2,8 +2,18 @@
  * meet"). Build from the repository: cc -std=c11 -Iinclude -Ibuild/include
  * docs/examples/meet.c build/libgarotor.a -lm -o meet */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <garotor/garotor.h>
+
+/* a status other than GA_OK ends the program, naming the call */
+static void check(ga_status status, const char *call)
+{
+    if (status != GA_OK) {
+        fprintf(stderr, "%s: %s\n", call, ga_status_string(status));
+        exit(1);
+    }
+}
 
 static const char *kind[] = {"empty", "flat point", "line", "plane", "point pair", "circle", "sphere"};
 static const char *reality[] = {"real", "tangent", "imaginary"};
@@ -41,11 +51,11 @@ int main(void)
     show("unit sphere at 1e4", ga_sphere_dual((ga_vec3){1e4, 0, 0}, 1));
     ga_vec3 p;
     double d;
-    ga_point_project((ga_vec3){3, 4, 0}, S1, &p);
-    ga_point_distance((ga_vec3){3, 4, 0}, S1, &d);
+    check(ga_point_project((ga_vec3){3, 4, 0}, S1, &p), "ga_point_project");
+    check(ga_point_distance((ga_vec3){3, 4, 0}, S1, &d), "ga_point_distance");
     printf("(3, 4, 0) onto the unit sphere: (%.6g, %.6g, %.6g), distance %.6g\n", p.x, p.y, p.z, d);
     ga_rotor R;
-    ga_rotor_between(ga_plane_dual(ez, 0), ga_plane_dual(ex, 2), &R);
+    check(ga_rotor_between(ga_plane_dual(ez, 0), ga_plane_dual(ex, 2), &R), "ga_rotor_between");
     ga_vec3 q = ga_rotor_apply(R, (ga_vec3){0, 0, 0});
     printf("rotor from z = 0 to x = 2 takes the origin to (%.6g, %.6g, %.6g)\n", q.x, q.y, q.z);
     return 0;

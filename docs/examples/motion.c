@@ -2,8 +2,18 @@
  * "Rotors move everything"). Build from the repository: cc -std=c11 -Iinclude
  * -Ibuild/include docs/examples/motion.c build/libgarotor.a -lm -o motion */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <garotor/garotor.h>
+
+/* a status other than GA_OK ends the program, naming the call */
+static void check(ga_status status, const char *call)
+{
+    if (status != GA_OK) {
+        fprintf(stderr, "%s: %s\n", call, ga_status_string(status));
+        exit(1);
+    }
+}
 
 int main(void)
 {
@@ -13,7 +23,7 @@ int main(void)
     ga_mv s = ga_sphere_dual((ga_vec3){1, 0, 0}, 0.5);
     ga_vec3 c;
     double r;
-    ga_sphere_params(ga_rotor_apply_mv(R, s), &c, &r);
+    check(ga_sphere_params(ga_rotor_apply_mv(R, s), &c, &r), "ga_sphere_params");
     printf("sphere centre (1, 0, 0) radius 0.5 moved: centre (%.3g, %.3g, %.3g), radius %.3g\n", c.x, c.y,
            c.z, r);
     ga_vec3 x = ga_rotor_apply(R, (ga_vec3){1, 0, 0});

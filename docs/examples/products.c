@@ -2,15 +2,25 @@
  * algebra G(4,1)"). Build from the repository: cc -std=c11 -Iinclude
  * -Ibuild/include docs/examples/products.c build/libgarotor.a -lm -o products */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <garotor/garotor.h>
+
+/* a status other than GA_OK ends the program, naming the call */
+static void check(ga_status status, const char *call)
+{
+    if (status != GA_OK) {
+        fprintf(stderr, "%s: %s\n", call, ga_status_string(status));
+        exit(1);
+    }
+}
 
 /* a multivector as ga_mv_format writes it: "1 - 7e12" is 1 - 7 e12 */
 static void show(const char *what, ga_mv x)
 {
     char text[GA_MV_TEXT_MAX];
     size_t len;
-    ga_mv_format(x, text, sizeof text, &len);
+    check(ga_mv_format(x, text, sizeof text, &len), "ga_mv_format");
     printf("%-16s = %s\n", what, text);
 }
 

@@ -2,14 +2,24 @@
  * "Rotors move everything"). Build from the repository: cc -std=c11 -Iinclude
  * -Ibuild/include docs/examples/translation.c build/libgarotor.a -lm -o translation */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <garotor/garotor.h>
+
+/* a status other than GA_OK ends the program, naming the call */
+static void check(ga_status status, const char *call)
+{
+    if (status != GA_OK) {
+        fprintf(stderr, "%s: %s\n", call, ga_status_string(status));
+        exit(1);
+    }
+}
 
 static void show(const char *what, ga_mv x)
 {
     char text[GA_MV_TEXT_MAX];
     size_t len;
-    ga_mv_format(x, text, sizeof text, &len);
+    check(ga_mv_format(x, text, sizeof text, &len), "ga_mv_format");
     printf("%-9s = %s\n", what, text);
 }
 

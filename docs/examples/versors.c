@@ -3,8 +3,18 @@
  * from the repository: cc -std=c11 -Iinclude -Ibuild/include
  * docs/examples/versors.c build/libgarotor.a -lm -o versors */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <garotor/garotor.h>
+
+/* a status other than GA_OK ends the program, naming the call */
+static void check(ga_status status, const char *call)
+{
+    if (status != GA_OK) {
+        fprintf(stderr, "%s: %s\n", call, ga_status_string(status));
+        exit(1);
+    }
+}
 
 static const char *kind[] = {"empty", "flat point", "line", "plane", "point pair", "circle", "sphere"};
 
@@ -12,7 +22,7 @@ static void show_mv(const char *what, ga_mv x)
 {
     char text[GA_MV_TEXT_MAX];
     size_t len;
-    ga_mv_format(x, text, sizeof text, &len);
+    check(ga_mv_format(x, text, sizeof text, &len), "ga_mv_format");
     printf("%-34s %s\n", what, text);
 }
 
@@ -77,7 +87,7 @@ int main(void)
     show("  sphere centre (3, 0, 0), r = 1", S, ga_sphere_dual((ga_vec3){3, 0, 0}, 1));
     /* a dilation and a transversion are rotors (even) */
     ga_mv D;
-    ga_versor_dilation((ga_vec3){1, 1, 0}, 3, &D);
+    check(ga_versor_dilation((ga_vec3){1, 1, 0}, 3, &D), "ga_versor_dilation");
     show_mv("dilation about (1, 1, 0) by 3", D);
     show("  sphere centre (2, 1, 0), r = 0.5", D, ga_sphere_dual((ga_vec3){2, 1, 0}, 0.5));
     ga_mv T = ga_versor_transversion((ga_vec3){0.5, 0, 0});

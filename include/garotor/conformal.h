@@ -47,29 +47,29 @@ extern "C" {
 
 /* ---- the basis of the model (Wareham-Lasenby §2.2) ------------------- */
 /** n = e4 + e5: the point at infinity (n^2 = 0). */
-ga_mv ga_mv_n(void);
+GA_API ga_mv ga_mv_n(void);
 /** nbar = e4 - e5: F(0) = -nbar/2, the origin up to scale (nbar^2 = 0, n.nbar = 2). */
-ga_mv ga_mv_nbar(void);
+GA_API ga_mv ga_mv_nbar(void);
 /** e4 = e (squares to +1). */
-ga_mv ga_mv_e4(void);
+GA_API ga_mv ga_mv_e4(void);
 /** e5 = ebar (squares to -1). */
-ga_mv ga_mv_e5(void);
+GA_API ga_mv ga_mv_e5(void);
 /** I3 = e1 e2 e3, the Euclidean pseudoscalar (I3^2 = -1). */
-ga_mv ga_mv_i3(void);
+GA_API ga_mv ga_mv_i3(void);
 /** I5 = e1 e2 e3 e4 e5, the pseudoscalar of the dual (I5^2 = -1). */
-ga_mv ga_mv_i5(void);
+GA_API ga_mv ga_mv_i5(void);
 /** The Euclidean vector x1 e1 + x2 e2 + x3 e3 (not embedded). */
-ga_mv ga_vec3_to_mv(ga_vec3 x);
+GA_API ga_mv ga_vec3_to_mv(ga_vec3 x);
 
 /* ---- points: up and down ---------------------------------------------- */
 /** F(x) with lambda = 1: x + (x^2/2) n - nbar/2 (Wareham-Lasenby §1). */
-ga_mv ga_point_up(ga_vec3 x);
+GA_API ga_mv ga_point_up(ga_vec3 x);
 /** F(x) = (x^2 n + 2 lambda x - lambda^2 nbar) / (2 lambda^2) (Wareham-Lasenby §1).
  *  GA_ERR_NOTFINITE for NaN/Inf in x or lambda, GA_ERR_ARG for lambda <= 0,
  *  GA_ERR_DOMAIN when (|x|/lambda)^2 overflows. */
-int ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out);
 /** The down-projection, lambda = 1: the x with X = w F(x) for some w != 0. */
-int ga_point_down(ga_mv X, ga_vec3 *out);
+GA_API GA_NODISCARD ga_status ga_point_down(ga_mv X, ga_vec3 *out);
 /** The down-projection, the inverse of ga_point_up_scaled up to scale: X = w F(x)
  *  with the weight w = -X.n (w < 0 is allowed: -F(x) is the same point), and
  *  x = lambda <X>_E / w, where <X>_E is the e1 e2 e3 part.
@@ -82,26 +82,26 @@ int ga_point_down(ga_mv X, ga_vec3 *out);
  *  (the point at infinity, or X = 0), or X farther than GA_POINT_TOL s from
  *  w F(x) (X not null: X - w F(x) = 0 exactly when X.X = 0); GA_ERR_DOMAIN when
  *  x overflows (a lambda near DBL_MAX). */
-int ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out);
+GA_API GA_NODISCARD ga_status ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out);
 
 /* ---- objects built from points (direct forms) -------------------------- */
 /** Point pair F(a) ^ F(b) (a bivector). */
-ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b);
+GA_API ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b);
 /** Circle through a, b, c: F(a) ^ F(b) ^ F(c) (a trivector). */
-ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c);
+GA_API ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c);
 /** Line through a and b: F(a) ^ F(b) ^ n (a trivector; the circle through infinity). */
-ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b);
+GA_API ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b);
 /** Sphere through a, b, c, d: F(a) ^ F(b) ^ F(c) ^ F(d) (a 4-vector). */
-ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d);
+GA_API ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d);
 /** Plane through a, b, c: F(a) ^ F(b) ^ F(c) ^ n (a 4-vector; the sphere through infinity). */
-ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c);
+GA_API ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c);
 
 /* ---- dual forms (vectors) --------------------------------------------- */
 /** Dual sphere s = F(c) - (r^2/2) n: F(x).s = (r^2 - |x - c|^2) / 2, zero on the sphere. */
-ga_mv ga_sphere_dual(ga_vec3 centre, double radius);
+GA_API ga_mv ga_sphere_dual(ga_vec3 centre, double radius);
 /** Dual plane p = m + d n, m a unit normal: F(x).p = m.x - d, zero on the plane
  *  m.x = d (d is the signed distance from the origin along m). */
-ga_mv ga_plane_dual(ga_vec3 normal, double distance);
+GA_API ga_mv ga_plane_dual(ga_vec3 normal, double distance);
 
 /* ---- read-back ----------------------------------------------------------- */
 /** Centre and radius of a sphere, given either form, told apart by grade: a
@@ -109,29 +109,29 @@ ga_mv ga_plane_dual(ga_vec3 normal, double distance);
  *  dual is read). Radius 0 (a point) is accepted. GA_ERR_NOTBLADE for any other
  *  grade, for a plane (|S.n| <= GA_POINT_TOL s after dualising) or an imaginary
  *  sphere (r^2 < 0). */
-int ga_sphere_params(ga_mv S, ga_vec3 *centre, double *radius);
+GA_API GA_NODISCARD ga_status ga_sphere_params(ga_mv S, ga_vec3 *centre, double *radius);
 /** Unit normal m and distance d (the plane m.x = d) of a plane, given either
  *  form, told apart by grade: a vector is a dual plane w (m + d n), a 4-vector
  *  a direct one. Orientation: ga_plane_from_points(a, b, c) reads back m along
  *  (b - a) x (c - a); a dual plane w (m + d n) reads back m for w > 0.
  *  GA_ERR_NOTBLADE for any other grade, a sphere (X.n != 0) or the plane at
  *  infinity (no normal). */
-int ga_plane_params(ga_mv P, ga_vec3 *normal, double *distance);
+GA_API GA_NODISCARD ga_status ga_plane_params(ga_mv P, ga_vec3 *normal, double *distance);
 /** Unit direction u and the point p of a line closest to the origin.
  *  A line is L = w (u e45 + (p ^ u) ^ n), |u| = 1; ga_line_from_points(a, b) reads back u
  *  along b - a. GA_ERR_NOTBLADE if L is not a trivector of that form (a circle, a
  *  trivector not a blade, u = 0). */
-int ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest);
+GA_API GA_NODISCARD ga_status ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest);
 /** The two points of a point pair: ga_pointpair_from_points(a, b) reads back a, b in that
  *  order (a negative multiple swaps them). Read as the midpoint and half-distance
  *  of the carrier sphere and the direction of the line PP ^ n.
  *  GA_ERR_NOTBLADE for any other grade, an imaginary or degenerate pair (PP^2 <= 0),
  *  or a flat point F(a) ^ n. */
-int ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b);
+GA_API GA_NODISCARD ga_status ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b);
 /** Centre, radius and unit normal of a circle (a trivector). The normal is that
  *  of the plane C ^ n: for ga_circle_from_points(a, b, c), along (b - a) x (c - a).
  *  GA_ERR_NOTBLADE for any other grade, a line, or an imaginary circle. */
-int ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal);
+GA_API GA_NODISCARD ga_status ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal);
 
 #ifdef __cplusplus
 }

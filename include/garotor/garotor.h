@@ -4,7 +4,9 @@
  *
  * or one module, e.g. <garotor/rotor.h>. Modules, from the bottom up:
  *   version.h    GAROTOR_VERSION_MAJOR, _MINOR, _PATCH and _STRING
+ *   export.h     GA_API and GA_NODISCARD, the markers on public declarations
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
+ *   numtext.h    doubles as the shortest decimal that reads back the same
  *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
  *   object.h     kinds and read-back of every object, meet, projection, distance,
@@ -24,6 +26,7 @@
 
 #include <garotor/version.h>
 #include "types.h"
+#include "numtext.h"
 #include "mv.h"
 #include "conformal.h"
 #include "rotor.h"

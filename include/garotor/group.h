@@ -55,14 +55,14 @@ struct ga_group {
     /** out = a b (b first, then a, as matrices act on column vectors) */
     void (*compose)(const void *a, const void *b, void *out);
     /** out = a^-1 (for affine: GA_ERR_SINGULAR if not invertible) */
-    int (*inverse)(const void *a, void *out);
+    ga_status (*inverse)(const void *a, void *out);
     /** out = exp(x); GA_ERR_NOTFINITE for NaN/Inf in x, GA_ERR_DOMAIN when the
      *  result is not representable (overflows: docs/errors.md) */
-    int (*exp)(const double *x, void *out);
+    ga_status (*exp)(const double *x, void *out);
     /** x = the principal log of g: rotation angle in [0, pi] for cga/se3;
      *  GA_ERR_DOMAIN where the group element has no principal log (affine) or
      *  the log overflows */
-    int (*log)(const void *g, double *x);
+    ga_status (*log)(const void *g, double *x);
     /** out = Ad_g x = g x g^-1, in algebra coordinates (exp(Ad_g x) = g exp(x) g^-1) */
     void (*adjoint)(const void *g, const double *x, double *out);
     /** out = J_r(x) y, the right Jacobian (dexp) of exp at x applied to y:
@@ -75,7 +75,7 @@ struct ga_group {
     /** Read a 4x4 homogeneous matrix into a group element, checking it
      *  (GA_ERR_NOTRIGID for cga/se3 if not a rigid motion to 1e-9; for affine
      *  the last row must be 0 0 0 1 and the determinant positive). */
-    int (*from_mat4)(ga_mat4 m, void *out);
+    ga_status (*from_mat4)(ga_mat4 m, void *out);
     /** The 4x4 homogeneous matrix of a group element. */
     ga_mat4 (*to_mat4)(const void *g);
     /** The algebra element x as a 4x4 matrix (last row zero): the matrix whose
@@ -84,7 +84,7 @@ struct ga_group {
     /** The inverse of hat. GA_ERR_ARG when a is not in the algebra: a last row
      *  other than 0 0 0 0 (any group), or for cga/se3 a 3x3 block that is not
      *  skew to 1e-9 relative to its largest entry (the skew part is read). */
-    int (*vee)(ga_mat4 a, double *x);
+    ga_status (*vee)(ga_mat4 a, double *x);
     /** The half-turn rule, or NULL where the principal log is unique. At a
      *  rotation of exactly pi the principal log's axis sign is arbitrary, so
      *  two representations may pick opposite screws; the schemes apply this
@@ -124,20 +124,20 @@ struct ga_group {
 };
 
 /** CGA rotors (ga_rotor, rotor.h): the closed forms of Wareham-Lasenby. */
-extern const ga_group ga_group_cga;
+GA_API extern const ga_group ga_group_cga;
 /** SE(3) as 4x4 matrices (ga_mat4, mat4.h): Eberly's closed forms. */
-extern const ga_group ga_group_se3;
+GA_API extern const ga_group ga_group_se3;
 /** Invertible homogeneous 4x4 matrices with positive determinant (ga_mat4):
  *  the general matrix exp and log (Higham's scaling and squaring, inverse
  *  scaling and squaring). */
-extern const ga_group ga_group_affine;
+GA_API extern const ga_group ga_group_affine;
 
 /** The group called `name` ("cga", "matrix", "affine"), or NULL. */
-const ga_group *ga_group_by_name(const char *name);
+GA_API const ga_group *ga_group_by_name(const char *name);
 
 /** The i-th group of the library (0, 1, 2, ...: cga, matrix, affine), NULL
  *  past the last: for tests and tools that run over every group. */
-const ga_group *ga_group_nth(size_t i);
+GA_API const ga_group *ga_group_nth(size_t i);
 
 #ifdef __cplusplus
 }

@@ -38,10 +38,10 @@ extern "C" {
 /* ---- plain 4x4 algebra ------------------------------------------------- */
 
 /** The identity I. */
-ga_mat4 ga_mat4_identity(void);
+GA_API ga_mat4 ga_mat4_identity(void);
 
 /** The product a*b (b acts first, then a). */
-ga_mat4 ga_mat4_mul(ga_mat4 a, ga_mat4 b);
+GA_API ga_mat4 ga_mat4_mul(ga_mat4 a, ga_mat4 b);
 
 /** The inverse of a general 4x4, by Gaussian elimination with partial pivoting.
  *  GA_ERR_NOTFINITE if a holds NaN or Inf. GA_ERR_SINGULAR if a is numerically
@@ -49,28 +49,28 @@ ga_mat4 ga_mat4_mul(ga_mat4 a, ga_mat4 b);
  *  a as given and after exact power-of-2 row and column equilibration (so an
  *  affine [R, t; 0 1] with |t| = 1e16 or diag(1e-20, 1, 1, 1) is invertible
  *  and a rank-deficient matrix is not), or if the inverse overflows. */
-int ga_mat4_inverse(ga_mat4 a, ga_mat4 *out);
+GA_API GA_NODISCARD ga_status ga_mat4_inverse(ga_mat4 a, ga_mat4 *out);
 
 /** The 1-norm, max_j sum_i |a_ij| (the largest column sum). */
-double ga_mat4_norm1(ga_mat4 a);
+GA_API double ga_mat4_norm1(ga_mat4 a);
 
 /* ---- the Lie algebra se(3) ---------------------------------------------- */
 
 /** xi^ = [[w]x, v; 0 0 0 0] (Eberly eqs. 8 and 19). */
-ga_mat4 ga_twist_hat(ga_twist xi);
+GA_API ga_mat4 ga_twist_hat(ga_twist xi);
 
 /** The inverse of hat: w from the skew part of the upper-left 3x3,
  *  w = ((a21 - a12)/2, (a02 - a20)/2, (a10 - a01)/2), and v = (a03, a13, a23).
  *  Reading the skew part makes vee(logm(M)) the nearest twist when the 3x3
  *  block is skew only to rounding. */
-ga_twist ga_twist_vee(ga_mat4 a);
+GA_API ga_twist ga_twist_vee(ga_mat4 a);
 
 /* ---- the group SE(3) ---------------------------------------------------- */
 
 /** Is m a rigid motion [[R, t]; [0 0 0 1]] (Eberly eq. 17)? GA_ERR_NOTFINITE if m
  *  holds NaN or Inf; GA_ERR_NOTRIGID unless max |R^T R - I|_ij <= tol, det R > 0
  *  and the last row is 0 0 0 1 to within tol (entrywise); else GA_OK. */
-int ga_se3_check(ga_mat4 m, double tol);
+GA_API GA_NODISCARD ga_status ga_se3_check(ga_mat4 m, double tol);
 
 /** The rigid motion nearest m: when ga_se3_check(m, tol) is GA_OK (rotation
  *  block with max |R^T R - I| <= tol and det R > 0, last row 0 0 0 1 to tol),
@@ -80,11 +80,11 @@ int ga_se3_check(ga_mat4 m, double tol);
  *  0 0 0 1; the translation is kept. Otherwise the status of the check
  *  (GA_ERR_NOTRIGID, GA_ERR_NOTFINITE); tol > GA_SE3_NORMALIZE_TOL is
  *  GA_ERR_ARG. A matrix rigid to rounding comes back within 2 ulp. */
-int ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out);
+GA_API GA_NODISCARD ga_status ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out);
 
 /** The inverse of a rigid motion, [R^T, -R^T t; 0 1] (Eberly eq. 18). m is
  *  assumed rigid; its last row is ignored. */
-ga_mat4 ga_se3_inverse(ga_mat4 m);
+GA_API ga_mat4 ga_se3_inverse(ga_mat4 m);
 
 /** expm(xi^) in closed form (Eberly eqs. 9, 19, 20):
  *    R = I + (sin th/th) S + ((1 - cos th)/th^2) S^2,   t = V v,
@@ -96,7 +96,7 @@ ga_mat4 ga_se3_inverse(ga_mat4 m);
  *  angle |w/2| and the unit axis (the rotation by the double angle, as
  *  ga_rotor_exp gives it).
  *  The result is exactly homogeneous (last row 0 0 0 1). NaN in, NaN out. */
-ga_mat4 ga_se3_exp(ga_twist xi);
+GA_API ga_mat4 ga_se3_exp(ga_twist xi);
 
 /** The principal log of a rigid motion: the twist xi with expm(xi^) = m and
  *  rotation angle |w| in [0, pi] (Eberly eqs. 11 and 20, and his theta = pi
@@ -111,7 +111,7 @@ ga_mat4 ga_se3_exp(ga_twist xi);
  *  rigid only to GA_SE3_TOL is accepted as it is: the angle from atan2 and the
  *  normalised axis are those of a rotation within that tolerance of R.
  *  GA_ERR_DOMAIN if v overflows (a translation near DBL_MAX). */
-int ga_se3_log(ga_mat4 m, ga_twist *out);
+GA_API GA_NODISCARD ga_status ga_se3_log(ga_mat4 m, ga_twist *out);
 
 /** The geodesic F(t) = exp(t log(h1 h0^{-1})) h0 (Eberly eq. 21): F(0) = h0,
  *  F(1) = h1, constant speed. Any finite t is accepted (extrapolation). When
@@ -119,11 +119,11 @@ int ga_se3_log(ga_mat4 m, ga_twist *out);
  *  log's choice is taken. GA_ERR_NOTFINITE (NaN/Inf in h0, h1 or t),
  *  GA_ERR_NOTRIGID (h0 or h1 fails ga_se3_check(., GA_SE3_TOL)) or GA_ERR_DOMAIN
  *  (the result overflows: a far extrapolation, or translations near DBL_MAX). */
-int ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out);
+GA_API GA_NODISCARD ga_status ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out);
 
 /** The adjoint action Ad_g xi = vee(g xi^ g^{-1}) of a rigid motion
  *  g = [R, t; 0 1]: w' = R w, v' = R v + t x (R w). */
-ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi);
+GA_API ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi);
 
 /* ---- general real 4x4: exp and principal log ----------------------------- */
 
@@ -153,7 +153,7 @@ ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi);
  *  input: squaring no longer amplifies their rounding. GA_ERR_NOTFINITE if
  *  a holds NaN/Inf; GA_ERR_DOMAIN if the result overflows (it is not
  *  representable in double). */
-int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
+GA_API GA_NODISCARD ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
 
 /** ga_mat4_logm takes Eberly's closed form (as ga_se3_log) for a homogeneous
  *  matrix whose 3x3 block R has max |R^T R - I|_ij <= this, det R > 0 and a
@@ -198,7 +198,7 @@ int ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
  *  There is no backward-error test: a conditioning-limited result (a
  *  general matrix near a half turn, error about eps / (pi - th)) is returned,
  *  not refused. */
-int ga_mat4_logm(ga_mat4 a, ga_mat4 *out);
+GA_API GA_NODISCARD ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out);
 
 #ifdef __cplusplus
 }

@@ -45,59 +45,59 @@ enum {
 };
 
 /** The grade (0..5) of blade index i. */
-int ga_blade_grade(int i);
+GA_API int ga_blade_grade(int i);
 /** The name of blade index i: "1", "e1", ..., "e12345". */
-const char *ga_blade_name(int i);
+GA_API const char *ga_blade_name(int i);
 /** The basis vectors of blade index i as a bit mask (bit k-1 set for e_k). */
-unsigned ga_blade_mask(int i);
+GA_API unsigned ga_blade_mask(int i);
 
 /* ---- construction and linear operations ------------------------------ */
-ga_mv ga_mv_zero(void);
-ga_mv ga_mv_scalar(double s);
+GA_API ga_mv ga_mv_zero(void);
+GA_API ga_mv ga_mv_scalar(double s);
 /** The basis blade with index i (coefficient 1). */
-ga_mv ga_mv_blade(int i);
+GA_API ga_mv ga_mv_blade(int i);
 /** The vector x1 e1 + ... + x5 e5. */
-ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5);
-ga_mv ga_mv_add(ga_mv a, ga_mv b);
-ga_mv ga_mv_sub(ga_mv a, ga_mv b);
-ga_mv ga_mv_scale(ga_mv a, double s);
+GA_API ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5);
+GA_API ga_mv ga_mv_add(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_sub(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_scale(ga_mv a, double s);
 /** 1 if every coefficient is finite, 0 otherwise. */
-int ga_mv_isfinite(ga_mv a);
+GA_API int ga_mv_isfinite(ga_mv a);
 /** Largest absolute coefficient (the max norm, used for tolerances). */
-double ga_mv_maxabs(ga_mv a);
+GA_API double ga_mv_maxabs(ga_mv a);
 
 /* ---- products ---------------------------------------------------------- */
 /** Geometric product a b. */
-ga_mv ga_mv_gp(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_gp(ga_mv a, ga_mv b);
 /** Outer (wedge) product a ^ b. */
-ga_mv ga_mv_op(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_op(ga_mv a, ga_mv b);
 /** Left contraction a _| b: for blades, grade(b) - grade(a) part of a b when >= 0. */
-ga_mv ga_mv_lc(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_lc(ga_mv a, ga_mv b);
 /** Scalar product <a b>_0. For vectors it is the inner product a.b. */
-double ga_mv_sp(ga_mv a, ga_mv b);
+GA_API double ga_mv_sp(ga_mv a, ga_mv b);
 /** The "fat dot" a . b = sum over grades r, s of <<a>_r <b>_s>_|r-s|, scalars
  *  included (2 . x = 2 x): the inner product of Dorst-Fontijne-Mann §B.1 and
  *  ganja.js's `|` (docs/conventions.md, "Inner products"). */
-ga_mv ga_mv_dot(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_dot(ga_mv a, ga_mv b);
 /** Hestenes' inner product: the fat dot without the terms where r or s is 0
  *  (a scalar's inner product with anything is 0); clifford's (Python) `|`. */
-ga_mv ga_mv_ip(ga_mv a, ga_mv b);
+GA_API ga_mv ga_mv_ip(ga_mv a, ga_mv b);
 
 /* ---- involutions and grades ------------------------------------------- */
 /** Reverse ~a: a grade-k part is multiplied by (-1)^(k(k-1)/2). */
-ga_mv ga_mv_reverse(ga_mv a);
+GA_API ga_mv ga_mv_reverse(ga_mv a);
 /** Grade involution: a grade-k part is multiplied by (-1)^k. */
-ga_mv ga_mv_involute(ga_mv a);
+GA_API ga_mv ga_mv_involute(ga_mv a);
 /** Clifford conjugate: reverse of the grade involution. */
-ga_mv ga_mv_conjugate(ga_mv a);
+GA_API ga_mv ga_mv_conjugate(ga_mv a);
 /** The grade-k part <a>_k (zero for k outside 0..5). */
-ga_mv ga_mv_grade(ga_mv a, int k);
+GA_API ga_mv ga_mv_grade(ga_mv a, int k);
 
 /* ---- dual ---------------------------------------------------------------- */
 /** Dual a* = a I^-1 with I = e12345 (I^2 = -1, so I^-1 = -I). */
-ga_mv ga_mv_dual(ga_mv a);
+GA_API ga_mv ga_mv_dual(ga_mv a);
 /** Undual a I, the inverse of ga_mv_dual. */
-ga_mv ga_mv_undual(ga_mv a);
+GA_API ga_mv ga_mv_undual(ga_mv a);
 
 /* ---- text --------------------------------------------------------------- */
 /** Bytes that ga_mv_format may need, with the terminating NUL: the longest
@@ -116,7 +116,7 @@ ga_mv ga_mv_undual(ga_mv a);
  *  if cap is too small (GA_MV_TEXT_MAX always suffices) or buf is NULL,
  *  GA_ERR_NOTFINITE for NaN or Inf; nothing written then. No allocation and
  *  no locale. */
-int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len);
+GA_API GA_NODISCARD ga_status ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len);
 /** Reads what ga_mv_format writes, and a little more: terms separated by + or
  *  -, each a decimal number, a blade name (e1, ..., e12345, in canonical
  *  order only) or a number and a name, optionally with blanks or '*' between
@@ -130,17 +130,17 @@ int ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len);
  *  an unknown name: GA_ERR_ARG. GA_ERR_ARG for anything else (an empty
  *  text, an unknown name, "e21", "nan", a mantissa of 400 characters or
  *  more glued to a blade name); *out untouched on any error. */
-int ga_mv_parse(const char *text, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_mv_parse(const char *text, ga_mv *out);
 
 /* ---- norm and inverse ------------------------------------------------- */
 /** The signed squared norm <a ~a>_0 (negative for some blades of G(4,1)). */
-double ga_mv_norm2(ga_mv a);
+GA_API double ga_mv_norm2(ga_mv a);
 /** sqrt(|<a ~a>_0|). */
-double ga_mv_norm(ga_mv a);
+GA_API double ga_mv_norm(ga_mv a);
 /** Inverse of a versor or blade: ~a / (a ~a). Fails with GA_ERR_SINGULAR when a ~a is
  *  not a nonzero scalar (then a is not a versor, or is null) or the inverse
  *  overflows, GA_ERR_NOTFINITE on NaN/Inf input. */
-int ga_mv_inverse(ga_mv a, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_mv_inverse(ga_mv a, ga_mv *out);
 
 #ifdef __cplusplus
 }

@@ -125,7 +125,7 @@ typedef struct {
  *  planes, a line in a plane), GA_ERR_NOTBLADE when X is not one of the
  *  objects above (mixed grades, grade 0 or 5, a non-blade), to GA_POINT_TOL
  *  relative. */
-int ga_object_from_mv(ga_mv X, ga_object *out);
+GA_API GA_NODISCARD ga_status ga_object_from_mv(ga_mv X, ga_object *out);
 
 /** ga_object_from_mv of an object held about (o, lambda) (see "Local origin
  *  and length scale" above), in world coordinates: lambda c + o for the
@@ -134,7 +134,7 @@ int ga_object_from_mv(ga_mv X, ga_object *out);
  *  kind, reality and direction as read about (o, lambda) (tangent relative to
  *  L_o). Codes of ga_object_from_mv on X; GA_ERR_NOTFINITE for NaN/Inf in o or
  *  lambda, GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on overflow. */
-int ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out);
+GA_API GA_NODISCARD ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out);
 
 /** The object X, given in world coordinates, held about (o, lambda): translated
  *  by -o (T_-o X ~T_-o), then every length divided by lambda (o -> lambda o,
@@ -143,7 +143,7 @@ int ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *o
  *  1e8 away) comes in as accurate as it was; a round as inaccurate as it was.
  *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on
  *  overflow. */
-int ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out);
 
 /** The rigid motion R of an object X held about (o, lambda): R T_o X ~T_o ~R is
  *  T_o' X' ~T_o' with o' = R(o) (ga_rotor_apply) and X' = q X ~q, q the
@@ -151,7 +151,8 @@ int ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out);
  *  commutes with the scaling). Writes o' and X'. Exact up to the rounding of R(o)
  *  and of the rotation: no translation of the size of o enters X'.
  *  GA_ERR_NOTFINITE for NaN/Inf in R, o or X; GA_ERR_DOMAIN if o' overflows. */
-int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin,
+                                                   ga_mv *out);
 
 /** The meet of two objects, A* ^ B* undualised: ((A I^-1) ^ (B I^-1)) I (DFM §5.5,
  *  the meet in the whole space, as clifford's meet and ganja's dual wedge).
@@ -163,7 +164,7 @@ int ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origi
  *  ga_mv_meet_rel gives their meet then. Two flats meet directly; with a
  *  round, the meet is taken about its centre (translated there and back) so
  *  that it adds no cancellation to the round's own. */
-ga_mv ga_mv_meet(ga_mv A, ga_mv B);
+GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 
 /** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
  *  a direction of B's subspace lies in A's when the sine of its principal
@@ -212,7 +213,7 @@ ga_mv ga_mv_meet(ga_mv A, ga_mv B);
  *  grade-2 or -3 element that is no blade, GA_ERR_DOMAIN for a scalar or a
  *  pseudoscalar (grade 0 or 5: no object) and where the result overflows. No
  *  allocation. */
-int ga_mv_join(ga_mv A, ga_mv B, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_mv_join(ga_mv A, ga_mv B, ga_mv *out);
 
 /** The meet of two direct objects relative to their join J (ga_mv_join), the
  *  subspace common to both, for objects in any position (DFM §5.6):
@@ -231,18 +232,18 @@ int ga_mv_join(ga_mv A, ga_mv B, ga_mv *out);
  *      two coplanar or cospherical circles -> a point pair, real, tangent or
  *      imaginary; a scalar where the two share no point (a point off a line).
  *  Statuses of ga_mv_join. */
-int ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out);
 
 /** The point of O nearest x (a plane, line, sphere, circle, flat point, or the
  *  nearer point of a pair). GA_ERR_IMAGINARY for an imaginary round,
  *  GA_ERR_DOMAIN where the nearest point is not unique (x at the centre of a
  *  sphere or on the axis of a circle), GA_ERR_NOTBLADE for an empty object,
  *  and ga_object_from_mv's codes. */
-int ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out);
+GA_API GA_NODISCARD ga_status ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out);
 /** The rejection x - ga_point_project(x, O): the offset of x from O. Same codes. */
-int ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out);
+GA_API GA_NODISCARD ga_status ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out);
 /** |x - ga_point_project(x, O)|, the distance from x to O. Same codes. */
-int ga_point_distance(ga_vec3 x, ga_mv O, double *out);
+GA_API GA_NODISCARD ga_status ga_point_distance(ga_vec3 x, ga_mv O, double *out);
 
 /** The angle in [0, pi/2] between two flats or rounds through a common point:
  *  planes (between normals), lines (between directions), a line and a plane
@@ -252,7 +253,7 @@ int ga_point_distance(ga_vec3 x, ga_mv O, double *out);
  *  cosine), the sine from the wedge, so that angles near 0 and near pi/2 keep
  *  their relative accuracy. GA_ERR_DOMAIN for rounds that do not cross,
  *  GA_ERR_NOTBLADE for other pairs, GA_ERR_IMAGINARY for an imaginary sphere. */
-int ga_object_angle(ga_mv A, ga_mv B, double *out);
+GA_API GA_NODISCARD ga_status ga_object_angle(ga_mv A, ga_mv B, double *out);
 
 /** A rigid motion taking A to B, two objects of the same kind (planes, lines,
  *  spheres, circles, point pairs, flat points): T(cB) R T(-cA), cA and cB the
@@ -262,7 +263,7 @@ int ga_object_angle(ga_mv A, ga_mv B, double *out);
  *  have one). GA_ERR_ARG for different kinds, GA_ERR_NOTRIGID for rounds of
  *  different radii (relative GA_POINT_TOL: a dilation would be needed),
  *  GA_ERR_IMAGINARY, GA_ERR_NOTBLADE for empty objects. */
-int ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
+GA_API GA_NODISCARD ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
 
 #ifdef __cplusplus
 }

@@ -270,16 +270,16 @@ typedef struct {
 
 /** "screw", "bivector", "quadratic", "smooth", "lihao2", "lihao3",
  *  "decoupled", "decoupled-c2", "bspline", "c2". */
-const char *ga_scheme_name(ga_scheme s);
+GA_API const char *ga_scheme_name(ga_scheme s);
 /** The scheme called name; GA_ERR_ARG if there is none. */
-int ga_scheme_by_name(const char *name, ga_scheme *out);
+GA_API GA_NODISCARD ga_status ga_scheme_by_name(const char *name, ga_scheme *out);
 /** "direct", "euler", "exact". */
-const char *ga_eval_name(ga_eval e);
+GA_API const char *ga_eval_name(ga_eval e);
 /** The evaluator called name; GA_ERR_ARG if there is none. */
-int ga_eval_by_name(const char *name, ga_eval *out);
+GA_API GA_NODISCARD ga_status ga_eval_by_name(const char *name, ga_eval *out);
 /** Fewest keys the scheme takes beyond the constant path of one key (2, or 3
  *  for QUADRATIC and SMOOTH, 4 for BSPLINE). QUADRATIC takes exactly 3 (or 1). */
-size_t ga_scheme_min_keys(ga_scheme s);
+GA_API size_t ga_scheme_min_keys(ga_scheme s);
 
 /** 1 if paths of scheme s can grow by ga_path_append: SCREW, LIHAO2,
  *  BIVECTOR, DECOUPLED, whose segment i depends on keys 0..i+1 only, and
@@ -288,7 +288,7 @@ size_t ga_scheme_min_keys(ga_scheme s);
  *  others cannot: LIHAO3's default velocity at a key and the splines
  *  (QUADRATIC, SMOOTH, DECOUPLED_C2) depend on every key, so a new key
  *  changes segments already built; rebuild them with ga_path_init. */
-int ga_scheme_can_append(ga_scheme s);
+GA_API int ga_scheme_can_append(ga_scheme s);
 
 /** Relative tolerance of even spacing (BSPLINE): key i may be off the even
  *  grid t_0 + i h, h = (t_{n-1} - t_0)/(n - 1), by GA_PATH_SPACING_TOL h plus
@@ -298,27 +298,29 @@ int ga_scheme_can_append(ga_scheme s);
 /** The first key (1 .. n-2) whose time is off the even grid by more than the
  *  tolerance above, or 0 when the n times are evenly spaced (n <= 2: always;
  *  NaN counts as off). */
-size_t ga_times_uneven(size_t n, const double *times);
+GA_API size_t ga_times_uneven(size_t n, const double *times);
 
 /** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
  *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
  *  without to_qt/from_qt, C2 on a group that is not rigid: affine). A
  *  workspace of this size for m > n keys, given to ga_path_init with n keys,
  *  leaves room for ga_path_append to add m - n (schemes that can append). */
-size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
+GA_API size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);
 
 /** Build into *out a path through n keys (n group elements, each
  *  g->elem_size bytes, in a contiguous array) at the given times.
  *  velocities: LIHAO2: NULL or the first key's velocity (g->dim doubles);
  *  LIHAO3: NULL or one velocity per key (n * g->dim doubles); other schemes
  *  ignore it. */
-int ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times, const void *keys,
-                 const double *velocities, void *work, size_t work_bytes, ga_path *out);
+GA_API GA_NODISCARD ga_status ga_path_init(const ga_group *g, ga_scheme s, size_t n, const double *times,
+                                           const void *keys, const double *velocities, void *work,
+                                           size_t work_bytes, ga_path *out);
 
 /** The same from 4x4 matrices, each read by g->from_mat4 (its status is
  *  returned: GA_ERR_NOTRIGID for a non-rigid matrix on cga/se3, ...). */
-int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times, const ga_mat4 *keys,
-                      const double *velocities, void *work, size_t work_bytes, ga_path *out);
+GA_API GA_NODISCARD ga_status ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *times,
+                                                const ga_mat4 *keys, const double *velocities, void *work,
+                                                size_t work_bytes, ga_path *out);
 
 /** Add a key at time t > the last key's to a path of a scheme that can append
  *  (ga_scheme_can_append), building its one new segment: the result is the
@@ -330,53 +332,55 @@ int ga_path_init_mat4(const ga_group *g, ga_scheme s, size_t n, const double *ti
  *  GA_ERR_ARG: no room, a scheme that cannot append, t not after the last
  *  key; GA_ERR_NOTFINITE: t or the key; GA_ERR_DOMAIN: the segment
  *  overflows. On an error *p is unchanged. */
-int ga_path_append(ga_path *p, double t, const void *key);
+GA_API GA_NODISCARD ga_status ga_path_append(ga_path *p, double t, const void *key);
 /** The same with the key a 4x4 matrix, read by g->from_mat4 (its status is
  *  returned). */
-int ga_path_append_mat4(ga_path *p, double t, ga_mat4 key);
+GA_API GA_NODISCARD ga_status ga_path_append_mat4(ga_path *p, double t, ga_mat4 key);
 
 /** The number of segments: n - 1, BSPLINE n - 3 (0 for the one-key path). */
-size_t ga_path_segments(const ga_path *p);
+GA_API size_t ga_path_segments(const ga_path *p);
 /** The times [*t0, *t1] the path is defined on: [t_0, t_{n-1}], BSPLINE
  *  [t_1, t_{n-2}] (one key: [t_0, t_0]). */
-int ga_path_range(const ga_path *p, double *t0, double *t1);
+GA_API GA_NODISCARD ga_status ga_path_range(const ga_path *p, double *t0, double *t1);
 /** The times [*t0, *t1] of segment seg (u = 0 and u = 1): [t_seg, t_{seg+1}],
  *  BSPLINE [t_{seg+1}, t_{seg+2}]. GA_ERR_ARG for seg >= ga_path_segments. */
-int ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1);
+GA_API GA_NODISCARD ga_status ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double *t1);
 
 /** The segment and u of time t (t in ga_path_range; t at the start of a
  *  segment gives that segment, u = 0, except the range's end: the last
  *  segment, u = 1). GA_ERR_ARG outside, and for a NaN t (a time that is in
  *  no range: so from every function that takes a sample time t). */
-int ga_path_locate(const ga_path *p, double t, size_t *seg, double *u);
+GA_API GA_NODISCARD ga_status ga_path_locate(const ga_path *p, double t, size_t *seg, double *u);
 
 /** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
  *  (the formulas give it up to rounding, which ga_path_eval_segment shows and
  *  the tests measure); so are the DIRECT samples of the batch calls. */
-int ga_path_eval(const ga_path *p, double t, void *out);
+GA_API GA_NODISCARD ga_status ga_path_eval(const ga_path *p, double t, void *out);
 /** The formula of segment seg (0..n-2) at any finite u (outside [0, 1] it
  *  extrapolates); no special case at the keys. */
-int ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out);
+GA_API GA_NODISCARD ga_status ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out);
 
 /** The body velocity A(t)^-1 dA/dt at t (g->dim doubles, per unit t); at a key
  *  time the velocity of the segment starting there (the last key: ending). */
-int ga_path_velocity(const ga_path *p, double t, double *v);
+GA_API GA_NODISCARD ga_status ga_path_velocity(const ga_path *p, double t, double *v);
 /** The body velocity per unit t on segment seg at u. */
-int ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v);
+GA_API GA_NODISCARD ga_status ga_path_velocity_segment(const ga_path *p, size_t seg, double u, double *v);
 
 /** The body acceleration d/dt (A(t)^-1 dA/dt) at t (g->dim doubles, per unit
  *  t^2), analytic: Li-Hao forms by the product rule differentiated once more
  *  (see "Acceleration" above), generator schemes through the 4x4 jet
  *  exp(X + e X' + e^2 X''/2). At a key time the segment starting there. */
-int ga_path_acceleration(const ga_path *p, double t, double *a);
+GA_API GA_NODISCARD ga_status ga_path_acceleration(const ga_path *p, double t, double *a);
 /** The body acceleration per unit t^2 on segment seg at u. */
-int ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a);
+GA_API GA_NODISCARD ga_status ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a);
 /** Velocity (per unit t) and acceleration (per unit t^2) at t in frame f;
  *  either output may be NULL. The constant path of one key: zeros. */
-int ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v, double *a);
+GA_API GA_NODISCARD ga_status ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v,
+                                                    double *a);
 /** The same on segment seg at any finite u (outside [0, 1]: the segment's
  *  formula continued, as ga_path_eval_segment). */
-int ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v, double *a);
+GA_API GA_NODISCARD ga_status ga_path_differentiate_segment(const ga_path *p, size_t seg, double u,
+                                                            ga_frame f, double *v, double *a);
 
 /** The growth rule (docs/schemes.md, "lihao2: growth"): a path whose
  *  velocity at some key exceeds GA_PATH_GROWTH_MAX times the fastest chord of
@@ -403,7 +407,7 @@ typedef struct {
 
 /** Measure the growth rule on p (any scheme); GA_ERR_ARG for NULL; a failing
  *  log or velocity is passed on. */
-int ga_path_measure_growth(const ga_path *p, ga_path_growth *out);
+GA_API GA_NODISCARD ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out);
 
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 12
@@ -424,19 +428,20 @@ typedef struct {
  *  (EXACT: only at its anchors, whole steps from there; see EXACT above).
  *  step: the Euler step in u units, in [1e-9, 1] (else GA_ERR_ARG), ignored by
  *  the other evaluators. */
-int ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
-                         ga_path_stepper *out);
+GA_API GA_NODISCARD ga_status ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t n,
+                                                   double t0, double t1, ga_path_stepper *out);
 /** Write the next sample to out, advancing s. GA_ERR_ARG after the last. */
-int ga_path_stepper_next(ga_path_stepper *s, void *out);
+GA_API GA_NODISCARD ga_status ga_path_stepper_next(ga_path_stepper *s, void *out);
 
 /** n evenly spaced samples t0..t1 (both included) into out (n elements of
  *  g->elem_size bytes, contiguous). */
-int ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n, double t0, double t1,
-                           void *out);
+GA_API GA_NODISCARD ga_status ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
+                                                     double t0, double t1, void *out);
 /** Samples at n given times (any order; EULER is fastest with increasing
  *  times, as it continues from the previous sample within a segment). EXACT
  *  needs even spacing, so here it is DIRECT. */
-int ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times, void *out);
+GA_API GA_NODISCARD ga_status ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n,
+                                             const double *times, void *out);
 
 #ifdef __cplusplus
 }

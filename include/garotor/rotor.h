@@ -75,7 +75,7 @@ typedef struct {
 /** q / |q| when ||q| - 1| <= tol (GA_ERR_NOTRIGID when farther, GA_ERR_NOTFINITE
  *  for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL (mat4.h)). The rule
  *  of docs/conventions.md, "Keys near the group". */
-int ga_quat_normalize(ga_quat q, double tol, ga_quat *out);
+GA_API GA_NODISCARD ga_status ga_quat_normalize(ga_quat q, double tol, ga_quat *out);
 
 /** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
  *  by t", real = r and dual = t r / 2, with t the pure quaternion (0, t). */
@@ -91,55 +91,55 @@ typedef struct {
 /* ---- the group ---------------------------------------------------------- */
 
 /** The identity rotor 1. */
-ga_rotor ga_rotor_identity(void);
+GA_API ga_rotor ga_rotor_identity(void);
 
 /** The product a b (b first, then a): (qa + Pa n)(qb + Pb n) = qa qb + (qa Pb + Pa qb) n,
  *  48 multiplications, written out term by term. */
-ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b);
+GA_API ga_rotor ga_rotor_mul(ga_rotor a, ga_rotor b);
 
 /** The reverse ~r = ~q - ~P n (the inverse of a unit rotor). */
-ga_rotor ga_rotor_reverse(ga_rotor r);
+GA_API ga_rotor ga_rotor_reverse(ga_rotor r);
 
 /** The full 32-component multivector of r (e_i n = e_i4 + e_i5, e123 n = e1234 + e1235). */
-ga_mv ga_rotor_to_mv(ga_rotor r);
+GA_API ga_mv ga_rotor_to_mv(ga_rotor r);
 
 /** The compact rotor of a multivector m. GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_NOTRIGID if a
  *  coefficient outside the 8-component form exceeds tol * max(1, max|m|), if
  *  e_i4 and e_i5 (or e1234 and e1235) differ by more than that, or if the
  *  rotor is farther than tol from the group (see ga_rotor_check). On success
  *  *out is projected onto the group (ga_rotor_normalize). */
-int ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out);
+GA_API GA_NODISCARD ga_status ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out);
 
 /** r's distance from the group: max(| |q|^2 - 1 |, 2 |<P ~q>_3| / max(1, |P|)), i.e.
  *  the largest coefficient of R ~R - 1 (Thm 7), the second one relative to the
  *  size of the translation; R n ~R = n then follows (Thm 8). GA_OK if it is <= tol,
  *  GA_ERR_NOTRIGID if not, GA_ERR_NOTFINITE on NaN/Inf. */
-int ga_rotor_check(ga_rotor r, double tol);
+GA_API GA_NODISCARD ga_status ga_rotor_check(ga_rotor r, double tol);
 
 /** The rotor R (R ~R)^(-1/2) on the group: q /= |q|, P /= |q|, then the e123 part of
  *  P ~q is dropped (P = <P ~q>_1 q). GA_ERR_NOTFINITE on NaN/Inf, GA_ERR_NOTRIGID if
  *  q = 0 (no rotor is near), GA_ERR_DOMAIN if the result overflows (P near
  *  DBL_MAX). Works for any distance from the group. */
-int ga_rotor_normalize(ga_rotor r, ga_rotor *out);
+GA_API GA_NODISCARD ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out);
 
 /* ---- action ---------------------------------------------------------------- */
 
 /** The point x moved by r, as down(R F(x) ~R), computed as q x ~q + t (R = T_t q,
  *  t = -2 <P ~q>_1) in one quaternion sandwich (rotor_inline.h). r must be on the group. */
-ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
+GA_API ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
 
 /** R X ~R for any conformal object X, through the full geometric product. */
-ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X);
+GA_API ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X);
 
 /* ---- constructors ------------------------------------------------------- */
 
 /** The rotation by angle (radians) right-handed about axis (normalised here; a zero
  *  axis gives the identity): R = exp(-angle/2 u I3) = cos(angle/2) - sin(angle/2) u I3
  *  (W-L §2.1; u I3 = ux e23 - uy e13 + uz e12). */
-ga_rotor ga_rotor_rotation(ga_vec3 axis, double angle);
+GA_API ga_rotor ga_rotor_rotation(ga_vec3 axis, double angle);
 
 /** The translation by a: T_a = 1 + n a / 2 (W-L §2.2). */
-ga_rotor ga_rotor_translation(ga_vec3 a);
+GA_API ga_rotor ga_rotor_translation(ga_vec3 a);
 
 /** The twist of W-L Definition 4, tau(psi, P, a) = [cos(psi/2) + sin(psi/2) P][1 + n a/2]:
  *  translate by a, then rotate by exp(psi P / 2). P is the e_ij part of plane,
@@ -147,13 +147,13 @@ ga_rotor ga_rotor_translation(ga_vec3 a);
  *  is ignored. exp(psi P/2) is the right-handed rotation by psi about u = P I3
  *  (so P = e12 turns e2 towards e1). The paper asks for a . P = 0 (a along the
  *  axis); any a is accepted and the formula applied as written. */
-ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a);
+GA_API ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a);
 
 /** The generator B(xi) = -(w I3 + v n)/2 of a twist (docs/conventions.md). */
-ga_generator ga_twist_to_generator(ga_twist xi);
+GA_API ga_generator ga_twist_to_generator(ga_twist xi);
 
 /** The twist of a generator: the inverse of ga_twist_to_generator. */
-ga_twist ga_generator_to_twist(ga_generator b);
+GA_API ga_twist ga_generator_to_twist(ga_generator b);
 
 /* ---- exp and log ------------------------------------------------------- */
 
@@ -165,7 +165,7 @@ ga_twist ga_generator_to_twist(ga_generator b);
  *  angle is accepted, also beyond ~1e154 where phi^2 overflows (the scaled
  *  norm there): the rotation by the double angle, as ga_se3_exp gives it.
  *  NaN in, NaN out. */
-ga_rotor ga_rotor_exp(ga_generator b);
+GA_API ga_rotor ga_rotor_exp(ga_generator b);
 
 /** The principal logarithm l(R) (W-L Thm 9, made robust): the generator of the
  *  shortest motion, rotation angle in [0, pi] (R is replaced by -R when its
@@ -179,7 +179,7 @@ ga_rotor ga_rotor_exp(ga_generator b);
  *  by at most GA_ROTOR_DRIFT_MAX is projected first; farther is GA_ERR_NOTRIGID;
  *  NaN/Inf is GA_ERR_NOTFINITE; a generator that overflows (a translation near
  *  DBL_MAX) is GA_ERR_DOMAIN. exp(l(R)) = +-R. */
-int ga_rotor_log(ga_rotor r, ga_generator *out);
+GA_API GA_NODISCARD ga_status ga_rotor_log(ga_rotor r, ga_generator *out);
 
 /** The literal logarithm: exp(l(R)) = R exactly, no sign flip, rotation angle in
  *  [0, 2 pi]. At exactly q = -1 (a turn of 2 pi) the axis is taken along the
@@ -188,24 +188,24 @@ int ga_rotor_log(ga_rotor r, ga_generator *out);
  *  overflows), and its rounding along the axis, which exp would not damp, is
  *  taken out again (tests/test_rotor.c: a rotor at 2 pi - 2e-4 from
  *  ga_mv_log missed R by 2.4e-12 before). Statuses as ga_rotor_log. */
-int ga_rotor_log_literal(ga_rotor r, ga_generator *out);
+GA_API GA_NODISCARD ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out);
 
 /* ---- screws (Chasles; W-L §4.1) ------------------------------------------- */
 
 /** The screw of r (through its principal log; see ga_screw). GA_ERR_NOTFINITE,
  *  GA_ERR_NOTRIGID as ga_rotor_log; GA_ERR_DOMAIN if the axis point overflows (a
  *  rotation of ~1e-300 rad under a finite translation). */
-int ga_rotor_to_screw(ga_rotor r, ga_screw *out);
+GA_API GA_NODISCARD ga_status ga_rotor_to_screw(ga_rotor r, ga_screw *out);
 
 /** The rotor of a screw: rotate by angle about the axis through point, translating
  *  by shift along it (pitch is not used; shift is). The axis is normalised; for
  *  angle 0 it is the translation by shift * axis. */
-ga_rotor ga_rotor_from_screw(ga_screw s);
+GA_API ga_rotor ga_rotor_from_screw(ga_screw s);
 
 /* ---- the bridge ----------------------------------------------------------- */
 
 /** The 4x4 homogeneous matrix of r (row-major, column vectors): [Rot(q), t; 0 0 0 1]. */
-ga_mat4 ga_rotor_to_mat4(ga_rotor r);
+GA_API ga_mat4 ga_rotor_to_mat4(ga_rotor r);
 
 /** The rotor of a rigid-motion matrix (Shepperd's method: the quaternion from the
  *  largest of trace, m00, m11, m22, robust at half turns), with the sign chosen
@@ -213,25 +213,25 @@ ga_mat4 ga_rotor_to_mat4(ga_rotor r);
  *  3x3 block is not orthonormal to 1e-9 (max |M^T M - 1|), has det <= 0, or the
  *  last row is not 0 0 0 1 to 1e-9; GA_ERR_DOMAIN if the rotor overflows (a
  *  translation near DBL_MAX). */
-int ga_rotor_from_mat4(ga_mat4 m, ga_rotor *out);
+GA_API GA_NODISCARD ga_status ga_rotor_from_mat4(ga_mat4 m, ga_rotor *out);
 
 /** The rotation of r as a quaternion: q = s + a12 e12 + a13 e13 + a23 e23 is
  *  (s, -a23, a13, -a12). With ga_rotor_to_translation, r = T_t q. */
-ga_quat ga_rotor_to_quat(ga_rotor r);
+GA_API ga_quat ga_rotor_to_quat(ga_rotor r);
 
 /** The translation t = -2 <P ~q>_1 of r (r = T_t q: rotate by q, then translate by t). */
-ga_vec3 ga_rotor_to_translation(ga_rotor r);
+GA_API ga_vec3 ga_rotor_to_translation(ga_rotor r);
 
 /** The rotor "rotate by the unit quaternion q, then translate by t": T_t q.
  *  q is used as given (normalise it first if it may not be unit). */
-ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t);
+GA_API ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t);
 
 /** The unit dual quaternion of r (real = r, dual = t r / 2). The map is an algebra
  *  isomorphism: real <-> q, dual <-> P with P = -(dual.x, dual.y, dual.z) - dual.w e123. */
-ga_dualquat ga_rotor_to_dualquat(ga_rotor r);
+GA_API ga_dualquat ga_rotor_to_dualquat(ga_rotor r);
 
 /** The rotor of a unit dual quaternion (the inverse of ga_rotor_to_dualquat). */
-ga_rotor ga_rotor_from_dualquat(ga_dualquat d);
+GA_API ga_rotor ga_rotor_from_dualquat(ga_dualquat d);
 
 #ifdef __cplusplus
 }

@@ -96,7 +96,7 @@ static inline ga_rotor ga_rotor_from_quat_inline(ga_quat q, ga_vec3 t)
 
 /** ga_rotor_from_mat4: the checked rotor of a rigid-motion matrix (Shepperd);
  *  statuses as rotor.h says. */
-static inline int ga_rotor_from_mat4_inline(ga_mat4 mm, ga_rotor *out)
+static inline GA_NODISCARD ga_status ga_rotor_from_mat4_inline(ga_mat4 mm, ga_rotor *out)
 {
     const double *m = mm.m;
     const double tol = 1e-9;

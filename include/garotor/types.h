@@ -4,12 +4,14 @@
  *   - a 4x4 matrix is homogeneous, row-major, acting on column vectors (x,y,z,1);
  *   - a twist xi = (w, v) = (wx, wy, wz, vx, vy, vz) names the motion expm(xi^),
  *     xi^ = [[w]x, v; 0, 0];
- *   - a function that can fail returns an int status (GA_OK or a negative
+ *   - a function that can fail returns a ga_status (GA_OK or a negative
  *     GA_E* code) and writes its result through its last pointer argument;
  *     on failure that result is left untouched.
  */
 #ifndef GAROTOR_TYPES_H
 #define GAROTOR_TYPES_H
+
+#include "export.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -30,6 +32,10 @@ typedef struct {
     ga_vec3 w, v;
 } ga_twist;
 
+/** A status: GA_OK (0) or one of the negative GA_ERR_* codes below. Every
+ *  function that can fail returns one, marked GA_NODISCARD. */
+typedef int ga_status;
+
 /** Status codes. GA_OK is 0; every error is negative. */
 enum {
     GA_OK = 0,
@@ -47,7 +53,7 @@ enum {
 };
 
 /** A short English description of a status code ("ok", "not a rigid motion", ...). */
-const char *ga_status_string(int status);
+GA_API const char *ga_status_string(ga_status status);
 
 #ifdef __cplusplus
 }

@@ -52,7 +52,7 @@ extern "C" {
  *  (section 6b). Both near null
  *  (|li| <= 2^-20 |B|^2) keep the coefficients. An angle of such B is known
  *  to u |B| radians, a part below u |B| only as rounding. */
-ga_mv ga_mv_exp(ga_mv B);
+GA_API ga_mv ga_mv_exp(ga_mv B);
 /*  A null part larger than the rest (max |B| > 8, both squares li below
  *  |B|^2/64: a screw translating far, in any conformal frame) is taken in the
  *  frame where B is rigid (ga_rotor_exp there; docs/versors.md, "A null
@@ -85,7 +85,7 @@ ga_mv ga_mv_exp(ga_mv B);
  *  of that size is known to no better, so the 1e-9 check is widened to
  *  64 u s^2 (s = min(|R|, |B|) + 4) where that is larger, up to 1e-6
  *  (s ~ 2.6e5), beyond which GA_ERR_DOMAIN. */
-int ga_mv_log(ga_mv R, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_mv_log(ga_mv R, ga_mv *out);
 
 /** B's bivector part as a sum B1 + B2 of two commuting 2-blades (B1 B2 =
  *  B2 B1, Bi^2 scalar; Dorst-Valkenburg 2011 §3), |B1^2| >= |B2^2| where the
@@ -106,41 +106,41 @@ int ga_mv_log(ga_mv R, ga_mv *out);
  *  to 1e-4 beside a null part, dense random bivectors).
  *  GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
  *  GA_ERR_DOMAIN when a part overflows. */
-int ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
+GA_API GA_NODISCARD ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
 
 /** A rotor R as a product R1 R2 of commuting simple rotors Ri = exp(Bi)
  *  (Bi 2-blades: a rotation, a boost such as a dilation, or a null part such
  *  as a translation or transversion): the ga_mv_split of ga_mv_log(R).
  *  Status of ga_mv_log (GA_ERR_DOMAIN where R has no real log) or of
  *  ga_mv_split. */
-int ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2);
+GA_API GA_NODISCARD ga_status ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2);
 
 /* ---- versors ------------------------------------------------------------------- */
 
 /** V X^ V^-1 (X^ = X for even V, the grade involution of X for odd V).
  *  GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_ARG when V has both even and odd parts;
  *  GA_ERR_SINGULAR when V has no inverse (ga_mv_inverse). */
-int ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out);
 
 /** Reflection in the plane n.x = d (n need not be unit): the dual plane
  *  vector n + d e_inf (odd). */
-ga_mv ga_versor_reflection(ga_vec3 normal, double distance);
+GA_API ga_mv ga_versor_reflection(ga_vec3 normal, double distance);
 /** Inversion in the sphere of centre c and radius r: the dual sphere
  *  F(c) - r^2/2 n (odd); it maps x to c + r^2 (x - c)/|x - c|^2. */
-ga_mv ga_versor_inversion(ga_vec3 centre, double radius);
+GA_API ga_mv ga_versor_inversion(ga_vec3 centre, double radius);
 /** Dilation about c by the factor s > 0: T_c exp(-ln(s)/2 e45) T_c^-1, which
  *  maps x to c + s (x - c). GA_ERR_ARG unless s > 0, GA_ERR_NOTFINITE. */
-int ga_versor_dilation(ga_vec3 centre, double s, ga_mv *out);
+GA_API GA_NODISCARD ga_status ga_versor_dilation(ga_vec3 centre, double s, ga_mv *out);
 /** Transversion 1 + nbar b/2 (b a Euclidean vector): the translation by -b
  *  conjugated by the inversion in the unit sphere (e4 n e4 = nbar), so it
  *  maps x to (x - |x|^2 b) / (1 - 2 b.x + |b|^2 |x|^2). */
-ga_mv ga_versor_transversion(ga_vec3 b);
+GA_API ga_mv ga_versor_transversion(ga_vec3 b);
 /** Rotation by angle about the unit axis through the origin, as a full
  *  multivector (ga_rotor_to_mv of ga_rotor_rotation). */
-ga_mv ga_versor_rotation(ga_vec3 axis, double angle);
+GA_API ga_mv ga_versor_rotation(ga_vec3 axis, double angle);
 /** Translation by a, as a full multivector (ga_rotor_to_mv of
  *  ga_rotor_translation): 1 + n a/2. */
-ga_mv ga_versor_translation(ga_vec3 a);
+GA_API ga_mv ga_versor_translation(ga_vec3 a);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,6 @@
-/* tools/numtext.c: see numtext.h.
+/* ga/numtext.c: the shortest decimal of a double (garotor/numtext.h).
  *
- * nt_shortest follows R. Giulietti, "The Schubfach way to render doubles"
+ * ga_double_shortest follows R. Giulietti, "The Schubfach way to render doubles"
  * (2020), as in its reference implementation (Java's DoubleToDecimal): with
  * x = c 2^q, the rounding interval of x is [c - 1/2, c + 1/2] 2^q (the lower
  * half a quarter at the bottom of a binade), closed when c is even. Scaled by
@@ -12,7 +12,7 @@
  * is tried from s >= 10 (Java: 100), and the two smallest subnormals, whose
  * intervals hold several one-digit decimals, are given directly (5e-324,
  * 1e-323) instead of being scaled by ten. */
-#include "numtext.h"
+#include <garotor/numtext.h>
 
 #include <string.h>
 
@@ -132,13 +132,18 @@ static inline int digit_count(uint64_t f)
 #endif
 }
 
-NT_API int nt_shortest(double x, uint64_t *digits, int *exp)
+int ga_double_shortest(double x, uint64_t *digits, int *exp)
 {
     uint64_t bits;
     memcpy(&bits, &x, sizeof bits);
     int bq = (int)(bits >> 52) & 0x7ff;
     uint64_t t = bits & (C_MIN - 1), f;
     int e;
+    if (bq == 0x7ff) { /* NaN or an infinity: no decimal */
+        *digits = 0;
+        *exp = 0;
+        return 0;
+    }
     if (bq == 0 && t == 0) {
         *digits = 0;
         *exp = 0;
@@ -176,8 +181,7 @@ static const char pairs[201] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-#ifndef NT_WRITE_ONLY
-size_t nt_layout(int neg, const char *dig, int n, int exp, char *buf)
+size_t ga_decimal_format(int neg, const char *dig, int n, int exp, char *buf)
 {
     char *p = buf;
     if (n == 0) {
@@ -225,7 +229,6 @@ size_t nt_layout(int neg, const char *dig, int n, int exp, char *buf)
     *p = '\0';
     return (size_t)(p - buf);
 }
-#endif
 
 static int bits_negative(double x)
 {
@@ -265,18 +268,24 @@ static inline void put_digits(uint64_t f, int n, char *p)
         d[-1] = (char)('0' + v);
 }
 
-NT_API size_t nt_write(double x, char *buf)
+size_t ga_double_format(double x, char *buf)
 {
     uint64_t f;
-    int e, n = nt_shortest(x, &f, &e);
+    int e, n = ga_double_shortest(x, &f, &e);
     char *p = buf;
+    if (n == 0) { /* NaN or an infinity, in the words strtod reads back */
+        const char *w = x != x ? "nan" : x < 0 ? "-inf" : "inf";
+        size_t k = strlen(w);
+        memcpy(buf, w, k + 1);
+        return k;
+    }
     if (bits_negative(x))
         *p++ = '-';
     if (f == 0) {
         memcpy(p, "0", 2);
         return (size_t)(p + 1 - buf);
     }
-    /* nt_layout's rule, with the digits written in place */
+    /* ga_decimal_format's rule, with the digits written in place */
     int xp = e + n - 1;
     if (xp >= -7 && xp <= 20) {
         if (xp < 0) {
