@@ -30,6 +30,8 @@ One module per generated file, all built on gen/common.py:
                          ga_rotor_apply_mv)
   gen/se3_dexp.py        sections 10-11: interp/se3_dexp.inc (the vector part
                          of se3_dexp, interp/group.c)
+  gen/series.py          section 12: ga/internal/series_coef.inc (the
+                         coefficients of the sinc family, ga/internal/series.h)
 
 The sections are numbered across the modules ("the script" in the generated
 files' comments is this driver with its modules; they cite sections 1, 4
@@ -53,9 +55,10 @@ import numtext_table  # noqa: E402
 import rotor_mul  # noqa: E402
 import rotor_sandwich  # noqa: E402
 import se3_dexp  # noqa: E402
+import series  # noqa: E402
 
 # in this order: the op counts print in it
-GENERATED = [rotor_mul, se3_dexp, mv_products, rotor_sandwich, numtext_table]
+GENERATED = [rotor_mul, se3_dexp, mv_products, rotor_sandwich, numtext_table, series]
 
 
 def main():
