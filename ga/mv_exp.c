@@ -68,7 +68,7 @@ static double half_exp_big(double r, int *e)
     return 0.5 * exp(rr);
 }
 
-/* gab_fns_at(t) times 2^-*e, *e = 0 (and fns_at itself) unless sqrt(t) > BIG_R. */
+/* gab_fns_at(t) times 2^-*e, *e = 0 (and gab_fns_at itself) unless sqrt(t) > BIG_R. */
 static gab_fns fns_scaled(double t, int *e)
 {
     if (!(t > BIG_R * BIG_R)) {
@@ -113,9 +113,8 @@ static coeffs exp_coeffs(double s, double qq)
         /* |l1|, |l2| <= 2^-60: every coefficient is its limit at l = 0 to
            within |l| < 2^-60 relative, below the rounding of 1 (exp(B) =
            1 + B + q/2 + Bq/6 up to terms of relative size l); the formulas
-           below would divide 0 by 0 once s^2 underflows (B = 0.25 (e14 -
-           e15) + 2e-162 e23 gave NaN; found by fuzz/fuzz_numeric,
-           fuzz/regress/numeric/mv-exp-null-blade-subnormal-square) */
+           below would divide 0 by 0 once s^2 underflows (a null blade
+           beside a part whose square is subnormal: NaN) */
         k.alpha = 1.0, k.beta = 1.0, k.gamma = 0.5, k.delta = 1.0 / 6.0;
         return k;
     }
@@ -193,9 +192,9 @@ static ga_mv scaled_factor(ga_mv Xp, int k, double w, int room, double *c, int *
    which 2^p is applied here, as much as leaves the largest coefficient
    below 2^room, and *e = n - p is left. Applied before the product with
    Y's coefficients, p keeps a small one from becoming subnormal:
-   exp(1000 e45 + 1e-320 e14) has the e14 coefficient 9.85024590787617e110
-   (mpmath; ga_mv_exp gives it to the last digit), which g 1e-320 / 1000, a
-   subnormal of few digits, and a later 2^n would not. */
+   exp(1000 e45 + 1e-320 e14) has an e14 coefficient of ~1e111 to full
+   precision, which g 1e-320 / 1000, a subnormal of few digits, and a later
+   2^n would not have. */
 static ga_mv big_factor(ga_mv Y, double t, double d, int room, double *c, int *e)
 {
     int n;
@@ -222,9 +221,8 @@ static ga_mv factor_scaled(double g, double f, ga_mv Y, int n, int room, double 
    above the rounding of ~R R. Where B splits into 2-blades to rounding
    the factors are on the group already; where a part is rounding noise
    (below u |B|) that is not a 2-blade, its factor is not, usually by ~1e-7.
-   From |e| near 1/2 the steps are slow at first (0.497, 0.405, 0.309,
-   0.172, 0.050, 3.8e-3, 2.2e-5, 7.2e-10, then rounding, seen before the
-   near-null parts of the ideal route were taken as 0): up to 12 are taken.
+   From |e| near 1/2 the steps are slow at first (the convergence is
+   quadratic only once |e| is well below 1/2): up to 12 are taken.
    An R that overflowed (a hyperbolic part beyond ~710), or whose ~R R does,
    is left as it is (a step would turn its infinities into NaN). */
 static ga_mv onto_group(ga_mv R)
@@ -252,6 +250,7 @@ static ga_mv onto_group(ga_mv R)
    factor is bounded when elliptic, so a bivector with an elliptic part above
    ~1.3e154 (whose square overflows) has its bounded exp; parts are known
    to u max|B|^2 in their squares, as in the unscaled formulas. */
+
 /* both parts null to rounding: 1 + B + q/2 + Bq/6, huge as it is */
 static ga_mv exp_huge_null(gab_square sq, int k)
 {
@@ -313,8 +312,8 @@ static ga_mv exp_huge_ideals(ga_mv Bp, gab_square sq, int k)
         X = ga_mv_grade(ga_mv_gp(X, P), 2);
         /* a part that is rounding of |B| (t1 - t2 below 64 u |B|): its angle
            cannot be told from zero, and its X is not a 2-blade of P's ideal,
-           whose factor C + S X would be off the group by up to 1 (fuzz/
-           regress/numeric/mv-exp-huge-isoclinic-*): taken as 0, the factor P */
+           whose factor C + S X would be off the group by up to 1: taken as
+           0, the factor P */
         if (ga_mv_maxabs(X) <= 64.0 * DBL_EPSILON * ga_mv_maxabs(Bp))
             X = ga_mv_zero();
         /* X^2 = a P (<P>_0 = 1/2): a from X, not s +- sqrt(q.q), which
@@ -394,9 +393,8 @@ static int exp_null_part(ga_mv b, ga_mv *out)
 /* ---- exp --------------------------------------------------------------------- */
 
 /* Beyond max |B| = 8 the coefficients lose u |B|^2 to the cancellations of
-   s +- sqrt(q.q) and s^2 - q.q (R ~R = 1 + 1.5e-8 for parts of 1e4,
-   unbounded beyond 1e8), and beyond 2^240 they overflow: there B is split
-   into its factors (exp_huge), except where both parts are near null
+   s +- sqrt(q.q) and s^2 - q.q, and beyond 2^240 they overflow: there B is
+   split into its factors (exp_huge), except where both parts are near null
    (|li| <= 2^-20 |B|^2), which the split cannot separate and the
    coefficients handle (their limits at l = 0). exp(b) in *out, or 0 where
    the coefficients are kept. */
@@ -409,13 +407,12 @@ static int exp_large(ga_mv b, double m, ga_mv *out)
     gab_square h = gab_square_of(b);
     double m2 = m * m;
     /* a null part larger than the others (both squares below |B|^2/64):
-       there both forms lose ~u |B|^2 (4e-9 for a turn beside a null part
-       of 300), and its rigid frame has the exp exact (a part whose
-       square is that of B, as a huge rotation, is left to exp_huge: the
-       frame's rounding would change its angle by u |B|). Only for
-       <B^2>_0 < 0 (a turn beside it): a large blade that is slightly
-       hyperbolic (c e1 n + t e45, t^2 below the rounding of c^2 in a
-       conjugated B, exact here) has no null part to make rigid, and the
+       there both forms lose ~u |B|^2, and its rigid frame has the exp
+       exact (a part whose square is that of B, as a huge rotation, is left
+       to exp_huge: the frame's rounding would change its angle by u |B|).
+       Only for <B^2>_0 < 0 (a turn beside it): a large blade that is
+       slightly hyperbolic (c e1 n + t e45, t^2 below the rounding of c^2 in
+       a conjugated B, exact here) has no null part to make rigid, and the
        frame would drop its t, a factor e^t */
     if (h.s < 0.0 && -h.s <= m2 / 64.0 && sqrt(fabs(h.qq)) <= m2 / 64.0 && exp_null_part(b, out))
         return 1;

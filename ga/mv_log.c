@@ -329,11 +329,11 @@ static int is_rotor(ga_mv R, double scale, double tol)
    R x ~R - x (entries ~|R|^2, whose rounding moves the log itself,
    though not exp(log R), further from B), each n by the metric normal
    and by M^2. The first in the order: rigid frame from <R>_2 (exact
-   where R has a null part: the closed forms' log of a turn beside a null
-   part of 3000 was 3e-7 from B, this one 1e-9), closed forms, log(-R) -
-   pi E, the others, whose residual |exp(B) - R| is within twice the
-   smallest, or at the floor that exp's own rounding sets, is kept: the
-   residuals of good ones differ by that rounding only. */
+   where R has a null part, beside which the closed forms lose
+   u (|N|/t)^3), closed forms, log(-R) - pi E, the others, whose residual
+   |exp(B) - R| is within twice the smallest, or at the floor that exp's own
+   rounding sets, is kept: the residuals of good ones differ by that
+   rounding only. */
 static int log_candidates(ga_mv R, double tol, double scale, ga_mv cand[7], double cres[7])
 {
     int nc = 0;
@@ -396,9 +396,8 @@ ga_status ga_mv_log(ga_mv R, ga_mv *out)
     res = cres[pick];
     /* no real log (or not a versor): exp(log R) is not R. exp of a log of
        size |B| is itself known only to ~u |B|^2 of |R| (the rounding of B,
-       magnified: a null part of 3000 conjugated by a dilation and a
-       transversion, 5e-10), so the check allows 64 u size^2 where that is
-       above 1e-9, up to 1e-6 (size ~ 2.6e5), beyond which it cannot tell */
+       magnified), so the check allows 64 u size^2 where that is above
+       1e-9, up to 1e-6 (size ~ 2.6e5), beyond which it cannot tell */
     if (!(res <= fmin(1e-6, fmax(tol, 64.0 * DBL_EPSILON * sz * sz)) * scale))
         return GA_ERR_DOMAIN;
     *out = B;
