@@ -20,7 +20,7 @@
 
 /* ---- the functions of t ------------------------------------------------------ */
 
-/* The series of C, S, K, T near 0 (the one place they are summed):
+/* The series of C, S, K, T near 0 (the one place exp, log and split sum it):
    sum_{j>=0} t^j / (d0 + 2j)! for |t| <= 1: C is d0 = 0, S d0 = 1,
    K d0 = 2, T d0 = 3. The terms fall by 1/((d0+2j+1)(d0+2j+2)) each, so
    18 terms leave less than 1/36! < 1e-41 of the first. */
