@@ -18,22 +18,9 @@
 #include <garotor/mv.h>
 #include <math.h>
 
-/* ---- the functions of t ------------------------------------------------------ */
+#include "series.h"
 
-/* The series of C, S, K, T near 0 (the one place exp, log and split sum it):
-   sum_{j>=0} t^j / (d0 + 2j)! for |t| <= 1: C is d0 = 0, S d0 = 1,
-   K d0 = 2, T d0 = 3. The terms fall by 1/((d0+2j+1)(d0+2j+2)) each, so
-   18 terms leave less than 1/36! < 1e-41 of the first. */
-static inline double gab_series(double t, int d0)
-{
-    double term = 1.0, sum = 0.0;
-    for (int k = 2; k <= d0; k++) term /= k;
-    for (int j = 0; j < 18; j++) {
-        sum += term;
-        term *= t / ((d0 + 2 * j + 1) * (double)(d0 + 2 * j + 2));
-    }
-    return sum;
-}
+/* ---- the functions of t ------------------------------------------------------ */
 
 typedef struct {
     double c, s, k, t, e; /* C, S, K, T, E at one t */
@@ -43,11 +30,12 @@ static inline gab_fns gab_fns_at(double t)
 {
     gab_fns f;
     if (fabs(t) <= 1.0) {
-        f.c = gab_series(t, 0);
-        f.s = gab_series(t, 1);
-        /* K = sum_{k>=1} t^(k-1)/(2k)!, T = sum_{k>=1} t^(k-1)/(2k+1)! */
-        f.k = gab_series(t, 2);
-        f.t = gab_series(t, 3);
+        /* C, S, K, T are f_0 .. f_3 of series.h at -t: sum t^j/(d + 2j)!;
+           18 terms leave less than 1/36! of the first */
+        f.c = ga__series(GA__SERIES_F0, 18, -t);
+        f.s = ga__series(GA__SERIES_F1, 18, -t);
+        f.k = ga__series(GA__SERIES_F2, 18, -t);
+        f.t = ga__series(GA__SERIES_F3, 18, -t);
         f.e = f.k - f.t; /* (C - 1 - (S - 1))/t */
         return f;
     }
