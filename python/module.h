@@ -1,0 +1,148 @@
+/* python/module.h: what the files of the CPython extension module `garotor`
+ * (docs/python.md) share: the vectorised loop's types (kernel.c), the error
+ * helpers, the Path and Multivector types, and the module functions that
+ * module.c's table lists. Internal to the module, prefix gpy_; every file of
+ * the module includes this header first, for Python.h and numpy's API.
+ *
+ *   module.c       the module: its function table, PyInit_garotor, _c_loop
+ *   kernel.c       errors, array conversion, the broadcasting kernel runner
+ *   functions.c    the element-wise functions: exp, log, compose, ..., up, down
+ *   path.c         the Path type
+ *   multivector.c  the Multivector type
+ */
+#ifndef GAROTOR_PYTHON_MODULE_H
+#define GAROTOR_PYTHON_MODULE_H
+
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <pythread.h>
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+/* numpy's API is a table that import_array fills in PyInit_garotor
+ * (module.c defines GPY_IMPORT_ARRAY); the other files share the table */
+#define PY_ARRAY_UNIQUE_SYMBOL gpy_ARRAY_API
+#ifndef GPY_IMPORT_ARRAY
+#define NO_IMPORT_ARRAY
+#endif
+#include <numpy/arrayobject.h>
+
+#include <string.h>
+
+#include <garotor/garotor.h>
+
+/* ---- errors (kernel.c) --------------------------------------------------- */
+
+extern PyObject *gpy_error; /* garotor.Error, a subclass of ValueError */
+
+/* Raise garotor.Error("<what>: index <i>: <status text>[: <why>]") with
+ * attributes index (a tuple, () for a single element) and status; why (or
+ * NULL) says what is wrong with the element where the status alone does not.
+ * lead[0..nlead-1] is the leading shape, flat the element's flat index. */
+void gpy_raise_status_why(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status,
+                          const char *why);
+void gpy_raise_status(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status);
+/* garotor.Error("<what>: <status text>"); NULL */
+PyObject *gpy_status_error(const char *what, int status);
+/* x as Python's repr writes it (the shortest text that reads back as x) in
+ * buf[32]; buf. With the GIL held. */
+const char *gpy_repr_text(double x, char buf[32]);
+
+/* ---- the vectorised loop (kernel.c) --------------------------------------- */
+
+#define GPY_MAX_IN 3
+
+typedef struct {
+    int ncore;        /* trailing dimensions of one element */
+    npy_intp core[2]; /* their sizes */
+    const char *name; /* the argument's name, for messages */
+} gpy_core;
+
+#define GPY_CORE1(n, name)                                                                                   \
+    {                                                                                                        \
+        1, {n, 0}, name                                                                                      \
+    }
+#define GPY_CORE2(n, m, name)                                                                                \
+    {                                                                                                        \
+        2, {n, m}, name                                                                                      \
+    }
+
+/* One element: in[j] points at input j's element, out at the output's.
+ * Returns GA_OK or a GA_ERR_* status. k is the flat index of the element. */
+typedef int (*gpy_kernel_fn)(void *ctx, const double *const *in, double *out, npy_intp k);
+
+typedef struct {
+    const char *what; /* the call's name in messages */
+    int nin;
+    gpy_core in[GPY_MAX_IN];
+    gpy_core out;
+    gpy_kernel_fn kernel;
+    void *ctx;
+    /* set by gpy_run_kernel: the broadcast leading shape, for kernels that care */
+    int nlead;
+    npy_intp lead[NPY_MAXDIMS];
+    /* or NULL: for the first bad element (its inputs, the kernel's status),
+       why it is bad where the status alone does not say, into why[size] */
+    void (*explain)(void *ctx, const double *const *in, int status, char *why, size_t size);
+    /* or NULL: held over the loop (taken with the GIL released), for a
+       context that another thread may change (a Path's) */
+    PyThread_type_lock lock;
+} gpy_kernel_call;
+
+/* Run kc over the inputs objs[0..nin-1]: convert each to a C-contiguous
+ * float64 array with its core shape, broadcast, loop with the GIL released,
+ * then raise or return the result (or `out`, filled). */
+PyObject *gpy_run_kernel(gpy_kernel_call *kc, PyObject *const *objs, PyObject *out);
+
+/* The group called name (NULL: "cga"); NULL with a ValueError naming what if
+ * there is none. */
+const ga_group *gpy_group_arg(const char *what, const char *name);
+
+static inline void gpy_mat_put(ga_mat4 m, double *out) { memcpy(out, m.m, sizeof m.m); }
+static inline ga_mat4 gpy_mat_get(const double *v)
+{
+    ga_mat4 m;
+    memcpy(m.m, v, sizeof m.m);
+    return m;
+}
+
+/* ---- the element-wise functions (functions.c) ----------------------------- */
+
+/* (x y z qx qy qz qw) -> 4x4, exactly as `garotor interp --format pose` reads a key */
+int gpy_pose_to_mat(const double *v, ga_mat4 *m);
+
+PyObject *gpy_exp(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_log(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_compose(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_inverse(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_apply(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_from_quat(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_to_quat(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_from_pose(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_to_pose(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_to_dualquat(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_from_dualquat(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_up(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_down(PyObject *self, PyObject *args, PyObject *kw);
+
+/* ---- Path (path.c) --------------------------------------------------------- */
+
+typedef struct {
+    PyObject_HEAD const ga_group *group;
+    ga_scheme scheme;
+    ga_path path;
+    void *work;
+    /* guards path against Path.append in another thread while a call reads
+       it with the GIL released; taken only with the GIL released (or
+       without waiting), so that no thread waits for it holding the GIL */
+    PyThread_type_lock lock;
+} gpy_PathObject;
+
+extern PyTypeObject gpy_PathType;
+
+/* ---- Multivector (multivector.c) -------------------------------------------- */
+
+extern PyTypeObject gpy_MVType;
+
+/* A new Multivector holding m; NULL with an exception. */
+PyObject *gpy_mv_new(ga_mv m);
+
+#endif

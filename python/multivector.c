@@ -1,0 +1,439 @@
+/* python/multivector.c: garotor.Multivector, one multivector of G(4,1) as
+ * its 32 coefficients (docs/python.md, "Multivector"): the operators, the
+ * ga_mv_* methods, exp and log through the compact rotor where the element
+ * is a rigid motion's, and the basis blades by name or index.
+ */
+#include "module.h"
+
+#include <math.h>
+
+typedef struct {
+    PyObject_HEAD ga_mv mv;
+} MVObject;
+
+PyObject *gpy_mv_new(ga_mv m)
+{
+    MVObject *o = PyObject_New(MVObject, &gpy_MVType);
+    if (o)
+        o->mv = m;
+    return (PyObject *)o;
+}
+
+/* A Multivector, or a real number as a scalar multivector; 0 if neither. */
+static int mv_coerce(PyObject *x, ga_mv *out)
+{
+    if (PyObject_TypeCheck(x, &gpy_MVType)) {
+        *out = ((MVObject *)x)->mv;
+        return 1;
+    }
+    if (PyFloat_Check(x) || PyLong_Check(x) || PyArray_IsScalar(x, Floating) ||
+        PyArray_IsScalar(x, Integer)) {
+        double s = PyFloat_AsDouble(x);
+        if (s == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            return 0;
+        }
+        *out = ga_mv_scalar(s);
+        return 1;
+    }
+    return 0;
+}
+
+static PyObject *MV_new(PyTypeObject *type, PyObject *args, PyObject *kw)
+{
+    (void)type;
+    static char *kwlist[] = {"c", NULL};
+    PyObject *c = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "|O:Multivector", kwlist, &c))
+        return NULL;
+    ga_mv m = ga_mv_zero();
+    if (c && PyObject_TypeCheck(c, &gpy_MVType))
+        return gpy_mv_new(((MVObject *)c)->mv);
+    if (c) {
+        PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(c, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+        if (!a)
+            return NULL;
+        if (PyArray_NDIM(a) != 1 || PyArray_DIM(a, 0) != 32) {
+            Py_DECREF(a);
+            PyErr_SetString(PyExc_ValueError, "Multivector: needs 32 coefficients in canonical order");
+            return NULL;
+        }
+        memcpy(m.c, PyArray_DATA(a), sizeof m.c);
+        Py_DECREF(a);
+    }
+    return gpy_mv_new(m);
+}
+
+static PyObject *MV_repr(MVObject *self)
+{
+    PyObject *parts = PyList_New(0);
+    if (!parts)
+        return NULL;
+    for (int i = 0; i < 32; i++) {
+        double v = self->mv.c[i];
+        if (v == 0.0)
+            continue;
+        char *num = PyOS_double_to_string(fabs(v), 'r', 0, 0, NULL);
+        if (!num) {
+            Py_DECREF(parts);
+            return NULL;
+        }
+        int first = PyList_GET_SIZE(parts) == 0;
+        const char *sign = signbit(v) ? (first ? "-" : " - ") : (first ? "" : " + ");
+        PyObject *s = i == 0         ? PyUnicode_FromFormat("%s%s", sign, num)
+                    : fabs(v) == 1.0 ? PyUnicode_FromFormat("%s%s", sign, ga_blade_name(i))
+                                     : PyUnicode_FromFormat("%s%s*%s", sign, num, ga_blade_name(i));
+        PyMem_Free(num);
+        if (!s || PyList_Append(parts, s) < 0) {
+            Py_XDECREF(s);
+            Py_DECREF(parts);
+            return NULL;
+        }
+        Py_DECREF(s);
+    }
+    PyObject *empty = PyUnicode_FromString("");
+    PyObject *body = empty ? PyUnicode_Join(empty, parts) : NULL;
+    Py_XDECREF(empty);
+    Py_DECREF(parts);
+    if (!body)
+        return NULL;
+    PyObject *r = PyUnicode_GET_LENGTH(body) ? PyUnicode_FromFormat("Multivector(%U)", body)
+                                             : PyUnicode_FromString("Multivector(0)");
+    Py_DECREF(body);
+    return r;
+}
+
+#define MV_BINOP(name, expr)                                                                                 \
+    static PyObject *MV_##name(PyObject *x, PyObject *y)                                                     \
+    {                                                                                                        \
+        ga_mv a, b;                                                                                          \
+        if (!mv_coerce(x, &a) || !mv_coerce(y, &b))                                                          \
+            Py_RETURN_NOTIMPLEMENTED;                                                                        \
+        return gpy_mv_new(expr);                                                                             \
+    }
+MV_BINOP(add, ga_mv_add(a, b))
+MV_BINOP(sub, ga_mv_sub(a, b))
+MV_BINOP(mul, ga_mv_gp(a, b))
+MV_BINOP(xor, ga_mv_op(a, b))
+MV_BINOP(or, ga_mv_lc(a, b))
+
+static PyObject *MV_truediv(PyObject *x, PyObject *y)
+{
+    ga_mv a;
+    if (!PyObject_TypeCheck(x, &gpy_MVType) ||
+        !(PyFloat_Check(y) || PyLong_Check(y) || PyArray_IsScalar(y, Number)))
+        Py_RETURN_NOTIMPLEMENTED;
+    a = ((MVObject *)x)->mv;
+    double s = PyFloat_AsDouble(y);
+    if (s == -1.0 && PyErr_Occurred())
+        return NULL;
+    if (s == 0.0) { /* as Python's float division */
+        PyErr_SetString(PyExc_ZeroDivisionError, "Multivector division by zero");
+        return NULL;
+    }
+    for (int i = 0; i < 32; i++) a.c[i] /= s;
+    return gpy_mv_new(a);
+}
+
+static PyObject *MV_neg(MVObject *x) { return gpy_mv_new(ga_mv_scale(x->mv, -1.0)); }
+static PyObject *MV_pos(MVObject *x) { return gpy_mv_new(x->mv); }
+static PyObject *MV_invert(MVObject *x) { return gpy_mv_new(ga_mv_reverse(x->mv)); }
+
+static PyNumberMethods MV_as_number = {
+    .nb_add = MV_add,
+    .nb_subtract = MV_sub,
+    .nb_multiply = MV_mul,
+    .nb_xor = MV_xor,
+    .nb_or = MV_or,
+    .nb_true_divide = MV_truediv,
+    .nb_negative = (unaryfunc)MV_neg,
+    .nb_positive = (unaryfunc)MV_pos,
+    .nb_invert = (unaryfunc)MV_invert,
+};
+
+static PyObject *MV_richcompare(PyObject *x, PyObject *y, int op)
+{
+    ga_mv a, b;
+    if ((op != Py_EQ && op != Py_NE) || !mv_coerce(x, &a) || !mv_coerce(y, &b))
+        Py_RETURN_NOTIMPLEMENTED;
+    int eq = 1;
+    for (int i = 0; i < 32; i++) eq = eq && a.c[i] == b.c[i];
+    return PyBool_FromLong(op == Py_EQ ? eq : !eq);
+}
+
+static int blade_index(PyObject *key)
+{
+    if (PyUnicode_Check(key)) {
+        const char *s = PyUnicode_AsUTF8(key);
+        if (!s)
+            return -1;
+        for (int i = 0; i < 32; i++)
+            if (strcmp(s, ga_blade_name(i)) == 0)
+                return i;
+        PyErr_Format(PyExc_KeyError, "no blade named '%s' (names: 1, e1, ..., e12345)", s);
+        return -1;
+    }
+    Py_ssize_t i = PyNumber_AsSsize_t(key, PyExc_IndexError);
+    if (i == -1 && PyErr_Occurred())
+        return -1;
+    if (i < -32 || i >= 32) {
+        PyErr_SetString(PyExc_IndexError, "a blade index is 0..31");
+        return -1;
+    }
+    return (int)(i < 0 ? i + 32 : i);
+}
+
+static PyObject *MV_getitem(MVObject *self, PyObject *key)
+{
+    int i = blade_index(key);
+    return i < 0 ? NULL : PyFloat_FromDouble(self->mv.c[i]);
+}
+
+static PyMappingMethods MV_as_mapping = {.mp_subscript = (binaryfunc)MV_getitem};
+
+static PyObject *MV_array(MVObject *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"dtype", "copy", NULL};
+    PyObject *dtype = Py_None, *copy = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "|OO:__array__", kwlist, &dtype, &copy))
+        return NULL;
+    npy_intp n = 32;
+    PyObject *a = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (!a)
+        return NULL;
+    memcpy(PyArray_DATA((PyArrayObject *)a), self->mv.c, sizeof self->mv.c);
+    if (dtype != Py_None) {
+        PyArray_Descr *d = NULL;
+        if (!PyArray_DescrConverter(dtype, &d)) {
+            Py_DECREF(a);
+            return NULL;
+        }
+        PyObject *b = PyArray_CastToType((PyArrayObject *)a, d, 0);
+        Py_DECREF(a);
+        return b;
+    }
+    return a;
+}
+
+static PyObject *MV_grade(MVObject *self, PyObject *arg)
+{
+    long k = PyLong_AsLong(arg);
+    if (k == -1 && PyErr_Occurred())
+        return NULL;
+    return gpy_mv_new(ga_mv_grade(self->mv, k < 0 || k > 5 ? -1 : (int)k));
+}
+
+static PyObject *MV_dual(MVObject *self, PyObject *u)
+{
+    (void)u;
+    return gpy_mv_new(ga_mv_dual(self->mv));
+}
+static PyObject *MV_undual(MVObject *self, PyObject *u)
+{
+    (void)u;
+    return gpy_mv_new(ga_mv_undual(self->mv));
+}
+static PyObject *MV_reverse(MVObject *self, PyObject *u)
+{
+    (void)u;
+    return gpy_mv_new(ga_mv_reverse(self->mv));
+}
+static PyObject *MV_involute(MVObject *self, PyObject *u)
+{
+    (void)u;
+    return gpy_mv_new(ga_mv_involute(self->mv));
+}
+static PyObject *MV_conjugate(MVObject *self, PyObject *u)
+{
+    (void)u;
+    return gpy_mv_new(ga_mv_conjugate(self->mv));
+}
+static PyObject *MV_norm2(MVObject *self, PyObject *u)
+{
+    (void)u;
+    return PyFloat_FromDouble(ga_mv_norm2(self->mv));
+}
+
+static PyObject *MV_inverse(MVObject *self, PyObject *u)
+{
+    (void)u;
+    ga_mv r;
+    int st = ga_mv_inverse(self->mv, &r);
+    return st == GA_OK ? gpy_mv_new(r) : gpy_status_error("Multivector.inverse", st);
+}
+
+/* The generator of a bivector in span{e_ij, e_i n}: e_i4 and e_i5 equal,
+ * everything else zero, to 1e-9 of max(1, max|m|). */
+static int mv_to_generator(ga_mv m, ga_generator *b)
+{
+    if (!ga_mv_isfinite(m))
+        return GA_ERR_NOTFINITE;
+    double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
+    static const int used[] = {GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E14, GA_BLADE_E15,
+                               GA_BLADE_E24, GA_BLADE_E25, GA_BLADE_E34, GA_BLADE_E35};
+    for (int i = 0; i < 32; i++) {
+        int u = 0;
+        for (size_t j = 0; j < sizeof used / sizeof *used; j++) u |= used[j] == i;
+        if (!u && fabs(m.c[i]) > tol)
+            return GA_ERR_NOTBLADE;
+    }
+    const double *c = m.c;
+    if (fabs(c[GA_BLADE_E14] - c[GA_BLADE_E15]) > tol || fabs(c[GA_BLADE_E24] - c[GA_BLADE_E25]) > tol ||
+        fabs(c[GA_BLADE_E34] - c[GA_BLADE_E35]) > tol)
+        return GA_ERR_NOTBLADE;
+    *b = (ga_generator){c[GA_BLADE_E12],
+                        c[GA_BLADE_E13],
+                        c[GA_BLADE_E23],
+                        0.5 * (c[GA_BLADE_E14] + c[GA_BLADE_E15]),
+                        0.5 * (c[GA_BLADE_E24] + c[GA_BLADE_E25]),
+                        0.5 * (c[GA_BLADE_E34] + c[GA_BLADE_E35])};
+    return GA_OK;
+}
+
+static ga_mv generator_to_mv(ga_generator b)
+{
+    ga_mv m = ga_mv_zero();
+    m.c[GA_BLADE_E12] = b.e12, m.c[GA_BLADE_E13] = b.e13, m.c[GA_BLADE_E23] = b.e23;
+    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = b.e1n;
+    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = b.e2n;
+    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = b.e3n;
+    return m;
+}
+
+/* exp: a rigid-motion generator through the compact rotor (the tool's exp,
+   bit for bit), any other bivector through ga_mv_exp; anything with other
+   grades is refused (to 1e-9 of max(1, max|m|), as mv_to_generator) */
+static PyObject *MV_exp(MVObject *self, PyObject *u)
+{
+    (void)u;
+    ga_generator b;
+    int st = mv_to_generator(self->mv, &b);
+    if (st == GA_OK)
+        return gpy_mv_new(ga_rotor_to_mv(ga_rotor_exp(b)));
+    if (st == GA_ERR_NOTBLADE) {
+        ga_mv m = self->mv;
+        double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
+        if (ga_mv_maxabs(ga_mv_sub(m, ga_mv_grade(m, 2))) <= tol)
+            return gpy_mv_new(ga_mv_exp(ga_mv_grade(m, 2)));
+    }
+    return gpy_status_error("Multivector.exp", st);
+}
+
+/* log: a rigid-motion rotor through the compact rotor (the tool's log), any
+   other rotor through ga_mv_log (GA_ERR_DOMAIN where it has no real log) */
+static PyObject *MV_log(MVObject *self, PyObject *u)
+{
+    (void)u;
+    ga_rotor r;
+    ga_generator b;
+    int st = ga_rotor_from_mv(self->mv, GA_ROTOR_DRIFT_MAX, &r);
+    if (st == GA_OK)
+        st = ga_rotor_log(r, &b);
+    if (st == GA_OK)
+        return gpy_mv_new(generator_to_mv(b));
+    if (st == GA_ERR_NOTRIGID) {
+        ga_mv L;
+        st = ga_mv_log(self->mv, &L);
+        if (st == GA_OK)
+            return gpy_mv_new(L);
+    }
+    return gpy_status_error("Multivector.log", st);
+}
+
+static PyObject *MV_dot(MVObject *self, PyObject *o)
+{
+    ga_mv b;
+    if (!mv_coerce(o, &b)) {
+        PyErr_SetString(PyExc_TypeError, "Multivector.dot: a Multivector or a number");
+        return NULL;
+    }
+    return gpy_mv_new(ga_mv_dot(self->mv, b));
+}
+
+static PyObject *MV_ip(MVObject *self, PyObject *o)
+{
+    ga_mv b;
+    if (!mv_coerce(o, &b)) {
+        PyErr_SetString(PyExc_TypeError, "Multivector.ip: a Multivector or a number");
+        return NULL;
+    }
+    return gpy_mv_new(ga_mv_ip(self->mv, b));
+}
+
+static PyObject *MV_down(MVObject *self, PyObject *u)
+{
+    (void)u;
+    ga_vec3 x;
+    int st = ga_point_down(self->mv, &x);
+    if (st != GA_OK)
+        return gpy_status_error("Multivector.down", st);
+    npy_intp n = 3;
+    PyObject *a = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (a) {
+        double *d = PyArray_DATA((PyArrayObject *)a);
+        d[0] = x.x, d[1] = x.y, d[2] = x.z;
+    }
+    return a;
+}
+
+static PyObject *MV_up(PyObject *cls, PyObject *arg)
+{
+    (void)cls;
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(arg, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    if (!a)
+        return NULL;
+    if (PyArray_NDIM(a) != 1 || PyArray_DIM(a, 0) != 3) {
+        Py_DECREF(a);
+        PyErr_SetString(PyExc_ValueError, "Multivector.up: x must have shape (3,)");
+        return NULL;
+    }
+    const double *x = PyArray_DATA(a);
+    ga_mv m = ga_point_up((ga_vec3){x[0], x[1], x[2]});
+    Py_DECREF(a);
+    return gpy_mv_new(m);
+}
+
+static PyObject *MV_blade(PyObject *cls, PyObject *key)
+{
+    (void)cls;
+    int i = blade_index(key);
+    return i < 0 ? NULL : gpy_mv_new(ga_mv_blade(i));
+}
+
+static PyMethodDef MV_methods[] = {
+    {"__array__", (PyCFunction)(void (*)(void))MV_array, METH_VARARGS | METH_KEYWORDS,
+     "the 32 coefficients as a float64 array"},
+    {"grade", (PyCFunction)MV_grade, METH_O, "grade(k): the grade-k part"},
+    {"dual", (PyCFunction)MV_dual, METH_NOARGS, "X* = X I^-1, I = e12345"},
+    {"undual", (PyCFunction)MV_undual, METH_NOARGS, "X I, the inverse of dual()"},
+    {"reverse", (PyCFunction)MV_reverse, METH_NOARGS, "~X"},
+    {"involute", (PyCFunction)MV_involute, METH_NOARGS, "the grade involution"},
+    {"conjugate", (PyCFunction)MV_conjugate, METH_NOARGS, "the Clifford conjugate"},
+    {"norm2", (PyCFunction)MV_norm2, METH_NOARGS, "<X ~X>_0"},
+    {"inverse", (PyCFunction)MV_inverse, METH_NOARGS, "~X / (X ~X) of a versor or blade"},
+    {"exp", (PyCFunction)MV_exp, METH_NOARGS,
+     "exp of a bivector: a rigid-motion generator through the compact rotor, any other by ga_mv_exp"},
+    {"log", (PyCFunction)MV_log, METH_NOARGS,
+     "the principal log of a rotor: a rigid one through the compact rotor, any other by ga_mv_log"},
+    {"dot", (PyCFunction)MV_dot, METH_O, "the fat dot a . b (ga_mv_dot; ganja.js's |)"},
+    {"ip", (PyCFunction)MV_ip, METH_O, "Hestenes' inner product (ga_mv_ip; clifford's |)"},
+    {"down", (PyCFunction)MV_down, METH_NOARGS, "the point x of a conformal point X = w F(x)"},
+    {"up", (PyCFunction)MV_up, METH_O | METH_CLASS, "Multivector.up(x): the conformal point F(x)"},
+    {"blade", (PyCFunction)MV_blade, METH_O | METH_CLASS, "Multivector.blade(i or name): a basis blade"},
+    {NULL, NULL, 0, NULL}};
+
+PyTypeObject gpy_MVType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "garotor.Multivector",
+    .tp_basicsize = sizeof(MVObject),
+    .tp_repr = (reprfunc)MV_repr,
+    .tp_as_number = &MV_as_number,
+    .tp_as_mapping = &MV_as_mapping,
+    .tp_hash = PyObject_HashNotImplemented,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "Multivector(c): a multivector of G(4,1) from its 32 coefficients in canonical order\n"
+              "(1; e1..e5; e12..e45; e123..e345; e1234..e2345; e12345).\n"
+              "* geometric, ^ outer, | left contraction, ~ reverse; numpy.asarray(m) gives the coefficients.",
+    .tp_richcompare = MV_richcompare,
+    .tp_methods = MV_methods,
+    .tp_new = MV_new,
+};

@@ -1,0 +1,587 @@
+/* python/path.c: garotor.Path, a path through key poses (ga_path,
+ * docs/python.md): its construction from numpy arrays, sample, velocity and
+ * acceleration through gpy_run_kernel (kernel.c), append, and the
+ * attributes.
+ */
+#include "module.h"
+
+#include <math.h>
+
+/* ---- the lock ---------------------------------------------------------- */
+
+/* Path.append changes a path (its keys, segments and n) that another thread
+ * may be reading with the GIL released (sample, velocity, acceleration in
+ * gpy_run_kernel's loop), so each Path has a lock, held by both. No thread
+ * waits for it while holding the GIL: one holding the lock and waiting for
+ * the GIL, and one holding the GIL and waiting for the lock, would wait
+ * forever. f runs with the lock held and is C only (no Python API, as the
+ * GIL may be released): taken at once where it is free, the GIL is kept;
+ * else the wait (and f) happen with the GIL released. */
+typedef void (*path_fn)(gpy_PathObject *self, void *arg);
+
+static void path_locked(gpy_PathObject *self, path_fn f, void *arg)
+{
+    if (PyThread_acquire_lock(self->lock, NOWAIT_LOCK)) {
+        f(self, arg);
+        PyThread_release_lock(self->lock);
+        return;
+    }
+    Py_BEGIN_ALLOW_THREADS;
+    PyThread_acquire_lock(self->lock, WAIT_LOCK);
+    f(self, arg);
+    PyThread_release_lock(self->lock);
+    Py_END_ALLOW_THREADS;
+}
+
+/* ---- construction ---------------------------------------------------------- */
+
+static PyObject *Path_new(PyTypeObject *type, PyObject *args, PyObject *kw)
+{
+    gpy_PathObject *self = (gpy_PathObject *)PyType_GenericNew(type, args, kw);
+    if (self && !(self->lock = PyThread_allocate_lock())) {
+        Py_DECREF(self);
+        return PyErr_NoMemory();
+    }
+    return (PyObject *)self;
+}
+
+static void Path_dealloc(gpy_PathObject *self)
+{
+    PyMem_Free(self->work);
+    if (self->lock)
+        PyThread_free_lock(self->lock);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+/* velocities for lihao2 ((6,) or, affine, (4, 4)) and lihao3 ((n, 6) / (n, 4, 4)) into dim doubles each */
+static int read_velocities(const ga_group *g, PyObject *obj, size_t count, double *vel)
+{
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(obj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    if (!a)
+        return -1;
+    int nd = PyArray_NDIM(a), lihao3 = count > 1;
+    int twist = nd == 1 + lihao3 && PyArray_DIM(a, nd - 1) == 6;
+    int mat = !g->rigid && nd == 2 + lihao3 && PyArray_DIM(a, nd - 1) == 4 && PyArray_DIM(a, nd - 2) == 4;
+    if ((!twist && !mat) || (lihao3 && (size_t)PyArray_DIM(a, 0) != count)) {
+        PyErr_Format(PyExc_ValueError, "Path: velocities must have shape %s%s", lihao3 ? "(n, 6)" : "(6,)",
+                     g->rigid ? "" : (lihao3 ? " or (n, 4, 4)" : " or (4, 4)"));
+        Py_DECREF(a);
+        return -1;
+    }
+    const double *v = PyArray_DATA(a);
+    for (size_t i = 0; i < count; i++) {
+        ga_mat4 m = twist ? ga_twist_hat((ga_twist){{v[6 * i], v[6 * i + 1], v[6 * i + 2]},
+                                                    {v[6 * i + 3], v[6 * i + 4], v[6 * i + 5]}})
+                          : gpy_mat_get(v + 16 * i);
+        int st = g->vee(m, vel + i * g->dim);
+        if (st == GA_OK) {
+            for (size_t d = 0; d < g->dim; d++)
+                if (!isfinite(vel[i * g->dim + d]))
+                    st = GA_ERR_NOTFINITE;
+        }
+        if (st != GA_OK) {
+            npy_intp n = (npy_intp)count;
+            gpy_raise_status("Path: velocities", lihao3, &n, (npy_intp)i, st);
+            Py_DECREF(a);
+            return -1;
+        }
+    }
+    Py_DECREF(a);
+    return 0;
+}
+
+static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"times", "poses", "scheme", "group", "velocities", "capacity", NULL};
+    PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None;
+    const char *sname = "screw", *gname = "cga";
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$O:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
+                                     &cobj))
+        return -1;
+    if (self->work) {
+        PyErr_SetString(PyExc_TypeError, "Path: already initialised");
+        return -1;
+    }
+    const ga_group *g = gpy_group_arg("Path", gname);
+    if (!g)
+        return -1;
+    ga_scheme scheme;
+    if (ga_scheme_by_name(sname, &scheme) != GA_OK) {
+        char names[256] = "";
+        for (int i = 0; i < GA_SCHEME_COUNT; i++) {
+            size_t len = strlen(names);
+            snprintf(names + len, sizeof names - len, "%s'%s'", i ? ", " : "", ga_scheme_name((ga_scheme)i));
+        }
+        PyErr_Format(PyExc_ValueError, "Path: scheme must be one of %s, not '%s'", names, sname);
+        return -1;
+    }
+    int rc = -1;
+    double *vel = NULL;
+    ga_mat4 *keys = NULL;
+    PyArrayObject *t = (PyArrayObject *)PyArray_FROM_OTF(tobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *p = t ? (PyArrayObject *)PyArray_FROM_OTF(pobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY) : NULL;
+    if (!p)
+        goto done;
+    if (PyArray_NDIM(t) != 1) {
+        PyErr_SetString(PyExc_ValueError, "Path: times must be a 1-d array");
+        goto done;
+    }
+    npy_intp n = PyArray_DIM(t, 0);
+    int pose = PyArray_NDIM(p) == 2 && PyArray_DIM(p, 1) == 7;
+    int mat = PyArray_NDIM(p) == 3 && PyArray_DIM(p, 1) == 4 && PyArray_DIM(p, 2) == 4;
+    if ((!pose && !mat) || PyArray_DIM(p, 0) != n) {
+        PyErr_Format(PyExc_ValueError,
+                     "Path: poses must have shape (n, 4, 4) or (n, 7) with n = len(times) = %zd",
+                     (Py_ssize_t)n);
+        goto done;
+    }
+    if (pose && !g->rigid) {
+        PyErr_Format(PyExc_ValueError, "Path: group '%s' takes keys as (n, 4, 4) matrices", g->name);
+        goto done;
+    }
+    size_t min = ga_scheme_min_keys(scheme);
+    if (n != 1 && ((size_t)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) { /* 1: constant */
+        PyErr_Format(PyExc_ValueError, "Path: scheme '%s' needs one key or %s %zu, got %zd", sname,
+                     scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, (Py_ssize_t)n);
+        goto done;
+    }
+    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n);
+    if (wbytes == 0) { /* the scheme is not defined on the group (path.h) */
+        PyErr_Format(PyExc_ValueError, "Path: scheme '%s' is not defined on group '%s'", sname, g->name);
+        goto done;
+    }
+    if (cobj != Py_None) { /* room for keys to come (Path.append) */
+        Py_ssize_t cap = PyNumber_AsSsize_t(cobj, PyExc_OverflowError);
+        if (cap == -1 && PyErr_Occurred())
+            goto done;
+        if (!ga_scheme_can_append(scheme)) {
+            PyErr_Format(PyExc_ValueError,
+                         "Path: capacity: scheme '%s' cannot append keys (build a new Path)", sname);
+            goto done;
+        }
+        if (cap < n) {
+            PyErr_Format(PyExc_ValueError, "Path: capacity %zd is less than the %zd keys given", cap,
+                         (Py_ssize_t)n);
+            goto done;
+        }
+        wbytes = ga_path_workspace_size(g, scheme, (size_t)cap);
+    }
+    const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
+    for (npy_intp i = 0; i < n; i++)
+        if (!isfinite(tv[i]) || (i > 0 && !(tv[i] > tv[i - 1]))) {
+            char why[128] = "", a[32], b[32];
+            if (isfinite(tv[i]))
+                snprintf(why, sizeof why, "%s is not after the time before it, %s (times must increase)",
+                         gpy_repr_text(tv[i], a), gpy_repr_text(tv[i - 1], b));
+            gpy_raise_status_why("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE,
+                                 *why ? why : NULL);
+            goto done;
+        }
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, tv) : 0;
+    if (bad) {
+        PyErr_Format(
+            PyExc_ValueError,
+            "Path: scheme 'bspline' needs evenly spaced times (to 1e-9 of the spacing): index %zu is off "
+            "the even grid of the first and last",
+            bad);
+        goto done;
+    }
+    keys = PyMem_Malloc((size_t)n * sizeof *keys);
+    if (!keys) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (npy_intp i = 0; i < n; i++) {
+        double e[GA_GROUP_MAX_ELEM];
+        int st = pose ? gpy_pose_to_mat(pv + 7 * i, &keys[i]) : GA_OK;
+        if (!pose)
+            keys[i] = gpy_mat_get(pv + 16 * i);
+        if (st == GA_OK)
+            st = g->from_mat4(keys[i], e);
+        if (st != GA_OK) {
+            gpy_raise_status("Path: poses", 1, &n, i, st);
+            goto done;
+        }
+    }
+    if (vobj != Py_None) {
+        if (scheme != GA_SCHEME_LIHAO2 && scheme != GA_SCHEME_LIHAO3) {
+            PyErr_SetString(PyExc_ValueError,
+                            "Path: velocities apply only to the schemes 'lihao2' and 'lihao3'");
+            goto done;
+        }
+        size_t count = scheme == GA_SCHEME_LIHAO3 ? (size_t)n : 1;
+        vel = PyMem_Malloc(count * g->dim * sizeof *vel);
+        if (!vel) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        if (read_velocities(g, vobj, count, vel))
+            goto done;
+    }
+    self->work = PyMem_Malloc(wbytes);
+    if (!self->work) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    int st = ga_path_init_mat4(g, scheme, (size_t)n, tv, keys, vel, self->work, wbytes, &self->path);
+    if (st != GA_OK) {
+        PyErr_Format(gpy_error, "Path: cannot build the %s path: %s", sname, ga_status_string(st));
+        PyMem_Free(self->work);
+        self->work = NULL;
+        goto done;
+    }
+    self->group = g;
+    self->scheme = scheme;
+    rc = 0;
+done:
+    PyMem_Free(keys);
+    PyMem_Free(vel);
+    Py_XDECREF(t);
+    Py_XDECREF(p);
+    return rc;
+}
+
+static int path_ready(gpy_PathObject *self)
+{
+    if (!self->work) {
+        PyErr_SetString(PyExc_ValueError, "Path: not initialised");
+        return 0;
+    }
+    return 1;
+}
+
+/* ---- sample, velocity, acceleration ---------------------------------------- */
+
+/* A path kernel's context: the path, and its range when an element failed,
+ * read there under the lock for explain_time, which runs after it. */
+typedef struct {
+    const ga_path *path;
+    int range_status;
+    double t0, t1;
+} path_ctx;
+
+static int path_failed(path_ctx *c, int status)
+{
+    c->range_status = ga_path_range(c->path, &c->t0, &c->t1);
+    return status;
+}
+
+static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    (void)k;
+    const ga_path *p = ((path_ctx *)ctx)->path;
+    double e[GA_GROUP_MAX_ELEM];
+    int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
+    if (st != GA_OK)
+        return path_failed(ctx, st);
+    gpy_mat_put(p->group->to_mat4(e), out);
+    return GA_OK;
+}
+
+static int k_velocity(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    (void)k;
+    const ga_path *p = ((path_ctx *)ctx)->path;
+    double v[GA_GROUP_MAX_DIM];
+    if (!isfinite(in[0][0]))
+        return path_failed(ctx, GA_ERR_NOTFINITE);
+    int st = ga_path_velocity(p, in[0][0], v);
+    if (st != GA_OK)
+        return path_failed(ctx, st);
+    if (p->group->rigid)
+        memcpy(out, v, 6 * sizeof *v);
+    else
+        gpy_mat_put(p->group->hat(v), out);
+    return GA_OK;
+}
+
+static int k_acceleration(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    (void)k;
+    const ga_path *p = ((path_ctx *)ctx)->path;
+    double a[GA_GROUP_MAX_DIM];
+    if (!isfinite(in[0][0]))
+        return path_failed(ctx, GA_ERR_NOTFINITE);
+    int st = ga_path_acceleration(p, in[0][0], a);
+    if (st != GA_OK)
+        return path_failed(ctx, st);
+    if (p->group->rigid)
+        memcpy(out, a, 6 * sizeof *a);
+    else
+        gpy_mat_put(p->group->hat(a), out);
+    return GA_OK;
+}
+
+/* A time the path is not defined at: outside its range (or NaN). */
+static void explain_time(void *ctx, const double *const *in, int status, char *why, size_t size)
+{
+    const path_ctx *pc = ctx;
+    double t0 = pc->t0, t1 = pc->t1, t = in[0][0];
+    if (status == GA_ERR_NOTFINITE || pc->range_status != GA_OK)
+        return;
+    char a[32], b[32], c[32];
+    if (isnan(t))
+        snprintf(why, size, "t is NaN");
+    else if (t < t0 || t > t1)
+        snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", gpy_repr_text(t, a),
+                 gpy_repr_text(t0, b), gpy_repr_text(t1, c));
+}
+
+static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, const char *what,
+                           gpy_kernel_fn kernel, gpy_core outcore)
+{
+    static char *kwlist[] = {"t", "out", NULL};
+    PyObject *t, *out = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !path_ready(self))
+        return NULL;
+    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0};
+    gpy_kernel_call kc = {.what = what,
+                          .nin = 1,
+                          .in = {{.ncore = 0, .name = "t"}},
+                          .out = outcore,
+                          .kernel = kernel,
+                          .ctx = &c,
+                          .explain = explain_time,
+                          .lock = self->lock};
+    return gpy_run_kernel(&kc, &t, out);
+}
+
+static PyObject *Path_sample(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    return path_call(self, args, kw, "Path.sample", k_sample, (gpy_core)GPY_CORE2(4, 4, NULL));
+}
+
+static PyObject *Path_velocity(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    return path_call(self, args, kw, "Path.velocity", k_velocity,
+                     self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
+                                                        : (gpy_core)GPY_CORE1(6, NULL));
+}
+
+static PyObject *Path_acceleration(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    return path_call(self, args, kw, "Path.acceleration", k_acceleration,
+                     self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
+                                                        : (gpy_core)GPY_CORE1(6, NULL));
+}
+
+/* ---- append and the attributes ---------------------------------------------- */
+
+static void read_n(gpy_PathObject *self, void *n) { *(size_t *)n = self->path.n; }
+
+/* the first n key times into t (keys are only added: they are still there) */
+typedef struct {
+    size_t n;
+    double *t;
+} times_copy;
+
+static void copy_times(gpy_PathObject *self, void *arg)
+{
+    times_copy *c = arg;
+    memcpy(c->t, self->path.t, c->n * sizeof(double));
+}
+
+static PyObject *Path_get_times(gpy_PathObject *self, void *c)
+{
+    (void)c;
+    if (!path_ready(self))
+        return NULL;
+    size_t count;
+    path_locked(self, read_n, &count);
+    npy_intp n = (npy_intp)count;
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (!a)
+        return NULL;
+    times_copy tc = {count, PyArray_DATA(a)};
+    path_locked(self, copy_times, &tc);
+    PyArray_CLEARFLAGS(a, NPY_ARRAY_WRITEABLE);
+    return (PyObject *)a;
+}
+
+static PyObject *Path_get_capacity(gpy_PathObject *self, void *c)
+{
+    (void)c;
+    return path_ready(self) ? PyLong_FromSize_t(self->path.cap) : NULL;
+}
+
+/* One look at the path for append, under the lock: whether a key at t can
+ * follow (n, the last key's time), and with commit, the key appended. */
+typedef struct {
+    double t;
+    ga_mat4 m;
+    int commit;
+    size_t n;     /* the keys, after the append where it is made */
+    double last;  /* the last key's time before it */
+    int refused;  /* the path is full or t is not after last */
+    ga_status st; /* of ga_path_append_mat4 */
+} append_op;
+
+static void append_step(gpy_PathObject *self, void *arg)
+{
+    append_op *op = arg;
+    op->n = self->path.n;
+    op->last = self->path.t[op->n - 1];
+    op->refused = op->n >= self->path.cap || !isfinite(op->t) || !(op->t > op->last);
+    if (op->commit && !op->refused) {
+        op->st = ga_path_append_mat4(&self->path, op->t, op->m);
+        op->n = self->path.n;
+    }
+}
+
+static PyObject *append_refused(gpy_PathObject *self, const append_op *op)
+{
+    if (op->n >= self->path.cap) {
+        PyErr_Format(PyExc_ValueError,
+                     "Path.append: the path is full (capacity %zu; give Path a larger capacity=)",
+                     self->path.cap);
+        return NULL;
+    }
+    char buf[128];
+    snprintf(buf, sizeof buf, "t = %.17g must be finite and after the last key's time %.17g", op->t,
+             op->last);
+    PyErr_Format(PyExc_ValueError, "Path.append: %s", buf);
+    return NULL;
+}
+
+/* append(t, pose): one key, a (4, 4) matrix or a (7,) row. The path is
+ * looked at before the pose is read (its errors come first) and again when
+ * the key is appended, as another thread may have appended in between. */
+static PyObject *Path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"t", "pose", NULL};
+    append_op op = {0};
+    PyObject *pobj;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "dO:append", kwlist, &op.t, &pobj) || !path_ready(self))
+        return NULL;
+    if (!ga_scheme_can_append(self->scheme)) {
+        PyErr_Format(PyExc_ValueError, "Path.append: scheme '%s' cannot append keys (build a new Path)",
+                     ga_scheme_name(self->scheme));
+        return NULL;
+    }
+    path_locked(self, append_step, &op);
+    if (op.refused)
+        return append_refused(self, &op);
+    PyArrayObject *p = (PyArrayObject *)PyArray_FROM_OTF(pobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    if (!p)
+        return NULL;
+    int pose = PyArray_NDIM(p) == 1 && PyArray_DIM(p, 0) == 7 && self->group->rigid;
+    int mat = PyArray_NDIM(p) == 2 && PyArray_DIM(p, 0) == 4 && PyArray_DIM(p, 1) == 4;
+    int st = GA_OK;
+    if (!pose && !mat) {
+        PyErr_SetString(PyExc_ValueError, self->group->rigid
+                                              ? "Path.append: pose must have shape (4, 4) or (7,)"
+                                              : "Path.append: pose must have shape (4, 4)");
+        Py_DECREF(p);
+        return NULL;
+    }
+    if (pose)
+        st = gpy_pose_to_mat(PyArray_DATA(p), &op.m);
+    else
+        op.m = gpy_mat_get(PyArray_DATA(p));
+    Py_DECREF(p);
+    if (st == GA_OK) {
+        op.commit = 1;
+        path_locked(self, append_step, &op);
+        if (op.refused)
+            return append_refused(self, &op);
+        st = op.st;
+    }
+    if (st == GA_ERR_ARG && self->scheme == GA_SCHEME_BSPLINE) {
+        PyErr_Format(PyExc_ValueError, "Path.append: scheme 'bspline' takes a key %s",
+                     op.n < 4 ? "only after 4 keys or more" : "only at evenly spaced times");
+        return NULL;
+    }
+    if (st != GA_OK) {
+        PyErr_Format(st == GA_ERR_DOMAIN ? gpy_error : PyExc_ValueError, "Path.append: %s",
+                     ga_status_string(st));
+        return NULL;
+    }
+    Py_RETURN_NONE;
+}
+static PyObject *Path_get_scheme(gpy_PathObject *self, void *c)
+{
+    (void)c;
+    return path_ready(self) ? PyUnicode_FromString(ga_scheme_name(self->scheme)) : NULL;
+}
+static void read_range(gpy_PathObject *self, void *arg)
+{
+    path_ctx *r = arg;
+    r->range_status = ga_path_range(&self->path, &r->t0, &r->t1);
+}
+
+static PyObject *Path_get_range(gpy_PathObject *self, void *c)
+{
+    (void)c;
+    if (!path_ready(self))
+        return NULL;
+    path_ctx r = {&self->path, GA_OK, 0.0, 0.0};
+    path_locked(self, read_range, &r);
+    if (r.range_status != GA_OK) {
+        PyErr_SetString(PyExc_ValueError, ga_status_string(r.range_status));
+        return NULL;
+    }
+    return Py_BuildValue("(dd)", r.t0, r.t1);
+}
+static PyObject *Path_get_group(gpy_PathObject *self, void *c)
+{
+    (void)c;
+    return path_ready(self) ? PyUnicode_FromString(self->group->name) : NULL;
+}
+
+static PyObject *Path_repr(gpy_PathObject *self)
+{
+    if (!self->work)
+        return PyUnicode_FromString("<garotor.Path (not initialised)>");
+    size_t n;
+    path_locked(self, read_n, &n);
+    return PyUnicode_FromFormat("<garotor.Path: %s on %s, %zu keys>", ga_scheme_name(self->scheme),
+                                self->group->name, n);
+}
+
+static PyMethodDef Path_methods[] = {
+    {"sample", (PyCFunction)(void (*)(void))Path_sample, METH_VARARGS | METH_KEYWORDS,
+     "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
+    {"velocity", (PyCFunction)(void (*)(void))Path_velocity, METH_VARARGS | METH_KEYWORDS,
+     "velocity(t, *, out=None): the body velocity A(t)^-1 dA/dt per unit time at the times t: (..., 6) "
+     "twists "
+     "(affine: (..., 4, 4))."},
+    {"acceleration", (PyCFunction)(void (*)(void))Path_acceleration, METH_VARARGS | METH_KEYWORDS,
+     "acceleration(t, *, out=None): the body acceleration d/dt (A^-1 dA/dt) per unit time^2 at the times t: "
+     "(..., 6) (affine: (..., 4, 4))."},
+    {"append", (PyCFunction)(void (*)(void))Path_append, METH_VARARGS | METH_KEYWORDS,
+     "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
+     "building one "
+     "new segment; the Path then equals one built from all the keys, bit for bit. Room: Path(..., "
+     "capacity=m)."},
+    {NULL, NULL, 0, NULL}};
+
+static PyGetSetDef Path_getset[] = {
+    {"times", (getter)Path_get_times, NULL, "the key times (a read-only copy)", NULL},
+    {"capacity", (getter)Path_get_capacity, NULL, "the keys the Path has room for (Path.append)", NULL},
+    {"scheme", (getter)Path_get_scheme, NULL, "the scheme's name", NULL},
+    {"range", (getter)Path_get_range, NULL,
+     "(t0, t1), the times the path is defined on: the first and last key's (bspline: the second and the last "
+     "but one's)",
+     NULL},
+    {"group", (getter)Path_get_group, NULL, "the group's name", NULL},
+    {NULL, NULL, NULL, NULL, NULL}};
+
+PyTypeObject gpy_PathType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "garotor.Path",
+    .tp_basicsize = sizeof(gpy_PathObject),
+    .tp_dealloc = (destructor)Path_dealloc,
+    .tp_repr = (reprfunc)Path_repr,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc =
+        "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None): a path through "
+        "key "
+        "poses.\n\n"
+        "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
+        "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline, c2;\n"
+        "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
+        "capacity: room for keys to come (append), for the schemes that can append.",
+    .tp_methods = Path_methods,
+    .tp_getset = Path_getset,
+    .tp_init = (initproc)Path_init,
+    .tp_new = Path_new,
+};
