@@ -275,7 +275,7 @@ ga_twist ga_generator_to_twist(ga_generator b)
 /* ---- exp and log ------------------------------------------------------- */
 
 /* cos, sinc and k as series; pi/2 in two parts (shared with interp/path.c) */
-#include "rotor_series.h"
+#include "internal/rotor_series.h"
 
 ga_rotor ga_rotor_exp(ga_generator g)
 {

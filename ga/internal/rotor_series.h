@@ -1,6 +1,7 @@
-/* ga/rotor_series.h (internal, not installed): the series of the rotor exp,
- * shared by ga_rotor_exp (rotor.c) and the screw sampler of the cga group
- * (interp/path.c), which evaluate the same functions of the angle.
+/* ga/internal/rotor_series.h (internal, not installed): the series of the
+ * rotor exp, shared by ga_rotor_exp (rotor.c) and the screw sampler of the
+ * cga group (interp/group_cga.c), which evaluate the same functions of the
+ * angle.
  */
 #ifndef GA_ROTOR_SERIES_H
 #define GA_ROTOR_SERIES_H

@@ -1,0 +1,56 @@
+/* interp/growth.c: the growth rule of path.h (docs/schemes.md, "lihao2:
+ * growth"): each key's velocity against the fastest chord of the path.
+ */
+#include <math.h>
+#include <string.h>
+
+#include <garotor/path.h>
+
+#include "internal/path.h"
+
+/* The Euclidean norms of the parts of x: rotation and translation on the
+ * rigid groups, the whole element on affine; returns the number of parts. */
+static size_t part_norms(const ga_group *g, const double *x, double *nrm)
+{
+    size_t parts = g->rigid ? 2 : 1, w = g->dim / parts;
+    for (size_t q = 0; q < parts; ++q) {
+        double s = 0.0;
+        for (size_t k = 0; k < w; ++k) s = hypot(s, x[q * w + k]);
+        nrm[q] = s;
+    }
+    return parts;
+}
+
+ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
+{
+    if (!p || !out)
+        return GA_ERR_ARG;
+    const ga_group *g = p->group;
+    size_t n = p->n, parts = 1;
+    ga_path_growth r = {0.0, 0, n};
+    double chord[2] = {0.0, 0.0}, x[GIP_MAXD], rel[GIP_MAXE], nrm[2];
+    int st;
+    for (size_t j = 0; j + 1 < n; ++j) {
+        if ((st = gip_rel_log(g, gip_key_of(p, j), gip_key_of(p, j + 1), x, rel)))
+            return st;
+        parts = part_norms(g, x, nrm);
+        for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / gip_seg_len(p, j));
+    }
+    for (size_t i = 0; n > 1 && i < n; ++i) {
+        if ((st = ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x)))
+            return st;
+        part_norms(g, x, nrm);
+        double ratio = 0.0;
+        for (size_t q = 0; q < parts; ++q)
+            if (chord[q] > 0.0)
+                ratio = fmax(ratio, nrm[q] / chord[q]);
+        if (ratio > r.ratio) {
+            r.ratio = ratio;
+            r.key = i;
+        }
+        if (r.first == n && ratio > GA_PATH_GROWTH_MAX)
+            r.first = i;
+    }
+    *out = r;
+    return GA_OK;
+}

@@ -1,0 +1,131 @@
+/* interp/scheme_c2.c: C2 (path.h), A_i exp(x(t - t_i)) with x a cubic in the
+ * twist, C2 at the keys through the group's right Jacobian (dexp) and the
+ * 4x4 jet of the acceleration (jet.c); the key velocities solve the system
+ * of c2_solve.c.
+ */
+#include <math.h>
+#include <string.h>
+
+#include <garotor/path.h>
+
+#include "internal/path.h"
+
+/* C2 (path.h): on segment i, A_i exp(x(tau)), x(tau) = a tau + b tau^2 +
+ * c tau^3 in coef (t units), the key velocities in vel solved by gip_c2_solve
+ * through the group (J_r by dexp, N by the 4x4 jet), then per key the
+ * solver's scratch. theta_i = plog(A_i^-1 A_{i+1}) is parked in slot c. */
+static const double *c2_theta(const ga_path *p, size_t i) { return p->coef + (3 * i + 2) * p->group->dim; }
+static double *c2_rate(const ga_path *p, size_t i) { return p->vel + i * p->group->dim; }
+static double *c2_scratch(const ga_path *p, size_t i)
+{
+    size_t d = p->group->dim;
+    return p->vel + p->n * d + i * (d * d + d);
+}
+static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
+{
+    const ga_group *g = p->group;
+    size_t d = g->dim;
+    double e[GIP_MAXD] = {0}, c[GIP_MAXD], J[GIP_MAXD * GIP_MAXD];
+    for (size_t j = 0; j < d; ++j) {
+        e[j] = 1.0;
+        g->dexp(th, e, c);
+        e[j] = 0.0;
+        for (size_t i = 0; i < d; ++i) J[d * i + j] = c[i];
+    }
+    if (inv)
+        return gip_md_inv(d, J, m);
+    memcpy(m, J, d * d * sizeof(double));
+    return GA_OK;
+}
+/* N(theta, y) by the jet. The jet's squarings grow with log2 of theta's size,
+ * and a translation near DBL_MAX would take a thousand per call. Scaling translations
+ * by l is an automorphism of SE(3) (it commutes with exp, Ad and dexp), so
+ * N(S x, S y) = S N(x, y) for S = diag(1, 1, 1, l, l, l): a translation of
+ * theta beyond 2^20 is brought below 1 by a power of two l (exact, so the
+ * scaling changes nothing but the jet's work). */
+static int c2_nonlin(const ga_path *p, const double *th, const double *y, double *o)
+{
+    const double zero[GIP_MAXD] = {0};
+    double big = fmax(fabs(th[3]), fmax(fabs(th[4]), fabs(th[5])));
+    if (!(big > 0x1p20) || !isfinite(big))
+        return gip_exp_curve_deriv(p->group, th, y, zero, NULL, o);
+    int e;
+    frexp(big, &e);
+    double x[6], ys[6];
+    for (int k = 0; k < 6; ++k) {
+        x[k] = k < 3 ? th[k] : ldexp(th[k], -e);
+        ys[k] = k < 3 ? y[k] : ldexp(y[k], -e);
+    }
+    int st = gip_exp_curve_deriv(p->group, x, ys, zero, NULL, o);
+    for (int k = 3; k < 6; ++k) o[k] = ldexp(o[k], e);
+    return st;
+}
+
+/* the ends: the screw velocities theta/h of the end segments (each a body
+   velocity at both its ends); the interior, to start: lihao3's default (the
+   parabola through the neighbouring screw velocities) */
+static void c2_start(ga_path *p)
+{
+    size_t n = p->n, d = p->group->dim;
+    for (size_t i = 0; i < n; ++i) {
+        double *v = c2_rate(p, i);
+        if (i == 0 || i + 1 == n) {
+            size_t j = i ? i - 1 : 0;
+            gip_lin(d, v, 1.0 / gip_seg_len(p, j), c2_theta(p, j), 0.0, v);
+        } else {
+            double hl = gip_seg_len(p, i - 1), hr = gip_seg_len(p, i);
+            gip_lin(d, v, hr / ((hl + hr) * hl), c2_theta(p, i - 1), hl / ((hl + hr) * hr), c2_theta(p, i));
+        }
+    }
+}
+
+int gip_build_c2(ga_path *p)
+{
+    const ga_group *g = p->group;
+    size_t n = p->n, d = g->dim;
+    double rel[GIP_MAXE], J[GIP_MAXD * GIP_MAXD], e[GIP_MAXD];
+    int st;
+    memset(p->coef, 0, gip_scheme_doubles(p->scheme, n, d) * sizeof(double));
+    for (size_t i = 0; i + 1 < n; ++i)
+        if ((st = gip_rel_log(g, gip_key_of(p, i), gip_key_of(p, i + 1), p->coef + (3 * i + 2) * d, rel)))
+            return st;
+    c2_start(p);
+    if (!gip_allfinite(p->vel, n * d))
+        return GA_ERR_DOMAIN;
+    if (n > 2) {
+        gip_c2_sys sys = {p, d, c2_theta, c2_rate, c2_scratch, c2_jr, c2_nonlin, c2_start};
+        if ((st = gip_c2_solve(&sys)))
+            return st;
+    }
+    /* Hermite: a = w_i, x'(h) = J_r^-1(theta) w_{i+1},
+       b = (3 theta - 2h a - h x'(h))/h^2, c = (-2 theta + h a + h x'(h))/h^3 */
+    for (size_t i = 0; i + 1 < n; ++i) {
+        double *A = p->coef + 3 * i * d, *B = A + d, *C = B + d, th[GIP_MAXD], h = gip_seg_len(p, i);
+        const double *w = c2_rate(p, i);
+        memcpy(th, C, d * sizeof(double));
+        if ((st = c2_jr(p, th, 1, J)))
+            return st;
+        gip_md_vec(d, J, c2_rate(p, i + 1), e);
+        for (size_t k = 0; k < d; ++k) {
+            A[k] = w[k];
+            B[k] = (3.0 * th[k] - 2.0 * h * w[k] - h * e[k]) / (h * h);
+            C[k] = (-2.0 * th[k] + h * w[k] + h * e[k]) / (h * h * h);
+        }
+    }
+    return GA_OK;
+}
+
+/* x(tau), x'(tau), x''(tau) of C2 segment seg at u (tau = u h, per unit t). */
+void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd)
+{
+    size_t d = p->group->dim;
+    const double *A = p->coef + 3 * seg * d, *B = A + d, *C = B + d;
+    double tau = u * gip_seg_len(p, seg);
+    for (size_t k = 0; k < d; ++k) {
+        x[k] = ((C[k] * tau + B[k]) * tau + A[k]) * tau;
+        if (xd)
+            xd[k] = (3.0 * C[k] * tau + 2.0 * B[k]) * tau + A[k];
+        if (xdd)
+            xdd[k] = 6.0 * C[k] * tau + 2.0 * B[k];
+    }
+}
