@@ -244,54 +244,242 @@ static void expm_fix_blocks(ga_mat4 *x, const ga_mat4 *a, int k, int plain, cons
     }
 }
 
+/* ---- the Pade approximants and their bounds ------------------------------ */
+
+/* theta_m: the largest alpha for which r_m(A) = e^(A + E) with
+ * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3) for m <= 9, and
+ * theta_13 = 4.25 of Al-Mohy & Higham 2009, Table 3.1 (and scipy), not
+ * Higham 2005's 5.37: near 5.37 the rounding in evaluating r_13 and
+ * solving with q_13 dominates the truncation error (scipy's
+ * test_burkardt_12 and three other dense 3x3 and 4x4 inputs lost 3 to 5
+ * times scipy's accuracy with 5.37, one squaring fewer). b: the coefficients of the Pade numerator
+ * p_m(x) = sum b_j x^j, scaled to integers, with q_m(x) = p_m(-x).
+ * log2c: log2 of c_{2m+1} = (m!)^2 / ((2m)! (2m+1)!). */
+static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
+                                2.097847961257068e0, 4.25};
+static const double log2c[5] = {-16.621136113, -33.227772657, -51.994974307, -72.324718099, -116.447004252};
+static const int degree[5] = {3, 5, 7, 9, 13};
+/* theta_m^4 and theta_m^6: for m = 3, 5 eta = max(d4, d6); for m = 7, 9
+ * eta_3 = max(d6, d8) with d8 <= d4 (below). ell_free: ||A||_1 below
+ * which ell(A, m) is 0 whatever |A| is (|c_{2m+1}| ||A||_1^(2m) <= u).
+ * t13_k: theta_13^k for k = 4, 6, 10. */
+static const double theta4[4] = {5.003163045600666e-08, 4.158371815587934e-03, 0.8159403826875232,
+                                 19.368502336532284};
+static const double theta6[4] = {1.1190950742656221e-11, 2.6815443116884287e-04, 0.7370342020997932,
+                                 85.24012158171844};
+static const double ell_free[5] = {0.014955873861517137, 0.2539783216046672, 0.9514583772676373,
+                                   2.104672049828496, 5.427430678788747};
+static const double t13_4 = 326.25390625, t13_6 = 5892.961181640625, t13_10 = 1922601.6048898697;
+static const double b3[] = {120, 60, 12, 1};
+static const double b5[] = {30240, 15120, 3360, 420, 30, 1};
+static const double b7[] = {17297280, 8648640, 1995840, 277200, 25200, 1512, 56, 1};
+static const double b9[] = {17643225600., 8821612800., 2075673600., 302702400., 30270240,
+                            2162160,      110880,      3960,        90,         1};
+static const double b13[] = {64764752532480000.,
+                             32382376266240000.,
+                             7771770303897600.,
+                             1187353796428800.,
+                             129060195264000.,
+                             10559470521600.,
+                             670442572800.,
+                             33522128640.,
+                             1323241920.,
+                             40840800.,
+                             960960,
+                             16380,
+                             182,
+                             1};
+static const double *const coef[5] = {b3, b5, b7, b9, b13};
+
+/* The degree m (its index in degree[]) and the extra squarings, added to
+ * *s, for A of 1-norm n1 with its powers a2, a4, a6, all four scaled by the
+ * squarings (exact powers of 2). */
+static int expm_degree(ga_mat4 *a, ga_mat4 *a2, ga_mat4 *a4, ga_mat4 *a6, int h, double n1, int *s)
+{
+    /* eta <= theta_m is tested as ||A^k|| <= theta_m^k (no roots). d8 and
+     * d10 are not computed (two more products): the bounds
+     * ||A^8|| <= ||A^4||^2 and ||A^10|| <= ||A^4|| ||A^6|| give d8 <= d4 and
+     * d10 <= (||A^4|| ||A^6||)^(1/10), which can only choose more squarings
+     * than the paper's estimates, never fewer. ell(A, m) is computed only
+     * for m = 9: for m = 3, 5, 7 a candidate with ||A||_1 above ell_free
+     * goes on to the next degree instead (its eta test then holds too),
+     * because one more matrix product costs less than the 2m + 1 dependent
+     * vector products of ell, and a larger m with the same s is as
+     * accurate (its backward error is also below u). */
+    double n4 = norm1_finite(a4), n6 = norm1_finite(a6);
+    int idx = -1;
+    for (int c = 0; c < 4 && idx < 0; c++) {
+        if (n4 <= theta4[c] && n6 <= theta6[c] &&
+            (n1 <= ell_free[c] || (c == 3 && expm_ell(a, n1, degree[c], log2c[c]) == 0)))
+            idx = c;
+    }
+    if (idx < 0) {
+        /* eta_5 = min(max(d6, d8), max(d8, d10)) <= theta_13 is first
+         * tested without roots or products, with d8 <= d4 and
+         * d10 <= (||A^4|| ||A^6||)^(1/10); only when that fails are d8 and
+         * d10 computed exactly (||A^4 A^4||, ||A^4 A^6||: the paper's and
+         * scipy's s, not one squaring more from the bounds) */
+        int s1 = 0;
+        if (!(n4 <= t13_4 && (n6 <= t13_6 || n4 * n6 <= t13_10))) {
+            ga_mat4 a8 = mat4_mul_any(a4, a4, h), a10 = mat4_mul_any(a4, a6, h);
+            double d6 = pow(n6, 1.0 / 6.0), d8 = pow(norm1_finite(&a8), 0.125),
+                   d10 = pow(norm1_finite(&a10), 0.1);
+            double eta5 = fmin(fmax(d6, d8), fmax(d8, d10));
+            s1 = eta5 > theta[4] ? (int)ceil(log2(eta5 / theta[4])) : 0;
+        }
+        double ns = ldexp(n1, -s1); /* ||2^-s1 A||_1, exactly */
+        if (!(ns <= ell_free[4])) {
+            ga_mat4 as = *a;
+            ga__mat4_scale2(&as, -s1);
+            s1 += expm_ell(&as, ns, 13, log2c[4]);
+        }
+        idx = 4;
+        if (s1 > 0) { /* scaled powers: exact powers of 2 */
+            ga__mat4_scale2(a, -s1);
+            ga__mat4_scale2(a2, -2 * s1);
+            ga__mat4_scale2(a4, -4 * s1);
+            ga__mat4_scale2(a6, -6 * s1);
+        }
+        *s += s1;
+    }
+    return idx;
+}
+
+/* r_m = (V - U)^{-1} (V + U), U the odd and V the even part of p_m: U and
+ * V of degree[idx] from A and its powers. */
+static void expm_pade(int idx, const ga_mat4 *a, const ga_mat4 *a2, const ga_mat4 *a4, const ga_mat4 *a6,
+                      int h, ga_mat4 *uout, ga_mat4 *vout)
+{
+    const double *b = coef[idx];
+    int m = degree[idx];
+    ga_mat4 id = ga_mat4_identity(), v, u0; /* U = A U0 */
+    if (m < 13) {
+        /* U0 = sum b_{2k+1} A^{2k}, V = sum b_{2k} A^{2k}, entry by entry in
+         * one pass (A^8 only for m = 9; the missing powers are 0 terms) */
+        ga_mat4 a8 = ga__mat4_zero();
+        if (m == 9)
+            a8 = mat4_mul_any(a4, a4, h);
+        double bb[10] = {0};
+        for (int k = 0; k <= m; k++) bb[k] = b[k];
+        for (int i = 0; i < 16; i++) {
+            u0.m[i] = bb[1] * id.m[i] + bb[3] * a2->m[i] + bb[5] * a4->m[i] + bb[7] * a6->m[i] +
+                      bb[9] * a8.m[i];
+            v.m[i] = bb[0] * id.m[i] + bb[2] * a2->m[i] + bb[4] * a4->m[i] + bb[6] * a6->m[i] +
+                     bb[8] * a8.m[i];
+        }
+    } else { /* Higham's m = 13 scheme: 6 matrix products instead of 12 */
+        ga_mat4 w = ga__mat4_zero();
+        v = ga__mat4_zero();
+        u0 = ga__mat4_zero();
+        ga__mat4_acc(&w, b[13], a6);
+        ga__mat4_acc(&w, b[11], a4);
+        ga__mat4_acc(&w, b[9], a2);
+        u0 = mat4_mul_any(a6, &w, h);
+        ga__mat4_acc(&u0, b[7], a6);
+        ga__mat4_acc(&u0, b[5], a4);
+        ga__mat4_acc(&u0, b[3], a2);
+        ga__mat4_acc(&u0, b[1], &id);
+        w = ga__mat4_zero();
+        ga__mat4_acc(&w, b[12], a6);
+        ga__mat4_acc(&w, b[10], a4);
+        ga__mat4_acc(&w, b[8], a2);
+        v = mat4_mul_any(a6, &w, h);
+        ga__mat4_acc(&v, b[6], a6);
+        ga__mat4_acc(&v, b[4], a4);
+        ga__mat4_acc(&v, b[2], a2);
+        ga__mat4_acc(&v, b[0], &id);
+    }
+    *uout = mat4_mul_any(a, &u0, h);
+    *vout = v;
+}
+
+/* X = r_m - I, or r_m itself (*plain), from U and V. GA_ERR_DOMAIN if
+ * V - U is singular (a guard). */
+static int expm_rm(const ga_mat4 *a, const ga_mat4 *u, const ga_mat4 *v, int h, ga_mat4 *xout, int *plainout)
+{
+    ga_mat4 den = *v, x;
+    ga__mat4_acc(&den, -1.0, u);
+    /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. But
+     * for a contracting r_m (a diagonal entry below 3/4, where the squaring
+     * below goes plain at once) r_m itself, (V - U)^{-1} (V + U), as scipy
+     * computes it: I + X rounds r_m's small entries to eps absolute
+     * (scipy's test_burkardt_12, e^-1, e^-2, e^-20 through six squarings:
+     * 2.8e-13 against 1.0e-14, scipy 7.1e-14). Predicted from the diagonal
+     * of 2^-s A (one solve, not two, for most inputs), and checked on X. */
+    int plain = a->m[0] < -0.25 || a->m[5] < -0.25 || a->m[10] < -0.25 || a->m[15] < -0.25;
+    ga_mat4 rhs = *u;
+    double c = 2.0;
+    for (int pass = 0; pass < 2; pass++) {
+        if (plain) { /* D r = V + U; for h, r = [R t; 0 1] and D3 t = 2 u, t as in X */
+            rhs = *v;
+            ga__mat4_acc(&rhs, 1.0, u);
+            if (h)
+                for (int i = 0; i < 3; i++) M(rhs, i, 3) = 2.0 * M(*u, i, 3);
+            c = 1.0;
+        }
+        if (!(h && expm_solve3(&den, &rhs, c, &x))) {
+            ga__mat4_lu f;
+            /* q_m(A) is well conditioned for alpha <= theta_m (Higham
+             * 2005): this failure is a guard, not an expected path. */
+            if (ga__mat4_lu_factor(den, &f) != GA_OK)
+                return GA_ERR_DOMAIN;
+            x = ga__mat4_lu_solve(&f, rhs);
+            for (int i = 0; i < 16; i++) x.m[i] *= c;
+        }
+        if (h) {
+            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = 0.0;
+            M(x, 3, 3) = plain ? 1.0 : 0.0;
+        }
+        if (plain || !(M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25))
+            break;
+        plain = 1;
+    }
+    *xout = x;
+    *plainout = plain;
+    return GA_OK;
+}
+
+/* The s squarings of I + X (of X itself when plain): (I + X)^2 = I + (2X + X^2) keeps relative accuracy in X
+ * when the result is near I; e.g. a rotation block R = I + O(1e-12) under a translation 1e6 needs 18
+ * squarings, and plain squaring would lose the rounding of R's diagonal doubled 18 times (about 1e-11
+ * relative in t). Once a diagonal entry 1 + x of the result falls below 3/4 (contraction), plain squaring is
+ * better: per step the X form rounds like eps (2|x| + x^2) and the plain form like eps (1 + x)^2, which is
+ * smaller for x < -1/4; near 0 the plain form keeps relative accuracy. With h the last row is 0 in X and
+ * e_4^T in I + X: products stay block triangular. */
+static int expm_square(ga_mat4 *xio, const ga_mat4 *a, int s, int h, int plain)
+{
+    ga_mat4 x = *xio;
+    int bs[4], bz[4], nb = qt_blocks(a, bs, bz);
+    if (nb)
+        expm_fix_blocks(&x, a, 0, plain, bs, bz, nb);
+    for (int k = 0; k < s; k++) {
+        if (!plain &&
+            (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25)) {
+            x = ga__mat4_add_id(x, 1.0);
+            plain = 1;
+        }
+        ga_mat4 x2 = mat4_mul_any(&x, &x, h);
+        if (!plain)
+            ga__mat4_acc(&x2, 2.0, &x);
+        x = x2;
+        if (!ga__mat4_isfinite(&x))
+            return GA_ERR_DOMAIN; /* overflow: stop before Inf - Inf */
+        if (nb)
+            expm_fix_blocks(&x, a, k + 1, plain, bs, bz, nb);
+    }
+    if (!plain) {
+        x = ga__mat4_add_id(x, 1.0);
+        /* 1 + expm1(l) rounds e^l to eps absolute, not relative (e^-5.4 =
+         * 0.0047 then carries 20 u): the blocks once more as exp itself */
+        if (nb)
+            expm_fix_blocks(&x, a, s, 1, bs, bz, nb);
+    }
+    *xio = x;
+    return GA_OK;
+}
+
 ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
 {
-    /* theta_m: the largest alpha for which r_m(A) = e^(A + E) with
-     * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3) for m <= 9, and
-     * theta_13 = 4.25 of Al-Mohy & Higham 2009, Table 3.1 (and scipy), not
-     * Higham 2005's 5.37: near 5.37 the rounding in evaluating r_13 and
-     * solving with q_13 dominates the truncation error (scipy's
-     * test_burkardt_12 and three other dense 3x3 and 4x4 inputs lost 3 to 5
-     * times scipy's accuracy with 5.37, one squaring fewer). b: the coefficients of the Pade numerator
-     * p_m(x) = sum b_j x^j, scaled to integers, with q_m(x) = p_m(-x).
-     * log2c: log2 of c_{2m+1} = (m!)^2 / ((2m)! (2m+1)!). */
-    static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
-                                    2.097847961257068e0, 4.25};
-    static const double log2c[5] = {-16.621136113, -33.227772657, -51.994974307, -72.324718099,
-                                    -116.447004252};
-    static const int degree[5] = {3, 5, 7, 9, 13};
-    /* theta_m^4 and theta_m^6: for m = 3, 5 eta = max(d4, d6); for m = 7, 9
-     * eta_3 = max(d6, d8) with d8 <= d4 (below). ell_free: ||A||_1 below
-     * which ell(A, m) is 0 whatever |A| is (|c_{2m+1}| ||A||_1^(2m) <= u).
-     * t13_k: theta_13^k for k = 4, 6, 10. */
-    static const double theta4[4] = {5.003163045600666e-08, 4.158371815587934e-03, 0.8159403826875232,
-                                     19.368502336532284};
-    static const double theta6[4] = {1.1190950742656221e-11, 2.6815443116884287e-04, 0.7370342020997932,
-                                     85.24012158171844};
-    static const double ell_free[5] = {0.014955873861517137, 0.2539783216046672, 0.9514583772676373,
-                                       2.104672049828496, 5.427430678788747};
-    static const double t13_4 = 326.25390625, t13_6 = 5892.961181640625, t13_10 = 1922601.6048898697;
-    static const double b3[] = {120, 60, 12, 1};
-    static const double b5[] = {30240, 15120, 3360, 420, 30, 1};
-    static const double b7[] = {17297280, 8648640, 1995840, 277200, 25200, 1512, 56, 1};
-    static const double b9[] = {17643225600., 8821612800., 2075673600., 302702400., 30270240,
-                                2162160,      110880,      3960,        90,         1};
-    static const double b13[] = {64764752532480000.,
-                                 32382376266240000.,
-                                 7771770303897600.,
-                                 1187353796428800.,
-                                 129060195264000.,
-                                 10559470521600.,
-                                 670442572800.,
-                                 33522128640.,
-                                 1323241920.,
-                                 40840800.,
-                                 960960,
-                                 16380,
-                                 182,
-                                 1};
-    static const double *const coef[5] = {b3, b5, b7, b9, b13};
-
     if (!ga__mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
     /* A homogeneous generator (last row 0): every power and U have last row
@@ -336,163 +524,12 @@ ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
      * overscaling of Higham 2005 (Moler's badly scaled matrix), with ell()
      * guarding against a nonnormal |A| that makes the eta bound optimistic. */
     ga_mat4 a2 = mat4_mul_any(&a, &a, h), a4 = mat4_mul_any(&a2, &a2, h), a6 = mat4_mul_any(&a4, &a2, h);
-    /* eta <= theta_m is tested as ||A^k|| <= theta_m^k (no roots). d8 and
-     * d10 are not computed (two more products): the bounds
-     * ||A^8|| <= ||A^4||^2 and ||A^10|| <= ||A^4|| ||A^6|| give d8 <= d4 and
-     * d10 <= (||A^4|| ||A^6||)^(1/10), which can only choose more squarings
-     * than the paper's estimates, never fewer. ell(A, m) is computed only
-     * for m = 9: for m = 3, 5, 7 a candidate with ||A||_1 above ell_free
-     * goes on to the next degree instead (its eta test then holds too),
-     * because one more matrix product costs less than the 2m + 1 dependent
-     * vector products of ell, and a larger m with the same s is as
-     * accurate (its backward error is also below u). */
-    double n4 = norm1_finite(&a4), n6 = norm1_finite(&a6);
-    int idx = -1;
-    for (int c = 0; c < 4 && idx < 0; c++) {
-        if (n4 <= theta4[c] && n6 <= theta6[c] &&
-            (n1 <= ell_free[c] || (c == 3 && expm_ell(&a, n1, degree[c], log2c[c]) == 0)))
-            idx = c;
-    }
-    if (idx < 0) {
-        /* eta_5 = min(max(d6, d8), max(d8, d10)) <= theta_13 is first
-         * tested without roots or products, with d8 <= d4 and
-         * d10 <= (||A^4|| ||A^6||)^(1/10); only when that fails are d8 and
-         * d10 computed exactly (||A^4 A^4||, ||A^4 A^6||: the paper's and
-         * scipy's s, not one squaring more from the bounds) */
-        int s1 = 0;
-        if (!(n4 <= t13_4 && (n6 <= t13_6 || n4 * n6 <= t13_10))) {
-            ga_mat4 a8 = mat4_mul_any(&a4, &a4, h), a10 = mat4_mul_any(&a4, &a6, h);
-            double d6 = pow(n6, 1.0 / 6.0), d8 = pow(norm1_finite(&a8), 0.125),
-                   d10 = pow(norm1_finite(&a10), 0.1);
-            double eta5 = fmin(fmax(d6, d8), fmax(d8, d10));
-            s1 = eta5 > theta[4] ? (int)ceil(log2(eta5 / theta[4])) : 0;
-        }
-        double ns = ldexp(n1, -s1); /* ||2^-s1 A||_1, exactly */
-        if (!(ns <= ell_free[4])) {
-            ga_mat4 as = a;
-            ga__mat4_scale2(&as, -s1);
-            s1 += expm_ell(&as, ns, 13, log2c[4]);
-        }
-        idx = 4;
-        if (s1 > 0) { /* scaled powers: exact powers of 2 */
-            ga__mat4_scale2(&a, -s1);
-            ga__mat4_scale2(&a2, -2 * s1);
-            ga__mat4_scale2(&a4, -4 * s1);
-            ga__mat4_scale2(&a6, -6 * s1);
-        }
-        s += s1;
-    }
-
-    /* r_m = (V - U)^{-1} (V + U), U the odd and V the even part of p_m. */
-    const double *b = coef[idx];
-    int m = degree[idx];
-    ga_mat4 id = ga_mat4_identity(), v, u0; /* U = A U0 */
-    if (m < 13) {
-        /* U0 = sum b_{2k+1} A^{2k}, V = sum b_{2k} A^{2k}, entry by entry in
-         * one pass (A^8 only for m = 9; the missing powers are 0 terms) */
-        ga_mat4 a8 = ga__mat4_zero();
-        if (m == 9)
-            a8 = mat4_mul_any(&a4, &a4, h);
-        double bb[10] = {0};
-        for (int k = 0; k <= m; k++) bb[k] = b[k];
-        for (int i = 0; i < 16; i++) {
-            u0.m[i] = bb[1] * id.m[i] + bb[3] * a2.m[i] + bb[5] * a4.m[i] + bb[7] * a6.m[i] + bb[9] * a8.m[i];
-            v.m[i] = bb[0] * id.m[i] + bb[2] * a2.m[i] + bb[4] * a4.m[i] + bb[6] * a6.m[i] + bb[8] * a8.m[i];
-        }
-    } else { /* Higham's m = 13 scheme: 6 matrix products instead of 12 */
-        ga_mat4 w = ga__mat4_zero();
-        v = ga__mat4_zero();
-        u0 = ga__mat4_zero();
-        ga__mat4_acc(&w, b[13], &a6);
-        ga__mat4_acc(&w, b[11], &a4);
-        ga__mat4_acc(&w, b[9], &a2);
-        u0 = mat4_mul_any(&a6, &w, h);
-        ga__mat4_acc(&u0, b[7], &a6);
-        ga__mat4_acc(&u0, b[5], &a4);
-        ga__mat4_acc(&u0, b[3], &a2);
-        ga__mat4_acc(&u0, b[1], &id);
-        w = ga__mat4_zero();
-        ga__mat4_acc(&w, b[12], &a6);
-        ga__mat4_acc(&w, b[10], &a4);
-        ga__mat4_acc(&w, b[8], &a2);
-        v = mat4_mul_any(&a6, &w, h);
-        ga__mat4_acc(&v, b[6], &a6);
-        ga__mat4_acc(&v, b[4], &a4);
-        ga__mat4_acc(&v, b[2], &a2);
-        ga__mat4_acc(&v, b[0], &id);
-    }
-    ga_mat4 u = mat4_mul_any(&a, &u0, h), den = v, x;
-    ga__mat4_acc(&den, -1.0, &u);
-    /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. But
-     * for a contracting r_m (a diagonal entry below 3/4, where the squaring
-     * below goes plain at once) r_m itself, (V - U)^{-1} (V + U), as scipy
-     * computes it: I + X rounds r_m's small entries to eps absolute
-     * (scipy's test_burkardt_12, e^-1, e^-2, e^-20 through six squarings:
-     * 2.8e-13 against 1.0e-14, scipy 7.1e-14). Predicted from the diagonal
-     * of 2^-s A (one solve, not two, for most inputs), and checked on X. */
-    int plain = a.m[0] < -0.25 || a.m[5] < -0.25 || a.m[10] < -0.25 || a.m[15] < -0.25;
-    ga_mat4 rhs = u;
-    double c = 2.0;
-    for (int pass = 0; pass < 2; pass++) {
-        if (plain) { /* D r = V + U; for h, r = [R t; 0 1] and D3 t = 2 u, t as in X */
-            rhs = v;
-            ga__mat4_acc(&rhs, 1.0, &u);
-            if (h)
-                for (int i = 0; i < 3; i++) M(rhs, i, 3) = 2.0 * M(u, i, 3);
-            c = 1.0;
-        }
-        if (!(h && expm_solve3(&den, &rhs, c, &x))) {
-            ga__mat4_lu f;
-            /* q_m(A) is well conditioned for alpha <= theta_m (Higham
-             * 2005): this failure is a guard, not an expected path. */
-            if (ga__mat4_lu_factor(den, &f) != GA_OK)
-                return GA_ERR_DOMAIN;
-            x = ga__mat4_lu_solve(&f, rhs);
-            for (int i = 0; i < 16; i++) x.m[i] *= c;
-        }
-        if (h) {
-            M(x, 3, 0) = M(x, 3, 1) = M(x, 3, 2) = 0.0;
-            M(x, 3, 3) = plain ? 1.0 : 0.0;
-        }
-        if (plain || !(M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25))
-            break;
-        plain = 1;
-    }
-
-    /* Squaring. (I + X)^2 = I + (2X + X^2) keeps relative accuracy in X when
-     * the result is near I; e.g. a rotation block R = I + O(1e-12) under a
-     * translation 1e6 needs 18 squarings, and plain squaring would lose the
-     * rounding of R's diagonal doubled 18 times (about 1e-11 relative in t).
-     * Once a diagonal entry 1 + x of the result falls below 3/4 (contraction),
-     * plain squaring is better: per step the X form rounds like
-     * eps (2|x| + x^2) and the plain form like eps (1 + x)^2, which is smaller
-     * for x < -1/4; near 0 the plain form keeps relative accuracy. With h the
-     * last row is 0 in X and e_4^T in I + X: products stay block triangular. */
-    int bs[4], bz[4], nb = qt_blocks(&a, bs, bz);
-    if (nb)
-        expm_fix_blocks(&x, &a, 0, plain, bs, bz, nb);
-    for (int k = 0; k < s; k++) {
-        if (!plain &&
-            (M(x, 0, 0) < -0.25 || M(x, 1, 1) < -0.25 || M(x, 2, 2) < -0.25 || M(x, 3, 3) < -0.25)) {
-            x = ga__mat4_add_id(x, 1.0);
-            plain = 1;
-        }
-        ga_mat4 x2 = mat4_mul_any(&x, &x, h);
-        if (!plain)
-            ga__mat4_acc(&x2, 2.0, &x);
-        x = x2;
-        if (!ga__mat4_isfinite(&x))
-            return GA_ERR_DOMAIN; /* overflow: stop before Inf - Inf */
-        if (nb)
-            expm_fix_blocks(&x, &a, k + 1, plain, bs, bz, nb);
-    }
-    if (!plain) {
-        x = ga__mat4_add_id(x, 1.0);
-        /* 1 + expm1(l) rounds e^l to eps absolute, not relative (e^-5.4 =
-         * 0.0047 then carries 20 u): the blocks once more as exp itself */
-        if (nb)
-            expm_fix_blocks(&x, &a, s, 1, bs, bz, nb);
-    }
+    int idx = expm_degree(&a, &a2, &a4, &a6, h, n1, &s);
+    ga_mat4 u, v, x;
+    expm_pade(idx, &a, &a2, &a4, &a6, h, &u, &v);
+    int plain;
+    if (expm_rm(&a, &u, &v, h, &x, &plain) != GA_OK || expm_square(&x, &a, s, h, plain) != GA_OK)
+        return GA_ERR_DOMAIN;
     if (mu > 0.0) {
         double em = exp(mu);
         for (int i = 0; i < 16; i++) x.m[i] *= em;

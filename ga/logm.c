@@ -7,7 +7,6 @@
 #include <math.h>
 #include <string.h>
 
-#include "internal/eft.h"
 #include "internal/mat4.h"
 #include "internal/schur.h"
 #include "internal/se3.h"
@@ -182,22 +181,278 @@ static int lu4_det_sign(ga_mat4 a)
     return sign;
 }
 
+/* ---- the Pade step -------------------------------------------------------- */
+
+/* [8/8] Pade approximant of log(1 + x) in partial fractions: 8-point
+ * Gauss-Legendre on log(I + X) = int_0^1 X (I + t X)^{-1} dt (Higham 2001).
+ * It is used once alpha_p(X) = max(||X^p||^(1/p), ||X^(p+1)||^(1/(p+1)))
+ * is at most theta_8 = 0.3666532675959788 for p = 3 or p = 4, which
+ * bounds its backward error by u = 2^-53 (Al-Mohy & Higham 2012, Table
+ * 2.1 and Thm. 2.2 with p(p - 1) <= 2m + 1 = 17). */
+static const double node[8] = {1.98550717512318842e-02, 1.01666761293186636e-01, 2.37233795041835505e-01,
+                               4.08282678752175110e-01, 5.91717321247824946e-01, 7.62766204958164495e-01,
+                               8.98333238706813364e-01, 9.80144928248768088e-01};
+static const double weight[8] = {5.06142681451881293e-02, 1.11190517226687241e-01, 1.56853322938943635e-01,
+                                 1.81341891689180995e-01, 1.81341891689180995e-01, 1.56853322938943635e-01,
+                                 1.11190517226687241e-01, 5.06142681451881293e-02};
+static const double theta8 = 0.3666532675959788;
+
+/* The [8/8] Pade approximant of log(I + X) as its partial fractions,
+ * sum_j weight_j (I + node_j X)^{-1} X. GA_ERR_DOMAIN if a factor is
+ * singular (a guard: rho(t X) < 0.37). */
+static int logm_pade8(const ga_mat4 *x, ga_mat4 *lout)
+{
+    ga__mat4_lu f;
+    ga_mat4 l = ga__mat4_zero();
+    for (int j = 0; j < 8; j++) {
+        ga_mat4 d = *x;
+        for (int i = 0; i < 16; i++) d.m[i] *= node[j];
+        if (ga__mat4_lu_factor(ga__mat4_add_id(d, 1.0), &f) != GA_OK)
+            return GA_ERR_DOMAIN;
+        ga_mat4 term = ga__mat4_lu_solve(&f, *x);
+        ga__mat4_acc(&l, weight[j], &term);
+    }
+    *lout = l;
+    return GA_OK;
+}
+
+/* ---- the steps of ga_mat4_logm ------------------------------------------ */
+
+/* log A when neither Schur form converged (the case seen: 1e-4 e^X, a cluster of
+ * three eigenvalues at 1e-4 coupled by entries of 1e-15 in a
+ * cycle, beside entries of 1e-302 and subnormals; found by
+ * fuzz_numeric, fuzz/regress/numeric/logm-scaled-expm-qr-stall).
+ * A fallback without a Schur form: inverse scaling and squaring
+ * on A itself, square roots by the Denman-Beavers iteration
+ * (Higham, "Functions of Matrices", 6.15), then the Pade step on
+ * X = A^(1/2^k) - I once ||X||_1 <= theta_8, log A = 2^k log(I + X).
+ * X is carried as X <- (Y + I)^{-1} X, not formed by
+ * subtraction, whose absolute error of a few eps made the result
+ * accurate only to about 2^k eps ||log A||; the domain (no
+ * eigenvalue on the closed negative axis) shows as a failing
+ * iteration. */
+static int logm_denman_beavers(ga_mat4 a, int h, ga_mat4 *out)
+{
+    ga_mat4 y = a, x = ga__mat4_add_id(a, -1.0);
+    int k = 0;
+    for (; k < 64 && !(ga_mat4_norm1(x) <= theta8); k++) {
+        ga_mat4 Y = y, Z = ga_mat4_identity();
+        int it = 0;
+        for (; it < 64; it++) {
+            ga__mat4_lu fy, fz;
+            if (ga__mat4_lu_factor(Y, &fy) != GA_OK || ga__mat4_lu_factor(Z, &fz) != GA_OK)
+                return GA_ERR_DOMAIN;
+            ga_mat4 yi = ga__mat4_lu_solve(&fy, ga_mat4_identity()),
+                    zi = ga__mat4_lu_solve(&fz, ga_mat4_identity());
+            double change = 0.0, size = 0.0;
+            for (int e = 0; e < 16; e++) {
+                double yn = 0.5 * (Y.m[e] + zi.m[e]);
+                change = fmax(change, fabs(yn - Y.m[e]));
+                size = fmax(size, fabs(yn));
+                Y.m[e] = yn;
+                Z.m[e] = 0.5 * (Z.m[e] + yi.m[e]);
+            }
+            if (!ga__mat4_isfinite(&Y) || !ga__mat4_isfinite(&Z))
+                return GA_ERR_DOMAIN;
+            if (change <= 4 * DBL_EPSILON * size)
+                break;
+        }
+        if (it == 64)
+            return GA_ERR_DOMAIN;
+        /* X <- (Y + I)^{-1} X, as Z in the Schur path: the root's
+         * A^(1/2^k) - I without the subtraction's absolute error */
+        ga__mat4_lu fr;
+        if (ga__mat4_lu_factor(ga__mat4_add_id(Y, 1.0), &fr) != GA_OK)
+            return GA_ERR_DOMAIN;
+        x = ga__mat4_lu_solve(&fr, x);
+        y = Y;
+    }
+    if (k == 64)
+        return GA_ERR_DOMAIN;
+    ga_mat4 l;
+    if (logm_pade8(&x, &l) != GA_OK)
+        return GA_ERR_DOMAIN;
+    ga__mat4_scale2(&l, k);
+    if (h)
+        M(l, 3, 0) = M(l, 3, 1) = M(l, 3, 2) = M(l, 3, 3) = 0.0;
+    if (!ga__mat4_isfinite(&l))
+        return GA_ERR_DOMAIN;
+    *out = l;
+    return GA_OK;
+}
+
+/* The real Schur form of A - sig I (t = T - sig I, qm = Q; see below in
+ * ga_mat4_logm): sig = 1 first, then 0 where an eigenvalue is small, or the
+ * mean of the diagonal where the form of A - I does not converge.
+ * GA_ERR_DOMAIN if neither converges. */
+static int logm_schur(const ga_mat4 *a, int n, double t[4][4], double qm[4][4], double *sigout)
+{
+    double sig = 1.0;
+    if (ga__schur_shifted(a, n, 1.0, t, qm) != GA_OK) {
+        /* the form of A - I did not converge (a guard: a cluster of
+         * eigenvalues equal to rounding, 1e-4 (I + E) with E of 1e-10 and
+         * below, once did not; found by fuzz/fuzz_numeric,
+         * fuzz/regress/numeric/logm-scaled-expm-tiny-schur-fallback and
+         * logm-scaled-expm-cluster-mean-shift): the form of A - sig I,
+         * sig the mean of the diagonal, whose entries are the cluster's
+         * spread, resolved after scaling */
+        sig = 0.0;
+        for (int i = 0; i < n; i++) sig += M(*a, i, i) / n;
+        if (ga__schur_shifted(a, n, sig, t, qm) != GA_OK)
+            return GA_ERR_DOMAIN;
+    } else {
+        /* the smallest |lambda| (squared), lambda = 1 + t_ii, or for a 2x2
+         * block det(I + T_jj) */
+        double small = INFINITY;
+        for (int i = 0; i < n; i++) {
+            if (i + 1 < n && t[i + 1][i] != 0.0) {
+                double d = (1.0 + t[i][i]) * (1.0 + t[i + 1][i + 1]) - t[i][i + 1] * t[i + 1][i];
+                small = fmin(small, fabs(d));
+                i++;
+            } else
+                small = fmin(small, (1.0 + t[i][i]) * (1.0 + t[i][i]));
+        }
+        if (small < 0.25) {
+            double ts[4][4], qs[4][4];
+            memcpy(ts, t, sizeof ts);
+            memcpy(qs, qm, sizeof qs);
+            if (ga__schur_shifted(a, n, 0.0, t, qm) == GA_OK)
+                sig = 0.0;
+            else { /* a guard, as above: keep the form of A - I */
+                memcpy(t, ts, sizeof ts);
+                memcpy(qm, qs, sizeof qs);
+            }
+        }
+    }
+    *sigout = sig;
+    return GA_OK;
+}
+
+/* The blocks, and the domain decided from the eigenvalues: a real
+ * eigenvalue <= 0 has no real principal log (0 is caught above as
+ * singular); a complex pair always has one. lambda = sig + t_ii. */
+static int logm_blocks(double t[4][4], double lam1, int bs[4], int bz[4], int *nbout)
+{
+    int nb = 0;
+    for (int i = 0; i < 4; i += bz[nb - 1]) {
+        bs[nb] = i;
+        bz[nb] = (i < 3 && t[i + 1][i] != 0.0) ? 2 : 1;
+        if (bz[nb] == 1 && !(lam1 + t[i][i] > 0.0))
+            return lam1 + t[i][i] == 0.0 ? GA_ERR_SINGULAR : GA_ERR_DOMAIN;
+        if (bz[nb] == 2) {
+            /* a complex pair re +- iw whose imaginary part is within the
+             * rounding of the Schur form (GA_MAT4_LOGM_AXIS_TOL |lambda|)
+             * of the negative real axis: the sign of w, and with it the
+             * log's, is not determined by the data */
+            double am, w, nm[2][2];
+            blk2_parts(t, i, &am, &w, nm);
+            double re = lam1 + am;
+            if (re < 0.0 && w <= GA_MAT4_LOGM_AXIS_TOL * hypot(re, w))
+                return GA_ERR_DOMAIN;
+        }
+        nb++;
+    }
+    *nbout = nb;
+    return GA_OK;
+}
+
+/* Inverse scaling and squaring on T: T_k = T^(1/2^k) and Z = T_k - I,
+ * carried as Z <- (T_{k+1} + I)^{-1} Z (the factors commute) rather than
+ * formed by subtraction, which would round away small parts (a scaling
+ * 1 + 1e-10 under a translation of 1e6; this is the accurate T_k - I of
+ * Al-Mohy & Higham 2012, sec. 5, for the whole matrix). Square roots
+ * are taken while the spectral radius of Z exceeds theta_8, then while
+ * alpha_3(Z) and alpha_4(Z) both do. Z = T_k - I and k into *zout, *kout. */
+static int logm_roots(double t[4][4], double lam1, const int *bs, const int *bz, int nb, ga_mat4 *zout,
+                      int *kout)
+{
+    double tk[4][4], z[4][4];
+    memcpy(tk, t, sizeof tk);
+    memcpy(z, t, sizeof z);
+    for (int i = 0; i < 4; i++) {
+        tk[i][i] += lam1;      /* T */
+        z[i][i] -= 1.0 - lam1; /* T - I */
+    }
+    ga__mat4_lu f;
+    int k = 0;
+    for (;; k++) {
+        double rho = 0.0;
+        for (int b = 0; b < nb; b++) {
+            int p = bs[b];
+            rho = fmax(rho, bz[b] == 1 ? fabs(z[p][p])
+                                       : sqrt(fabs(z[p][p] * z[p + 1][p + 1] - z[p][p + 1] * z[p + 1][p])));
+        }
+        if (rho <= theta8) {
+            ga_mat4 zm = mat4_of(z);
+            if (ga_mat4_norm1(zm) <= theta8)
+                break;
+            ga_mat4 z2 = ga_mat4_mul(zm, zm), z3 = ga_mat4_mul(z2, zm), z4 = ga_mat4_mul(z2, z2),
+                    z5 = ga_mat4_mul(z4, zm);
+            double d3 = cbrt(ga_mat4_norm1(z3)), d4 = pow(ga_mat4_norm1(z4), 0.25),
+                   d5 = pow(ga_mat4_norm1(z5), 0.2);
+            if (fmin(fmax(d3, d4), fmax(d4, d5)) <= theta8)
+                break;
+        }
+        /* Each root at least halves the argument of a complex eigenvalue
+         * and the log of a real one; with ||log T|| <= 4 * 1100 ... the
+         * count is bounded by the exponent range: 1100 roots always do. */
+        if (k == 1100)
+            return GA_ERR_DOMAIN;
+        double r[4][4];
+        qt_sqrt(tk, bs, bz, nb, r);
+        ga_mat4 rp = mat4_of(r);
+        if (ga__mat4_lu_factor(ga__mat4_add_id(rp, 1.0), &f) != GA_OK)
+            return GA_ERR_DOMAIN; /* a guard: R + I has eigenvalues with real part > 1 */
+        ga_mat4 zn = ga__mat4_lu_solve(&f, mat4_of(z));
+        memcpy(z, zn.m, sizeof z);
+        memcpy(tk, r, sizeof r);
+    }
+    /* Z's blocks above the block diagonal are T_k's own (I has none
+     * there), as the square-root recurrence gave them: carried through the
+     * solves above they gather the rounding of each (the corner of the
+     * peer matrix with eigenvalues 0.30-0.32 and off-diagonals 3e5:
+     * 8.5u, against 0 from T_k). The diagonal blocks keep the carried
+     * form, whose small parts subtraction would lose. */
+    for (int b = 0; b < nb; b++)
+        for (int b2 = b + 1; b2 < nb; b2++)
+            for (int u = 0; u < bz[b]; u++)
+                for (int v = 0; v < bz[b2]; v++) z[bs[b] + u][bs[b2] + v] = tk[bs[b] + u][bs[b2] + v];
+    *zout = mat4_of(z);
+    *kout = k;
+    return GA_OK;
+}
+
+/* The diagonal blocks of log T exactly from T's own (Al-Mohy & Higham
+ * 2012, sec. 5: recomputing them removes the error of the roots and of
+ * the Pade step where it matters most): log t_ii, or for a complex pair
+ * a +- iw, log|.| I + (arg/w) N with arg = atan2(w, a) in (0, pi). The
+ * superdiagonal entry between two adjacent real eigenvalues is t_ij
+ * times their divided difference. */
+static void logm_fix_blocks(ga_mat4 *l, double t[4][4], double lam1, int shifted, const int *bs,
+                            const int *bz, int nb)
+{
+    for (int b = 0; b < nb; b++) {
+        int p = bs[b];
+        if (bz[b] == 1) {
+            double x = lam1 + t[p][p], lx = shifted ? log1p(t[p][p]) : log(x);
+            M(*l, p, p) = lx;
+            if (b + 1 < nb && bz[b + 1] == 1) {
+                double y = lam1 + t[p + 1][p + 1], ly = shifted ? log1p(t[p + 1][p + 1]) : log(y);
+                M(*l, p, p + 1) = log_divdiff(t[p][p + 1], x, y, lx, ly, t[p + 1][p + 1] - t[p][p]);
+            }
+        } else {
+            double aa, w, nm[2][2];
+            blk2_parts(t, p, &aa, &w, nm);
+            double re = lam1 + aa, lr = shifted ? log_abs(aa, w) : log(hypot(re, w));
+            double c = w > 0.0 ? atan2(w, re) / w : 1.0 / re;
+            for (int u = 0; u < 2; u++)
+                for (int v = 0; v < 2; v++) M(*l, p + u, p + v) = (u == v ? lr : 0.0) + c * nm[u][v];
+        }
+    }
+}
+
 ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
 {
-    /* [8/8] Pade approximant of log(1 + x) in partial fractions: 8-point
-     * Gauss-Legendre on log(I + X) = int_0^1 X (I + t X)^{-1} dt (Higham 2001).
-     * It is used once alpha_p(X) = max(||X^p||^(1/p), ||X^(p+1)||^(1/(p+1)))
-     * is at most theta_8 = 0.3666532675959788 for p = 3 or p = 4, which
-     * bounds its backward error by u = 2^-53 (Al-Mohy & Higham 2012, Table
-     * 2.1 and Thm. 2.2 with p(p - 1) <= 2m + 1 = 17). */
-    static const double node[8] = {1.98550717512318842e-02, 1.01666761293186636e-01, 2.37233795041835505e-01,
-                                   4.08282678752175110e-01, 5.91717321247824946e-01, 7.62766204958164495e-01,
-                                   8.98333238706813364e-01, 9.80144928248768088e-01};
-    static const double weight[8] = {
-        5.06142681451881293e-02, 1.11190517226687241e-01, 1.56853322938943635e-01, 1.81341891689180995e-01,
-        1.81341891689180995e-01, 1.56853322938943635e-01, 1.11190517226687241e-01, 5.06142681451881293e-02};
-    const double theta8 = 0.3666532675959788;
-
     if (!ga__mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
     ga__mat4_lu f;
@@ -251,183 +506,11 @@ ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
         return GA_OK;
     }
     int n = h ? 3 : 4;
-    double sig = 1.0; /* t holds T - sig I */
-    if (ga__schur_shifted(&a, n, 1.0, t, qm) != GA_OK) {
-        /* the form of A - I did not converge (a guard: a cluster of
-         * eigenvalues equal to rounding, 1e-4 (I + E) with E of 1e-10 and
-         * below, once did not; found by fuzz/fuzz_numeric,
-         * fuzz/regress/numeric/logm-scaled-expm-tiny-schur-fallback and
-         * logm-scaled-expm-cluster-mean-shift): the form of A - sig I,
-         * sig the mean of the diagonal, whose entries are the cluster's
-         * spread, resolved after scaling */
-        sig = 0.0;
-        for (int i = 0; i < n; i++) sig += M(a, i, i) / n;
-        if (ga__schur_shifted(&a, n, sig, t, qm) != GA_OK) {
-            /* Neither converged (the case seen: 1e-4 e^X, a cluster of
-             * three eigenvalues at 1e-4 coupled by entries of 1e-15 in a
-             * cycle, beside entries of 1e-302 and subnormals; found by
-             * fuzz_numeric, fuzz/regress/numeric/logm-scaled-expm-qr-stall).
-             * A fallback without a Schur form: inverse scaling and squaring
-             * on A itself, square roots by the Denman-Beavers iteration
-             * (Higham, "Functions of Matrices", 6.15), then the Pade step on
-             * X = A^(1/2^k) - I once ||X||_1 <= theta_8, log A = 2^k log(I + X).
-             * X is carried as X <- (Y + I)^{-1} X, not formed by
-             * subtraction, whose absolute error of a few eps made the result
-             * accurate only to about 2^k eps ||log A||; the domain (no
-             * eigenvalue on the closed negative axis) shows as a failing
-             * iteration. */
-            ga_mat4 y = a, x = ga__mat4_add_id(a, -1.0);
-            int k = 0;
-            for (; k < 64 && !(ga_mat4_norm1(x) <= theta8); k++) {
-                ga_mat4 Y = y, Z = ga_mat4_identity();
-                int it = 0;
-                for (; it < 64; it++) {
-                    ga__mat4_lu fy, fz;
-                    if (ga__mat4_lu_factor(Y, &fy) != GA_OK || ga__mat4_lu_factor(Z, &fz) != GA_OK)
-                        return GA_ERR_DOMAIN;
-                    ga_mat4 yi = ga__mat4_lu_solve(&fy, ga_mat4_identity()),
-                            zi = ga__mat4_lu_solve(&fz, ga_mat4_identity());
-                    double change = 0.0, size = 0.0;
-                    for (int e = 0; e < 16; e++) {
-                        double yn = 0.5 * (Y.m[e] + zi.m[e]);
-                        change = fmax(change, fabs(yn - Y.m[e]));
-                        size = fmax(size, fabs(yn));
-                        Y.m[e] = yn;
-                        Z.m[e] = 0.5 * (Z.m[e] + yi.m[e]);
-                    }
-                    if (!ga__mat4_isfinite(&Y) || !ga__mat4_isfinite(&Z))
-                        return GA_ERR_DOMAIN;
-                    if (change <= 4 * DBL_EPSILON * size)
-                        break;
-                }
-                if (it == 64)
-                    return GA_ERR_DOMAIN;
-                /* X <- (Y + I)^{-1} X, as Z in the Schur path: the root's
-                 * A^(1/2^k) - I without the subtraction's absolute error */
-                ga__mat4_lu fr;
-                if (ga__mat4_lu_factor(ga__mat4_add_id(Y, 1.0), &fr) != GA_OK)
-                    return GA_ERR_DOMAIN;
-                x = ga__mat4_lu_solve(&fr, x);
-                y = Y;
-            }
-            if (k == 64)
-                return GA_ERR_DOMAIN;
-            ga_mat4 l = ga__mat4_zero();
-            for (int j = 0; j < 8; j++) {
-                ga_mat4 d = x;
-                for (int i = 0; i < 16; i++) d.m[i] *= node[j];
-                if (ga__mat4_lu_factor(ga__mat4_add_id(d, 1.0), &f) != GA_OK)
-                    return GA_ERR_DOMAIN; /* a guard: rho(t X) < 0.37 */
-                ga_mat4 term = ga__mat4_lu_solve(&f, x);
-                ga__mat4_acc(&l, weight[j], &term);
-            }
-            ga__mat4_scale2(&l, k);
-            if (h)
-                M(l, 3, 0) = M(l, 3, 1) = M(l, 3, 2) = M(l, 3, 3) = 0.0;
-            if (!ga__mat4_isfinite(&l))
-                return GA_ERR_DOMAIN;
-            *out = l;
-            return GA_OK;
-        }
-    } else {
-        /* the smallest |lambda| (squared), lambda = 1 + t_ii, or for a 2x2
-         * block det(I + T_jj) */
-        double small = INFINITY;
-        for (int i = 0; i < n; i++) {
-            if (i + 1 < n && t[i + 1][i] != 0.0) {
-                double d = (1.0 + t[i][i]) * (1.0 + t[i + 1][i + 1]) - t[i][i + 1] * t[i + 1][i];
-                small = fmin(small, fabs(d));
-                i++;
-            } else
-                small = fmin(small, (1.0 + t[i][i]) * (1.0 + t[i][i]));
-        }
-        if (small < 0.25) {
-            double ts[4][4], qs[4][4];
-            memcpy(ts, t, sizeof t);
-            memcpy(qs, qm, sizeof qm);
-            if (ga__schur_shifted(&a, n, 0.0, t, qm) == GA_OK)
-                sig = 0.0;
-            else { /* a guard, as above: keep the form of A - I */
-                memcpy(t, ts, sizeof t);
-                memcpy(qm, qs, sizeof qm);
-            }
-        }
-    }
-    /* Q brought back to orthogonal by one Newton-Schulz step
-     * Q <- Q - Q (Q^T Q - I) / 2, and T recomputed from it as
-     * Q^T (A - sig I) Q on and above the block diagonal. The rounding of a
-     * few dozen reflector updates leaves Q^T Q - I and the residual
-     * Q T Q^T - (A - sig I) near 10 to 30u, which Q log(T) Q^T carries into
-     * the log; after this step both are a few u (measured against the
-     * 80-digit logs of scipy's 4x4 matrices: 15.6u to 2.5u, 10.8u to 1.8u,
-     * 11.4u to 1.3u). The recomputed T is kept only where it keeps every
-     * real eigenvalue's sign and every 2x2 block complex, so that the
-     * domain decision below sees the QR's eigenvalue structure. The
-     * products (A - sig I) Q and Q^T ((A - sig I) Q) are summed by dot2,
-     * the first kept as an unevaluated sum bq + bql: T then carries one
-     * rounding per entry instead of one per product and addition (scipy's
-     * random 4x4 with eigenvalues 1.15, 0.54, -0.63 +- 1.23i, whose log
-     * doubles the form's error: 8.1u to 6.1u, scipy's 6.9u). */
-    {
-        double qe[4][4], qn[4][4], bq[4][4], bql[4][4], tn[4][4];
-        for (int i = 0; i < n; i++)
-            for (int j = 0; j < n; j++) {
-                double acc = 0.0;
-                for (int r = 0; r < n; r++) acc += qm[r][i] * qm[r][j];
-                qe[i][j] = acc - (i == j);
-            }
-        memcpy(qn, qm, sizeof qn);
-        for (int i = 0; i < n; i++)
-            for (int j = 0; j < n; j++) {
-                double acc = 0.0;
-                for (int r = 0; r < n; r++) acc += qm[i][r] * qe[r][j];
-                qn[i][j] = qm[i][j] - 0.5 * acc;
-            }
-        /* (A - sig I) Q, scaled up by a power of 2 when small (tiny entries
-         * stay normal; undone below, exactly); never down, which would
-         * round a subnormal entry beside large ones (fuzz/regress/numeric/
-         * logm-diagonal-subnormal). Large entries whose products overflow
-         * keep the QR's T (keep below). */
-        double bm[4][4], bmax = 0.0;
-        for (int i = 0; i < n; i++)
-            for (int j = 0; j < n; j++) {
-                bm[i][j] = M(a, i, j) - (i == j ? sig : 0.0);
-                bmax = fmax(bmax, fabs(bm[i][j]));
-            }
-        int es = bmax > 0.0 && bmax < 1.0 ? ilogb(bmax) : 0;
-        for (int i = 0; i < n; i++)
-            for (int j = 0; j < n; j++) {
-                ga__eft_dot2 acc = {0.0, 0.0};
-                for (int r = 0; r < n; r++) ga__eft_dot2_add(&acc, ldexp(bm[i][r], -es), qn[r][j]);
-                bq[i][j] = acc.s + acc.c;
-                bql[i][j] = acc.c - (bq[i][j] - acc.s);
-            }
-        memcpy(tn, t, sizeof tn);
-        int keep = 1;
-        for (int i = 0; i < n; i++)
-            for (int j = i > 0 && t[i][i - 1] != 0.0 ? i - 1 : i; j < n; j++) {
-                ga__eft_dot2 acc = {0.0, 0.0};
-                for (int r = 0; r < n; r++) {
-                    ga__eft_dot2_add(&acc, qn[r][i], bq[r][j]);
-                    acc.c += qn[r][i] * bql[r][j];
-                }
-                tn[i][j] = ldexp(acc.s + acc.c, es);
-            }
-        for (int i = 0; i < n && keep; i++) {
-            if (i + 1 < n && t[i + 1][i] != 0.0) {
-                double h0 = 0.5 * (tn[i][i] - tn[i + 1][i + 1]);
-                keep = tn[i + 1][i] != 0.0 && h0 * h0 + tn[i][i + 1] * tn[i + 1][i] < 0.0;
-                i++;
-            } else
-                keep = (sig + tn[i][i] > 0.0) == (sig + t[i][i] > 0.0) && (sig + tn[i][i] != 0.0);
-        }
-        for (int i = 0; i < n; i++)
-            for (int j = 0; j < n; j++) keep &= isfinite(tn[i][j]);
-        if (keep) {
-            memcpy(t, tn, sizeof tn);
-            memcpy(qm, qn, sizeof qn);
-        }
-    }
+    double sig; /* t holds T - sig I */
+    if (logm_schur(&a, n, t, qm, &sig) != GA_OK)
+        return logm_denman_beavers(a, h, out);
+    /* Q and T with less of the QR's rounding, which log(T) would carry */
+    ga__schur_refine(&a, n, sig, t, qm);
     const int shifted = sig == 1.0;
     if (h)
         for (int i = 0; i < 3; i++)
@@ -436,122 +519,17 @@ ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
     if (h)
         t[3][3] = 1.0 - sig;
 
-    /* The blocks, and the domain decided from the eigenvalues: a real
-     * eigenvalue <= 0 has no real principal log (0 is caught above as
-     * singular); a complex pair always has one. lambda = sig + t_ii. */
     const double lam1 = sig;
-    int bs[4], bz[4], nb = 0;
-    for (int i = 0; i < 4; i += bz[nb - 1]) {
-        bs[nb] = i;
-        bz[nb] = (i < 3 && t[i + 1][i] != 0.0) ? 2 : 1;
-        if (bz[nb] == 1 && !(lam1 + t[i][i] > 0.0))
-            return lam1 + t[i][i] == 0.0 ? GA_ERR_SINGULAR : GA_ERR_DOMAIN;
-        if (bz[nb] == 2) {
-            /* a complex pair re +- iw whose imaginary part is within the
-             * rounding of the Schur form (GA_MAT4_LOGM_AXIS_TOL |lambda|)
-             * of the negative real axis: the sign of w, and with it the
-             * log's, is not determined by the data */
-            double am, w, nm[2][2];
-            blk2_parts(t, i, &am, &w, nm);
-            double re = lam1 + am;
-            if (re < 0.0 && w <= GA_MAT4_LOGM_AXIS_TOL * hypot(re, w))
-                return GA_ERR_DOMAIN;
-        }
-        nb++;
-    }
-
-    /* Inverse scaling and squaring on T: T_k = T^(1/2^k) and Z = T_k - I,
-     * carried as Z <- (T_{k+1} + I)^{-1} Z (the factors commute) rather than
-     * formed by subtraction, which would round away small parts (a scaling
-     * 1 + 1e-10 under a translation of 1e6; this is the accurate T_k - I of
-     * Al-Mohy & Higham 2012, sec. 5, for the whole matrix). Square roots
-     * are taken while the spectral radius of Z exceeds theta_8, then while
-     * alpha_3(Z) and alpha_4(Z) both do. */
-    double tk[4][4], z[4][4];
-    memcpy(tk, t, sizeof t);
-    memcpy(z, t, sizeof t);
-    for (int i = 0; i < 4; i++) {
-        tk[i][i] += lam1;      /* T */
-        z[i][i] -= 1.0 - lam1; /* T - I */
-    }
-    int k = 0;
-    for (;; k++) {
-        double rho = 0.0;
-        for (int b = 0; b < nb; b++) {
-            int p = bs[b];
-            rho = fmax(rho, bz[b] == 1 ? fabs(z[p][p])
-                                       : sqrt(fabs(z[p][p] * z[p + 1][p + 1] - z[p][p + 1] * z[p + 1][p])));
-        }
-        if (rho <= theta8) {
-            ga_mat4 zm = mat4_of(z);
-            if (ga_mat4_norm1(zm) <= theta8)
-                break;
-            ga_mat4 z2 = ga_mat4_mul(zm, zm), z3 = ga_mat4_mul(z2, zm), z4 = ga_mat4_mul(z2, z2),
-                    z5 = ga_mat4_mul(z4, zm);
-            double d3 = cbrt(ga_mat4_norm1(z3)), d4 = pow(ga_mat4_norm1(z4), 0.25),
-                   d5 = pow(ga_mat4_norm1(z5), 0.2);
-            if (fmin(fmax(d3, d4), fmax(d4, d5)) <= theta8)
-                break;
-        }
-        /* Each root at least halves the argument of a complex eigenvalue
-         * and the log of a real one; with ||log T|| <= 4 * 1100 ... the
-         * count is bounded by the exponent range: 1100 roots always do. */
-        if (k == 1100)
-            return GA_ERR_DOMAIN;
-        double r[4][4];
-        qt_sqrt(tk, bs, bz, nb, r);
-        ga_mat4 rp = mat4_of(r);
-        if (ga__mat4_lu_factor(ga__mat4_add_id(rp, 1.0), &f) != GA_OK)
-            return GA_ERR_DOMAIN; /* a guard: R + I has eigenvalues with real part > 1 */
-        ga_mat4 zn = ga__mat4_lu_solve(&f, mat4_of(z));
-        memcpy(z, zn.m, sizeof z);
-        memcpy(tk, r, sizeof r);
-    }
-    /* Z's blocks above the block diagonal are T_k's own (I has none
-     * there), as the square-root recurrence gave them: carried through the
-     * solves above they gather the rounding of each (the corner of the
-     * peer matrix with eigenvalues 0.30-0.32 and off-diagonals 3e5:
-     * 8.5u, against 0 from T_k). The diagonal blocks keep the carried
-     * form, whose small parts subtraction would lose. */
-    for (int b = 0; b < nb; b++)
-        for (int b2 = b + 1; b2 < nb; b2++)
-            for (int u = 0; u < bz[b]; u++)
-                for (int v = 0; v < bz[b2]; v++) z[bs[b] + u][bs[b2] + v] = tk[bs[b] + u][bs[b2] + v];
-    ga_mat4 zm = mat4_of(z), l = ga__mat4_zero();
-    for (int j = 0; j < 8; j++) {
-        ga_mat4 d = zm;
-        for (int i = 0; i < 16; i++) d.m[i] *= node[j];
-        if (ga__mat4_lu_factor(ga__mat4_add_id(d, 1.0), &f) != GA_OK)
-            return GA_ERR_DOMAIN; /* a guard: rho(t Z) < 0.37 */
-        ga_mat4 term = ga__mat4_lu_solve(&f, zm);
-        ga__mat4_acc(&l, weight[j], &term);
-    }
+    int bs[4], bz[4], nb;
+    int st = logm_blocks(t, lam1, bs, bz, &nb);
+    if (st != GA_OK)
+        return st;
+    ga_mat4 zm, l;
+    int k;
+    if (logm_roots(t, lam1, bs, bz, nb, &zm, &k) != GA_OK || logm_pade8(&zm, &l) != GA_OK)
+        return GA_ERR_DOMAIN;
     ga__mat4_scale2(&l, k);
-
-    /* The diagonal blocks of log T exactly from T's own (Al-Mohy & Higham
-     * 2012, sec. 5: recomputing them removes the error of the roots and of
-     * the Pade step where it matters most): log t_ii, or for a complex pair
-     * a +- iw, log|.| I + (arg/w) N with arg = atan2(w, a) in (0, pi). The
-     * superdiagonal entry between two adjacent real eigenvalues is t_ij
-     * times their divided difference. */
-    for (int b = 0; b < nb; b++) {
-        int p = bs[b];
-        if (bz[b] == 1) {
-            double x = lam1 + t[p][p], lx = shifted ? log1p(t[p][p]) : log(x);
-            M(l, p, p) = lx;
-            if (b + 1 < nb && bz[b + 1] == 1) {
-                double y = lam1 + t[p + 1][p + 1], ly = shifted ? log1p(t[p + 1][p + 1]) : log(y);
-                M(l, p, p + 1) = log_divdiff(t[p][p + 1], x, y, lx, ly, t[p + 1][p + 1] - t[p][p]);
-            }
-        } else {
-            double aa, w, nm[2][2];
-            blk2_parts(t, p, &aa, &w, nm);
-            double re = lam1 + aa, lr = shifted ? log_abs(aa, w) : log(hypot(re, w));
-            double c = w > 0.0 ? atan2(w, re) / w : 1.0 / re;
-            for (int u = 0; u < 2; u++)
-                for (int v = 0; v < 2; v++) M(l, p + u, p + v) = (u == v ? lr : 0.0) + c * nm[u][v];
-        }
-    }
+    logm_fix_blocks(&l, t, lam1, shifted, bs, bz, nb);
     if (h) /* the last row of log [B t; 0 1] is 0, exactly */
         M(l, 3, 0) = M(l, 3, 1) = M(l, 3, 2) = M(l, 3, 3) = 0.0;
 

@@ -13,5 +13,8 @@
  * eigenvalues, 2x2 blocks: complex pairs), qm = Q (the identity outside the
  * block). GA_ERR_DOMAIN if QR does not converge (a guard). */
 int ga__schur_shifted(const ga_mat4 *a, int n, double sig, double t[4][4], double qm[4][4]);
+/* Q and T refined in place by one Newton-Schulz step where that keeps the
+ * eigenvalue structure (see schur.c) */
+void ga__schur_refine(const ga_mat4 *a, int n, double sig, double t[4][4], double qm[4][4]);
 
 #endif
