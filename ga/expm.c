@@ -202,9 +202,7 @@ static void expm_fix_blocks(ga_mat4 *x, const ga_mat4 *a, int k, int plain, cons
             /* m = (b11 + b22)/2 + dm, hd = (b11 - b22)/2 + dhd and
              * q = hd^2 + b12 b21 + dq with their rounding errors carried
              * (two-sums, fma), and mu = sqrt(q) + dmu: each error enters
-             * the result once, to first order, instead of being amplified
-             * (scipy's 2x2 [1.47 5.86; -1.28 3.40], exp through the angle
-             * nu = 2.56: 4.5u without, 1.1u with) */
+             * the result once, to first order, instead of being amplified */
             double m, dm, hd, dhd;
             ga__eft_two_sum(b11, b22, &m, &dm);
             ga__eft_two_sum(b11, -b22, &hd, &dhd);
@@ -250,9 +248,7 @@ static void expm_fix_blocks(ga_mat4 *x, const ga_mat4 *a, int k, int plain, cons
  * ||E|| <= 2^-53 ||A|| (Higham 2005, Table 2.3) for m <= 9, and
  * theta_13 = 4.25 of Al-Mohy & Higham 2009, Table 3.1 (and scipy), not
  * Higham 2005's 5.37: near 5.37 the rounding in evaluating r_13 and
- * solving with q_13 dominates the truncation error (scipy's
- * test_burkardt_12 and three other dense 3x3 and 4x4 inputs lost 3 to 5
- * times scipy's accuracy with 5.37, one squaring fewer). b: the coefficients of the Pade numerator
+ * solving with q_13 dominates the truncation error. b: the coefficients of the Pade numerator
  * p_m(x) = sum b_j x^j, scaled to integers, with q_m(x) = p_m(-x).
  * log2c: log2 of c_{2m+1} = (m!)^2 / ((2m)! (2m+1)!). */
 static const double theta[5] = {1.495585217958292e-2, 2.539398330063230e-1, 9.504178996162932e-1,
@@ -402,9 +398,8 @@ static int expm_rm(const ga_mat4 *a, const ga_mat4 *u, const ga_mat4 *v, int h, 
     /* X = r_m - I = 2 (V - U)^{-1} U: no cancellation for r_m near I. But
      * for a contracting r_m (a diagonal entry below 3/4, where the squaring
      * below goes plain at once) r_m itself, (V - U)^{-1} (V + U), as scipy
-     * computes it: I + X rounds r_m's small entries to eps absolute
-     * (scipy's test_burkardt_12, e^-1, e^-2, e^-20 through six squarings:
-     * 2.8e-13 against 1.0e-14, scipy 7.1e-14). Predicted from the diagonal
+     * computes it: I + X rounds r_m's small entries to eps absolute, and
+     * the squarings amplify that. Predicted from the diagonal
      * of 2^-s A (one solve, not two, for most inputs), and checked on X. */
     int plain = a->m[0] < -0.25 || a->m[5] < -0.25 || a->m[10] < -0.25 || a->m[15] < -0.25;
     ga_mat4 rhs = *u;
@@ -488,12 +483,10 @@ ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
     int h = M(a, 3, 0) == 0.0 && M(a, 3, 1) == 0.0 && M(a, 3, 2) == 0.0 && M(a, 3, 3) == 0.0;
     /* exp(A) = e^mu exp(A - mu I): with mu = trace(A)/4 > 0 where that
      * lowers ||A||_1 and ||A||_1 > 1 (Higham, Functions of Matrices, 2008,
-     * sec. 10.7.3; below 1 no squaring is saved and e^mu only rounds:
-     * 1u more on scipy's small 4x4). scipy's shifted test matrices B + cI, c = 2.3 to 5.8:
-     * 2.0e-15 to 3.4e-15 unshifted (one or two more squarings of a
-     * growing r_m) against 1.7e-16 to 2.4e-16. Not for mu < 0, where the
-     * squarings of a contracting r_m lose nothing and e^mu alone would
-     * round (scipy's matrices lost up to 3x); not for a homogeneous
+     * sec. 10.7.3; below 1 no squaring is saved and e^mu only rounds):
+     * unshifted, a growing r_m needs one or two more squarings, each of
+     * which rounds. Not for mu < 0, where the squarings of a contracting
+     * r_m lose nothing and e^mu alone would round; not for a homogeneous
      * generator, whose last row stays 0. */
     double mu = 0.0;
     if (!h) {

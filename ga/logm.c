@@ -125,8 +125,7 @@ static ga_mat4 mat4_of(double t[4][4])
  * divided difference is 2 atanh(z)/(y - x), z = (y - x)/(y + x) (Higham,
  * Functions of Matrices, 2008, eq. 11.28, with no unwinding term for real
  * positive x, y). t is multiplied in before the division: the divided
- * difference alone overflows for subnormal eigenvalues (1/x for x = 1e-312;
- * found by fuzz/fuzz_numeric, fuzz/regress/numeric/logm-diagonal-subnormal-pair). */
+ * difference alone overflows for subnormal eigenvalues (1/x for x = 1e-312). */
 static double log_divdiff(double t, double x, double y, double lx, double ly, double d)
 {
     if (t == 0.0)
@@ -218,10 +217,9 @@ static int logm_pade8(const ga_mat4 *x, ga_mat4 *lout)
 
 /* ---- the steps of ga_mat4_logm ------------------------------------------ */
 
-/* log A when neither Schur form converged (the case seen: 1e-4 e^X, a cluster of
+/* log A when neither Schur form converged (e.g. 1e-4 e^X: a cluster of
  * three eigenvalues at 1e-4 coupled by entries of 1e-15 in a
- * cycle, beside entries of 1e-302 and subnormals; found by
- * fuzz_numeric, fuzz/regress/numeric/logm-scaled-expm-qr-stall).
+ * cycle, beside entries of 1e-302 and subnormals).
  * A fallback without a Schur form: inverse scaling and squaring
  * on A itself, square roots by the Denman-Beavers iteration
  * (Higham, "Functions of Matrices", 6.15), then the Pade step on
@@ -290,10 +288,8 @@ static int logm_schur(const ga_mat4 *a, int n, double t[4][4], double qm[4][4], 
     double sig = 1.0;
     if (ga__schur_shifted(a, n, 1.0, t, qm) != GA_OK) {
         /* the form of A - I did not converge (a guard: a cluster of
-         * eigenvalues equal to rounding, 1e-4 (I + E) with E of 1e-10 and
-         * below, once did not; found by fuzz/fuzz_numeric,
-         * fuzz/regress/numeric/logm-scaled-expm-tiny-schur-fallback and
-         * logm-scaled-expm-cluster-mean-shift): the form of A - sig I,
+         * eigenvalues equal to rounding, such as 1e-4 (I + E) with E of
+         * 1e-10 and below): the form of A - sig I,
          * sig the mean of the diagonal, whose entries are the cluster's
          * spread, resolved after scaling */
         sig = 0.0;
@@ -409,9 +405,7 @@ static int logm_roots(double t[4][4], double lam1, const int *bs, const int *bz,
     }
     /* Z's blocks above the block diagonal are T_k's own (I has none
      * there), as the square-root recurrence gave them: carried through the
-     * solves above they gather the rounding of each (the corner of the
-     * peer matrix with eigenvalues 0.30-0.32 and off-diagonals 3e5:
-     * 8.5u, against 0 from T_k). The diagonal blocks keep the carried
+     * solves above they gather the rounding of each. The diagonal blocks keep the carried
      * form, whose small parts subtraction would lose. */
     for (int b = 0; b < nb; b++)
         for (int b2 = b + 1; b2 < nb; b2++)
@@ -461,9 +455,8 @@ ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
          * the end) is an odd number of negative real eigenvalues (a complex
          * pair gives |l|^2 > 0): no real logarithm at all, GA_ERR_DOMAIN, as
          * for a well-conditioned A below; only det >= 0 is GA_ERR_SINGULAR
-         * (an ill-conditioned block with eigenvalues 5.1e15, 38, -4.5, a
-         * lihao2 factor on affine keys, met the pivot test first and was
-         * GA_ERR_SINGULAR) */
+         * (an ill-conditioned A with a negative eigenvalue can fail the
+         * pivot test before its Schur form is seen) */
         return lu4_det_sign(a) < 0 ? GA_ERR_DOMAIN : GA_ERR_SINGULAR;
     }
 
@@ -497,8 +490,7 @@ ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
             return GA_ERR_DOMAIN;
         ga_twist xi = ga__se3_log_core(&a);
         /* v = V^{-1} t overflows for a translation near DBL_MAX, as in
-           ga_se3_log (found by fuzz/fuzz_numeric;
-           fuzz/regress/numeric/logm-rigid-translation-overflow) */
+           ga_se3_log */
         ga_mat4 l = ga_twist_hat(xi);
         if (!ga__mat4_isfinite(&l))
             return GA_ERR_DOMAIN;

@@ -13,15 +13,8 @@
 
 #define M GA__M
 
-/* The real Schur form of the leading n x n block of t (n = 3 or 4): t is
- * overwritten by Q^T t Q, upper quasi-triangular with 1x1 blocks (real
- * eigenvalues) and 2x2 blocks (complex pairs), and q by q Q. Householder
- * reduction to Hessenberg form, then Francis double-shift QR steps with
- * deflation (Golub & Van Loan, Matrix Computations, Alg. 7.4.2 and 7.5.1).
- * A 2x2 block with real eigenvalues is split by one rotation whose first
- * column is an eigenvector. GA_ERR_DOMAIN if QR does not converge (a guard:
- * 300 steps per deflation, LAPACK dlahqr's 30 max(10, n); a nearly
- * defective cluster, e^X - I for a nilpotent X, needed more than 30). */
+/* t <- P t P and q <- q P for the reflector P = I - beta v v^T acting on
+ * rows and columns k..k+len-1 (t's leading n x n block) */
 static void refl_apply(double t[4][4], double q[4][4], int n, int k, int len, const double v[3], double beta)
 {
     for (int j = 0; j < n; j++) { /* rows k..k+len-1, from the left */
@@ -60,11 +53,10 @@ static double refl_make(const double *x, int len, double v[3])
     v[0] += copysign(nrm, v[0]);
     /* v^T v to within one rounding (Dekker's exact squares and a
      * compensated sum), so that beta v^T v = 2 to about u and
-     * I - beta v v^T is orthogonal to about 2u. Rounded plainly it was off
-     * by up to 9.5u (measured over random x), and the Schur vectors of a
-     * few dozen reflectors lost 10 to 20u of orthogonality, which
-     * Q log(T) Q^T carries into the log: 4.8e-15 against 9.6e-16 on scipy's
-     * near-identity 3x3 (its log has entries 1e-3; A - I is exact). */
+     * I - beta v v^T is orthogonal to about 2u. Rounded plainly, v^T v is
+     * off by several u, the Schur vectors of a few dozen reflectors lose
+     * that many times more orthogonality, and Q log(T) Q^T carries it into
+     * the log. */
     double hi = 0.0, lo = 0.0;
     for (int i = 0; i < len; i++) {
         double c = 134217729.0 * v[i], vh = c - (c - v[i]), vl = v[i] - vh;    /* v = vh + vl, 26 bits each */
@@ -94,6 +86,15 @@ static int schur_negligible(double t[4][4], int l)
     return ba * (ab / s) <= fmax(DBL_MIN, DBL_EPSILON * (bb * (aa / s)));
 }
 
+/* The real Schur form of the leading n x n block of t (n = 3 or 4): t is
+ * overwritten by Q^T t Q, upper quasi-triangular with 1x1 blocks (real
+ * eigenvalues) and 2x2 blocks (complex pairs), and q by q Q. Householder
+ * reduction to Hessenberg form, then Francis double-shift QR steps with
+ * deflation (Golub & Van Loan, Matrix Computations, Alg. 7.4.2 and 7.5.1).
+ * A 2x2 block with real eigenvalues is split by one rotation whose first
+ * column is an eigenvector. GA_ERR_DOMAIN if QR does not converge (a guard:
+ * 300 steps per deflation, LAPACK dlahqr's 30 max(10, n); a nearly
+ * defective cluster, e^X - I for a nilpotent X, needed more than 30). */
 static int schur_real(double t[4][4], double q[4][4], int n)
 {
     for (int k = 0; k + 2 < n; k++) { /* Hessenberg */
@@ -108,8 +109,7 @@ static int schur_real(double t[4][4], double q[4][4], int n)
      * eps ||T||_max is taken as 0 too: a normwise backward-stable perturbation.
      * A strongly graded window (an entry 1 beside entries near 1e-298, whose
      * eigenvalues near 1e-149 have squares that underflow) otherwise gives a
-     * shift column of 0 and no progress (found by fuzz/fuzz_numeric;
-     * fuzz/regress/numeric/logm-expm-graded-tiny replays it). */
+     * shift column of 0 and no progress. */
     double tmax = 0.0;
     for (int i = 0; i < n; i++)
         for (int j = 0; j < n; j++) tmax = fmax(tmax, fabs(t[i][j]));
@@ -143,15 +143,13 @@ static int schur_real(double t[4][4], double q[4][4], int n)
             iter = 0;
             continue;
         }
-        if (++iter >
-            300) /* found by fuzz/fuzz_numeric at 30; fuzz/regress/numeric/logm-expm-nilpotent-slow-qr */
+        if (++iter > 300) /* no convergence: the guard above */
             return GA_ERR_DOMAIN;
         /* The first column of (H - s1 I)(H - s2 I), s1 + s2 = s, s1 s2 = p,
          * from the active window divided by its largest entry g: only its
          * direction matters, and unscaled, a window of entries near 1e-298
          * (eigenvalues of A - I that small) would square to 0 and the
-         * iteration would stall (found by fuzz/fuzz_numeric;
-         * fuzz/regress/numeric/logm-expm-tiny-entries replays it). */
+         * iteration would stall. */
         int m = hi;
         double g = 0.0;
         for (int i = l; i <= hi; i++)
@@ -196,9 +194,8 @@ static int schur_real(double t[4][4], double q[4][4], int n)
  * schur_real, t then holding T - sig I), scaled by a power of 2 so that QR's
  * products neither underflow nor overflow: a rotation of 1e-300 rad has
  * A - I of 1e-300. Not an upper triangular t, which is its own Schur form:
- * scaling down rounds subnormal entries (a diagonal 2e-322 beside 2 lost a
- * bit; found by fuzz/fuzz_numeric, fuzz/regress/numeric/logm-diagonal-
- * subnormal). */
+ * scaling down rounds subnormal entries (a diagonal 2e-322 beside 2 would
+ * lose a bit). */
 int ga__schur_shifted(const ga_mat4 *a, int n, double sig, double t[4][4], double qm[4][4])
 {
     memcpy(t, a->m, 16 * sizeof(double));
@@ -230,17 +227,14 @@ int ga__schur_shifted(const ga_mat4 *a, int n, double sig, double t[4][4], doubl
  * Q <- Q - Q (Q^T Q - I) / 2, and T recomputed from it as
  * Q^T (A - sig I) Q on and above the block diagonal. The rounding of a
  * few dozen reflector updates leaves Q^T Q - I and the residual
- * Q T Q^T - (A - sig I) near 10 to 30u, which Q log(T) Q^T carries into
- * the log; after this step both are a few u (measured against the
- * 80-digit logs of scipy's 4x4 matrices: 15.6u to 2.5u, 10.8u to 1.8u,
- * 11.4u to 1.3u). The recomputed T is kept only where it keeps every
+ * Q T Q^T - (A - sig I) at many u, which Q log(T) Q^T carries into the
+ * log; after this step both are a few u. The recomputed T is kept only
+ * where it keeps every
  * real eigenvalue's sign and every 2x2 block complex, so that the
  * domain decision of ga_mat4_logm sees the QR's eigenvalue structure. The
  * products (A - sig I) Q and Q^T ((A - sig I) Q) are summed by dot2,
  * the first kept as an unevaluated sum bq + bql: T then carries one
- * rounding per entry instead of one per product and addition (scipy's
- * random 4x4 with eigenvalues 1.15, 0.54, -0.63 +- 1.23i, whose log
- * doubles the form's error: 8.1u to 6.1u, scipy's 6.9u). */
+ * rounding per entry instead of one per product and addition. */
 void ga__schur_refine(const ga_mat4 *a, int n, double sig, double t[4][4], double qm[4][4])
 {
     double qe[4][4], qn[4][4], bq[4][4], bql[4][4], tn[4][4];
@@ -259,8 +253,7 @@ void ga__schur_refine(const ga_mat4 *a, int n, double sig, double t[4][4], doubl
         }
     /* (A - sig I) Q, scaled up by a power of 2 when small (tiny entries
      * stay normal; undone below, exactly); never down, which would
-     * round a subnormal entry beside large ones (fuzz/regress/numeric/
-     * logm-diagonal-subnormal). Large entries whose products overflow
+     * round a subnormal entry beside large ones. Large entries whose products overflow
      * keep the QR's T (keep below). */
     double bm[4][4], bmax = 0.0;
     for (int i = 0; i < n; i++)
