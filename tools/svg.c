@@ -267,18 +267,20 @@ static void legend_line(FILE *f, double *x, double y, const char *colour, const 
     *x += 27 + 7.0 * (double)strlen(label) + 16;
 }
 
-int svg_write(const char *file, const svg_picture *pic)
+/* The canvas (view, frame length, scale and origin) that fits everything
+ * drawn, and the ends a, b of the screw axis's segment; returns the
+ * picture's height. */
+static int layout(const svg_picture *pic, canvas *c, ga_vec3 *axis_a, ga_vec3 *axis_b)
 {
-    canvas c = {0};
-    view_basis(pic->view, &c.right, &c.up, &c.out);
+    view_basis(pic->view, &c->right, &c->up, &c->out);
     ga_vec3 centre;
     double diag;
     scene_extent(pic, &centre, &diag);
-    c.frame_len = diag > 0.0 ? 0.07 * diag : 1.0;
+    c->frame_len = diag > 0.0 ? 0.07 * diag : 1.0;
 
     /* the screw axis: the segment of it alongside the frame origins, and a
      * little more at each end */
-    ga_vec3 axis_a = {0}, axis_b = {0};
+    *axis_a = *axis_b = (ga_vec3){0};
     if (pic->has_axis) {
         double lo = INFINITY, hi = -INFINITY;
         for (size_t p = 0; p <= pic->npaths; p++) {
@@ -290,29 +292,149 @@ int svg_write(const char *file, const svg_picture *pic)
                 hi = fmax(hi, s);
             }
         }
-        double margin = 0.15 * diag + c.frame_len;
-        axis_a = axpy(lo - margin, pic->axis_dir, pic->axis_point);
-        axis_b = axpy(hi + margin, pic->axis_dir, pic->axis_point);
+        double margin = 0.15 * diag + c->frame_len;
+        *axis_a = axpy(lo - margin, pic->axis_dir, pic->axis_point);
+        *axis_b = axpy(hi + margin, pic->axis_dir, pic->axis_point);
     }
 
     /* fit everything drawn into the plot area, the same scale both ways */
     box2 b = {{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
-    for (size_t k = 0; k < pic->nkeys; k++) box_add_frame(&b, &c, &pic->key[k]);
+    for (size_t k = 0; k < pic->nkeys; k++) box_add_frame(&b, c, &pic->key[k]);
     for (size_t p = 0; p < pic->npaths; p++)
-        for (size_t i = 0; i < pic->path[p].n; i++) box_add_frame(&b, &c, &pic->path[p].sample[i]);
+        for (size_t i = 0; i < pic->path[p].n; i++) box_add_frame(&b, c, &pic->path[p].sample[i]);
     if (pic->has_axis) {
-        box_add(&b, &c, axis_a);
-        box_add(&b, &c, axis_b);
+        box_add(&b, c, *axis_a);
+        box_add(&b, c, *axis_b);
     }
     if (!(b.lo[0] <= b.hi[0])) /* nothing to draw */
         b = (box2){{-1, -1}, {1, 1}};
     double bw = fmax(b.hi[0] - b.lo[0], 1e-300), bh = fmax(b.hi[1] - b.lo[1], 1e-300);
     double plot_w = WIDTH - 2 * MARGIN;
     double plot_h = fmin(fmax(plot_w * bh / bw, 240.0), 640.0);
-    c.scale = fmin(plot_w / bw, plot_h / bh);
-    c.x0 = WIDTH / 2.0 - c.scale * (b.lo[0] + b.hi[0]) / 2;
-    c.y0 = TITLE_H + MARGIN / 2.0 + plot_h / 2 + c.scale * (b.lo[1] + b.hi[1]) / 2;
-    int height = (int)(TITLE_H + MARGIN + plot_h + LEGEND_H);
+    c->scale = fmin(plot_w / bw, plot_h / bh);
+    c->x0 = WIDTH / 2.0 - c->scale * (b.lo[0] + b.hi[0]) / 2;
+    c->y0 = TITLE_H + MARGIN / 2.0 + plot_h / 2 + c->scale * (b.lo[1] + b.hi[1]) / 2;
+    return (int)(TITLE_H + MARGIN + plot_h + LEGEND_H);
+}
+
+/* The trajectories, then the frames along them. */
+static void draw_paths(const canvas *c, const svg_picture *pic)
+{
+    FILE *f = c->f;
+    for (size_t p = 0; p < pic->npaths; p++) {
+        const svg_path *pa = &pic->path[p];
+        fprintf(f,
+                "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" "
+                "stroke-linejoin=\"round\" points=\"",
+                pa->colour);
+        for (size_t i = 0; i < pa->n; i++) {
+            double x, y;
+            point_xy(c, origin_of(&pa->sample[i]), &x, &y);
+            if (i)
+                fputc(i % 8 ? ' ' : '\n', f);
+            num(f, x);
+            fputc(',', f);
+            num(f, y);
+        }
+        fputs("\"/>\n", f);
+    }
+    fputs("<g stroke-width=\"1.3\" stroke-linecap=\"round\">\n", f);
+    for (size_t p = 0; p < pic->npaths; p++) {
+        const svg_path *pa = &pic->path[p];
+        if (pa->n < 2 || pa->frames <= 0)
+            continue;
+        size_t last = (size_t)-1;
+        for (int k = 0; k <= pa->frames; k++) {
+            size_t i = frame_index(pa->n, pa->frames, k);
+            if (i != last)
+                frame(c, &pa->sample[i]);
+            last = i;
+        }
+    }
+    fputs("</g>\n", f);
+}
+
+/* The keys, on top: up to KEYS_SHOWN keys, bold frames and labels; more:
+ * dots, and labels at the first and last. */
+static void draw_keys(const canvas *c, const svg_picture *pic)
+{
+    FILE *f = c->f;
+    int few = pic->nkeys <= KEYS_SHOWN;
+    fprintf(f, "<g stroke-width=\"%s\" stroke-linecap=\"round\">\n", few ? "2.6" : "1.3");
+    for (size_t k = 0; k < pic->nkeys; k++) frame(c, &pic->key[k]);
+    fputs("</g>\n", f);
+    for (size_t k = 0; k < pic->nkeys; k++) {
+        double x, y;
+        point_xy(c, origin_of(&pic->key[k]), &x, &y);
+        fputs("<circle cx=\"", f);
+        num(f, x);
+        fputs("\" cy=\"", f);
+        num(f, y);
+        fprintf(f, "\" r=\"3.5\" fill=\"%s\"/>\n", key_colour);
+        if (pic->key_t && (few || k == 0 || k + 1 == pic->nkeys)) {
+            fputs("<text x=\"", f);
+            num(f, x + 7);
+            fputs("\" y=\"", f);
+            num(f, y - 7);
+            char tb[GA_DOUBLE_TEXT_MAX]; /* the shortest text of the key's time: t=1305031102.1758,
+                                            not 1.30503e+09 */
+            ga_double_format(pic->key_t[k], tb);
+            fprintf(f, "\">t=%s</text>\n", tb);
+        }
+    }
+}
+
+/* The legend, and the view's world axes in the bottom right corner. */
+static void draw_legend(const canvas *c, const svg_picture *pic, int height)
+{
+    FILE *f = c->f;
+    double lx = 12, ly = height - LEGEND_H / 2.0;
+    for (size_t p = 0; p < pic->npaths; p++)
+        if (pic->path[p].label)
+            legend_line(f, &lx, ly, pic->path[p].colour, "", pic->path[p].label);
+    if (pic->has_axis)
+        legend_line(f, &lx, ly, screw_colour, " stroke-dasharray=\"8 5\"", "screw axis");
+    static const char *const names[3] = {"x", "y", "z"};
+    fputs("<text x=\"", f);
+    num(f, lx);
+    fputs("\" y=\"", f);
+    num(f, ly + 4);
+    fputs("\">frames:</text>\n", f);
+    lx += 58;
+    for (int j = 0; j < 3; j++) legend_line(f, &lx, ly, axis_colour[j], "", names[j]);
+    double tx = WIDTH - 70, ty = height - LEGEND_H / 2.0;
+    fputs("<g stroke=\"#555555\" stroke-width=\"1.2\">\n", f);
+    for (int j = 0; j < 3; j++) {
+        ga_vec3 e = vec(j == 0, j == 1, j == 2);
+        double dx = 16 * dot(c->right, e), dy = -16 * dot(c->up, e);
+        if (dx * dx + dy * dy < 4)
+            continue; /* seen end on */
+        line(f, tx, ty, tx + dx, ty + dy, "#555555");
+    }
+    fputs("</g>\n", f);
+    for (int j = 0; j < 3; j++) {
+        ga_vec3 e = vec(j == 0, j == 1, j == 2);
+        double dx = 16 * dot(c->right, e), dy = -16 * dot(c->up, e);
+        if (dx * dx + dy * dy < 4)
+            continue;
+        fputs("<text text-anchor=\"middle\" x=\"", f);
+        num(f, tx + 1.5 * dx);
+        fputs("\" y=\"", f);
+        num(f, ty + 1.5 * dy + 4);
+        fprintf(f, "\" fill=\"#555555\">%s</text>\n", names[j]);
+    }
+    fputs("<text text-anchor=\"end\" x=\"", f);
+    num(f, tx - 24);
+    fputs("\" y=\"", f);
+    num(f, ty + 4);
+    fprintf(f, "\" fill=\"#555555\">view %s</text>\n", svg_view_name(pic->view));
+}
+
+int svg_write(const char *file, const svg_picture *pic)
+{
+    canvas c = {0};
+    ga_vec3 axis_a, axis_b;
+    int height = layout(pic, &c, &axis_a, &axis_b);
 
     tio_out out;
     if (tio_out_open(&out, file))
@@ -339,105 +461,9 @@ int svg_write(const char *file, const svg_picture *pic)
         line(f, x1, y1, x2, y2, screw_colour);
         fputs("</g>\n", f);
     }
-
-    /* trajectories, then the frames along them, then the keys on top */
-    for (size_t p = 0; p < pic->npaths; p++) {
-        const svg_path *pa = &pic->path[p];
-        fprintf(f,
-                "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" "
-                "stroke-linejoin=\"round\" points=\"",
-                pa->colour);
-        for (size_t i = 0; i < pa->n; i++) {
-            double x, y;
-            point_xy(&c, origin_of(&pa->sample[i]), &x, &y);
-            if (i)
-                fputc(i % 8 ? ' ' : '\n', f);
-            num(f, x);
-            fputc(',', f);
-            num(f, y);
-        }
-        fputs("\"/>\n", f);
-    }
-    fputs("<g stroke-width=\"1.3\" stroke-linecap=\"round\">\n", f);
-    for (size_t p = 0; p < pic->npaths; p++) {
-        const svg_path *pa = &pic->path[p];
-        if (pa->n < 2 || pa->frames <= 0)
-            continue;
-        size_t last = (size_t)-1;
-        for (int k = 0; k <= pa->frames; k++) {
-            size_t i = frame_index(pa->n, pa->frames, k);
-            if (i != last)
-                frame(&c, &pa->sample[i]);
-            last = i;
-        }
-    }
-    /* up to KEYS_SHOWN keys: bold frames and labels; more: dots, and labels
-     * at the first and last */
-    int few = pic->nkeys <= KEYS_SHOWN;
-    fprintf(f, "</g>\n<g stroke-width=\"%s\" stroke-linecap=\"round\">\n", few ? "2.6" : "1.3");
-    for (size_t k = 0; k < pic->nkeys; k++) frame(&c, &pic->key[k]);
-    fputs("</g>\n", f);
-    for (size_t k = 0; k < pic->nkeys; k++) {
-        double x, y;
-        point_xy(&c, origin_of(&pic->key[k]), &x, &y);
-        fputs("<circle cx=\"", f);
-        num(f, x);
-        fputs("\" cy=\"", f);
-        num(f, y);
-        fprintf(f, "\" r=\"3.5\" fill=\"%s\"/>\n", key_colour);
-        if (pic->key_t && (few || k == 0 || k + 1 == pic->nkeys)) {
-            fputs("<text x=\"", f);
-            num(f, x + 7);
-            fputs("\" y=\"", f);
-            num(f, y - 7);
-            char tb[GA_DOUBLE_TEXT_MAX]; /* the shortest text of the key's time: t=1305031102.1758,
-                                            not 1.30503e+09 */
-            ga_double_format(pic->key_t[k], tb);
-            fprintf(f, "\">t=%s</text>\n", tb);
-        }
-    }
-
-    /* the legend, and the view's world axes in the bottom right corner */
-    double lx = 12, ly = height - LEGEND_H / 2.0;
-    for (size_t p = 0; p < pic->npaths; p++)
-        if (pic->path[p].label)
-            legend_line(f, &lx, ly, pic->path[p].colour, "", pic->path[p].label);
-    if (pic->has_axis)
-        legend_line(f, &lx, ly, screw_colour, " stroke-dasharray=\"8 5\"", "screw axis");
-    static const char *const names[3] = {"x", "y", "z"};
-    fputs("<text x=\"", f);
-    num(f, lx);
-    fputs("\" y=\"", f);
-    num(f, ly + 4);
-    fputs("\">frames:</text>\n", f);
-    lx += 58;
-    for (int j = 0; j < 3; j++) legend_line(f, &lx, ly, axis_colour[j], "", names[j]);
-    double tx = WIDTH - 70, ty = height - LEGEND_H / 2.0;
-    fputs("<g stroke=\"#555555\" stroke-width=\"1.2\">\n", f);
-    for (int j = 0; j < 3; j++) {
-        ga_vec3 e = vec(j == 0, j == 1, j == 2);
-        double dx = 16 * dot(c.right, e), dy = -16 * dot(c.up, e);
-        if (dx * dx + dy * dy < 4)
-            continue; /* seen end on */
-        line(f, tx, ty, tx + dx, ty + dy, "#555555");
-    }
-    fputs("</g>\n", f);
-    for (int j = 0; j < 3; j++) {
-        ga_vec3 e = vec(j == 0, j == 1, j == 2);
-        double dx = 16 * dot(c.right, e), dy = -16 * dot(c.up, e);
-        if (dx * dx + dy * dy < 4)
-            continue;
-        fputs("<text text-anchor=\"middle\" x=\"", f);
-        num(f, tx + 1.5 * dx);
-        fputs("\" y=\"", f);
-        num(f, ty + 1.5 * dy + 4);
-        fprintf(f, "\" fill=\"#555555\">%s</text>\n", names[j]);
-    }
-    fputs("<text text-anchor=\"end\" x=\"", f);
-    num(f, tx - 24);
-    fputs("\" y=\"", f);
-    num(f, ty + 4);
-    fprintf(f, "\" fill=\"#555555\">view %s</text>\n", svg_view_name(pic->view));
+    draw_paths(&c, pic);
+    draw_keys(&c, pic);
+    draw_legend(&c, pic, height);
     fputs("</svg>\n", f);
     return tio_out_close(&out, 1);
 }

@@ -1,0 +1,142 @@
+/* tools/interp_opts.c: the options of `garotor interp` (docs/tool.md), parsed
+ * and checked into an ic_opts before any file is read. The checks run in a
+ * fixed order, so a command line with several mistakes is told the first. */
+#include "html.h"
+#include "interp_cmd.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* --group, --scheme, --eval, --step and --format: the path and its keys. */
+static int path_options(const cli_opts *o, ic_opts *io)
+{
+    io->g = cli_group("interp", o);
+    if (!io->g)
+        return -1;
+    io->scheme = GA_SCHEME_SCREW;
+    if (o->scheme && ga_scheme_by_name(o->scheme, &io->scheme) != GA_OK) {
+        fprintf(stderr,
+                "garotor interp: --scheme must be screw, bivector, quadratic, smooth, "
+                "lihao2, lihao3, decoupled, decoupled-c2, bspline or c2, not '%s'\n",
+                o->scheme);
+        return -1;
+    }
+    io->ev = GA_EVAL_DIRECT;
+    if (o->eval && ga_eval_by_name(o->eval, &io->ev) != GA_OK) {
+        fprintf(stderr, "garotor interp: --eval must be direct, euler or exact, not '%s'\n", o->eval);
+        return -1;
+    }
+    if (io->ev == GA_EVAL_EULER && !(o->given & OPT_STEP)) {
+        fprintf(stderr, "garotor interp: --eval euler needs --step H (in u units, 1e-9 <= H <= 1)\n");
+        return -1;
+    }
+    if ((o->given & OPT_STEP) && io->ev != GA_EVAL_EULER) {
+        fprintf(stderr, "garotor interp: --step applies only to --eval euler\n");
+        return -1;
+    }
+    io->pose = 0;
+    if (o->format && strcmp(o->format, "pose") == 0)
+        io->pose = 1;
+    else if (o->format && strcmp(o->format, "mat") != 0) {
+        fprintf(stderr, "garotor interp: --format must be mat or pose, not '%s'\n", o->format);
+        return -1;
+    }
+    if (io->pose && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --group %s takes keys as matrices (--format mat)\n", io->g->name);
+        return -1;
+    }
+    return 0;
+}
+
+/* The sample times (one of --samples, --at, --rate, --times), --extrapolate,
+ * the velocities (--v0, --velocities) and --normalize. */
+static int sample_options(const cli_opts *o, ic_opts *io)
+{
+    int nwhen = !!(o->given & OPT_SAMPLES) + !!(o->given & OPT_AT) + !!(o->given & OPT_RATE) +
+                !!(o->given & OPT_TIMES);
+    if (nwhen != 1) {
+        fprintf(stderr, "garotor interp: give one of --samples N, --at t1,t2,..., --rate HZ, --times FILE\n");
+        return -1;
+    }
+    io->extrap = 0;
+    if (o->extrapolate && strcmp(o->extrapolate, "hold") == 0)
+        io->extrap = 1;
+    else if (o->extrapolate && strcmp(o->extrapolate, "extend") == 0)
+        io->extrap = 2;
+    else if (o->extrapolate && strcmp(o->extrapolate, "error") != 0) {
+        fprintf(stderr, "garotor interp: --extrapolate must be error, hold or extend, not '%s'\n",
+                o->extrapolate);
+        return -1;
+    }
+    if ((o->given & OPT_V0) && io->scheme != GA_SCHEME_LIHAO2) {
+        fprintf(stderr, "garotor interp: --v0 applies only to --scheme lihao2\n");
+        return -1;
+    }
+    if ((o->given & OPT_VELOCITIES) && io->scheme != GA_SCHEME_LIHAO3) {
+        fprintf(stderr, "garotor interp: --velocities applies only to --scheme lihao3\n");
+        return -1;
+    }
+    if (o->normalize && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --normalize applies to --group cga or matrix\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* What a row holds besides the pose (--with, --frame) and --time-unit. */
+static int row_options(const cli_opts *o, ic_opts *io)
+{
+    io->with_v = io->with_a = io->spatial = 0;
+    if (o->with && strcmp(o->with, "velocity") == 0)
+        io->with_v = 1;
+    else if (o->with && strcmp(o->with, "velocity,acceleration") == 0)
+        io->with_v = io->with_a = 1;
+    else if (o->with) {
+        fprintf(stderr, "garotor interp: --with must be velocity or velocity,acceleration, not '%s'\n",
+                o->with);
+        return -1;
+    }
+    if (o->frame && strcmp(o->frame, "spatial") == 0)
+        io->spatial = 1;
+    else if (o->frame && strcmp(o->frame, "body") != 0) {
+        fprintf(stderr, "garotor interp: --frame must be body or spatial, not '%s'\n", o->frame);
+        return -1;
+    }
+    if (o->frame && !io->with_v) {
+        fprintf(stderr, "garotor interp: --frame applies only with --with velocity[,acceleration]\n");
+        return -1;
+    }
+    io->ns = 0;
+    if (o->time_unit && strcmp(o->time_unit, "ns") == 0)
+        io->ns = 1;
+    else if (o->time_unit && strcmp(o->time_unit, "s") != 0) {
+        fprintf(stderr, "garotor interp: --time-unit must be s or ns, not '%s'\n", o->time_unit);
+        return -1;
+    }
+    return 0;
+}
+
+/* --out, --svg (and --view), --html: each a different file. */
+static int file_options(const cli_opts *o, ic_opts *io)
+{
+    if (svg_options("interp", o->svg, o->view, &io->view) || html_options("interp", o->html))
+        return -1;
+    /* one file for two outputs: the second would silently replace the first */
+    const char *files[3] = {o->out, o->svg, o->html}, *opt[3] = {"--out", "--svg", "--html"};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (files[i] && files[j] && strcmp(files[i], files[j]) == 0) {
+                fprintf(stderr, "garotor interp: %s and %s name the same file: %s\n", opt[i], opt[j],
+                        files[i]);
+                return -1;
+            }
+    return 0;
+}
+
+int ic_options(const cli_opts *o, ic_opts *io)
+{
+    io->o = o;
+    if (path_options(o, io) || sample_options(o, io) || row_options(o, io) || file_options(o, io))
+        return -1;
+    return 0;
+}

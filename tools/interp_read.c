@@ -1,0 +1,262 @@
+/* tools/interp_read.c: the inputs of `garotor interp`, read and checked
+ * before anything is written (docs/tool.md): the keys (t, then a pose: 16
+ * numbers with --format mat, 7 with --format pose), the given times (--at
+ * t1,t2,... or --times FILE) and the velocities (--v0, --velocities FILE). */
+#include "interp_cmd.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A unit quaternion (ROS order qx qy qz qw) and a position to a 4x4 matrix;
+ * -1 after a message when q is not unit to 1e-9, or with --normalize to
+ * GA_SE3_NORMALIZE_TOL (then q is divided by its norm: ga_quat_normalize). */
+static int pose_to_mat4(const tio_items *in, size_t i, const double *v, int normalize, ga_mat4 *out)
+{
+    ga_quat q = {v[6], v[3], v[4], v[5]};
+    double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    if (normalize && ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &q) != GA_OK)
+        return tio_error(in, i,
+                         "not a rigid motion: the quaternion has norm %.17g, farther from 1 "
+                         "than --normalize accepts (1e-3)",
+                         norm);
+    if (!normalize && fabs(norm - 1.0) > 1e-9)
+        return tio_error(in, i,
+                         "not a rigid motion: the quaternion has norm %.17g, not 1 "
+                         "(to 1e-9; --normalize accepts up to 1e-3)",
+                         norm);
+    *out = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[0], v[1], v[2]}));
+    return 0;
+}
+
+/* A key read as a matrix, on a rigid group with --normalize: projected onto
+ * the group (ga_se3_normalize) when within GA_SE3_NORMALIZE_TOL; without it,
+ * a matrix off by more than 1e-9 but within that is refused with a message
+ * naming --normalize. 1 when this handled it (0: ok, -1: error after a
+ * message), 0 to leave the key to cli_check_motion. */
+static int normalize_key(const ga_group *g, int normalize, const tio_items *in, size_t i, ga_mat4 *m, int *rc)
+{
+    ga_mat4 r;
+    if (!g->rigid || ga_se3_normalize(*m, GA_SE3_NORMALIZE_TOL, &r) != GA_OK)
+        return 0; /* cli_check_motion says what is wrong */
+    if (normalize) {
+        *m = r;
+        *rc = 0;
+        return 1;
+    }
+    if (ga_se3_check(*m, 1e-9) == GA_OK)
+        return 0;
+    double off = 0.0;
+    for (int k = 0; k < 16; k++) off = fmax(off, fabs(m->m[k] - r.m[k]));
+    *rc = tio_error(in, i,
+                    "not a rigid motion to 1e-9 (it is %.3g from the nearest one); "
+                    "--normalize accepts up to 1e-3",
+                    off);
+    return 1;
+}
+
+int ic_parse_at(const char *s, ic_input *in)
+{
+    size_t cap = 1;
+    for (const char *c = s; *c; c++) cap += *c == ',';
+    char *b = malloc(strlen(s) + 1);
+    char **t = malloc(cap * sizeof *t);
+    if (!b || !t) {
+        free(b);
+        free(t);
+        return ic_oom();
+    }
+    strcpy(b, s);
+    size_t k = 0;
+    char *c = b;
+    for (;;) {
+        char *end;
+        double x = strtod(c, &end);
+        if (end == c || !isfinite(x) || (*end != ',' && *end != '\0')) {
+            fprintf(stderr, "garotor interp: --at needs finite times separated by commas: '%s'\n", s);
+            free(b);
+            free(t);
+            return -1;
+        }
+        while (*c == ' ' || *c == '\t' || *c == '\n' || *c == '\r' || *c == '\f' || *c == '\v') c++;
+        t[k++] = c;
+        int last = *end == '\0';
+        *end = '\0';
+        if (last)
+            break;
+        c = end + 1;
+    }
+    in->at_buf = b;
+    in->at_arg = t;
+    in->nat = k;
+    return 0;
+}
+
+/* Key i: its number of numbers, its time (the first key's is the
+ * reference), after the one before, and its pose an element of the group. */
+static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
+{
+    const tio_items *f = &in->in;
+    int want = io->pose ? 8 : 17;
+    /* a line of separators only is an item of no numbers, and with no
+       number in the whole input value is NULL: no pointer arithmetic on
+       it (undefined; found by fuzz/fuzz_tool under UBSan:
+       fuzz/regress/tool/interp-comma-line-no-numbers) */
+    const double *v = f->item[i].count ? f->value + f->item[i].first : NULL;
+    if (f->item[i].count != want)
+        return tio_error(f, i, "expected %d numbers (t, then %s), found %d", want,
+                         io->pose ? "x y z qx qy qz qw" : "a 4x4 matrix", f->item[i].count);
+    if (tb->ns && !ic_whole(f->first[i]))
+        return tio_error(f, i, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[i]);
+    if (i == 0)
+        tt_parse(f->first[0], &tb->ref);
+    in->times[i] = ic_rel_time(tb, f->first[i]);
+    if (i > 0 && !(in->times[i] > in->times[i - 1]))
+        return tio_error(f, i, "key times must increase strictly: %s after %s", f->first[i], f->first[i - 1]);
+    if (io->pose)
+        return pose_to_mat4(f, i, v + 1, io->o->normalize, &in->keys[i]);
+    int krc;
+    memcpy(in->keys[i].m, v + 1, sizeof in->keys[i].m);
+    return normalize_key(io->g, io->o->normalize, f, i, &in->keys[i], &krc)
+             ? krc
+             : cli_check_motion(io->g, in->keys[i], f, i);
+}
+
+int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
+{
+    ga_scheme scheme = io->scheme;
+    if (tio_read_first(io->o->in, io->o->header, &in->in))
+        return -1;
+    size_t n = in->n = in->in.n;
+    in->times = malloc((n ? n : 1) * sizeof *in->times);
+    in->keys = malloc((n ? n : 1) * sizeof *in->keys);
+    if (!in->times || !in->keys)
+        return ic_oom();
+    for (size_t i = 0; i < n; i++)
+        if (read_key(io, tb, in, i))
+            return -1;
+    size_t min = ga_scheme_min_keys(scheme);
+    if (n != 1 && (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
+        fprintf(stderr, "garotor interp: %s: --scheme %s needs one key or %s %zu, found %zu\n", in->in.name,
+                ga_scheme_name(scheme), scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, n);
+        return -1;
+    }
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven(n, in->times) : 0;
+    if (bad) {
+        const double *times = in->times;
+        double grid = times[0] + (times[n - 1] - times[0]) * (double)bad / (double)(n - 1);
+        return tio_error(&in->in, bad,
+                         "--scheme bspline needs evenly spaced key times (to 1e-9 of the spacing): %s is "
+                         "%.3g s off the even grid of the first and last key (spacing %.17g s)",
+                         in->in.first[bad], (times[bad] - grid) * (tb->ns ? 1e9 : 1.0),
+                         (times[n - 1] - times[0]) / (double)(n - 1));
+    }
+    /* the path's range (ga_path_range): from key i0 to key i1, the first
+       and last key, but for bspline the second and the last but one */
+    in->i0 = scheme == GA_SCHEME_BSPLINE && n > 1;
+    in->i1 = n - 1 - in->i0;
+    return 0;
+}
+
+int ic_read_times(const ic_opts *io, const ic_timebase *tb, ic_input *in)
+{
+    const cli_opts *o = io->o;
+    if (o->times) { /* --times FILE: one time a line */
+        const tio_items *f = &in->tin;
+        if (tio_read_first(o->times, 0, &in->tin))
+            return -1;
+        in->nat = f->n;
+        for (size_t k = 0; k < in->nat; k++)
+            if (f->item[k].count != 1)
+                return tio_error(f, k, "expected 1 number (a time), found %d", f->item[k].count);
+            else if (tb->ns && !ic_whole(f->first[k]))
+                return tio_error(f, k, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[k]);
+        if (in->nat == 0) {
+            fprintf(stderr, "garotor interp: %s: no times\n", f->name);
+            return -1;
+        }
+        in->at_text = f->first;
+    }
+    if (o->at) {
+        for (size_t k = 0; k < in->nat; k++)
+            if (tb->ns && !ic_whole(in->at_arg[k])) {
+                fprintf(stderr, "garotor interp: --at: --time-unit ns takes whole nanoseconds, not '%s'\n",
+                        in->at_arg[k]);
+                return -1;
+            }
+        in->at_text = in->at_arg;
+    }
+    if (in->at_text) { /* given times, relative to the first key's */
+        in->at = malloc(in->nat * sizeof *in->at);
+        if (!in->at)
+            return ic_oom();
+        for (size_t k = 0; k < in->nat; k++) in->at[k] = ic_rel_time(tb, in->at_text[k]);
+    }
+    return 0;
+}
+
+/* A velocity as the tool reads it: 6 numbers, a twist (on every group: its
+ * hat read by the group's vee), or on a group that is not rigid 16, a 4x4
+ * with last row zero. Writes g->dim doubles. */
+static int read_velocity(const ga_group *g, const double *v, int count, double *x)
+{
+    ga_mat4 a;
+    if (count == 6)
+        a = ga_twist_hat((ga_twist){{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
+    else if (count == 16 && !g->rigid)
+        memcpy(a.m, v, sizeof a.m);
+    else
+        return -1;
+    return g->vee(a, x) == GA_OK ? 0 : -1;
+}
+
+int ic_read_velocities(const ic_opts *io, ic_input *in)
+{
+    const cli_opts *o = io->o;
+    const ga_group *g = io->g;
+    size_t n = in->n;
+    const tio_items *f = &in->vin;
+    /* --v0 for lihao2, --velocities FILE (one a key) for lihao3 */
+    if (o->given & OPT_V0) {
+        in->vel = malloc(GA_GROUP_MAX_DIM * sizeof *in->vel);
+        if (!in->vel)
+            return ic_oom();
+        read_velocity(g, o->v0, 6, in->vel);
+    }
+    if (!o->velocities)
+        return 0;
+    if (tio_read(o->velocities, 0, &in->vin))
+        return -1;
+    if (f->n != n) {
+        if (f->n > n)
+            return tio_error(f, n, "one velocity per key: %zu keys, but %zu velocities", n, f->n);
+        fprintf(stderr, "garotor interp: %s: one velocity per key: %zu keys, but %zu velocities\n", f->name,
+                n, f->n);
+        return -1;
+    }
+    in->vel = malloc(n * (size_t)g->dim * sizeof *in->vel);
+    if (!in->vel)
+        return ic_oom();
+    for (size_t i = 0; i < n; i++)
+        if (read_velocity(g, f->item[i].count ? f->value + f->item[i].first : NULL, f->item[i].count,
+                          in->vel + i * (size_t)g->dim))
+            return tio_error(f, i,
+                             "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
+                             "found %d",
+                             g->rigid ? "" : " or 16 (a 4x4, last row zero)", f->item[i].count);
+    return 0;
+}
+
+void ic_input_free(ic_input *in)
+{
+    free(in->times);
+    free(in->keys);
+    free(in->at);
+    free(in->at_buf);
+    free(in->at_arg);
+    free(in->vel);
+    tio_free(&in->in);
+    tio_free(&in->vin);
+    tio_free(&in->tin);
+}
