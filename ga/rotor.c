@@ -274,8 +274,8 @@ ga_twist ga_generator_to_twist(ga_generator b)
 
 /* ---- exp and log ------------------------------------------------------- */
 
-/* cos, sinc and k as series; pi/2 in two parts (shared with interp/path.c) */
-#include "internal/rotor_series.h"
+/* cos, sinc and k as series; pi/2 in two parts (as the screw sampler of interp/group_cga.c) */
+#include "internal/series.h"
 
 ga_rotor ga_rotor_exp(ga_generator g)
 {
@@ -285,9 +285,9 @@ ga_rotor ga_rotor_exp(ga_generator g)
     if (phi2 <= (GA_PI / 4) * (GA_PI / 4)) {
         /* phi <= pi/4: the series, no trig call and no division */
         double y2 = phi2 * phi2, y4 = y2 * y2, y8 = y4 * y4;
-        cs = estrin9(cos_taylor, phi2, y2, y4, y8);
-        sinc = estrin9(sinc_taylor, phi2, y2, y4, y8);
-        double k = estrin9(k_taylor, phi2, y2, y4, y8);
+        cs = ga__series_estrin9(GA__SERIES_F0, phi2, y2, y4, y8);
+        sinc = ga__series_estrin9(GA__SERIES_F1, phi2, y2, y4, y8);
+        double k = ga__series_estrin9(GA__SERIES_K, phi2, y2, y4, y8);
         /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
         p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
     } else if (isinf(phi2)) {
@@ -309,12 +309,12 @@ ga_rotor ga_rotor_exp(ga_generator g)
         double phi = sqrt(phi2), m = bc / phi2; /* c_par = m beta */
         if (phi <= 3 * GA_PI / 4) {
             /* with r = pi/2 - phi in [-pi/4, pi/4], sin phi = cos r and
-             * cos phi = r sinc r, the same series; PIO2_HI - phi is exact
+             * cos phi = r sinc r, the same series; GA_PIO2_HI - phi is exact
              * (Sterbenz), so r is pi/2 - phi to an ulp of r and cos phi keeps
              * its relative accuracy where it vanishes, at phi = pi/2 */
-            double r = (PIO2_HI - phi) + PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
-            cs = r * estrin9(sinc_taylor, y, y2, y4, y8);
-            sinc = estrin9(cos_taylor, y, y2, y4, y8) / phi;
+            double r = (GA_PIO2_HI - phi) + GA_PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+            cs = r * ga__series_estrin9(GA__SERIES_F1, y, y2, y4, y8);
+            sinc = ga__series_estrin9(GA__SERIES_F0, y, y2, y4, y8) / phi;
         } else { /* a rotation by more than 3 pi/2: libm reduces the angle */
             cs = cos(phi);
             sinc = sin(phi) / phi;
@@ -350,7 +350,7 @@ static inline double atan2_quadrant(double y, double x)
     double z = (y * cos_a[j] - x * sin_a[j]) / (x * cos_a[j] + y * sin_a[j]);
     double w = z * z, w2 = w * w, w4 = w2 * w2, w8 = w4 * w4;
     const double *c = atan_taylor;
-    double poly = estrin9(c, w, w2, w4, 0.0) + w8 * ((c[8] + c[9] * w) + w2 * (c[10] + c[11] * w));
+    double poly = ga__estrin9(c, w, w2, w4, 0.0) + w8 * ((c[8] + c[9] * w) + w2 * (c[10] + c[11] * w));
     return a[j] + z * poly;
 }
 
@@ -377,8 +377,8 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         double sg = principal && r.s < 0.0 ? -1.0 : 1.0, q2 = r.s * r.s + nb2;
         double s = sg * r.s, nb = sqrt(nb2), inv = 1.0 / nb;
         /* the angle in [0, pi/2] for the principal log; the literal log's
-           s < 0 gives pi - atan2(nb, -s), with pi = 2 PIO2_HI + 2 PIO2_LO */
-        double phi = s >= 0.0 ? atan2_quadrant(nb, s) : (2 * PIO2_HI - atan2_quadrant(nb, -s)) + 2 * PIO2_LO;
+           s < 0 gives pi - atan2(nb, -s), with pi = 2 GA_PIO2_HI + 2 GA_PIO2_LO */
+        double phi = s >= 0.0 ? atan2_quadrant(nb, s) : (2 * GA_PIO2_HI - atan2_quadrant(nb, -s)) + 2 * GA_PIO2_LO;
         vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
         double pu = v_dot(p, u);
         double cpar = (s * pu + nb * (sg * r.e123n)) / q2;

@@ -9,37 +9,17 @@
 
 #include "internal/mat4.h"
 #include "internal/se3.h"
+#include "internal/series.h"
 #include "internal/vec3.h"
 
 #define M GA__M
 
-/* ---- the series: the sinc family of the closed forms ------------------
- * Every series ga_se3_exp and the log sum for small angles, in one place. */
-
-/* f_j(th) = sum_k (-1)^k th^2k / (2k+j)!, for j = 1, 2, 3:
+/* The series for small angles are rows of ga/internal/series.h:
  *   f_1 = sin th / th,  f_2 = (1 - cos th)/th^2,  f_3 = (th - sin th)/th^3,
- * the coefficients of expm(xi^) (Eberly eqs. 9, 19, 20). For th < 1 the
- * series is summed to k = 8 (these tables): the first omitted term,
- * th^18/(18+j)!, is below 1/19! < 1e-17 of f_j(0) = 1/j!. */
-static const double sinc_series[3][9] = {
-    {1.0, -1.0 / 6, 1.0 / 120, -1.0 / 5040, 1.0 / 362880, -1.0 / 39916800, 1.0 / 6227020800.0,
-     -1.0 / 1307674368000.0, 1.0 / 355687428096000.0},
-    {1.0 / 2, -1.0 / 24, 1.0 / 720, -1.0 / 40320, 1.0 / 3628800, -1.0 / 479001600, 1.0 / 87178291200.0,
-     -1.0 / 20922789888000.0, 1.0 / 6402373705728000.0},
-    {1.0 / 6, -1.0 / 120, 1.0 / 5040, -1.0 / 362880, 1.0 / 39916800, -1.0 / 6227020800.0,
-     1.0 / 1307674368000.0, -1.0 / 355687428096000.0, 1.0 / 121645100408832000.0}};
-
-/* c2(th) = (1 - (th/2) cot(th/2)) / th^2 = sum_n>=1 (-1)^(n+1) B_2n th^(2n-2) / (2n)!
- * (Bernoulli numbers), the coefficient of V^{-1} in the log (Eberly eq. 20),
- * summed to n = 8 for th < 1/2 (next term < 2e-18 of the first). */
-static const double vinv_series[8] = {1.0 / 12,
-                                      1.0 / 720,
-                                      1.0 / 30240,
-                                      1.0 / 1209600,
-                                      1.0 / 47900160,
-                                      691.0 / 1307674368000.0,
-                                      1.0 / 74724249600.0,
-                                      3617.0 / 10670622842880000.0};
+ * the coefficients of expm(xi^) (Eberly eqs. 9, 19, 20), summed to k = 8 for
+ * th < 1 (the first omitted term, th^18/(18+j)!, is below 1/19! < 1e-17 of
+ * f_j(0) = 1/j!), and c2 = (1 - (th/2) cot(th/2)) / th^2, the coefficient of
+ * V^-1 in the log (Eberly eq. 20), by its Bernoulli series for th < 1/2. */
 
 /* ga_se3_check through a pointer: ga_se3_log and the geodesic check the
  * matrix in place instead of copying its 128 bytes for each call. */
@@ -127,12 +107,9 @@ ga_mat4 ga_se3_exp(ga_twist xi)
     double t2 = ga__v3_dot(w, w), th = sqrt(t2), a, b, c, co;
     if (th < 1.0) {
         /* the series, no trig call and no division; cos th = 1 - b th^2 (Rodrigues) */
-        a = b = c = 0.0;
-        for (int k = 8; k >= 0; k--) { /* Horner in th^2 */
-            a = a * t2 + sinc_series[0][k];
-            b = b * t2 + sinc_series[1][k];
-            c = c * t2 + sinc_series[2][k];
-        }
+        a = ga__series(GA__SERIES_F1, 9, t2);
+        b = ga__series(GA__SERIES_F2, 9, t2);
+        c = ga__series(GA__SERIES_F3, 9, t2);
         co = 1.0 - b * t2;
     } else {
         /* the closed forms, from one sincos: no harmful cancellation for
@@ -202,7 +179,7 @@ static inline ga_twist se3_log_core(const ga_mat4 *m)
     }
     /* Eq. 20: v = V^{-1} t = t - w x t / 2 + c2 w x (w x t),
      * c2 = (1 - (th/2) cot(th/2)) / th^2. The closed form cancels as th -> 0,
-     * so for th < 1/2 the series (vinv_series) is summed. At
+     * so for th < 1/2 its series is summed. At
      * th <= pi, cot(th/2) >= 0 and V^{-1} is bounded. cot(th/2) needs no trig
      * call: with rho = |(sn, c)|, th/2 = atan2(sn, c)/2 has
      * cot(th/2) = (rho + c)/sn = sn/(rho - c), the first form for c >= 0 and
@@ -210,9 +187,9 @@ static inline ga_twist se3_log_core(const ga_mat4 *m)
      * at th = pi, sn = 0 and cot = 0). */
     double c2;
     if (th < 0.5) {
-        double t2 = th * th;
-        c2 = 0.0;
-        for (int i = 7; i >= 0; i--) c2 = c2 * t2 + vinv_series[i];
+        /* the Bernoulli series of c2 (row COT of series.h) to th^14: the
+           next term is below 2e-18 of the first */
+        c2 = ga__series(GA__SERIES_COT, 8, th * th);
     } else {
         double rho = sqrt(sn * sn + c * c);
         double cot = c >= 0.0 ? (rho + c) / sn : sn / (rho - c);

@@ -12,7 +12,7 @@ Fraction, which is also what C gives for `1.0 / 720`.
 """
 
 from fractions import Fraction
-from math import factorial
+from math import comb, factorial
 
 PATH = 'ga/internal/series_coef.inc'
 
@@ -35,9 +35,29 @@ FAMILIES = [
 ]
 
 
+# and one series of another family, whose terms are Bernoulli numbers:
+# COT(th) = (1 - (th/2) cot(th/2)) / th^2 = sum_k (-1)^k B_2k+2 x^k / (2k+2)!,
+# the coefficient of [w]x^2 in the inverse of the SO(3) Jacobian (and of V^-1
+# in the SE(3) log)
+COT = ('COT', 'cot = (1 - (th/2) cot(th/2)) / th^2: (-1)^k B_(2k+2) / (2k+2)!')
+
+
 def coefficient(d, weight, sign, k):
     a, b = weight
     return float(Fraction(sign * (-1) ** k * (a * k + b), factorial(2 * k + d)))
+
+
+def bernoulli(n):
+    """B_0 .. B_n as Fractions (B_1 = -1/2)."""
+    b = [Fraction(1)]
+    for m in range(1, n + 1):
+        b.append(-sum(comb(m + 1, j) * b[j] for j in range(m)) / (m + 1))
+    return b
+
+
+def cot_coefficients():
+    b = bernoulli(2 * TERMS + 2)
+    return [float((-1) ** k * b[2 * k + 2] / factorial(2 * k + 2)) for k in range(TERMS)]
 
 
 def generate():
@@ -51,13 +71,16 @@ def generate():
         a, b = weight
         w = '1' if a == 0 else '%sk+%d' % ('' if a == 1 else a, b)
         out.append('    GA__SERIES_%s = %d, /* %s: d = %d, w = %s, s = %d */' % (name, i, what, d, w, sign))
-    out.append('    GA__SERIES_FAMILIES = %d' % len(FAMILIES))
+    out.append('    GA__SERIES_%s = %d, /* %s */' % (COT[0], len(FAMILIES), COT[1]))
+    out.append('    GA__SERIES_FAMILIES = %d' % (len(FAMILIES) + 1))
     out.append('};')
     out.append('enum { GA__SERIES_TERMS = %d };' % TERMS)
     out.append('static const double GA__SERIES[GA__SERIES_FAMILIES][GA__SERIES_TERMS] = {')
-    for name, d, weight, sign, what in FAMILIES:
+    rows = [(name, [coefficient(d, weight, sign, k) for k in range(TERMS)])
+            for name, d, weight, sign, what in FAMILIES] + [(COT[0], cot_coefficients())]
+    for name, row in rows:
         out.append('    /* %s */' % name)
-        vals = [repr(coefficient(d, weight, sign, k)) for k in range(TERMS)]
+        vals = [repr(v) for v in row]
         for i in range(0, TERMS, 4):
             out.append('    ' + ('{' if i == 0 else ' ') + ', '.join(vals[i:i + 4])
                        + ('},' if i + 4 >= TERMS else ','))

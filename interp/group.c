@@ -12,6 +12,7 @@
 #include <garotor/mat4.h>
 #include <garotor/rotor.h>
 
+#include "ga/internal/series.h"
 #include "internal/group_fast.h"
 #include "internal/groups.h"
 
@@ -121,20 +122,6 @@ void gig_twist_branch(const double *prev, double *x)
         twist_other_branch(x);
 }
 
-/* sum_{k=0}^{11} (-1)^k m_k th^2k/(2k+d)!, m_k = k+1 if weighted else 1: the
- * Taylor series of the Jacobian coefficients below, used for th < 1 where the
- * closed forms cancel (the next term is below 1e-23 there). */
-static double jac_series(double t2, int d, int weighted)
-{
-    double term = 1.0, s = 0.0;
-    for (int j = 2; j <= d; ++j) term /= j;
-    for (int k = 0; k < 12; ++k) {
-        s += (weighted ? k + 1 : 1) * term;
-        term *= -t2 / ((2.0 * k + d + 1) * (2.0 * k + d + 2));
-    }
-    return s;
-}
-
 /* The right Jacobian of SE(3) in twist coordinates (w, v): J_r(xi) = J_l(-xi),
  * with J_l of Barfoot & Furgale (2014, eqs. 100-102), here in (w, v) order:
  *   J_r(xi) (w', v') = ( Jr(w) w',  Q w' + Jr(w) v' ),
@@ -152,9 +139,11 @@ void gig_se3_dexp(const double *x, const double *y, double *out)
     double a1 = 0.5 * sh * sh;                          /* (1 - cos th)/th^2 */
     double a, b, c;
     if (th < 1.0) {
-        a = jac_series(t2, 3, 0);
-        b = jac_series(t2, 4, 0);
-        c = jac_series(t2, 5, 1);
+        /* their Taylor series (rows F3, F4, JC of series.h) where the closed
+           forms cancel; 12 terms: the next is below 1e-23 for th < 1 */
+        a = ga__series(GA__SERIES_F3, 12, t2);
+        b = ga__series(GA__SERIES_F4, 12, t2);
+        c = ga__series(GA__SERIES_JC, 12, t2);
     } else {
         double s = sin(th), co = cos(th);
         a = (th - s) / (t2 * th);

@@ -12,7 +12,7 @@
 #include <garotor/rotor_inline.h>
 
 /* the series of ga_rotor_exp, for the screw sampler */
-#include "../ga/internal/rotor_series.h"
+#include "ga/internal/series.h"
 #include "internal/groups.h"
 
 static void cga_identity(void *out) { *(ga_rotor *)out = ga_rotor_identity(); }
@@ -144,15 +144,15 @@ static int screw_at(const double *k01, const double *k23, const double *phi2p, d
     double a2 = (u * u) * phi2, cs, sinc, f3;
     if (a2 <= (GA_PI / 4) * (GA_PI / 4)) {
         double y2 = a2 * a2, y4 = y2 * y2, y8 = y4 * y4;
-        cs = estrin9(cos_taylor, a2, y2, y4, y8);
-        sinc = estrin9(sinc_taylor, a2, y2, y4, y8);
-        f3 = u * (u * (u * estrin9(k_taylor, a2, y2, y4, y8)));
+        cs = ga__series_estrin9(GA__SERIES_F0, a2, y2, y4, y8);
+        sinc = ga__series_estrin9(GA__SERIES_F1, a2, y2, y4, y8);
+        f3 = u * (u * (u * ga__series_estrin9(GA__SERIES_K, a2, y2, y4, y8)));
     } else {
         double a = sqrt(a2);
         if (a <= 3 * GA_PI / 4) { /* as ga_rotor_exp: r = pi/2 - a, sin a = cos r, cos a = r sinc r */
-            double r = (PIO2_HI - a) + PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
-            cs = r * estrin9(sinc_taylor, y, y2, y4, y8);
-            sinc = estrin9(cos_taylor, y, y2, y4, y8) / a;
+            double r = (GA_PIO2_HI - a) + GA_PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+            cs = r * ga__series_estrin9(GA__SERIES_F1, y, y2, y4, y8);
+            sinc = ga__series_estrin9(GA__SERIES_F0, y, y2, y4, y8) / a;
         } else {
             cs = cos(a);
             sinc = sin(a) / a;

@@ -10,6 +10,7 @@
 
 #include <garotor/path.h>
 
+#include "ga/internal/series.h"
 #include "internal/path.h"
 
 /* Layout of p->dec: per key DK doubles (q (w, x, y, z), p, the body angular
@@ -50,28 +51,12 @@ static void so3_coef(double th, double *k0, double *k1, double *n1, double *n2, 
 {
     double x = th * th;
     if (th < 1.0) {
-        /* k0 = sum_{m>=1} (-1)^(m+1) x^(m-1)/(2m)!, k1 the same over (2m+1)!,
-           n1 = sum_{m>=2} (-1)^m (2m-2)/(2m)! x^(m-2),
-           n2 = sum_{m>=2} (-1)^m (2-2m)/(2m+1)! x^(m-2); 14 terms leave under
-           1/28! at x = 1 */
-        double a = 0, b = 0, c = 0, d = 0, f2 = 2.0, f3 = 6.0, xp = 1.0, xq = 1.0, sg = 1.0;
-        for (int m = 1; m <= 14; ++m) {
-            a += sg * xp / f2; /* xp = x^(m-1) */
-            b += sg * xp / f3;
-            if (m >= 2) { /* xq = x^(m-2) */
-                c += -sg * (2.0 * m - 2.0) / f2 * xq;
-                d += -sg * (2.0 - 2.0 * m) / f3 * xq;
-                xq *= x;
-            }
-            sg = -sg;
-            xp *= x;
-            f2 *= (2.0 * m + 1) * (2.0 * m + 2);
-            f3 *= (2.0 * m + 2) * (2.0 * m + 3);
-        }
-        *k0 = a;
-        *k1 = b;
-        *n1 = c;
-        *n2 = d;
+        /* k0 = f_2, k1 = f_3, n1, n2: rows of series.h; 14 (n1, n2: 13)
+           terms leave under 1/28! at x = 1 */
+        *k0 = ga__series(GA__SERIES_F2, 14, x);
+        *k1 = ga__series(GA__SERIES_F3, 14, x);
+        *n1 = ga__series(GA__SERIES_N1, 13, x);
+        *n2 = ga__series(GA__SERIES_N2, 13, x);
     } else {
         double s = sin(th), co = cos(th);
         *k0 = (1.0 - co) / x;
@@ -80,12 +65,9 @@ static void so3_coef(double th, double *k0, double *k1, double *n1, double *n2, 
         *n2 = (3.0 * s - 2.0 * th - th * co) / (x * x * th);
     }
     if (th < 0.5) {
-        /* (th/2) cot(th/2) = sum_n (-1)^n B_2n th^2n/(2n)!: ki = 1/12 + x/720 +
-           x^2/30240 + x^3/1209600 + x^4/47900160 + 691 x^5/1307674368000
-           (Bernoulli numbers; the next term is below 1e-17 of the first) */
-        *ki = 1.0 / 12 +
-              x * (1.0 / 720 + x * (1.0 / 30240 + x * (1.0 / 1209600 +
-                                                       x * (1.0 / 47900160 + x * 691.0 / 1307674368000.0))));
+        /* the Bernoulli series of ki (row COT of series.h) to x^5: the next
+           term is below 1e-17 of the first */
+        *ki = ga__series(GA__SERIES_COT, 6, x);
     } else {
         *ki = (1.0 - 0.5 * th / tan(0.5 * th)) / x;
     }

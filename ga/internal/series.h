@@ -34,14 +34,19 @@ static inline double ga__series(int f, int n, double x)
     return s;
 }
 
-/* sum_{k < 9} GA__SERIES[f][k] y^k by Estrin's scheme, given y2 = y^2,
- * y4 = y^4, y8 = y^8 (shared by the several series a caller evaluates at the
- * same y). */
-static inline double ga__series_estrin9(int f, double y, double y2, double y4, double y8)
+/* The polynomial c[0] + c[1] y + ... + c[8] y^8 by Estrin's scheme, given
+ * y2 = y^2, y4 = y^4, y8 = y^8 (shared by the several series a caller
+ * evaluates at the same y). */
+static inline double ga__estrin9(const double c[9], double y, double y2, double y4, double y8)
 {
-    const double *c = GA__SERIES[f];
     return ((c[0] + c[1] * y) + y2 * (c[2] + c[3] * y)) + y4 * ((c[4] + c[5] * y) + y2 * (c[6] + c[7] * y)) +
            y8 * c[8];
+}
+
+/* sum_{k < 9} GA__SERIES[f][k] y^k by Estrin's scheme (ga__estrin9). */
+static inline double ga__series_estrin9(int f, double y, double y2, double y4, double y8)
+{
+    return ga__estrin9(GA__SERIES[f], y, y2, y4, y8);
 }
 
 #endif
