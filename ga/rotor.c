@@ -378,7 +378,8 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         double s = sg * r.s, nb = sqrt(nb2), inv = 1.0 / nb;
         /* the angle in [0, pi/2] for the principal log; the literal log's
            s < 0 gives pi - atan2(nb, -s), with pi = 2 GA_PIO2_HI + 2 GA_PIO2_LO */
-        double phi = s >= 0.0 ? atan2_quadrant(nb, s) : (2 * GA_PIO2_HI - atan2_quadrant(nb, -s)) + 2 * GA_PIO2_LO;
+        double phi = s >= 0.0 ? atan2_quadrant(nb, s)
+                              : (2 * GA_PIO2_HI - atan2_quadrant(nb, -s)) + 2 * GA_PIO2_LO;
         vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
         double pu = v_dot(p, u);
         double cpar = (s * pu + nb * (sg * r.e123n)) / q2;
