@@ -21,6 +21,7 @@
 #ifndef GAROTOR_MAT4_H
 #define GAROTOR_MAT4_H
 
+#include "rotor.h" /* GA_SE3_NORMALIZE_TOL, the tolerance of ga_se3_normalize */
 #include "types.h"
 
 #ifdef __cplusplus
@@ -30,10 +31,6 @@ extern "C" {
 /** The rigidity tolerance of docs/conventions.md: ga_se3_log and ga_se3_geodesic accept
  *  a matrix m when ga_se3_check(m, GA_SE3_TOL) is GA_OK. */
 #define GA_SE3_TOL 1e-9
-/** The normalisation tolerance (docs/conventions.md, "Keys near the group"):
- *  ga_se3_normalize and ga_quat_normalize accept an input this far from the
- *  group and project it onto it; `garotor interp --normalize` uses it. */
-#define GA_SE3_NORMALIZE_TOL 1e-3
 
 /* ---- plain 4x4 algebra ------------------------------------------------- */
 

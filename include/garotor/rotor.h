@@ -72,9 +72,15 @@ typedef struct {
     double w, x, y, z;
 } ga_quat;
 
-/** q / |q| when ||q| - 1| <= tol (GA_ERR_NOTRIGID when farther, GA_ERR_NOTFINITE
- *  for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL (mat4.h)). The rule
- *  of docs/conventions.md, "Keys near the group". */
+/** The normalisation tolerance (docs/conventions.md, "Keys near the group"):
+ *  ga_quat_normalize and ga_se3_normalize (mat4.h) accept an input this far
+ *  from the group and project it onto it; `garotor interp --normalize` uses
+ *  it. */
+#define GA_SE3_NORMALIZE_TOL 1e-3
+
+/** q / |q| when ||q| - 1| <= tol: the rule of docs/conventions.md, "Keys
+ *  near the group". Refuses: GA_ERR_NOTRIGID when q is farther,
+ *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL. */
 GA_API GA_NODISCARD ga_status ga_quat_normalize(ga_quat q, double tol, ga_quat *out);
 
 /** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
