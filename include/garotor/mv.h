@@ -151,7 +151,7 @@ GA_API GA_NODISCARD ga_status ga_mv_inverse(ga_mv a, ga_mv *out);
  * with s = <B^2>_0, q = <B^2>_4. A part is elliptic (l < 0: a rotation),
  * hyperbolic (l > 0: a boost, e.g. a dilation) or parabolic (l = 0: a null
  * 2-blade, a translation or a transversion). docs/versors.md has the closed
- * forms, how they avoid cancellation, and the measured accuracy. */
+ * forms, how they avoid cancellation, and the accuracy figures. */
 
 /** exp(B) of the bivector part of B (other grades are ignored), in closed
  *  form: exp(B1) exp(B2) of the split above. No status: NaN or Inf in B

@@ -44,7 +44,7 @@
  *              (Li-Hao eqs. 21-28) with a velocity V_i at every key:
  *              B_i = h_i V_i (eq. 26), C_i = plog(exp(-B_i) A_i^-1 A_{i+1})
  *              (eq. 27 corrected: the paper prints exp(+B_i), which contradicts
- *              eqs. 16 and 23; tests/test_interp.c shows the key is then missed),
+ *              eqs. 16 and 23 and misses the key),
  *              D_i = h_i V_{i+1} - Ad_{(A_i^-1 A_{i+1})^-1} B_i - 2 C_i (eq. 28).
  *              Default velocities (velocities == NULL): with the segment screw
  *              velocities s_i = plog(A_i^-1 A_{i+1})/h_i, each already a body
@@ -79,8 +79,8 @@
  *              conditions: w_0 = r_0/h_0, w_{n-1} = r_{n-2}/h_{n-2} (scipy's
  *              RotationSpline, whose construction this is). Where the
  *              sweeps stall, continuation in N; GA_ERR_DOMAIN if that does
- *              not converge either (docs/schemes.md: 1 of 4000 key sets with
- *              spacings log-uniform in [1e-3, 1e3], none of 12000 in [0.1, 10]).
+ *              not converge either (rare: docs/schemes.md, "Where Newton
+ *              fails", counts how often).
  *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
  *   C2         rigid groups only (group.h rigid; GA_ERR_ARG on affine):
  *              A(t) = A_i exp(x(t - t_i)), x a cubic in the twist with
@@ -99,8 +99,8 @@
  *              motion: V_i = xi solves the system with N = 0. Invariant under
  *              changes of world and body frame, like SCREW and LIHAO3.
  *              GA_ERR_DOMAIN if the sweeps and the continuation do not
- *              converge (docs/schemes.md: 2 of 4000 key sets with
- *              spacings log-uniform in [1e-3, 1e3], none of 12000 in [0.1, 10]).
+ *              converge (rare: docs/schemes.md, "Where Newton fails", counts
+ *              how often).
  *
  *   BSPLINE    the uniform cumulative cubic B-spline with the keys as control
  *              poses (approximating: the keys are not hit). Needs n >= 4 keys
@@ -235,15 +235,13 @@ typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
  *  [v_b, v_b] = 0). */
 typedef enum { GA_FRAME_BODY, GA_FRAME_SPATIAL } ga_frame;
 
-/** Samples between fresh direct evaluations in exact stepping. Between
+/** Samples between fresh direct evaluations in exact stepping (K). Between
  *  anchors the rounding of the nested differences grows like K, K^2, K^3 for
  *  the u, u^2, u^3 factors, and with the conditioning ||e^X|| ||e^-X|| of the
- *  factors. The worst relative error against direct in tests/test_interp.c
- *  (10^6 lihao3 steps on se3 and cga, lihao2, screw, lihao3 on affine keys)
- *  was 6e-16 at K = 1, 2e-14 at 8, 7e-14 at 16, 5e-13 at 32, 4e-12 at 64,
- *  1e-6 at 4096. K = 16 keeps a margin of 10 below 1e-12 at the cost of 6
- *  exps per 16 samples (lihao3; 1 for screw). The compiled library fixes
- *  it: this constant states its value, it does not set it. */
+ *  factors; K = 16 keeps EXACT within 1e-12 relative of DIRECT, with a
+ *  margin (docs/schemes.md, "Evaluation"), at the cost of 6 exps per 16
+ *  samples (lihao3; 1 for screw). The compiled library fixes it: this
+ *  constant states its value, it does not set it. */
 enum { GA_PATH_EXACT_REANCHOR = 16 };
 
 /** A path. Its fields are read-only after ga_path_init; the arrays live in the
