@@ -45,29 +45,40 @@ enum {
     /* clang-format on */
 };
 
-/** The grade (0..5) of blade index i. */
+/** The grade (0..5) of blade index i; -1 for i outside 0..31. */
 GA_API int ga_blade_grade(int i);
-/** The name of blade index i: "1", "e1", ..., "e12345". */
+/** The name of blade index i: "1", "e1", ..., "e12345"; "?" for i outside 0..31. */
 GA_API const char *ga_blade_name(int i);
-/** The basis vectors of blade index i as a bit mask (bit k-1 set for e_k). */
+/** The basis vectors of blade index i as a bit mask (bit k-1 set for e_k); 0 for
+ *  i outside 0..31. */
 GA_API unsigned ga_blade_mask(int i);
 
-/* ---- construction and linear operations ------------------------------ */
+/* ---- construction and linear operations ------------------------------
+ * Exact where the operation is (construction), else one rounding per
+ * coefficient (add, sub, scale); no status: NaN and Inf propagate. */
+/** The multivector 0. */
 GA_API ga_mv ga_mv_zero(void);
+/** The scalar s (all other coefficients 0). */
 GA_API ga_mv ga_mv_scalar(double s);
-/** The basis blade with index i (coefficient 1). */
+/** The basis blade with index i (coefficient 1); 0 for i outside 0..31. */
 GA_API ga_mv ga_mv_blade(int i);
 /** The vector x1 e1 + ... + x5 e5. */
 GA_API ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5);
+/** a + b, coefficient by coefficient. */
 GA_API ga_mv ga_mv_add(ga_mv a, ga_mv b);
+/** a - b, coefficient by coefficient. */
 GA_API ga_mv ga_mv_sub(ga_mv a, ga_mv b);
+/** s a, coefficient by coefficient. */
 GA_API ga_mv ga_mv_scale(ga_mv a, double s);
 /** 1 if every coefficient is finite, 0 otherwise. */
 GA_API int ga_mv_isfinite(ga_mv a);
 /** Largest absolute coefficient (the max norm, used for tolerances). */
 GA_API double ga_mv_maxabs(ga_mv a);
 
-/* ---- products ---------------------------------------------------------- */
+/* ---- products ----------------------------------------------------------
+ * Blade by blade from the definition (see the top of this header), each
+ * coefficient summed in the order of the blade loop; no status: NaN and Inf
+ * propagate. */
 /** Geometric product a b. */
 GA_API ga_mv ga_mv_gp(ga_mv a, ga_mv b);
 /** Outer (wedge) product a ^ b. */

@@ -23,16 +23,12 @@
  *              none inside the first and last segments ("not-a-knot"). That
  *              gives n - 2 pieces and exactly n free coefficients per
  *              component, fixed by the n keys: no end condition to choose, and
- *              for n = 3 it is QUADRATIC. The slopes d_k = X'(xi_k) at the
- *              breakpoints xi_0 = t_0, xi_1..xi_{n-3}, xi_{n-2} = t_{n-1} solve
- *              a tridiagonal system (one row per segment: the integral of the
- *              piecewise-linear X' over the segment equals X_{i+1} - X_i),
- *              which is strictly diagonally dominant for any increasing times,
- *              so it is solved without pivoting. This is our reading of the
- *              smoothed quadratics W-L §3.2 points to (Cendes-Wong): C1
- *              everywhere, each piece quadratic, nearly local (the inverse of
- *              a diagonally dominant tridiagonal matrix decays geometrically),
- *              exact when X is a quadratic in t.
+ *              for n = 3 it is QUADRATIC. The slopes at the breakpoints solve
+ *              a tridiagonal system, strictly diagonally dominant for any
+ *              increasing times (docs/schemes.md, "smooth"). Our reading of
+ *              the smoothed quadratics W-L §3.2 points to (Cendes-Wong): C1
+ *              everywhere, each piece quadratic, nearly local, exact when X
+ *              is a quadratic in t.
  *   LIHAO2     A(t) = A_i exp(u B_i) exp(u^2 C_i)  (Li-Hao eqs. 14-17):
  *              B_0 = h_0 V_0 from the given first-key velocity V_0 (default:
  *              V_0 = plog(A_0^-1 A_1)/h_0, Li-Hao Fig. 3c, i.e. the first
@@ -53,12 +49,10 @@
  *                V_0 = s_0,  V_{n-1} = s_{n-2}  (one-sided at the ends):
  *              the derivative of the parabola through three samples (Bessel;
  *              Catmull-Rom's central difference for uniform times, second-order
- *              for any spacing). Li-Hao Fig. 3d instead takes the two-segment
- *              chord log(A_{i-1}^-1 A_{i+1})/3, which lives in A_{i-1}'s body
- *              frame, not A_i's, and is scaled by 1/3 where a chord over two
- *              unit segments would need 1/2; both s_{i-1} and s_i above are in
- *              A_i's frame. A path whose keys lie on one screw motion is then
- *              reproduced exactly (every s_i equal, so C_i = D_i = 0).
+ *              for any spacing), both s_{i-1} and s_i in A_i's body frame
+ *              (docs/schemes.md, "lihao3", compares Li-Hao Fig. 3d's choice).
+ *              A path whose keys lie on one screw motion is then reproduced
+ *              exactly (every s_i equal, so C_i = D_i = 0).
  *
  *   DECOUPLED  rotation and translation apart (group.h to_qt/from_qt; rigid
  *              groups only, GA_ERR_ARG on affine): A(t) = (R(t), p(t)) with
