@@ -183,7 +183,7 @@
  *
  * Memory: nothing is allocated. ga_path_init copies the times and keys into a
  * caller's workspace of ga_path_workspace_size() bytes (aligned for double),
- * which must outlive the path. Functions returning int give GA_OK or a GA_E*
+ * which must outlive the path. Functions returning a ga_status give GA_OK or a GA_ERR_*
  * code (types.h): GA_ERR_ARG for no key or too few (one key is always enough), times not strictly increasing,
  * a bad count, a t outside the path's range (ga_path_range), a small or misaligned workspace,
  * BSPLINE key times not evenly spaced (ga_times_uneven); GA_ERR_NOTFINITE for NaN/Inf
