@@ -6,7 +6,11 @@
 #   - enumerator families cannot collide: for each enum of the public headers,
 #     its family prefix (the longest common prefix of its members, the first
 #     member left out as it may be the family's zero, GA_OK) begins no member
-#     of any other enum.
+#     of any other enum;
+#   - each public header compiles on its own (a translation unit that
+#     includes it and nothing else) as C11 with -Wall -Wextra -Wpedantic
+#     -Werror, with ${CC:-cc}, and as C++ (-fsyntax-only) when ${CXX:-c++} is
+#     found (skipped quietly otherwise).
 # Usage: api_check.sh BUILD_DIR SOURCE_DIR
 set -eu
 build=$1
@@ -74,4 +78,40 @@ rm -f "${TMPDIR:-/tmp}/garotor-enums.$$"
 echo "$out"
 case "$out" in *FAIL*) fail=1 ;; esac
 [ "$(echo "$out" | grep -c '^ok   enum')" -ge 4 ] || { echo "FAIL fewer enums found than the headers have"; fail=1; }
+
+# every public header on its own: the source include/ and the build's
+# include/ (version.h is made by meson) on the include path
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/garotor-hdr.XXXXXX")
+cc=${CC:-cc}
+cxx=${CXX:-c++}
+command -v "${cxx%% *}" >/dev/null 2>&1 || cxx=
+nh=0
+hfail=0
+for h in "$src"/include/garotor/*.h "$build"/include/garotor/version.h; do
+    [ -f "$h" ] || continue
+    name=$(basename "$h")
+    # a declaration of its own: a header of macros only would leave ISO C an
+    # empty translation unit
+    printf '#include <garotor/%s>\ntypedef int garotor_header_check;\n' "$name" >"$tmp/t.c"
+    if ! $cc -std=c11 -Wall -Wextra -Wpedantic -Werror -I"$src/include" -I"$build/include" \
+        -c "$tmp/t.c" -o "$tmp/t.o" >"$tmp/err" 2>&1; then
+        echo "FAIL <garotor/$name> does not compile on its own as C11:"
+        sed 's/^/     /' "$tmp/err"
+        hfail=1
+    fi
+    if [ -n "$cxx" ] && ! $cxx -x c++ -fsyntax-only -Wall -Wextra -Wpedantic -Werror -I"$src/include" \
+        -I"$build/include" "$tmp/t.c" >"$tmp/err" 2>&1; then
+        echo "FAIL <garotor/$name> does not compile on its own as C++:"
+        sed 's/^/     /' "$tmp/err"
+        hfail=1
+    fi
+    nh=$((nh + 1))
+done
+rm -rf "$tmp"
+[ "$nh" -ge 14 ] || { echo "FAIL only $nh public headers found"; hfail=1; }
+if [ "$hfail" = 0 ]; then
+    echo "ok   each of the $nh public headers compiles on its own as C11${cxx:+ and as C++} (-Wall -Wextra -Wpedantic -Werror)"
+else
+    fail=1
+fi
 exit $fail

@@ -68,7 +68,8 @@ GA_API ga_mv ga_point_up(ga_vec3 x);
  *  GA_ERR_NOTFINITE for NaN/Inf in x or lambda, GA_ERR_ARG for lambda <= 0,
  *  GA_ERR_DOMAIN when (|x|/lambda)^2 overflows. */
 GA_API GA_NODISCARD ga_status ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out);
-/** The down-projection, lambda = 1: the x with X = w F(x) for some w != 0. */
+/** The down-projection, lambda = 1: the x with X = w F(x) for some w != 0;
+ *  ga_point_down_scaled(X, 1, out), with its statuses. */
 GA_API GA_NODISCARD ga_status ga_point_down(ga_mv X, ga_vec3 *out);
 /** The down-projection, the inverse of ga_point_up_scaled up to scale: X = w F(x)
  *  with the weight w = -X.n (w < 0 is allowed: -F(x) is the same point), and

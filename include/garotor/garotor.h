@@ -7,16 +7,16 @@
  *   export.h     GA_API and GA_NODISCARD, the markers on public declarations
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
  *   numtext.h    doubles as the shortest decimal that reads back the same
- *   mv.h         the full 32-component multivector of G(4,1): the reference algebra
+ *   mv.h         the full 32-component multivector of G(4,1): the reference algebra,
+ *                and exp, log and split of any bivector and rotor of G(4,1)
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
  *   object.h     kinds and read-back of every object, meet, projection, distance,
  *                angle, the rigid motion between two objects
  *   rotor.h      the compact rigid-motion rotor: exp, log, screws, the bridge to
  *                matrices, quaternions and dual quaternions
  *   rotor_inline.h  the hot path of rotor.h inline: ga_rotor_mul_inline, ...
- *   versor.h     the general algebra: versors (reflections, inversions, dilations,
- *                transversions) and their sandwich, exp, log and split of any
- *                bivector and rotor of G(4,1)
+ *   versor.h     versors (reflections, inversions, dilations, transversions)
+ *                and their sandwich
  *   mat4.h       4x4 matrices: SE(3) exp and log (Eberly), general expm and logm
  *   group.h      the Lie-group interface the schemes are written against
  *   path.h       interpolation schemes through key poses, and their evaluators

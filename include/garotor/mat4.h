@@ -11,16 +11,18 @@
  * and its motion is expm(xi^). In Eberly's notation S = [w]x, U = v and
  * theta = |w| (Eberly eqs. 8, 19).
  *
- * Two implementations of exp and log live here and are tested against each
- * other (tests/test_mat4.c): the SE(3) closed forms (fast, exactly rigid, full
- * relative accuracy as theta -> 0 and theta -> pi) and the general ones for any
- * real 4x4 matrix (Al-Mohy & Higham's scaling and squaring with Pade for exp,
+ * Two implementations of exp and log live here and agree with each other on
+ * rigid motions: the SE(3) closed forms (fast, exactly rigid, full relative
+ * accuracy as theta -> 0 and theta -> pi) and the general ones for any real
+ * 4x4 matrix (Al-Mohy & Higham's scaling and squaring with Pade for exp,
  * their Schur-based inverse scaling and squaring for log), which the affine
- * group uses for scalings and shears.
+ * group uses for scalings and shears. docs/matrices.md has both, with the
+ * details of the general algorithms.
  */
 #ifndef GAROTOR_MAT4_H
 #define GAROTOR_MAT4_H
 
+#include "rotor.h" /* GA_SE3_NORMALIZE_TOL, the tolerance of ga_se3_normalize */
 #include "types.h"
 
 #ifdef __cplusplus
@@ -30,10 +32,6 @@ extern "C" {
 /** The rigidity tolerance of docs/conventions.md: ga_se3_log and ga_se3_geodesic accept
  *  a matrix m when ga_se3_check(m, GA_SE3_TOL) is GA_OK. */
 #define GA_SE3_TOL 1e-9
-/** The normalisation tolerance (docs/conventions.md, "Keys near the group"):
- *  ga_se3_normalize and ga_quat_normalize accept an input this far from the
- *  group and project it onto it; `garotor interp --normalize` uses it. */
-#define GA_SE3_NORMALIZE_TOL 1e-3
 
 /* ---- plain 4x4 algebra ------------------------------------------------- */
 
@@ -127,32 +125,20 @@ GA_API ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi);
 
 /* ---- general real 4x4: exp and principal log ----------------------------- */
 
-/** expm(a) for any real 4x4 by scaling and squaring (Al-Mohy & Higham, "A new
- *  scaling and squaring algorithm for the matrix exponential", 2009, Alg.
- *  5.1): the diagonal Pade approximant r_m, m in {3, 5, 7, 9, 13}, and the
- *  number s of squarings chosen from d_k = ||a^k||_1^(1/k) (k = 4, 6, and
- *  the bounds d8 <= d4, d10 <= (||a^4|| ||a^6||)^(1/10)) against Higham's
- *  theta_m rather than from ||a||_1, with the ell(a, m) correction of that
- *  paper for a nonnormal |a|: a nonnormal a (Moler's badly scaled matrix,
- *  ||a||_1 = 4e10) is not overscaled. ell is computed (exactly, by 2m + 1
- *  vector products with |a|) only for m = 9 and 13; a degree m < 9 is taken
- *  only where ||a||_1 alone shows ell = 0, otherwise the next degree, which
- *  is as accurate at the same s. r_m(a/2^s) is squared s times, on
- *  X = r - I as X <- 2X + X^2, which keeps relative accuracy for results
- *  near I (tiny rotations under large translations), until a diagonal entry
- *  of I + X falls below 3/4 (contraction), after which plain squaring is the
- *  more accurate form. A homogeneous generator (last row 0) gives a result
- *  whose last row is 0 0 0 1 exactly; its products are block triangular
- *  (40 multiplications, not 64) and its Pade solve 3x3. An upper
- *  quasi-triangular a (diagonal blocks of size 1 and 2, zeros below them:
- *  a triangular matrix, an embedded 1x1 or 2x2) has, after the Pade step
- *  and after every squaring, its diagonal blocks of exp(2^-j a) set from
- *  their closed forms (exp of the 1x1 entries, e^m (cosh mu I + sinch mu N)
- *  for a 2x2) and the superdiagonal between two 1x1 blocks from the
- *  formula of Al-Mohy & Higham 2009, sec. 2, as scipy does for triangular
- *  input: squaring no longer amplifies their rounding. GA_ERR_NOTFINITE if
- *  a holds NaN/Inf; GA_ERR_DOMAIN if the result overflows (it is not
- *  representable in double). */
+/** expm(a) for any real 4x4, by scaling and squaring (Al-Mohy & Higham, "A
+ *  new scaling and squaring algorithm for the matrix exponential", 2009,
+ *  Alg. 5.1): a diagonal Pade approximant r_m, m in {3, 5, 7, 9, 13}, with m
+ *  and the number s of squarings chosen from d_k = ||a^k||_1^(1/k) against
+ *  Higham's theta_m (the backward error bound of that paper), so that a
+ *  nonnormal a is not overscaled; r_m(a/2^s) is then squared s times.
+ *  A homogeneous generator (last row 0) gives a result whose last row is
+ *  0 0 0 1 exactly. An upper quasi-triangular a (a triangular matrix, an
+ *  embedded 1x1 or 2x2) has its diagonal blocks, and the superdiagonal
+ *  between two 1x1 blocks, recomputed in closed form after every squaring
+ *  (Al-Mohy & Higham 2009, sec. 2), as scipy does for triangular input.
+ *  docs/matrices.md, "The algorithms of expm and logm", has the details.
+ *  Refuses: GA_ERR_NOTFINITE if a holds NaN/Inf; GA_ERR_DOMAIN if the result
+ *  overflows (it is not representable in double). */
 GA_API GA_NODISCARD ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
 
 /** ga_mat4_logm takes Eberly's closed form (as ga_se3_log) for a homogeneous
@@ -169,35 +155,26 @@ GA_API GA_NODISCARD ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out);
 /** The principal log of a real 4x4 (the log whose eigenvalues have imaginary
  *  parts in (-pi, pi)), by the Schur-based inverse scaling and squaring of
  *  Al-Mohy & Higham ("Improved inverse scaling and squaring algorithms for
- *  the matrix logarithm", 2012, Alg. 4.1), in real arithmetic:
- *   - the real Schur form A - I = Q (T - I) Q^T (Householder-Hessenberg,
- *     Francis double-shift QR; of A - I so that a matrix near I keeps
- *     relative accuracy), or A = Q T Q^T when an eigenvalue has modulus
- *     below 1/2 (A - I would round it away: 1e-100 - 1 is -1). A
- *     homogeneous A = [B t; 0 1] is block triangular: only B is reduced,
- *     and the last row of the log is 0 exactly;
- *   - the domain decided from the eigenvalues: GA_ERR_DOMAIN for a real
- *     eigenvalue < 0 or a complex pair within GA_MAT4_LOGM_AXIS_TOL of the
- *     negative real axis, and nothing else; GA_ERR_SINGULAR for an
- *     eigenvalue 0 or a numerically singular a (as ga_mat4_inverse) whose
- *     determinant (the LU's, run to the end) is not negative: one with
- *     det < 0 has a negative real eigenvalue however ill-conditioned it
- *     is, GA_ERR_DOMAIN;
- *   - square roots T_k = T^(1/2^k) by the real block recurrence (Higham
- *     1987), 2x2 blocks of complex pairs in closed form (B = aI + N with
- *     N^2 = -w^2 I, so f(B) = Re f(a + iw) I + Im f(a + iw)/w N), with
- *     T_k - I carried as (T_{k+1} + I)^{-1} (T_k - I), until
- *     alpha_p(T_k - I) = max(||X^p||^(1/p), ||X^(p+1)||^(1/(p+1))), p = 3
- *     or 4, is at most theta_8 = 0.3667 (the paper's Table 2.1);
- *   - log T = 2^k r_8(T_k - I), r_8 the [8/8] Pade approximant in partial
- *     fractions, then its diagonal blocks (and the superdiagonal between two
- *     real eigenvalues) replaced by their closed forms from T itself.
- *  A rigid motion (within GA_MAT4_LOGM_RIGID_TOL) turning by more than pi/2
- *  takes Eberly's closed form instead (as ga_se3_log), exact to rounding up
- *  to the half turn; an exact half turn (skew part 0) is GA_ERR_DOMAIN.
- *  There is no backward-error test: a conditioning-limited result (a
- *  general matrix near a half turn, error about eps / (pi - th)) is returned,
- *  not refused. */
+ *  the matrix logarithm", 2012, Alg. 4.1), in real arithmetic: the real
+ *  Schur form (of A - I, so that a matrix near I keeps relative accuracy, or
+ *  of A when an eigenvalue has modulus below 1/2), square roots
+ *  T_k = T^(1/2^k) until T_k - I is within theta_8 = 0.3667 (the paper's
+ *  Table 2.1), then log T = 2^k r_8(T_k - I), r_8 the [8/8] Pade approximant,
+ *  with the diagonal blocks recomputed in closed form. A homogeneous
+ *  A = [B t; 0 1] gives a log whose last row is 0 exactly. A rigid motion
+ *  (within GA_MAT4_LOGM_RIGID_TOL) turning by more than pi/2 takes Eberly's
+ *  closed form instead (as ga_se3_log), exact to rounding up to the half
+ *  turn. docs/matrices.md, "The algorithms of expm and logm", has the
+ *  details.
+ *  Refuses: GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_DOMAIN for a real eigenvalue
+ *  < 0 or a complex pair within GA_MAT4_LOGM_AXIS_TOL of the negative real
+ *  axis (an exact half turn included), and for nothing else; GA_ERR_SINGULAR
+ *  for an eigenvalue 0 or a numerically singular a (as ga_mat4_inverse)
+ *  whose determinant is not negative (one with det < 0 has a negative real
+ *  eigenvalue however ill-conditioned it is: GA_ERR_DOMAIN).
+ *  Accuracy: there is no backward-error test: a conditioning-limited result
+ *  (a general matrix near a half turn, error about eps / (pi - th)) is
+ *  returned, not refused. */
 GA_API GA_NODISCARD ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out);
 
 #ifdef __cplusplus

@@ -12,7 +12,8 @@
  * basis vectors; the sign of a product is the parity of the swaps that sort
  * it, times -1 for e5*e5), written out term by term by gen/generate.py and
  * summed in the order of the blade loop. They are the reference that the
- * compact rotor (rotor.h) is tested against.
+ * compact rotor (rotor.h) is checked against. Also here: exp, log and the
+ * split of any bivector and rotor of G(4,1) (Dorst-Valkenburg 2011).
  */
 #ifndef GAROTOR_MV_H
 #define GAROTOR_MV_H
@@ -44,29 +45,40 @@ enum {
     /* clang-format on */
 };
 
-/** The grade (0..5) of blade index i. */
+/** The grade (0..5) of blade index i; -1 for i outside 0..31. */
 GA_API int ga_blade_grade(int i);
-/** The name of blade index i: "1", "e1", ..., "e12345". */
+/** The name of blade index i: "1", "e1", ..., "e12345"; "?" for i outside 0..31. */
 GA_API const char *ga_blade_name(int i);
-/** The basis vectors of blade index i as a bit mask (bit k-1 set for e_k). */
+/** The basis vectors of blade index i as a bit mask (bit k-1 set for e_k); 0 for
+ *  i outside 0..31. */
 GA_API unsigned ga_blade_mask(int i);
 
-/* ---- construction and linear operations ------------------------------ */
+/* ---- construction and linear operations ------------------------------
+ * Exact where the operation is (construction), else one rounding per
+ * coefficient (add, sub, scale); no status: NaN and Inf propagate. */
+/** The multivector 0. */
 GA_API ga_mv ga_mv_zero(void);
+/** The scalar s (all other coefficients 0). */
 GA_API ga_mv ga_mv_scalar(double s);
-/** The basis blade with index i (coefficient 1). */
+/** The basis blade with index i (coefficient 1); 0 for i outside 0..31. */
 GA_API ga_mv ga_mv_blade(int i);
 /** The vector x1 e1 + ... + x5 e5. */
 GA_API ga_mv ga_mv_vector(double x1, double x2, double x3, double x4, double x5);
+/** a + b, coefficient by coefficient. */
 GA_API ga_mv ga_mv_add(ga_mv a, ga_mv b);
+/** a - b, coefficient by coefficient. */
 GA_API ga_mv ga_mv_sub(ga_mv a, ga_mv b);
+/** s a, coefficient by coefficient. */
 GA_API ga_mv ga_mv_scale(ga_mv a, double s);
 /** 1 if every coefficient is finite, 0 otherwise. */
 GA_API int ga_mv_isfinite(ga_mv a);
 /** Largest absolute coefficient (the max norm, used for tolerances). */
 GA_API double ga_mv_maxabs(ga_mv a);
 
-/* ---- products ---------------------------------------------------------- */
+/* ---- products ----------------------------------------------------------
+ * Blade by blade from the definition (see the top of this header), each
+ * coefficient summed in the order of the blade loop; no status: NaN and Inf
+ * propagate. */
 /** Geometric product a b. */
 GA_API ga_mv ga_mv_gp(ga_mv a, ga_mv b);
 /** Outer (wedge) product a ^ b. */
@@ -141,6 +153,79 @@ GA_API double ga_mv_norm(ga_mv a);
  *  not a nonzero scalar (then a is not a versor, or is null) or the inverse
  *  overflows, GA_ERR_NOTFINITE on NaN/Inf input. */
 GA_API GA_NODISCARD ga_status ga_mv_inverse(ga_mv a, ga_mv *out);
+
+/* ---- exp and log of the whole algebra ------------------------------------
+ * A bivector B of G(4,1) is a sum B1 + B2 of two commuting 2-blades with
+ * B1^2 = l1, B2^2 = l2 scalars (Dorst-Valkenburg 2011, "Square root and
+ * logarithm of rotors in 3D conformal geometric algebra using polar
+ * decomposition", §3), where l1, l2 are the roots of l^2 - s l + q.q/4 = 0
+ * with s = <B^2>_0, q = <B^2>_4. A part is elliptic (l < 0: a rotation),
+ * hyperbolic (l > 0: a boost, e.g. a dilation) or parabolic (l = 0: a null
+ * 2-blade, a translation or a transversion). docs/versors.md has the closed
+ * forms, how they avoid cancellation, and the accuracy figures. */
+
+/** exp(B) of the bivector part of B (other grades are ignored), in closed
+ *  form: exp(B1) exp(B2) of the split above. No status: NaN or Inf in B
+ *  propagates.
+ *  Range: a bivector whose parts are all elliptic has a finite exp on the
+ *  group at any finite size, and t e12 gives exactly cos t + sin t e12. A
+ *  hyperbolic part t (Bi^2 = t^2 > 0) beyond 710.475 overflows as exp does:
+ *  a coefficient is +-Inf with the true coefficient's sign where that is
+ *  beyond DBL_MAX, its value where it is in range, 0 where it is 0, never
+ *  NaN for finite B; each is known to ~u t e^t/2 times the largest, so one
+ *  below that may be Inf.
+ *  Accuracy: an angle of B is known to u |B| radians, a part below u |B|
+ *  only as rounding; a result off the group by more than rounding is taken
+ *  onto it by Newton steps R (3 - ~R R)/2. A null part larger than the rest
+ *  (max |B| > 8, both squares li below |B|^2/64: a screw translating far, in
+ *  any conformal frame) is taken in the frame where B is rigid
+ *  (docs/versors.md, "A null part"): within 4 u |B|^2 of the exact exp,
+ *  which is what the rounding of B itself leaves. */
+GA_API ga_mv ga_mv_exp(ga_mv B);
+
+/** The principal logarithm of a rotor R (an even versor with R ~R = 1): a
+ *  bivector B with exp(B) = R. Principal: log(exp(B)) = B whenever every
+ *  elliptic part Bi of B (Bi^2 = -ti^2 < 0) has ti < pi/2; in general every
+ *  elliptic part has ti in [0, pi], and a sign of R that no part can take
+ *  within [0, pi/2) goes to the elliptic part with the largest angle (a
+ *  part of angle pi in a plane that commutes with the rest when R has none).
+ *  Refuses: GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_DOMAIN when R is not a rotor
+ *  to a relative 1e-9 (odd parts, R ~R != 1, or exp(log R) != R to 1e-9),
+ *  which is where R has no real logarithm. Beside a large null part that
+ *  check is widened to 64 u s^2 (s = min(|R|, |B|) + 4) where that is
+ *  larger, up to 1e-6 (s ~ 2.6e5), beyond which GA_ERR_DOMAIN.
+ *  Accuracy: exp(log R) = R to 1e-13 of |R| on the principal domain and
+ *  beyond it, a rotation near a full turn beside a null part included, and
+ *  log(exp(B)) = B to 1e-13 where every elliptic half-angle is below pi/2.
+ *  Beside a large null part (|B| of 10 to 3000) exp(log R) = R and
+ *  log(exp B) = B hold to 32 and 16 u |B|^2: exp of a log of that size is
+ *  known to no better. */
+GA_API GA_NODISCARD ga_status ga_mv_log(ga_mv R, ga_mv *out);
+
+/** B's bivector part as a sum B1 + B2 of two commuting 2-blades (B1 B2 =
+ *  B2 B1, Bi^2 scalar; Dorst-Valkenburg 2011 §3), |B1^2| >= |B2^2| where the
+ *  parts are separated; a 2-blade gives (B, 0). Two rotations (q = <B^2>_4
+ *  spanning a Euclidean 4-space) are split through the ideals of
+ *  (1 +- J)/2, J = q/sqrt(q.q): exact for any B, so also for isoclinic B
+ *  (t1 = t2), where the split is not unique and any one is returned.
+ *  Otherwise by B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2),
+ *  keeping the split with the smallest residual; a rotation t beside a null
+ *  part N in the frame where it is rigid, which holds for any t down to 0
+ *  (docs/versors.md, "A null part").
+ *  Refuses: GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
+ *  GA_ERR_DOMAIN when a part overflows.
+ *  Accuracy: through ga_mv_factor, the factors multiply to R, commute and
+ *  are simple to 1e-13 of |R| for every family (rotations, boosts, null
+ *  parts, their pairs, isoclinic and near-isoclinic, a small turn beside a
+ *  null part, dense random bivectors). */
+GA_API GA_NODISCARD ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
+
+/** A rotor R as a product R1 R2 of commuting simple rotors Ri = exp(Bi)
+ *  (Bi 2-blades: a rotation, a boost such as a dilation, or a null part such
+ *  as a translation or transversion): the ga_mv_split of ga_mv_log(R).
+ *  Refuses with the status of ga_mv_log (GA_ERR_DOMAIN where R has no real
+ *  log) or of ga_mv_split. Accuracy as ga_mv_split. */
+GA_API GA_NODISCARD ga_status ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2);
 
 #ifdef __cplusplus
 }

@@ -22,27 +22,16 @@
  *     anywhere up to 1e8 from the origin: conformal.h's constructors build
  *     about the first point and translate (the translation rotor moves F(x) to
  *     F(x + a) without cancelling), and the meet of two flats is taken
- *     directly (tests/test_meet.c: worst 1.1e-15 at 1e8);
+ *     directly;
  *   - rounds are read back where 8 u s <= GA_OBJECT_TOL |w| (s the largest
  *     coefficient of the carrier sphere) and refused with GA_ERR_PRECISION (or,
  *     when rounding already broke the blade, GA_ERR_NOTBLADE) beyond; for a
  *     unit-sized round that is within a few tens of units of the origin. A
  *     dual vector whose weight is below 64 u s is a flat as stored: at 1e8,
  *     ga_sphere_dual of a sphere of radius below ~1e7 is already a plane.
- * This is not a defect of the read-back that a better formula could mend: a
- * round far out has lost, in its stored e4/e5 coefficients, the information
- * the read-back needs. A direct round is T_c((o + (r^2/2) n) ^ E), o = F(0) =
- * -nbar/2 and E a Euclidean blade that holds the weight (DFM §14.2); its part
- * o ^ E, which translations leave as it is, alone carries the weight against
- * which the centre and r^2 are measured (for a dual sphere w (F(c) - (r^2/2)
- * n), the nbar coefficient -w/2). Stored as e4 = (n + nbar)/2, e5 = (n -
- * nbar)/2 beside n-parts of size |c|^2, that part keeps an absolute error
- * u |c|^2 |w|. A sphere has
- * no other coefficient to recover it from (5 numbers for 4 unknowns and a
- * weight, in either form), and the redundant coefficients of a point pair or
- * circle determine it only away from degenerate orientations (a pair
- * perpendicular to its centre's direction has none), so no read-back of one
- * ga_mv can keep 1e-12 for every round far out.
+ * No read-back of one ga_mv can keep 1e-12 for every round far out: the
+ * stored e4/e5 coefficients have lost what it needs (docs/conformal.md, "Far
+ * from the origin").
  *
  * Local origin and length scale. The answer is to carry an origin o and a
  * length lambda with the object: a scene held "about (o, lambda)" is the
@@ -64,8 +53,7 @@
  *   - project, distance: on (x - o) / lambda, giving lambda y + o and lambda d.
  * With o within a few sizes of the scene and lambda within a factor 4 or so of
  * its size, rounds anywhere up to 1e8 from the origin (and beyond) read back to
- * a few u L and are not refused (tests/test_meet.c, "about o": all kinds,
- * tangent and imaginary included, at 1 to 1e8).
+ * a few u L and are not refused (all kinds, tangent and imaginary included).
  */
 #ifndef GAROTOR_OBJECT_H
 #define GAROTOR_OBJECT_H

@@ -23,16 +23,12 @@
  *              none inside the first and last segments ("not-a-knot"). That
  *              gives n - 2 pieces and exactly n free coefficients per
  *              component, fixed by the n keys: no end condition to choose, and
- *              for n = 3 it is QUADRATIC. The slopes d_k = X'(xi_k) at the
- *              breakpoints xi_0 = t_0, xi_1..xi_{n-3}, xi_{n-2} = t_{n-1} solve
- *              a tridiagonal system (one row per segment: the integral of the
- *              piecewise-linear X' over the segment equals X_{i+1} - X_i),
- *              which is strictly diagonally dominant for any increasing times,
- *              so it is solved without pivoting. This is our reading of the
- *              smoothed quadratics W-L §3.2 points to (Cendes-Wong): C1
- *              everywhere, each piece quadratic, nearly local (the inverse of
- *              a diagonally dominant tridiagonal matrix decays geometrically),
- *              exact when X is a quadratic in t.
+ *              for n = 3 it is QUADRATIC. The slopes at the breakpoints solve
+ *              a tridiagonal system, strictly diagonally dominant for any
+ *              increasing times (docs/schemes.md, "smooth"). Our reading of
+ *              the smoothed quadratics W-L §3.2 points to (Cendes-Wong): C1
+ *              everywhere, each piece quadratic, nearly local, exact when X
+ *              is a quadratic in t.
  *   LIHAO2     A(t) = A_i exp(u B_i) exp(u^2 C_i)  (Li-Hao eqs. 14-17):
  *              B_0 = h_0 V_0 from the given first-key velocity V_0 (default:
  *              V_0 = plog(A_0^-1 A_1)/h_0, Li-Hao Fig. 3c, i.e. the first
@@ -44,7 +40,7 @@
  *              (Li-Hao eqs. 21-28) with a velocity V_i at every key:
  *              B_i = h_i V_i (eq. 26), C_i = plog(exp(-B_i) A_i^-1 A_{i+1})
  *              (eq. 27 corrected: the paper prints exp(+B_i), which contradicts
- *              eqs. 16 and 23; tests/test_interp.c shows the key is then missed),
+ *              eqs. 16 and 23 and misses the key),
  *              D_i = h_i V_{i+1} - Ad_{(A_i^-1 A_{i+1})^-1} B_i - 2 C_i (eq. 28).
  *              Default velocities (velocities == NULL): with the segment screw
  *              velocities s_i = plog(A_i^-1 A_{i+1})/h_i, each already a body
@@ -53,12 +49,10 @@
  *                V_0 = s_0,  V_{n-1} = s_{n-2}  (one-sided at the ends):
  *              the derivative of the parabola through three samples (Bessel;
  *              Catmull-Rom's central difference for uniform times, second-order
- *              for any spacing). Li-Hao Fig. 3d instead takes the two-segment
- *              chord log(A_{i-1}^-1 A_{i+1})/3, which lives in A_{i-1}'s body
- *              frame, not A_i's, and is scaled by 1/3 where a chord over two
- *              unit segments would need 1/2; both s_{i-1} and s_i above are in
- *              A_i's frame. A path whose keys lie on one screw motion is then
- *              reproduced exactly (every s_i equal, so C_i = D_i = 0).
+ *              for any spacing), both s_{i-1} and s_i in A_i's body frame
+ *              (docs/schemes.md, "lihao3", compares Li-Hao Fig. 3d's choice).
+ *              A path whose keys lie on one screw motion is then reproduced
+ *              exactly (every s_i equal, so C_i = D_i = 0).
  *
  *   DECOUPLED  rotation and translation apart (group.h to_qt/from_qt; rigid
  *              groups only, GA_ERR_ARG on affine): A(t) = (R(t), p(t)) with
@@ -79,8 +73,8 @@
  *              conditions: w_0 = r_0/h_0, w_{n-1} = r_{n-2}/h_{n-2} (scipy's
  *              RotationSpline, whose construction this is). Where the
  *              sweeps stall, continuation in N; GA_ERR_DOMAIN if that does
- *              not converge either (docs/schemes.md: 1 of 4000 key sets with
- *              spacings log-uniform in [1e-3, 1e3], none of 12000 in [0.1, 10]).
+ *              not converge either (rare: docs/schemes.md, "Where Newton
+ *              fails", counts how often).
  *              Body velocity (w, R^T p'), acceleration (w', R^T p'' - w x v).
  *   C2         rigid groups only (group.h rigid; GA_ERR_ARG on affine):
  *              A(t) = A_i exp(x(t - t_i)), x a cubic in the twist with
@@ -99,8 +93,8 @@
  *              motion: V_i = xi solves the system with N = 0. Invariant under
  *              changes of world and body frame, like SCREW and LIHAO3.
  *              GA_ERR_DOMAIN if the sweeps and the continuation do not
- *              converge (docs/schemes.md: 2 of 4000 key sets with
- *              spacings log-uniform in [1e-3, 1e3], none of 12000 in [0.1, 10]).
+ *              converge (rare: docs/schemes.md, "Where Newton fails", counts
+ *              how often).
  *
  *   BSPLINE    the uniform cumulative cubic B-spline with the keys as control
  *              poses (approximating: the keys are not hit). Needs n >= 4 keys
@@ -189,7 +183,7 @@
  *
  * Memory: nothing is allocated. ga_path_init copies the times and keys into a
  * caller's workspace of ga_path_workspace_size() bytes (aligned for double),
- * which must outlive the path. Functions returning int give GA_OK or a GA_E*
+ * which must outlive the path. Functions returning a ga_status give GA_OK or a GA_ERR_*
  * code (types.h): GA_ERR_ARG for no key or too few (one key is always enough), times not strictly increasing,
  * a bad count, a t outside the path's range (ga_path_range), a small or misaligned workspace,
  * BSPLINE key times not evenly spaced (ga_times_uneven); GA_ERR_NOTFINITE for NaN/Inf
@@ -235,15 +229,13 @@ typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
  *  [v_b, v_b] = 0). */
 typedef enum { GA_FRAME_BODY, GA_FRAME_SPATIAL } ga_frame;
 
-/** Samples between fresh direct evaluations in exact stepping. Between
+/** Samples between fresh direct evaluations in exact stepping (K). Between
  *  anchors the rounding of the nested differences grows like K, K^2, K^3 for
  *  the u, u^2, u^3 factors, and with the conditioning ||e^X|| ||e^-X|| of the
- *  factors. The worst relative error against direct in tests/test_interp.c
- *  (10^6 lihao3 steps on se3 and cga, lihao2, screw, lihao3 on affine keys)
- *  was 6e-16 at K = 1, 2e-14 at 8, 7e-14 at 16, 5e-13 at 32, 4e-12 at 64,
- *  1e-6 at 4096. K = 16 keeps a margin of 10 below 1e-12 at the cost of 6
- *  exps per 16 samples (lihao3; 1 for screw). The compiled library fixes
- *  it: this constant states its value, it does not set it. */
+ *  factors; K = 16 keeps EXACT within 1e-12 relative of DIRECT, with a
+ *  margin (docs/schemes.md, "Evaluation"), at the cost of 6 exps per 16
+ *  samples (lihao3; 1 for screw). The compiled library fixes it: this
+ *  constant states its value, it does not set it. */
 enum { GA_PATH_EXACT_REANCHOR = 16 };
 
 /** A path. Its fields are read-only after ga_path_init; the arrays live in the

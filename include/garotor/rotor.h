@@ -72,9 +72,15 @@ typedef struct {
     double w, x, y, z;
 } ga_quat;
 
-/** q / |q| when ||q| - 1| <= tol (GA_ERR_NOTRIGID when farther, GA_ERR_NOTFINITE
- *  for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL (mat4.h)). The rule
- *  of docs/conventions.md, "Keys near the group". */
+/** The normalisation tolerance (docs/conventions.md, "Keys near the group"):
+ *  ga_quat_normalize and ga_se3_normalize (mat4.h) accept an input this far
+ *  from the group and project it onto it; `garotor interp --normalize` uses
+ *  it. */
+#define GA_SE3_NORMALIZE_TOL 1e-3
+
+/** q / |q| when ||q| - 1| <= tol: the rule of docs/conventions.md, "Keys
+ *  near the group". Refuses: GA_ERR_NOTRIGID when q is farther,
+ *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL. */
 GA_API GA_NODISCARD ga_status ga_quat_normalize(ga_quat q, double tol, ga_quat *out);
 
 /** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
@@ -157,14 +163,13 @@ GA_API ga_twist ga_generator_to_twist(ga_generator b);
 
 /* ---- exp and log ------------------------------------------------------- */
 
-/** exp(B), closed form (W-L Thm 3 / eq. 2), one sin/cos pair, exact for every B
- *  (pure translations and small angles included). For phi = |beta| <= pi/4,
- *  cos phi, sinc phi and (cos phi - sinc phi)/phi^2 are Taylor series in
- *  phi^2; up to 3 pi/4 (rotations up to 3 pi/2) the same series after
- *  reduction by pi/2, no libm call; beyond, libm's sin and cos. Any finite
- *  angle is accepted, also beyond ~1e154 where phi^2 overflows (the scaled
- *  norm there): the rotation by the double angle, as ga_se3_exp gives it.
- *  NaN in, NaN out. */
+/** exp(B) of a generator, in closed form (W-L Thm 3 / eq. 2): the formula
+ *  at the top of this header, exact for every B (pure translations and small
+ *  angles included: cos phi, sinc phi and (cos phi - sinc phi)/phi^2 keep
+ *  their relative accuracy as phi -> 0; docs/rotors.md, "The exponential").
+ *  Any finite angle is accepted, also beyond ~1e154 where phi^2 overflows
+ *  (the scaled norm there): the rotation by the double angle, as ga_se3_exp
+ *  gives it. No status: NaN in, NaN out. */
 GA_API ga_rotor ga_rotor_exp(ga_generator b);
 
 /** The principal logarithm l(R) (W-L Thm 9, made robust): the generator of the
@@ -186,8 +191,7 @@ GA_API GA_NODISCARD ga_status ga_rotor_log(ga_rotor r, ga_generator *out);
  *  translation (or e3 if there is none); near 2 pi the perpendicular
  *  translation is ill-conditioned (divided by sinc(phi) -> 0; GA_ERR_DOMAIN when that
  *  overflows), and its rounding along the axis, which exp would not damp, is
- *  taken out again (tests/test_rotor.c: a rotor at 2 pi - 2e-4 from
- *  ga_mv_log missed R by 2.4e-12 before). Statuses as ga_rotor_log. */
+ *  taken out again. Statuses as ga_rotor_log. */
 GA_API GA_NODISCARD ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out);
 
 /* ---- screws (Chasles; W-L §4.1) ------------------------------------------- */

@@ -8,9 +8,9 @@
  * the linkable symbols stay for function pointers, other languages and
  * callers that do not want the code in their own object (the pair of cglm's
  * glm_ and glmc_ functions). Inline, the compiler keeps the 64-byte rotors in
- * registers and schedules the arithmetic with the caller's: in garotor-bench
- * (docs/benchmarks.md) a product of two rotors through the library's symbol
- * costs about twice the inline one in a loop of independent products.
+ * registers and schedules the arithmetic with the caller's (docs/benchmarks.md
+ * times both: motor_mul against motor_mul_call, motor_apply against
+ * motor_apply_call).
  *
  * Contracts, statuses and conventions are those of the functions in rotor.h.
  * The header needs <math.h> (sqrt, isfinite) and so -lm, as the library does.
@@ -52,9 +52,8 @@ static inline ga_vec3 ga_rotor_to_translation_inline(ga_rotor r)
  *  sandwich. In quaternion terms, with q = (s, v), v = (-e23, e13, -e12), and
  *  the dual part d = -(e123n, e1n, e2n, e3n) (so that t = 2 d q*), it is
  *  y = vec((q x + 2 d) q*): m = q x + 2 d, then the vector part of m q*, 24
- *  multiplications and 25 additions (a rotation in the u = 2 v x x form and
- *  the translation computed apart took 33 and 24; a 4x4 matrix takes 9 and
- *  9, but building it from r costs more than the sandwich). */
+ *  multiplications and 25 additions (docs/benchmarks.md compares it with a
+ *  4x4 matrix's 9 and 9). */
 static inline ga_vec3 ga_rotor_apply_inline(ga_rotor r, ga_vec3 x)
 {
     /* m = (mx, my, mz; m0) */
