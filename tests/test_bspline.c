@@ -10,8 +10,9 @@
 
 #include "testkit.h"
 
-/* the one stream every section draws from, in order */
-static tk_rng rng = {20261201u};
+/* the one stream every section draws from, in order (helpers take it as r) */
+static tk_rng stream = {20261201u};
+static tk_rng *const r = &stream;
 
 #define MAXK 12
 #define WORK 4096
@@ -138,7 +139,6 @@ static const ga_group *const groups[3] = {&ga_group_cga, &ga_group_se3, &ga_grou
 
 static void test_derivatives(void)
 {
-    tk_rng *r = &rng;
     /* central differences of step e err by e^2/6 times the third derivative,
      * plus eps/e rounding: at e = 1e-4 about 1e-8 of the scale; halving e
      * must cut the error about 4x (>= 3x) unless at the floor 1e-9 */
@@ -198,7 +198,6 @@ static void test_derivatives(void)
 
 static void test_c2(void)
 {
-    tk_rng *r = &rng;
     /* at a knot the two segments' formulas give the same pose, velocity and
      * acceleration (up to rounding); measured from outside: the jump of the
      * acceleration over [t_k - e, t_k + e] shrinks like e (the third
@@ -267,7 +266,6 @@ static void test_c2(void)
 
 static void test_cga_matrix(void)
 {
-    tk_rng *r = &rng;
     tk_check c_p = tk_begin("cga = matrix: poses, / scale", 1e-12);
     tk_check c_v = tk_begin("cga = matrix: body velocity, / vscale", 1e-12);
     tk_check c_a = tk_begin("cga = matrix: body acceleration, / vscale^2", 1e-12);
@@ -306,7 +304,6 @@ static void test_cga_matrix(void)
 
 static void test_screw(void)
 {
-    tk_rng *r = &rng;
     /* A_i = A_0 exp(i X): every d_i = X, and b_1 + b_2 + b_3 = 1 + u, so
      * A(t) = A_0 exp(((t - t_0)/h) X) on all of [t_1, t_{n-2}]: the keys
      * inside the range are hit, the velocity is X/h, the acceleration 0 */
@@ -350,7 +347,6 @@ static void test_screw(void)
 
 static void test_eval(void)
 {
-    tk_rng *r = &rng;
     tk_check c_ex = tk_begin("exact stepping = direct (2000 samples), / scale", 1e-12);
     tk_check c_eu = tk_begin("Euler error halves with the step (ratio in [1.6, 2.4])", 0);
     tk_check c_eu0 = tk_begin("Euler at step 1/256: error / scale", 1e-2);
@@ -421,7 +417,6 @@ static void test_eval(void)
 
 static void test_errors(void)
 {
-    tk_rng *r = &rng;
     keyset k;
     pathbuf b;
     random_keys(r, &ga_group_se3, &k, 6, 10.0, 0.5);

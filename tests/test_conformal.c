@@ -97,6 +97,7 @@ static void test_table(void)
         check("blade = ordered product of its vectors", maxdiff(p, ga_mv_blade(b)), 0);
         check("blade grade = popcount of mask", ga_blade_grade(b) == popcount(ga_blade_mask(b)) ? 0 : 1, 0);
     }
+    tk_end_named();
 }
 
 static void test_products(void)
@@ -151,6 +152,7 @@ static void test_products(void)
         check("undual(dual(a)) = a", maxdiff(ga_mv_undual(ga_mv_dual(a)), a), 0);
         check("dual(a) = a I^-1 = -a I", maxdiff(ga_mv_dual(a), ga_mv_scale(ga_mv_gp(a, ga_mv_i5()), -1)), 0);
     }
+    tk_end_named();
 }
 
 /* A random vector that is far from null: |v.v| >= |v|^2 / 4 (Euclidean norm). */
@@ -212,6 +214,7 @@ static void test_versors(void)
     bad.c[GA_BLADE_E23] = INFINITY;
     check_status("inverse of Inf: not finite", ga_mv_inverse(bad, &out), GA_ERR_NOTFINITE);
     check("inverse leaves output untouched on failure", maxdiff(out, ga_mv_scalar(42)), 0);
+    tk_end_named();
 }
 
 /* ---- the conformal model ---------------------------------------------------------- */
@@ -286,6 +289,7 @@ static void test_model(void)
         check("T_a F(x) ~T_a = F(x + a)", maxdiff(moved, ga_point_up(add3(x, a))),
               2 * gamma_k(33) * tl * tl * sumabs(ga_point_up(x)) + 16 * U * sumabs(ga_point_up(add3(x, a))));
     }
+    tk_end_named();
 }
 
 /* ---- objects, built from their parameters and read back ---------------------------- */
@@ -424,6 +428,7 @@ static void test_objects(void)
         check("F(x) . dual sphere = 0 on the sphere",
               fabs(ga_mv_sp(ga_point_up(cp[0]), ga_sphere_dual(c, r))) / (size * size), tol);
     }
+    tk_end_named();
 }
 
 /* ---- bad input -------------------------------------------------------------------- */

@@ -922,15 +922,15 @@ static const tk_section sections[] = {
     {"bad_input", check_bad_input, 0},
 };
 
-int main(int argc, char **argv)
+/* the scale argument */
+static void setup(const char *arg)
 {
-    const char *arg;
-    int st = tk_options(argc, argv, "test_rotor", sections, TK_COUNT(sections), &arg);
-    if (st >= 0)
-        return st;
     long mult = arg ? atol(arg) : 1;
     n_cases = N_CASES * (mult > 0 ? mult : 1);
     tk_note("test_rotor: %ld cases per family\n", n_cases);
-    tk_run(sections, TK_COUNT(sections));
-    return tk_done("test_rotor", sections, TK_COUNT(sections));
+}
+
+int main(int argc, char **argv)
+{
+    return tk_main_arg(argc, argv, "test_rotor", sections, TK_COUNT(sections), setup);
 }

@@ -205,6 +205,7 @@ static void each_case(void (*f)(const ga_group *g, ga_scheme s))
         for (int s = 0; s < GA_SCHEME_COUNT; s++)
             if (ga_path_workspace_size(g, (ga_scheme)s, NK) != 0)
                 f(g, (ga_scheme)s);
+    tk_end_named();
     if (refused)
         tk_note("     (%ld affine lihao2 key sets skipped: GA_ERR_DOMAIN, a factor with no real log)\n",
                 refused);
@@ -303,6 +304,7 @@ static void cga_matrix(void)
                 }
         }
     }
+    tk_end_named();
 }
 
 /* ---- append = rebuild, bit for bit ----------------------------------------- */
@@ -310,19 +312,9 @@ static int same_bits(const ga_path *a, const ga_path *b)
 {
     double t0, t1;
     TK_OK(ga_path_range(a, &t0, &t1));
-    for (int j = 0; j <= 64; j++) {
-        double t = j == 64 ? t1 : t0 + (t1 - t0) * j / 64;
-        double ea[GA_GROUP_MAX_ELEM], eb[GA_GROUP_MAX_ELEM];
-        double va[GA_GROUP_MAX_DIM], vb[GA_GROUP_MAX_DIM], aa[GA_GROUP_MAX_DIM], ab[GA_GROUP_MAX_DIM];
-        int sa = ga_path_eval(a, t, ea), sb = ga_path_eval(b, t, eb);
-        if (sa != sb || (sa == GA_OK && memcmp(ea, eb, a->group->elem_size)))
+    for (int j = 0; j <= 64; j++)
+        if (!tk_path_same_at(a, b, j == 64 ? t1 : t0 + (t1 - t0) * j / 64))
             return 0;
-        sa = ga_path_differentiate(a, t, GA_FRAME_BODY, va, aa);
-        sb = ga_path_differentiate(b, t, GA_FRAME_BODY, vb, ab);
-        size_t d = a->group->dim * sizeof(double);
-        if (sa != sb || (sa == GA_OK && (memcmp(va, vb, d) || memcmp(aa, ab, d))))
-            return 0;
-    }
     return 1;
 }
 static void append_case(const ga_group *g, ga_scheme s)

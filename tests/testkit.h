@@ -24,23 +24,28 @@
  * tk_finish(test) prints the summary and gives the exit status.
  *
  * Sections: a test is a table of named sections, {name, function, flags},
- * run in order by tk_main(argc, argv, test, table, count, &arg), which takes
- * the test's options:
+ * run in order by tk_main(argc, argv, test, table, count), or by
+ * tk_main_arg(..., setup) for a test with an argument of its own, which
+ * takes the test's options:
  *   --list        print the section names, one a line, and exit;
  *   --only NAME   run only the section NAME, or, where NAME names no
  *                 section, every section printing only the checks whose
  *                 name contains NAME (none: an error listing the sections);
  *                 repeatable, the union is run;
- *   N             the test's one plain argument (a scale such as
- *                 `test_rotor 100`, a seed), handed back in *arg (NULL where
- *                 none was given; a test that takes none passes arg NULL).
+ *   ARG           tk_main_arg: the test's one plain argument (a scale, as
+ *                 `test_rotor 100`, a seed, -v), given to setup(ARG) before
+ *                 the sections run (setup(NULL) without one).
  * Without options every section runs and prints what it always printed.
- * A section's named checks (tk_get) end with it. A section flagged TK_SETUP always runs (it prepares what the
- * others use); one flagged TK_STREAM draws from a generator later sections share, so when it is left out
- * before a section that runs it still runs, silently (no line, no failure), and the section run alone sees
- * the very inputs it sees in the whole test. A check that fails as a known, reported bug is marked with
- * tk_xfail(&c, why): its line reads XFAIL (or XPASS, a failure, once the bug is gone) and does not fail the
- * test. tk_note prints a section's own lines (headers, counts), silenced with its checks.
+ * A section flagged TK_SETUP always runs (it prepares what the others use).
+ * One flagged TK_STREAM draws from a generator later sections share: left
+ * out before a section that runs, it still runs, silently (no line, no
+ * failure), so that the section run alone sees the very inputs it sees in
+ * the whole test. tk_note prints a section's own lines (headers, counts),
+ * silenced with its checks.
+ *
+ * A check that fails as a known, reported bug is marked tk_xfail(&c, why):
+ * its line reads XFAIL, with why, and fails nothing; once the bug is gone it
+ * reads XPASS and fails the test, so that the mark is taken off.
  */
 #ifndef GAROTOR_TESTKIT_H
 #define GAROTOR_TESTKIT_H
@@ -522,7 +527,7 @@ static inline int tk_options(int argc, char **argv, const char *test, const tk_s
                 tk_check_filter[tk_check_filter_n++] = name;
             continue;
         }
-        if (arg && !*arg && argv[i][0] != '-') {
+        if (arg && !*arg && strncmp(argv[i], "--", 2) != 0) {
             *arg = argv[i];
             continue;
         }
@@ -543,9 +548,11 @@ static inline void tk_run(const tk_section *s, size_t n)
         int run = !tk_any_selected || tk_selected[i] || (s[i].flags & TK_SETUP);
         if (!run && !(s[i].flags & TK_STREAM && i < last))
             continue;
+        int named = tk_named_n;
         tk_quiet = !run;
         s[i].run();
-        tk_end_named(); /* a section's named checks end with it */
+        if (!run) /* what a silent run opened is no result */
+            tk_named_n = named;
         tk_quiet = 0;
     }
 }
@@ -568,14 +575,40 @@ static inline int tk_done(const char *test, const tk_section *s, size_t n)
 /** A section that prints the CPU time the test has taken, "(1.23 s)". */
 static inline void tk_cpu_time(void) { tk_note("(%.2f s)\n", (double)clock() / CLOCKS_PER_SEC); }
 
-/** The whole main of a test without an argument of its own. */
-static inline int tk_main(int argc, char **argv, const char *test, const tk_section *s, size_t n)
+/** The whole main of a test: the options, setup(ARG) (where setup is not
+ *  NULL: the test takes an argument), the sections, the summary. */
+static inline int tk_main_arg(int argc, char **argv, const char *test, const tk_section *s, size_t n,
+                              void (*setup)(const char *arg))
 {
-    int st = tk_options(argc, argv, test, s, n, NULL);
+    const char *arg;
+    int st = tk_options(argc, argv, test, s, n, setup ? &arg : NULL);
     if (st >= 0)
         return st;
+    if (setup)
+        setup(arg);
     tk_run(s, n);
     return tk_done(test, s, n);
+}
+/** The same for a test without an argument of its own. */
+static inline int tk_main(int argc, char **argv, const char *test, const tk_section *s, size_t n)
+{
+    return tk_main_arg(argc, argv, test, s, n, NULL);
+}
+
+/* ---- paths ---------------------------------------------------------------------- */
+/** 1 if paths a and b give the same statuses and the same bits at t: the
+ *  pose, the body velocity and the acceleration. */
+static inline int tk_path_same_at(const ga_path *a, const ga_path *b, double t)
+{
+    double ea[GA_GROUP_MAX_ELEM], eb[GA_GROUP_MAX_ELEM];
+    double va[GA_GROUP_MAX_DIM], vb[GA_GROUP_MAX_DIM], aa[GA_GROUP_MAX_DIM], ab[GA_GROUP_MAX_DIM];
+    int sa = ga_path_eval(a, t, ea), sb = ga_path_eval(b, t, eb);
+    if (sa != sb || (sa == GA_OK && memcmp(ea, eb, a->group->elem_size)))
+        return 0;
+    sa = ga_path_differentiate(a, t, GA_FRAME_BODY, va, aa);
+    sb = ga_path_differentiate(b, t, GA_FRAME_BODY, vb, ab);
+    size_t d = a->group->dim * sizeof(double);
+    return sa == sb && (sa != GA_OK || (!memcmp(va, vb, d) && !memcmp(aa, ab, d)));
 }
 
 #endif
