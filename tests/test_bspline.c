@@ -7,9 +7,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
 #include "testkit.h"
+
+/* the one stream every section draws from, in order (helpers take it as r) */
+static tk_rng stream = {20261201u};
+static tk_rng *const r = &stream;
 
 #define MAXK 12
 #define WORK 4096
@@ -134,7 +137,7 @@ static const ga_group *const groups[3] = {&ga_group_cga, &ga_group_se3, &ga_grou
 
 /* ---- 1. derivatives against finite differences, both frames ---------------------- */
 
-static void test_derivatives(tk_rng *r)
+static void test_derivatives(void)
 {
     /* central differences of step e err by e^2/6 times the third derivative,
      * plus eps/e rounding: at e = 1e-4 about 1e-8 of the scale; halving e
@@ -193,7 +196,7 @@ static void test_derivatives(tk_rng *r)
 
 /* ---- 2. C2 at the knots ------------------------------------------------------------ */
 
-static void test_c2(tk_rng *r)
+static void test_c2(void)
 {
     /* at a knot the two segments' formulas give the same pose, velocity and
      * acceleration (up to rounding); measured from outside: the jump of the
@@ -261,7 +264,7 @@ static void test_c2(tk_rng *r)
 
 /* ---- 3. cga = matrix ----------------------------------------------------------------- */
 
-static void test_cga_matrix(tk_rng *r)
+static void test_cga_matrix(void)
 {
     tk_check c_p = tk_begin("cga = matrix: poses, / scale", 1e-12);
     tk_check c_v = tk_begin("cga = matrix: body velocity, / vscale", 1e-12);
@@ -299,7 +302,7 @@ static void test_cga_matrix(tk_rng *r)
 
 /* ---- 4. keys on one screw motion -------------------------------------------------------- */
 
-static void test_screw(tk_rng *r)
+static void test_screw(void)
 {
     /* A_i = A_0 exp(i X): every d_i = X, and b_1 + b_2 + b_3 = 1 + u, so
      * A(t) = A_0 exp(((t - t_0)/h) X) on all of [t_1, t_{n-2}]: the keys
@@ -342,7 +345,7 @@ static void test_screw(tk_rng *r)
 
 /* ---- 5. evaluators; local support ------------------------------------------------------- */
 
-static void test_eval(tk_rng *r)
+static void test_eval(void)
 {
     tk_check c_ex = tk_begin("exact stepping = direct (2000 samples), / scale", 1e-12);
     tk_check c_eu = tk_begin("Euler error halves with the step (ratio in [1.6, 2.4])", 0);
@@ -412,7 +415,7 @@ static void test_eval(tk_rng *r)
 
 /* ---- 6. range, spacing, errors ------------------------------------------------------------ */
 
-static void test_errors(tk_rng *r)
+static void test_errors(void)
 {
     keyset k;
     pathbuf b;
@@ -481,16 +484,14 @@ static void test_errors(tk_rng *r)
     tk_expect(ga_path_workspace_size(&ga_group_cga, GA_SCHEME_BSPLINE, 6) > 0, "bspline: workspace size");
 }
 
-int main(void)
-{
-    tk_rng r = {20261201u};
-    clock_t c0 = clock();
-    test_derivatives(&r);
-    test_c2(&r);
-    test_cga_matrix(&r);
-    test_screw(&r);
-    test_eval(&r);
-    test_errors(&r);
-    printf("(%.2f s)\n", (double)(clock() - c0) / CLOCKS_PER_SEC);
-    return tk_finish("test_bspline");
-}
+static const tk_section sections[] = {
+    {"derivatives", test_derivatives, TK_STREAM},
+    {"c2", test_c2, TK_STREAM},
+    {"cga_matrix", test_cga_matrix, TK_STREAM},
+    {"screw", test_screw, TK_STREAM},
+    {"eval", test_eval, TK_STREAM},
+    {"errors", test_errors, TK_STREAM},
+    {"time", tk_cpu_time, TK_SETUP},
+};
+
+int main(int argc, char **argv) { return tk_main(argc, argv, "test_bspline", sections, TK_COUNT(sections)); }

@@ -16,6 +16,9 @@
  */
 #include "testkit.h"
 
+/* the one stream the sections draw from, in order */
+static tk_rng rng = {0x67a20f07c3b1d2e5ULL};
+
 #define U 1.1102230246251565e-16 /* unit roundoff 2^-53 */
 static double gamma_k(int k) { return k * U / (1.0 - k * U); }
 
@@ -69,6 +72,7 @@ static int popcount(unsigned m)
 /* ---- the algebra ---------------------------------------------------------------- */
 static void test_table(void)
 {
+    tk_note("the G(4,1) product table\n");
     /* signature: e1..e4 square to +1, e5 to -1 (exactly) */
     for (int i = 1; i <= 5; i++) {
         ga_mv e = ga_mv_blade(i);
@@ -93,10 +97,13 @@ static void test_table(void)
         check("blade = ordered product of its vectors", maxdiff(p, ga_mv_blade(b)), 0);
         check("blade grade = popcount of mask", ga_blade_grade(b) == popcount(ga_blade_mask(b)) ? 0 : 1, 0);
     }
+    tk_end_named();
 }
 
-static void test_products(tk_rng *t)
+static void test_products(void)
 {
+    tk_rng *t = &rng;
+    tk_note("products, reverse, involutions, duals\n");
     /* Dense a, b, c with coefficients in [-1, 1]. A coefficient of ab is a sum of
        32 products of size <= 1, so |ab|_i <= 32 and its rounding error is at
        most gamma(33) * 32; (ab)c then errs by at most 2 gamma(33) 1024, and the
@@ -145,6 +152,7 @@ static void test_products(tk_rng *t)
         check("undual(dual(a)) = a", maxdiff(ga_mv_undual(ga_mv_dual(a)), a), 0);
         check("dual(a) = a I^-1 = -a I", maxdiff(ga_mv_dual(a), ga_mv_scale(ga_mv_gp(a, ga_mv_i5()), -1)), 0);
     }
+    tk_end_named();
 }
 
 /* A random vector that is far from null: |v.v| >= |v|^2 / 4 (Euclidean norm). */
@@ -159,8 +167,10 @@ static ga_mv rand_nonnull(tk_rng *t)
     }
 }
 
-static void test_versors(tk_rng *t)
+static void test_versors(void)
 {
+    tk_rng *t = &rng;
+    tk_note("versors and inverses\n");
     /* V = v1 ... vk. Every coefficient of V V^-1 = V ~V / <V ~V>_0 is a sum of
        products of the 2k vector coefficients; its total size is at most
        prod |v_i|_1^2 (the 1-norms multiply under the product), and each step of
@@ -204,11 +214,14 @@ static void test_versors(tk_rng *t)
     bad.c[GA_BLADE_E23] = INFINITY;
     check_status("inverse of Inf: not finite", ga_mv_inverse(bad, &out), GA_ERR_NOTFINITE);
     check("inverse leaves output untouched on failure", maxdiff(out, ga_mv_scalar(42)), 0);
+    tk_end_named();
 }
 
 /* ---- the conformal model ---------------------------------------------------------- */
-static void test_model(tk_rng *t)
+static void test_model(void)
 {
+    tk_rng *t = &rng;
+    tk_note("the conformal model: points, distances, translations\n");
     ga_mv n = ga_mv_n(), nb = ga_mv_nbar();
     check("n^2 = 0", tk_mv_maxabs(ga_mv_gp(n, n)), 0);
     check("nbar^2 = 0", tk_mv_maxabs(ga_mv_gp(nb, nb)), 0);
@@ -276,6 +289,7 @@ static void test_model(tk_rng *t)
         check("T_a F(x) ~T_a = F(x + a)", maxdiff(moved, ga_point_up(add3(x, a))),
               2 * gamma_k(33) * tl * tl * sumabs(ga_point_up(x)) + 16 * U * sumabs(ga_point_up(add3(x, a))));
     }
+    tk_end_named();
 }
 
 /* ---- objects, built from their parameters and read back ---------------------------- */
@@ -289,8 +303,10 @@ static void frame(ga_vec3 m, ga_vec3 *p, ga_vec3 *q)
     *q = cross3(m, *p);
 }
 
-static void test_objects(tk_rng *t)
+static void test_objects(void)
 {
+    tk_rng *t = &rng;
+    tk_note("objects built from their parameters and read back\n");
     /* The scene has size s = 4^U(-1, 1) (lambda = 1); centres and points lie in
        [-s, s]^3 and radii in [s/10, s]. The configurations are well conditioned by
        construction (points spread around circles and spheres, see each case), so
@@ -412,11 +428,13 @@ static void test_objects(tk_rng *t)
         check("F(x) . dual sphere = 0 on the sphere",
               fabs(ga_mv_sp(ga_point_up(cp[0]), ga_sphere_dual(c, r))) / (size * size), tol);
     }
+    tk_end_named();
 }
 
 /* ---- bad input -------------------------------------------------------------------- */
 static void test_bad_input(void)
 {
+    tk_note("bad input\n");
     const ga_vec3 sentinel = {7, 7, 7};
     ga_vec3 out = sentinel, o2 = sentinel;
     double r = 7;
@@ -570,25 +588,16 @@ static void test_bad_input(void)
           dist3(out, sentinel) + dist3(o2, sentinel) + fabs(r - 7), 0);
 }
 
-int main(void)
+static const tk_section sections[] = {
+    {"table", test_table, 0},
+    {"products", test_products, TK_STREAM},
+    {"versors", test_versors, TK_STREAM},
+    {"model", test_model, TK_STREAM},
+    {"objects", test_objects, TK_STREAM},
+    {"bad_input", test_bad_input, 0},
+};
+
+int main(int argc, char **argv)
 {
-    tk_rng t = {0x67a20f07c3b1d2e5ULL};
-    printf("the G(4,1) product table\n");
-    test_table();
-    tk_end_named();
-    printf("products, reverse, involutions, duals\n");
-    test_products(&t);
-    tk_end_named();
-    printf("versors and inverses\n");
-    test_versors(&t);
-    tk_end_named();
-    printf("the conformal model: points, distances, translations\n");
-    test_model(&t);
-    tk_end_named();
-    printf("objects built from their parameters and read back\n");
-    test_objects(&t);
-    tk_end_named();
-    printf("bad input\n");
-    test_bad_input();
-    return tk_finish("test_conformal");
+    return tk_main(argc, argv, "test_conformal", sections, TK_COUNT(sections));
 }

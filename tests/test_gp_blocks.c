@@ -36,7 +36,8 @@ static double coef(tk_rng *r)
     }
 }
 
-int main(void)
+/* every product form against the straight-line one, bit for bit */
+static void section_blocks(void)
 {
     tk_rng r = {16};
     tk_check same = tk_begin("ga_mv_gp = mv_gp_dense, bit for bit (10^5 pairs)", 0);
@@ -78,5 +79,13 @@ int main(void)
     tk_end(&c4);
     tk_end(&c8);
 #endif
-    return tk_finish("test_gp_blocks");
+}
+
+static const tk_section sections[] = {
+    {"blocks", section_blocks, 0},
+};
+
+int main(int argc, char **argv)
+{
+    return tk_main(argc, argv, "test_gp_blocks", sections, TK_COUNT(sections));
 }

@@ -198,6 +198,7 @@ static double cond_lin(ga_mat4 g)
 
 /* ---- algebra helpers -------------------------------------------------------------- */
 static const ga_group *G;     /* the group under test */
+static tk_rng rng;            /* its stream: the samples, then check_dexp */
 static int D;                 /* its dim */
 static ga_mat4 hat_abs[DMAX]; /* |hat(e_k)| */
 
@@ -420,8 +421,8 @@ static void check_exp_log(void)
     tk_end(&le);
     tk_end(&st_c);
     if (domain)
-        printf("     (GA_ERR_DOMAIN for %ld elements, all within %.2e rad of a half turn)\n", domain,
-               domain_margin);
+        tk_note("     (GA_ERR_DOMAIN for %ld elements, all within %.2e rad of a half turn)\n", domain,
+                domain_margin);
 }
 
 /* g g^-1 = e = g^-1 g. The computed inverse is wrong by C_OP u kappa
@@ -530,8 +531,9 @@ static void check_adjoint(void)
  *   2s. The estimate of a s^2 carries the rounding at s and 2s as well (1.5
  *   times that at s), so the rounding term is allowed 2.5 times.
  *   The step s = 2^-17 ~ u^(1/3) balances s^2 and u/s for y of size 1. */
-static void check_dexp(tk_rng *r)
+static void check_dexp(void)
 {
+    tk_rng *r = &rng;
     tk_check c = tk_begin("dexp = central difference of exp (no log), |D| / N'(J y)", 0);
     const double h = 0x1p-17;
     for (int i = 0; i < NS; i++) {
@@ -649,7 +651,7 @@ static void check_hat_vee(void)
     if (G->rigid)
         tk_end(&sym);
     else
-        printf("     (a non-rigid algebra holds symmetric 3x3 parts: not rejected)\n");
+        tk_note("     (a non-rigid algebra holds symmetric 3x3 parts: not rejected)\n");
 }
 
 /* The same group element from two algebra elements x and x2, x2 computed
@@ -697,7 +699,7 @@ static void same_element(const double *x, const double *x2, tk_check *c)
 static void check_half_turn_branch(void)
 {
     if (!G->half_turn)
-        printf("     (no half_turn rule: the principal log is unique)\n");
+        tk_note("     (no half_turn rule: the principal log is unique)\n");
     else {
         tk_check same = tk_begin("half_turn(x): the same element, |D| / bound", 0);
         tk_check idem = tk_begin("half_turn(half_turn(x)) = half_turn(x) (exact)", 0);
@@ -716,10 +718,10 @@ static void check_half_turn_branch(void)
         }
         tk_end(&same);
         tk_end(&idem);
-        printf("     (half_turn changed %ld of %d elements)\n", changed, NS);
+        tk_note("     (half_turn changed %ld of %d elements)\n", changed, NS);
     }
     if (!G->branch)
-        printf("     (no branch rule: one log to offer)\n");
+        tk_note("     (no branch rule: one log to offer)\n");
     else {
         tk_check same = tk_begin("branch(prev, x): the same element, |D| / bound", 0);
         tk_check self = tk_begin("branch(x, x) = x (exact)", 0);
@@ -748,31 +750,45 @@ static void check_half_turn_branch(void)
         }
         tk_end(&same);
         tk_end(&self);
-        printf("     (branch changed %ld of %ld elements)\n", changed, tries);
+        tk_note("     (branch changed %ld of %ld elements)\n", changed, tries);
     }
 }
+
+/* The group's header, its samples and their status. */
+static void samples(void)
+{
+    tk_note("== group %s (dim %zu, %s)\n", G->name, G->dim, G->rigid ? "rigid" : "not rigid");
+    tk_check st = tk_begin("exp and inverse of every sample: status", 0);
+    draw_samples(&rng, &st);
+    tk_end(&st);
+    tk_note("     (%d elements from the families of its algebra; %ld draws outside it)\n", NS, families_out);
+}
+
+/* run for each group in turn */
+static const tk_section sections[] = {
+    {"samples", samples, TK_SETUP},
+    {"exp_log", check_exp_log, 0},
+    {"inverse", check_inverse, 0},
+    {"assoc_identity", check_assoc_identity, 0},
+    {"adjoint", check_adjoint, 0},
+    {"dexp", check_dexp, 0},
+    {"mat4", check_mat4, 0},
+    {"hat_vee", check_hat_vee, 0},
+    {"half_turn_branch", check_half_turn_branch, 0},
+};
 
 int main(int argc, char **argv)
 {
     const ga_group *g;
-    uint64_t seed = argc > 1 ? strtoull(argv[1], NULL, 0) : 0x67726f7570ull; /* "group" */
+    const char *arg;
+    int st = tk_options(argc, argv, "test_group", sections, TK_COUNT(sections), &arg);
+    if (st >= 0)
+        return st;
+    uint64_t seed = arg ? strtoull(arg, NULL, 0) : 0x67726f7570ull; /* "group" */
     for (size_t i = 0; (g = ga_group_nth(i)); i++) {
-        tk_rng r = {seed + i};
+        rng = (tk_rng){seed + i};
         setup_group(g);
-        printf("== group %s (dim %zu, %s)\n", g->name, g->dim, g->rigid ? "rigid" : "not rigid");
-        tk_check st = tk_begin("exp and inverse of every sample: status", 0);
-        draw_samples(&r, &st);
-        tk_end(&st);
-        printf("     (%d elements from the families of its algebra; %ld draws outside it)\n", NS,
-               families_out);
-        check_exp_log();
-        check_inverse();
-        check_assoc_identity();
-        check_adjoint();
-        check_dexp(&r);
-        check_mat4();
-        check_hat_vee();
-        check_half_turn_branch();
+        tk_run(sections, TK_COUNT(sections));
     }
-    return tk_finish("test_group");
+    return tk_done("test_group", sections, TK_COUNT(sections));
 }

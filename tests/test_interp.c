@@ -18,6 +18,10 @@
 
 #include "testkit.h"
 
+/* the one stream every section draws from, in order (helpers take it as r) */
+static tk_rng stream = {20240607u};
+static tk_rng *const r = &stream;
+
 #define PI TK_PI
 #define MAXK 8
 #define WORK 2048
@@ -341,7 +345,7 @@ static double path_cond(const ga_path *p)
     return c;
 }
 
-static void test_keys(tk_rng *r)
+static void test_keys(void)
 {
     const ga_group *gs[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
     double worst_lim = 0, worst_mid = 0, worst_aff[6] = {0}, worst_cond = 0, worst_midv = 0;
@@ -423,25 +427,25 @@ static void test_keys(tk_rng *r)
     tk_end(&c_init);
     tk_end(&c_at);
     tk_end(&c_lim);
-    printf("     formula at u = 1 / u = 0 vs A_i, rigid keys  %.3g / scale (tol 1e-14)\n", worst_lim);
-    printf("     same on affine keys (scaling, shear), / scale:");
-    for (int si = 0; si < 6; ++si) printf(" %s %.2g", ga_scheme_name(all_schemes[si]), worst_aff[si]);
-    printf(
+    tk_note("     formula at u = 1 / u = 0 vs A_i, rigid keys  %.3g / scale (tol 1e-14)\n", worst_lim);
+    tk_note("     same on affine keys (scaling, shear), / scale:");
+    for (int si = 0; si < 6; ++si) tk_note(" %s %.2g", ga_scheme_name(all_schemes[si]), worst_aff[si]);
+    tk_note(
         "\n     largest / (scale * cond) %.3g (tol 1e-13; cond = max ||e^X|| ||e^-X||, large for lihao2)\n",
         worst_cond);
     tk_end(&c_mid);
     tk_end(&c_midv);
-    printf("     continuity at u = 1/2 %.3g / (scale*cond); velocity %.3g\n", worst_mid, worst_midv);
+    tk_note("     continuity at u = 1/2 %.3g / (scale*cond); velocity %.3g\n", worst_mid, worst_midv);
     if (skipped)
-        printf("     (%d affine lihao2 sets skipped: velocities grew along the keys until a factor had a "
-               "negative "
-               "eigenvalue, no real log)\n",
-               skipped);
+        tk_note("     (%d affine lihao2 sets skipped: velocities grew along the keys until a factor had a "
+                "negative "
+                "eigenvalue, no real log)\n",
+                skipped);
 }
 
 /* ---- 2. C1 at keys; analytic velocity vs finite differences ---------------------- */
 
-static void test_c1(tk_rng *r)
+static void test_c1(void)
 {
     const ga_group *gs[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
     double worst_fd[2] = {0, 0}, ratio = 1e300;
@@ -479,7 +483,7 @@ static void test_c1(tk_rng *r)
             }
             tk_add_status(&c_init, st, GA_OK);
             if (st) {
-                printf("     (failed: %s on %s)\n", ga_scheme_name(s), gs[gi]->name);
+                tk_note("     (failed: %s on %s)\n", ga_scheme_name(s), gs[gi]->name);
                 continue;
             }
             /* equalities of velocities hold to rounding amplified by Ad of the
@@ -565,20 +569,20 @@ static void test_c1(tk_rng *r)
     tk_end(&c_an);
     tk_end(&c_gap);
     tk_end(&c_gapfall);
-    printf("     one-sided FD gap, step 1e-3: %.3g   step 1e-4: %.3g  (smallest fall %.1fx, ~eps^2)\n",
-           worst_fd[0], worst_fd[1], ratio);
+    tk_note("     one-sided FD gap, step 1e-3: %.3g   step 1e-4: %.3g  (smallest fall %.1fx, ~eps^2)\n",
+            worst_fd[0], worst_fd[1], ratio);
     tk_end(&c_afd);
     tk_end(&c_afdfall);
     tk_end(&c_req);
     tk_end(&c_kink);
     if (skipped)
-        printf("     (%d affine lihao2 sets skipped: a factor with a negative eigenvalue, no real log)\n",
-               skipped);
+        tk_note("     (%d affine lihao2 sets skipped: a factor with a negative eigenvalue, no real log)\n",
+                skipped);
 }
 
 /* ---- 3. cga == se3 on random key sets ----------------------------------------------- */
 
-static void test_cga_se3(tk_rng *r)
+static void test_cga_se3(void)
 {
     double worst[6] = {0};
     int sets = 0;
@@ -618,13 +622,13 @@ static void test_cga_se3(tk_rng *r)
             }
         }
     }
-    printf("cga vs se3 over %d key sets (half turns, relative half turns, 1e-9..1e-5 rad under 1e4):\n",
-           sets);
+    tk_note("cga vs se3 over %d key sets (half turns, relative half turns, 1e-9..1e-5 rad under 1e4):\n",
+            sets);
     tk_end(&c_init);
     tk_end(&c_pose);
-    printf("    ");
-    for (int si = 0; si < 6; ++si) printf(" %s %.3g", ga_scheme_name(all_schemes[si]), worst[si]);
-    printf("\n");
+    tk_note("    ");
+    for (int si = 0; si < 6; ++si) tk_note(" %s %.3g", ga_scheme_name(all_schemes[si]), worst[si]);
+    tk_note("\n");
     tk_end(&c_vel);
 }
 
@@ -761,7 +765,7 @@ static ga_mat4 sclerp(ga_mat4 a, ga_mat4 b, double u)
     return dq_mat(dq_mul(da, dq_pow(rel, u)));
 }
 
-static void test_screw(tk_rng *r)
+static void test_screw(void)
 {
     tk_check c_init = tk_begin("screw path init", 0);
     tk_check e_geo = tk_begin("screw == ga_se3_geodesic (Eberly eq. 21)", 1e-13);
@@ -848,7 +852,7 @@ static void test_screw(tk_rng *r)
 
 /* ---- 5. scheme identities: W-L quadratic, smooth exactness, lihao3 screw, eq. 27 ---- */
 
-static void test_identities(tk_rng *r)
+static void test_identities(void)
 {
     /* W-L §3.2 at times -1, 0, 1: B'_l = ((B3 + B1)/2 - B2) l^2 + (B3 - B1)/2 l + B2 */
     tk_check c_init = tk_begin("path init (identities)", 0);
@@ -990,7 +994,7 @@ static void test_identities(tk_rng *r)
 
 /* ---- 6. dexp: closed form vs the affine series vs finite differences -------------- */
 
-static void test_dexp(tk_rng *r)
+static void test_dexp(void)
 {
     tk_check e_aff = tk_begin("dexp: SE(3) closed form = affine series, / max(1,|x|)", 1e-12);
     tk_check e_fd = tk_begin("dexp: SE(3) closed form = central FD of log, / max(1,|x|)", 1e-7);
@@ -1037,7 +1041,7 @@ static void test_dexp(tk_rng *r)
 
 /* ---- 7. affine vs se3 on rigid keys; affine paths through scaled/sheared keys ---- */
 
-static void test_affine(tk_rng *r)
+static void test_affine(void)
 {
     tk_check c_init = tk_begin("affine/se3 path init", 0);
     tk_check c = tk_begin("affine == se3 on rigid keys (screw, lihao2, lihao3), / scale", 1e-11);
@@ -1069,7 +1073,7 @@ static void test_affine(tk_rng *r)
     tk_end(&c_init);
     tk_end(&c);
     if (domain)
-        printf("     (%ld affine paths GA_ERR_DOMAIN: a relative motion near a half turn)\n", domain);
+        tk_note("     (%ld affine paths GA_ERR_DOMAIN: a relative motion near a half turn)\n", domain);
     /* det and last-row checks */
     ga_mat4 bad = ga_mat4_identity(), m;
     bad.m[0] = -1;
@@ -1095,7 +1099,7 @@ static double euler_error(const ga_path *p, double h, int nsamp)
     return e;
 }
 
-static void test_euler(tk_rng *r)
+static void test_euler(void)
 {
     keyset k;
     k.n = 4;
@@ -1115,20 +1119,20 @@ static void test_euler(tk_rng *r)
         if (st)
             continue;
         double lx[7], ly[7], sx = 0, sy = 0, sxx = 0, sxy = 0;
-        printf("Euler (%s on %s): step -> max error:", ga_scheme_name(ss[si]), gs[si]->name);
+        tk_note("Euler (%s on %s): step -> max error:", ga_scheme_name(ss[si]), gs[si]->name);
         for (int j = 0; j < 7; ++j) {
             double h = pow(10.0, -1.0 - 0.5 * j);
             double e = euler_error(&b.p, h, 13);
             lx[j] = log10(h);
             ly[j] = log10(e);
-            printf(" %.0e:%.2e", h, e);
+            tk_note(" %.0e:%.2e", h, e);
             sx += lx[j];
             sy += ly[j];
             sxx += lx[j] * lx[j];
             sxy += lx[j] * ly[j];
         }
         double slope = (7 * sxy - sx * sy) / (7 * sxx - sx * sx);
-        printf("\n    log-log slope over 3 decades (1e-1 .. 1e-4): %.3f  (want 1 +- 0.1)\n", slope);
+        tk_note("\n    log-log slope over 3 decades (1e-1 .. 1e-4): %.3f  (want 1 +- 0.1)\n", slope);
         tk_add(&c_slope, fabs(slope - 1.0));
     }
     /* Euler on the screw is exact (constant body velocity): only rounding */
@@ -1144,7 +1148,7 @@ static void test_euler(tk_rng *r)
 
 /* ---- 9. exact stepping vs direct over 10^6 steps ----------------------------------- */
 
-static void test_exact(tk_rng *r)
+static void test_exact(void)
 {
     keyset k;
     k.n = 4;
@@ -1161,7 +1165,7 @@ static void test_exact(tk_rng *r)
         {GA_SCHEME_LIHAO2, &ga_group_cga, 200001},    {GA_SCHEME_SCREW, &ga_group_se3, 200001},
         {GA_SCHEME_LIHAO3, &ga_group_affine, 100001},
     };
-    printf("exact stepping re-anchors every %d samples (GA_PATH_EXACT_REANCHOR)\n", GA_PATH_EXACT_REANCHOR);
+    tk_note("exact stepping re-anchors every %d samples (GA_PATH_EXACT_REANCHOR)\n", GA_PATH_EXACT_REANCHOR);
     tk_check c_init = tk_begin("path init (exact stepping)", 0);
     tk_check c_exact = tk_begin("exact stepping vs direct over 1e5..1e6 steps, / scale", 1e-12);
     for (size_t q = 0; q < sizeof runs / sizeof runs[0]; ++q) {
@@ -1188,9 +1192,9 @@ static void test_exact(tk_rng *r)
             e = fmax(e, mdiff(runs[q].g->to_mat4(a), runs[q].g->to_mat4(c)));
         }
         e /= kk.scale;
-        printf("     %-6s on %-6s over %ld steps: %.3g  (%.2f s both; cond %.3g)\n",
-               ga_scheme_name(runs[q].s), runs[q].g->name, runs[q].n - 1, e,
-               (double)(clock() - c0) / CLOCKS_PER_SEC, path_cond(&b.p));
+        tk_note("     %-6s on %-6s over %ld steps: %.3g  (%.2f s both; cond %.3g)\n",
+                ga_scheme_name(runs[q].s), runs[q].g->name, runs[q].n - 1, e,
+                (double)(clock() - c0) / CLOCKS_PER_SEC, path_cond(&b.p));
         tk_add(&c_exact, e);
     }
     tk_end(&c_exact);
@@ -1229,7 +1233,7 @@ static void fd_accel(const ga_path *p, int seg, double u, ga_frame f, double e, 
     for (size_t i = 0; i < p->group->dim; ++i) a[i] = (vp[i] - vm[i]) / (2 * e);
 }
 
-static void test_accel(tk_rng *r)
+static void test_accel(void)
 {
     const ga_group *gs[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
     /* central differences of step e err by e^2/6 times the third derivative of
@@ -1378,7 +1382,7 @@ static void seg_checks(const ga_path *p, const ga_path *pm, const keyset *k, int
  * the reference of tests/scipy_check.py; here: the keys, cga = matrix, the
  * analytic derivatives against differences, C1 and C2 at the keys, the
  * cases with a known answer, affine refused. */
-static void test_decoupled(tk_rng *r)
+static void test_decoupled(void)
 {
     const ga_scheme ds[2] = {GA_SCHEME_DECOUPLED, GA_SCHEME_DECOUPLED_C2};
     tk_check c_key = tk_begin("decoupled: through the keys (eval_segment at u = 0, 1), / scale", 1e-14);
@@ -1595,7 +1599,7 @@ static void test_c2_uneven(void)
  * differences, C1 and C2 at the keys (analytic, and the FD acceleration gap
  * falling with the step, where lihao3's stays), keys on one screw motion
  * reproduced, affine refused. */
-static void test_c2(tk_rng *r)
+static void test_c2(void)
 {
     const ga_group *gs[2] = {&ga_group_cga, &ga_group_se3};
     tk_check c_init = tk_begin("c2: path init (random keys, spacings 0.2..3)", 0);
@@ -1669,11 +1673,11 @@ static void test_c2(tk_rng *r)
     tk_end(&c_c2);
     tk_end(&c_gap);
     tk_end(&c_fall);
-    printf(
+    tk_note(
         "     c2 FD acceleration gap / scale^2, step 1e-3: %.3g   step 2e-4: %.3g  (smallest fall %.1fx)\n",
         worst[0], worst[1], ratio);
     tk_end(&c_l3);
-    printf("     lihao3 FD acceleration gap, smallest at step 1e-3: %.3g   at 2e-4: %.3g\n", l3[0], l3[1]);
+    tk_note("     lihao3 FD acceleration gap, smallest at step 1e-3: %.3g   at 2e-4: %.3g\n", l3[0], l3[1]);
 
     /* keys on one screw motion exp(t xi) (|w| h < pi, so every relative log
        is t xi's): the constant velocity solves the C2 system, so c2 is that
@@ -1719,7 +1723,7 @@ static void test_c2(tk_rng *r)
  * default) stay at ratio <= 1; lihao2 given a first velocity far from the
  * chords breaks the rule at key 0; one key, NULL. (The TUM-like file where
  * lihao2's recurrence grows by itself is tests/tool_test.sh's.) */
-static void test_growth(tk_rng *r)
+static void test_growth(void)
 {
     tk_check c_avg = tk_begin("growth: screw and lihao3 key velocities <= the fastest chord (ratio - 1)",
                               1e-12);
@@ -1778,7 +1782,7 @@ static void test_growth(tk_rng *r)
     tk_end(&c_avgf);
     tk_end(&c_l2);
     tk_end(&c_arg);
-    printf("     c2 on the same random keys: largest ratio %.3g\n", c2max);
+    tk_note("     c2 on the same random keys: largest ratio %.3g\n", c2max);
 }
 
 static void test_errors(void)
@@ -1854,23 +1858,13 @@ static void test_errors(void)
  * errors leave the path untouched. */
 static int same_bits(const ga_path *a, const ga_path *b, const keyset *k, int N)
 {
-    size_t ed = a->group->elem_size;
-    for (int j = 0; j <= N + k->n - 1; ++j) {
-        double t = j <= N ? tgrid(k, j, N) : k->t[j - N - 1];
-        double ea[16], eb[16], va[12], vb[12], aa[12], ab[12];
-        int sa = ga_path_eval(a, t, ea), sb = ga_path_eval(b, t, eb);
-        if (sa != sb || (sa == GA_OK && memcmp(ea, eb, ed)))
+    for (int j = 0; j <= N + k->n - 1; ++j)
+        if (!tk_path_same_at(a, b, j <= N ? tgrid(k, j, N) : k->t[j - N - 1]))
             return 0;
-        sa = ga_path_differentiate(a, t, GA_FRAME_BODY, va, aa);
-        sb = ga_path_differentiate(b, t, GA_FRAME_BODY, vb, ab);
-        size_t d = a->group->dim * sizeof(double);
-        if (sa != sb || (sa == GA_OK && (memcmp(va, vb, d) || memcmp(aa, ab, d))))
-            return 0;
-    }
     return 1;
 }
 
-static void test_append(tk_rng *r)
+static void test_append(void)
 {
     const ga_group *groups[3] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
     tk_check c_same = tk_begin("appended key by key = built at once, bit for bit", 0);
@@ -1952,26 +1946,16 @@ static void test_append(tk_rng *r)
     tk_end(&c_no);
 }
 
-int main(void)
-{
-    tk_rng r = {20240607u};
-    clock_t c0 = clock();
-    test_keys(&r);
-    test_c1(&r);
-    test_accel(&r);
-    test_decoupled(&r);
-    test_c2(&r);
-    test_c2_uneven();
-    test_growth(&r);
-    test_cga_se3(&r);
-    test_screw(&r);
-    test_identities(&r);
-    test_dexp(&r);
-    test_affine(&r);
-    test_euler(&r);
-    test_exact(&r);
-    test_append(&r);
-    test_errors();
-    printf("(%.2f s)\n", (double)(clock() - c0) / CLOCKS_PER_SEC);
-    return tk_finish("test_interp");
-}
+static const tk_section sections[] = {
+    {"keys", test_keys, TK_STREAM},     {"c1", test_c1, TK_STREAM},
+    {"accel", test_accel, TK_STREAM},   {"decoupled", test_decoupled, TK_STREAM},
+    {"c2", test_c2, TK_STREAM},         {"c2_uneven", test_c2_uneven, 0},
+    {"growth", test_growth, TK_STREAM}, {"cga_se3", test_cga_se3, TK_STREAM},
+    {"screw", test_screw, TK_STREAM},   {"identities", test_identities, TK_STREAM},
+    {"dexp", test_dexp, TK_STREAM},     {"affine", test_affine, TK_STREAM},
+    {"euler", test_euler, TK_STREAM},   {"exact", test_exact, TK_STREAM},
+    {"append", test_append, TK_STREAM}, {"errors", test_errors, 0},
+    {"time", tk_cpu_time, TK_SETUP},
+};
+
+int main(int argc, char **argv) { return tk_main(argc, argv, "test_interp", sections, TK_COUNT(sections)); }

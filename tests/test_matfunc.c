@@ -75,9 +75,11 @@ static ga_mat4 turn(double th, ga_vec3 n, ga_vec3 t, double scale)
     return m;
 }
 
-int main(int argc, char **argv)
+static int verbose; /* -v: one line per matrix */
+
+/* the reference matrices: expm and logm against scipy's */
+static void section_refs(void)
 {
-    int verbose = argc > 1 && strcmp(argv[1], "-v") == 0; /* one line per matrix */
     char name[128];
     for (size_t k = 0; k < N_MATFUNC_REFS; k++) {
         const matfunc_ref *r = &matfunc_refs[k];
@@ -93,7 +95,7 @@ int main(int argc, char **argv)
         tk_add_status(tk_get(name), st, GA_OK);
         if (st != GA_OK) {
             if (verbose)
-                printf("  row %zu %s %s n=%d: refused %d\n", k, fn, r->src, r->n, st);
+                tk_note("  row %zu %s %s n=%d: refused %d\n", k, fn, r->src, r->n, st);
             continue;
         }
         double e = ref_err(r, out);
@@ -104,17 +106,20 @@ int main(int argc, char **argv)
             snprintf(name, sizeof name, "logm %s: error <= 10x the closed form's", r->src);
             tk_add_tol(tk_get(name), e, ce >= U / 5 ? 10.0 * ce : 2.0 * U);
             if (verbose)
-                printf("  row %zu %s %s: err %.3e closed form %.3e\n", k, fn, r->src, e, ce);
+                tk_note("  row %zu %s %s: err %.3e closed form %.3e\n", k, fn, r->src, e, ce);
             continue;
         }
         snprintf(name, sizeof name, "%s %s: error <= scipy's (floor 4u)", fn, r->src);
         tk_add_tol(tk_get(name), e, fmax(r->scipy_err, 4.0 * U));
         if (verbose)
-            printf("  row %zu %s %s n=%d: err %.3e scipy %.3e\n", k, fn, r->src, r->n, e, r->scipy_err);
+            tk_note("  row %zu %s %s n=%d: err %.3e scipy %.3e\n", k, fn, r->src, r->n, e, r->scipy_err);
     }
     tk_end_named();
+}
 
-    /* the sweep toward the half turn */
+/* the sweep toward the half turn */
+static void section_half_turn(void)
+{
     static const double ax[4][3] = {{1, 2, 3}, {0, 0, 1}, {-3, 1, 1}, {1, 1, 0}};
     tk_check rigid = tk_begin("logm rigid turn pi - 10^-k, k = 1..16: GA_OK", 0),
              scaled = tk_begin("logm 2 x turn pi - 10^-k, k = 1..13: GA_OK", 0),
@@ -139,5 +144,16 @@ int main(int argc, char **argv)
     tk_end(&rigid);
     tk_end(&scaled);
     tk_end(&exact);
-    return tk_finish("test_matfunc");
+}
+
+static const tk_section sections[] = {
+    {"refs", section_refs, 0},
+    {"half_turn", section_half_turn, 0},
+};
+
+static void setup(const char *arg) { verbose = arg && strcmp(arg, "-v") == 0; }
+
+int main(int argc, char **argv)
+{
+    return tk_main_arg(argc, argv, "test_matfunc", sections, TK_COUNT(sections), setup);
 }

@@ -607,24 +607,36 @@ static void scene_join(tk_rng *t, double D)
 #undef JM
 }
 
-int main(void)
+/* the distances from the origin the scenes are placed at */
+static const double dists[] = {1, 1e2, 1e4, 1e6, 1e8};
+
+/* the scenes, per distance D from the origin */
+static void section_scenes(void)
 {
     tk_rng t = {14}, ta = {1414};
-    static const double dists[] = {1, 1e2, 1e4, 1e6, 1e8};
-    printf("worst error per kind, per distance D from the origin (lengths / L, r^2 / L^2)\n");
+    tk_note("worst error per kind, per distance D from the origin (lengths / L, r^2 / L^2)\n");
     for (int k = 0; k < 5; k++) {
         for (int i = 0; i < 300; i++) scene(&t, dists[k]);
         for (int i = 0; i < 300; i++) scene_about(&ta, dists[k]);
         flush(dists[k]);
     }
+}
+
+/* join and meet_rel of the scenes, per distance D */
+static void section_join(void)
+{
     tk_rng tj = {2222};
     status_check = "join, meet_rel: results read back with GA_OK";
-    printf("join and meet_rel, worst error per kind, per distance D\n");
+    tk_note("join and meet_rel, worst error per kind, per distance D\n");
     for (int k = 0; k < 5; k++) {
         for (int i = 0; i < 300; i++) scene_join(&tj, dists[k]);
         flush(dists[k]);
     }
-    /* statuses */
+}
+
+/* statuses */
+static void section_statuses(void)
+{
     ga_object ob;
     ga_vec3 z = {0, 0, 0}, ex = {1, 0, 0};
     tk_expect_status("imaginary sphere: GA_ERR_IMAGINARY from ga_sphere_params",
@@ -806,5 +818,12 @@ int main(void)
     tk_add_tol(tk_get("rotor between opposite planes: normal reversed, origin to z = -1"),
                tk_max(tk_norm(sub(sub(hz, h0), mz)), tk_norm(sub(h0, mz))), 8 * DBL_EPSILON);
     tk_end_named();
-    return tk_finish("test_meet");
 }
+
+static const tk_section sections[] = {
+    {"scenes", section_scenes, 0},
+    {"join", section_join, 0},
+    {"statuses", section_statuses, 0},
+};
+
+int main(int argc, char **argv) { return tk_main(argc, argv, "test_meet", sections, TK_COUNT(sections)); }

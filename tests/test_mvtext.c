@@ -78,7 +78,7 @@ static void expect_text(ga_mv X, const char *want)
     int ok = st == GA_OK && strcmp(buf, want) == 0 && len == strlen(want);
     tk_add_bool(tk_get("exact text of a few"), ok);
     if (!ok)
-        printf("     format gave '%s' (status %d), want '%s'\n", st == GA_OK ? buf : "", st, want);
+        tk_note("     format gave '%s' (status %d), want '%s'\n", st == GA_OK ? buf : "", st, want);
 }
 
 static void expect_parse(const char *text, int want_st, ga_mv want)
@@ -90,7 +90,7 @@ static void expect_parse(const char *text, int want_st, ga_mv want)
     tk_add_bool(tk_get(want_st == GA_OK ? "parse: texts read as meant" : "parse: refusals, output untouched"),
                 ok);
     if (!ok)
-        printf("     parse '%s': status %d, want %d\n", text, st, want_st);
+        tk_note("     parse '%s': status %d, want %d\n", text, st, want_st);
 }
 
 static ga_mv term(int i, double v)
@@ -100,13 +100,13 @@ static ga_mv term(int i, double v)
     return X;
 }
 
-int main(void)
-{
-    tk_rng r = {2024};
-    char buf[GA_MV_TEXT_MAX];
-    size_t len;
+static tk_rng r = {2024}; /* the stream of the round trips, then of the inner products */
+static char buf[GA_MV_TEXT_MAX];
+static size_t len;
 
-    /* round trips, bit for bit */
+/* round trips, bit for bit */
+static void section_round_trips(void)
+{
     tk_check *rt = tk_get("format then parse: the same doubles (10^4 multivectors)");
     tk_check *ln = tk_get("text length < GA_MV_TEXT_MAX and = strlen");
     for (int n = 0; n < 10000; n++) {
@@ -120,7 +120,7 @@ int main(void)
         for (int i = 0; i < 32; i++) same &= Y.c[i] == X.c[i];
         tk_add_bool(rt, same);
         if (!same)
-            printf("     round trip lost: %s\n", buf);
+            tk_note("     round trip lost: %s\n", buf);
     }
     /* the longest text: every coefficient minus the double after 1e-7 */
     ga_mv big;
@@ -134,8 +134,11 @@ int main(void)
     /* and -DBL_MAX, the longest number of the other layout */
     for (int i = 0; i < 32; i++) big.c[i] = -DBL_MAX;
     tk_add_bool(ln, ga_mv_format(big, buf, sizeof buf, &len) == GA_OK && len == 24 + 31 * 26 + 111);
+}
 
-    /* exact texts */
+/* exact texts */
+static void section_texts(void)
+{
     expect_text(ga_mv_add(ga_mv_add(ga_mv_scalar(1), term(GA_BLADE_E12, 2)), term(GA_BLADE_E1234, -0.5)),
                 "1 + 2e12 - 0.5e1234");
     expect_text(ga_mv_zero(), "0");
@@ -145,8 +148,11 @@ int main(void)
     expect_text(ga_mv_add(term(GA_BLADE_SCALAR, 1e21), term(GA_BLADE_E3, -1e-8)), "1e+21 - 1e-08e3");
     expect_text(term(GA_BLADE_E45, 0.1), "0.1e45");
     expect_text(term(GA_BLADE_E1, ldexp(1, -1074)), "5e-324e1");
+}
 
-    /* statuses of format: nothing written on failure */
+/* statuses of format: nothing written on failure */
+static void section_format_status(void)
+{
     ga_mv one = ga_mv_scalar(1);
     memset(buf, 'x', sizeof buf);
     len = 99;
@@ -159,8 +165,12 @@ int main(void)
     tk_add_status(tk_get("format: NaN"), ga_mv_format(term(3, NAN), buf, sizeof buf, &len), GA_ERR_NOTFINITE);
     tk_add_status(tk_get("format: Inf"), ga_mv_format(term(9, -INFINITY), buf, sizeof buf, &len),
                   GA_ERR_NOTFINITE);
+}
 
-    /* what parse reads, and what it refuses */
+/* what parse reads, and what it refuses */
+static void section_parse(void)
+{
+    ga_mv one = ga_mv_scalar(1);
     expect_parse("1 + 2e12 - 0.5e1234", GA_OK,
                  ga_mv_add(ga_mv_add(ga_mv_scalar(1), term(GA_BLADE_E12, 2)), term(GA_BLADE_E1234, -0.5)));
     expect_parse("2 e12", GA_OK, term(GA_BLADE_E12, 2));
@@ -219,8 +229,11 @@ int main(void)
         expect_parse(big, GA_ERR_NOTFINITE, one);
     }
     tk_add_status(tk_get("parse: NULL text"), ga_mv_parse(NULL, &one), GA_ERR_ARG);
+}
 
-    /* inner products against their definitions */
+/* inner products against their definitions */
+static void section_inner(void)
+{
     tk_check *fd = tk_get("fat dot = sum <<a>_r <b>_s>_|r-s| (10^3 pairs)");
     tk_check *hi = tk_get("Hestenes = the same without r or s = 0 (10^3 pairs)");
     for (int n = 0; n < 1000; n++) {
@@ -244,5 +257,14 @@ int main(void)
                           tk_mv_maxabs(ga_mv_ip(ga_mv_scalar(2), b))),
                    0);
     }
-    return tk_finish("test_mvtext");
 }
+
+static const tk_section sections[] = {
+    {"round_trips", section_round_trips, TK_STREAM},
+    {"texts", section_texts, 0},
+    {"format_status", section_format_status, 0},
+    {"parse", section_parse, 0},
+    {"inner", section_inner, TK_STREAM},
+};
+
+int main(int argc, char **argv) { return tk_main(argc, argv, "test_mvtext", sections, TK_COUNT(sections)); }

@@ -116,11 +116,11 @@ static int finite_bits(tk_rng *r, double *x)
     return isfinite(*x);
 }
 
-int main(int argc, char **argv)
+static long scale; /* the scale argument: random doubles times scale */
+
+/* every kind of double: the shortest text that reads back */
+static void section_shortest(void)
 {
-    long scale = argc > 1 ? atol(argv[1]) : 1;
-    if (scale < 1)
-        scale = 1;
     tk_rng rng = {20261201};
     tk_check trip = tk_begin(
         "numtext: the text reads back as x, has ga_double_shortest's digits, ga_decimal_format's layout", 0);
@@ -203,8 +203,11 @@ int main(int argc, char **argv)
     tk_end(&shortest);
     tk_end(&nearest);
     tk_end(&reference);
+}
 
-    /* the layout: one rule for every number */
+/* the layout: one rule for every number */
+static void section_layout(void)
+{
     static const struct {
         double x;
         const char *text;
@@ -235,12 +238,29 @@ int main(int argc, char **argv)
         ga_double_format(layout[i].x, buf);
         int ok = strcmp(buf, layout[i].text) == 0;
         if (!ok)
-            printf("  %s written as %s\n", layout[i].text, buf);
+            tk_note("  %s written as %s\n", layout[i].text, buf);
         tk_add_bool(&lay, ok);
     }
     tk_end(&lay);
-    printf("  %ld doubles, %ld against the full reference, %ld at a binade's bottom shorter than the "
-           "nearest of their length\n",
-           n_tried, n_ref, n_lopsided);
-    return tk_finish("numtext");
+    tk_note("  %ld doubles, %ld against the full reference, %ld at a binade's bottom shorter than the "
+            "nearest of their length\n",
+            n_tried, n_ref, n_lopsided);
+}
+
+static const tk_section sections[] = {
+    {"shortest", section_shortest, 0},
+    {"layout", section_layout, 0},
+};
+
+/* the scale argument */
+static void setup(const char *arg)
+{
+    scale = arg ? atol(arg) : 1;
+    if (scale < 1)
+        scale = 1;
+}
+
+int main(int argc, char **argv)
+{
+    return tk_main_arg(argc, argv, "numtext", sections, TK_COUNT(sections), setup);
 }

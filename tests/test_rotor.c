@@ -21,6 +21,7 @@
 #define PI TK_PI
 
 static tk_rng rng = {0x9E3779B97F4A7C15u}; /* testkit.h: splitmix64 */
+static long n_cases;                       /* per family: N_CASES times the scale argument */
 
 /* ---- small vector helpers ------------------------------------------------ */
 static ga_vec3 v3(double x, double y, double z)
@@ -225,9 +226,10 @@ static ga_dualquat dqmul(ga_dualquat a, ga_dualquat b)
 
 /* ---- the checks ------------------------------------------------------------ */
 
-static void check_product(long n)
+static void check_product(void)
 {
-    printf("compact product, reverse, conversion (full algebra as reference)\n");
+    long n = n_cases;
+    tk_note("compact product, reverse, conversion (full algebra as reference)\n");
     tk_check w_mul = tk_begin("ga_rotor_mul vs ga_mv_gp, / (max|a| max|b|)", 32 * EPS);
     tk_check w_rev = tk_begin("ga_rotor_reverse vs ga_mv_reverse (exact)", 0.0);
     tk_check w_out = tk_begin("ga_mv_gp of two rotor forms: outside the 8 components", 32 * EPS);
@@ -260,9 +262,10 @@ static void check_product(long n)
     tk_end(&w_conv);
 }
 
-static void check_action(long n)
+static void check_action(void)
 {
-    printf("action on points and objects (full sandwich R F(x) ~R as reference)\n");
+    long n = n_cases;
+    tk_note("action on points and objects (full sandwich R F(x) ~R as reference)\n");
     tk_check w_pt = tk_begin("apply vs down(R F(x) ~R), / ((1+|t|)^2 (1+|x|^2))", 64 * EPS);
     tk_check w_null = tk_begin("R F(x) ~R = F(apply(R, x))", 64 * EPS);
     tk_check w_n = tk_begin("R n ~R = n (Thm 8), exp's rotors", 32 * EPS);
@@ -316,9 +319,10 @@ static void check_action(long n)
 }
 
 /* exp of the closed form vs the full-algebra Taylor series. */
-static void check_exp_series(long n)
+static void check_exp_series(void)
 {
-    printf("closed-form exp (Thm 3) vs Taylor series of ga_mv_gp with scaling and squaring\n");
+    long n = n_cases;
+    tk_note("closed-form exp (Thm 3) vs Taylor series of ga_mv_gp with scaling and squaring\n");
     tk_check worst = tk_begin("|exp - series| / (max(1,|c|) (2^k + 1))", 32 * EPS);
     tk_check wr = tk_begin("closed-form exp is on the group to 16 EPS (0 = yes)", 0.0);
     for (long i = 0; i < n; i++) {
@@ -351,9 +355,10 @@ static ga_generator half_turn_alt(ga_vec3 w, ga_vec3 v)
  * principal logs (all but the rotations beyond a half turn), and over rotors
  * just off the group (tk_drift of general screws). */
 #define DRIFTED TK_TWIST_FAMILIES
-static void check_exp_log(long n)
+static void check_exp_log(void)
 {
-    printf("exp(l(R)) = R and l(exp(B)) = B, error / max(1, |v|, |t|)\n");
+    long n = n_cases;
+    tk_note("exp(l(R)) = R and l(exp(B)) = B, error / max(1, |v|, |t|)\n");
     for (int f = 0; f <= DRIFTED; f++) {
         if (f == TK_BEYOND_PI)
             continue;
@@ -407,9 +412,9 @@ static void check_exp_log(long n)
             }
         }
         if (drifted)
-            printf(" %s, drifted by ~1e-12 (R ~R = 1 + ~1e-12) (%ld)\n", tk_family_name[TK_SCREW], cases);
+            tk_note(" %s, drifted by ~1e-12 (R ~R = 1 + ~1e-12) (%ld)\n", tk_family_name[TK_SCREW], cases);
         else
-            printf(" %s (%ld)\n", tk_family_name[f], cases);
+            tk_note(" %s (%ld)\n", tk_family_name[f], cases);
         /* exp and log each take O(10) roundings of quantities of size 1 or |t| */
         tk_end(&w_el);
         if (!drifted)
@@ -420,7 +425,7 @@ static void check_exp_log(long n)
             tk_end(&w_rot);
         if (drifted) {
             tk_end_named();
-            printf("     (projection moved the rotor by %.2e of max(1,|t|): the drift itself)\n", w_drift);
+            tk_note("     (projection moved the rotor by %.2e of max(1,|t|): the drift itself)\n", w_drift);
         }
     }
     /* the literal log past a half turn: l_literal(exp(B)) = B for angles in (pi, 2 pi - 1/2);
@@ -433,7 +438,7 @@ static void check_exp_log(long n)
         int st = ga_rotor_log_literal(ga_rotor_exp(B), &L);
         tk_add(&w_lit, st == GA_OK ? gdiff(L, B) / fmax(1, vnorm(v)) : INFINITY);
     }
-    printf(" literal log, angles pi..2pi-1/2 (%ld)\n", n);
+    tk_note(" literal log, angles pi..2pi-1/2 (%ld)\n", n);
     tk_end(&w_lit);
     /* the full turn: q = -1 */
     ga_generator L;
@@ -473,9 +478,10 @@ static void check_exp_log(long n)
     tk_end(&w_rf);
 }
 
-static void check_matrix(long n)
+static void check_matrix(void)
 {
-    printf("matrices: exp(B(xi)) vs long-double expm(xi^); rotor <-> matrix\n");
+    long n = n_cases;
+    tk_note("matrices: exp(B(xi)) vs long-double expm(xi^); rotor <-> matrix\n");
     tk_check w_exp = tk_begin("|mat(exp(B(xi))) - expm(xi^)| / max(1,|v|,|t|)", 1e-13);
     tk_check w_rmr = tk_begin("rotor -> matrix -> rotor (up to sign)", 8 * EPS);
     tk_check w_mrm = tk_begin("matrix -> rotor -> matrix", 16 * EPS);
@@ -526,9 +532,10 @@ static void check_matrix(long n)
     tk_end(&w_half);
 }
 
-static void check_quat(long n)
+static void check_quat(void)
 {
-    printf("quaternions and dual quaternions\n");
+    long n = n_cases;
+    tk_note("quaternions and dual quaternions\n");
     tk_check w_q = tk_begin("quat(rotation(u, th)) = (cos th/2, sin th/2 u)", 8 * EPS);
     tk_check w_rq = tk_begin("rotor -> (quat, t) -> rotor", 8 * EPS);
     tk_check w_dq = tk_begin("dual quat = (r, t r / 2) computed independently", 8 * EPS);
@@ -578,9 +585,10 @@ static void check_quat(long n)
 }
 
 /* W-L §2.1: pure-rotation rotors interpolate as quaternion SLERP. */
-static void check_slerp(long n)
+static void check_slerp(void)
 {
-    printf("pure rotations interpolate as quaternion SLERP (W-L §2.1)\n");
+    long n = n_cases / 10;
+    tk_note("pure rotations interpolate as quaternion SLERP (W-L §2.1)\n");
     tk_check worst = tk_begin("|exp(lam l(R2 ~R1)) R1 - slerp(q0, q1, lam)| sin(om)", 16 * EPS);
     for (long i = 0; i < n; i++) {
         ga_vec3 u1 = tk_unit(&rng);
@@ -613,7 +621,7 @@ static void check_slerp(long n)
 /* W-L §4.1: the path of exp(lam B) from the origin is the helix r_lam. */
 static void check_helix(void)
 {
-    printf("the helix of W-L §4.1 (Fig. 7: t_par = 4a + 6b, psi = 9 pi, |t_perp| = 1)\n");
+    tk_note("the helix of W-L §4.1 (Fig. 7: t_par = 4a + 6b, psi = 9 pi, |t_perp| = 1)\n");
     tk_check w_fix = tk_begin("r_lam with -lam t_perp (T_a = 1 + n a/2 of §2.2)", 64 * EPS * 8);
     tk_check w_printed = tk_begin("r_lam as printed (+lam t_perp) misses by 2 lam |t_perp|: |miss - 2 lam|",
                                   64 * EPS * 8);
@@ -665,9 +673,10 @@ static void check_helix(void)
 }
 
 /* Definition 4, Lemmas 5 and 6 and Thm 9 as the paper states them, in the full algebra. */
-static void check_paper_forms(long n)
+static void check_paper_forms(void)
 {
-    printf("W-L Def. 4, Lemmas 5-6, Thm 9 as printed, in the full algebra\n");
+    long n = n_cases;
+    tk_note("W-L Def. 4, Lemmas 5-6, Thm 9 as printed, in the full algebra\n");
     tk_check w_l5 = tk_begin("Lemma 5: exp(B) = [1 + sinc t_par n/2 ~tau] tau", 16 * EPS);
     tk_check w_l6 = tk_begin("Lemma 6: that rotor translates by -sinc t_par (cos - sin P)", 16 * EPS);
     tk_check w_t9 = tk_begin("Thm 9 (acos form) = ga_rotor_log_literal, * sin|ab|", 64 * EPS);
@@ -725,9 +734,10 @@ static void check_paper_forms(long n)
     tk_end(&w_t9);
 }
 
-static void check_screws(long n)
+static void check_screws(void)
 {
-    printf("screws (Chasles): screw -> rotor -> screw, and the screw's own meaning\n");
+    long n = n_cases;
+    tk_note("screws (Chasles): screw -> rotor -> screw, and the screw's own meaning\n");
     tk_check w_rt = tk_begin("screw round trip (angle, axis, point, shift, pitch)", 64 * EPS);
     tk_check w_mean = tk_begin("R moves axis points by shift along the axis", 64 * EPS);
     for (long i = 0; i < n; i++) {
@@ -780,7 +790,7 @@ static void check_screws(long n)
 
 static void check_bad_input(void)
 {
-    printf("bad input gives the right status, outputs untouched\n");
+    tk_note("bad input gives the right status, outputs untouched\n");
     ga_rotor good = ga_rotor_exp(gen(v3(0.3, -1, 2), v3(5, 6, -7))), out = {9, 9, 9, 9, 9, 9, 9, 9};
     ga_generator g = {9, 9, 9, 9, 9, 9};
     for (int k = 0; k < 8; k++) {
@@ -861,9 +871,10 @@ static void check_bad_input(void)
 }
 
 /* Cross-representation: the SE(3) closed forms of mat4.h (Eberly) agree. */
-static void check_se3(long n)
+static void check_se3(void)
 {
-    printf("cross-check with the matrix group (mat4.h: ga_se3_exp, ga_se3_log)\n");
+    long n = n_cases;
+    tk_note("cross-check with the matrix group (mat4.h: ga_se3_exp, ga_se3_log)\n");
     tk_check w_exp = tk_begin("mat(exp(B(xi))) = ga_se3_exp(xi)", 32 * EPS);
     tk_check w_log = tk_begin("twist(l(R)) = ga_se3_log(mat(R)), angles < pi", 32 * EPS);
     tk_check w_ref = tk_begin("ga_se3_exp(xi) = long-double expm(xi^)", 16 * EPS);
@@ -896,22 +907,30 @@ static void check_se3(long n)
     tk_end(&w_log);
 }
 
+static const tk_section sections[] = {
+    {"product", check_product, TK_STREAM},
+    {"action", check_action, TK_STREAM},
+    {"exp_series", check_exp_series, TK_STREAM},
+    {"exp_log", check_exp_log, TK_STREAM},
+    {"matrix", check_matrix, TK_STREAM},
+    {"se3", check_se3, TK_STREAM},
+    {"quat", check_quat, TK_STREAM},
+    {"slerp", check_slerp, TK_STREAM},
+    {"helix", check_helix, TK_STREAM},
+    {"paper_forms", check_paper_forms, TK_STREAM},
+    {"screws", check_screws, TK_STREAM},
+    {"bad_input", check_bad_input, 0},
+};
+
+/* the scale argument */
+static void setup(const char *arg)
+{
+    long mult = arg ? atol(arg) : 1;
+    n_cases = N_CASES * (mult > 0 ? mult : 1);
+    tk_note("test_rotor: %ld cases per family\n", n_cases);
+}
+
 int main(int argc, char **argv)
 {
-    long mult = argc > 1 ? atol(argv[1]) : 1;
-    long n = N_CASES * (mult > 0 ? mult : 1);
-    printf("test_rotor: %ld cases per family\n", n);
-    check_product(n);
-    check_action(n);
-    check_exp_series(n);
-    check_exp_log(n);
-    check_matrix(n);
-    check_se3(n);
-    check_quat(n);
-    check_slerp(n / 10);
-    check_helix();
-    check_paper_forms(n);
-    check_screws(n);
-    check_bad_input();
-    return tk_finish("test_rotor");
+    return tk_main_arg(argc, argv, "test_rotor", sections, TK_COUNT(sections), setup);
 }
