@@ -1,4 +1,4 @@
-/* tests/test_numtext.c: the tool's shortest-decimal writer (tools/numtext.c)
+/* tests/test_numtext.c: the shortest-decimal writer (ga/numtext.c, numtext.h)
  * against strtod and a slow reference.
  *
  * For every double tried (seeded: random bit patterns, subnormals, every
@@ -247,9 +247,29 @@ static void section_layout(void)
             n_tried, n_ref, n_lopsided);
 }
 
+/* NaN and the infinities: words that strtod reads back, and no digits */
+static void section_nonfinite(void)
+{
+    const double x[3] = {INFINITY, -INFINITY, NAN};
+    const char *text[3] = {"inf", "-inf", "nan"};
+    tk_check c = tk_begin("numtext: inf, -inf, nan written as strtod reads them, no digits", 0);
+    for (int i = 0; i < 3; i++) {
+        char buf[GA_DOUBLE_TEXT_MAX];
+        size_t len = ga_double_format(x[i], buf);
+        double back = strtod(buf, NULL);
+        uint64_t digits = 1;
+        int e = 1, n = ga_double_shortest(x[i], &digits, &e);
+        tk_add_bool(&c, strcmp(buf, text[i]) == 0 && len == strlen(text[i]));
+        tk_add_bool(&c, isnan(x[i]) ? isnan(back) : back == x[i]);
+        tk_add_bool(&c, n == 0 && digits == 0 && e == 0);
+    }
+    tk_end(&c);
+}
+
 static const tk_section sections[] = {
     {"shortest", section_shortest, 0},
     {"layout", section_layout, 0},
+    {"nonfinite", section_nonfinite, 0},
 };
 
 /* the scale argument */
