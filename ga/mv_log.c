@@ -396,8 +396,9 @@ ga_status ga_mv_log(ga_mv R, ga_mv *out)
     res = cres[pick];
     /* no real log (or not a versor): exp(log R) is not R. exp of a log of
        size |B| is itself known only to ~u |B|^2 of |R| (the rounding of B,
-       magnified), so the check allows 64 u size^2 where that is above
-       1e-9, up to 1e-6 (size ~ 2.6e5), beyond which it cannot tell */
+       magnified), so the check allows 64 u size^2 (u = DBL_EPSILON) where
+       that is above 1e-9, up to 1e-6 (size about 8.4e3), beyond which it
+       cannot tell */
     if (!(res <= fmin(1e-6, fmax(tol, 64.0 * DBL_EPSILON * sz * sz)) * scale))
         return GA_ERR_DOMAIN;
     *out = B;

@@ -14,6 +14,9 @@
  * summed in the order of the blade loop. They are the reference that the
  * compact rotor (rotor.h) is checked against. Also here: exp, log and the
  * split of any bivector and rotor of G(4,1) (Dorst-Valkenburg 2011).
+ *
+ * Accuracies are stated in units of u = DBL_EPSILON = 2^-52, relative to the
+ * size named (|B|: the largest coefficient of B).
  */
 #ifndef GAROTOR_MV_H
 #define GAROTOR_MV_H
@@ -193,7 +196,8 @@ GA_API ga_mv ga_mv_exp(ga_mv B);
  *  to a relative 1e-9 (odd parts, R ~R != 1, or exp(log R) != R to 1e-9),
  *  which is where R has no real logarithm. Beside a large null part that
  *  check is widened to 64 u s^2 (s = min(|R|, |B|) + 4) where that is
- *  larger, up to 1e-6 (s ~ 2.6e5), beyond which GA_ERR_DOMAIN.
+ *  larger, up to 1e-6 (reached at s of about 8.4e3), beyond which
+ *  GA_ERR_DOMAIN.
  *  Accuracy: exp(log R) = R to 1e-13 of |R| on the principal domain and
  *  beyond it, a rotation near a full turn beside a null part included, and
  *  log(exp(B)) = B to 1e-13 where every elliptic half-angle is below pi/2.
@@ -215,9 +219,9 @@ GA_API GA_NODISCARD ga_status ga_mv_log(ga_mv R, ga_mv *out);
  *  Refuses: GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
  *  GA_ERR_DOMAIN when a part overflows.
  *  Accuracy: through ga_mv_factor, the factors multiply to R, commute and
- *  are simple to 1e-13 of |R| for every family (rotations, boosts, null
- *  parts, their pairs, isoclinic and near-isoclinic, a small turn beside a
- *  null part, dense random bivectors). */
+ *  are simple to 1e-13 of |R|, whatever the kinds of the parts (rotations,
+ *  boosts, null parts, their pairs, isoclinic or nearly so, a small turn
+ *  beside a null part; docs/versors.md has the measurements). */
 GA_API GA_NODISCARD ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
 
 /** A rotor R as a product R1 R2 of commuting simple rotors Ri = exp(Bi)

@@ -278,7 +278,7 @@ GA_API size_t ga_scheme_min_keys(ga_scheme s);
  *  BSPLINE (keys i..i+3; a path of at least 4 keys, the new key on the even
  *  grid of them all, as ga_times_uneven says, else GA_ERR_ARG). The
  *  others cannot: LIHAO3's default velocity at a key and the splines
- *  (QUADRATIC, SMOOTH, DECOUPLED_C2) depend on every key, so a new key
+ *  (QUADRATIC, SMOOTH, DECOUPLED_C2, C2) depend on every key, so a new key
  *  changes segments already built; rebuild them with ga_path_init. */
 GA_API int ga_scheme_can_append(ga_scheme s);
 
@@ -345,11 +345,11 @@ GA_API GA_NODISCARD ga_status ga_path_segment_range(const ga_path *p, size_t seg
 GA_API GA_NODISCARD ga_status ga_path_locate(const ga_path *p, double t, size_t *seg, double *u);
 
 /** A(t) in closed form (DIRECT). At a key time t_i it is the key A_i itself
- *  (the formulas give it up to rounding, which ga_path_eval_segment shows and
- *  the tests measure); so are the DIRECT samples of the batch calls. */
+ *  (the formulas give it up to rounding, which ga_path_eval_segment shows);
+ *  so are the DIRECT samples of the batch calls. */
 GA_API GA_NODISCARD ga_status ga_path_eval(const ga_path *p, double t, void *out);
-/** The formula of segment seg (0..n-2) at any finite u (outside [0, 1] it
- *  extrapolates); no special case at the keys. */
+/** The formula of segment seg (0 .. ga_path_segments(p) - 1) at any finite
+ *  u (outside [0, 1] it extrapolates); no special case at the keys. */
 GA_API GA_NODISCARD ga_status ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out);
 
 /** The body velocity A(t)^-1 dA/dt at t (g->dim doubles, per unit t); at a key

@@ -80,7 +80,8 @@ typedef struct {
 
 /** q / |q| when ||q| - 1| <= tol: the rule of docs/conventions.md, "Keys
  *  near the group". Refuses: GA_ERR_NOTRIGID when q is farther,
- *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for tol > GA_SE3_NORMALIZE_TOL. */
+ *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for a tol that is negative, NaN
+ *  or above GA_SE3_NORMALIZE_TOL. */
 GA_API GA_NODISCARD ga_status ga_quat_normalize(ga_quat q, double tol, ga_quat *out);
 
 /** A dual quaternion real + eps dual: for the motion "rotate by r, then translate
