@@ -44,7 +44,8 @@
 extern "C" {
 #endif
 
-/** A rigid-motion rotor R = q + P n: q = s + e12 + e13 + e23 terms, P n = e1n..e123n terms. */
+/** A rigid-motion rotor R = q + P n: q has the coefficients s, e12, e13, e23
+ *  (a unit quaternion), P n the coefficients of e1n, e2n, e3n, e123n. */
 typedef struct {
     double s, e12, e13, e23, e1n, e2n, e3n, e123n;
 } ga_rotor;
@@ -132,7 +133,9 @@ GA_API GA_NODISCARD ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out);
 /* ---- action ---------------------------------------------------------------- */
 
 /** The point x moved by r, as down(R F(x) ~R), computed as q x ~q + t (R = T_t q,
- *  t = -2 <P ~q>_1) in one quaternion sandwich (rotor_inline.h). r must be on the group. */
+ *  t = -2 <P ~q>_1) in one quaternion sandwich (rotor_inline.h). r must be
+ *  on the group (ga_rotor_check): off it, the rotated part is scaled by
+ *  |q|^2. */
 GA_API ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
 
 /** R X ~R for any conformal object X, through the full geometric product. */
@@ -170,7 +173,9 @@ GA_API ga_twist ga_generator_to_twist(ga_generator b);
  *  their relative accuracy as phi -> 0; docs/rotors.md, "The exponential").
  *  Any finite angle is accepted, also beyond ~1e154 where phi^2 overflows
  *  (the scaled norm there): the rotation by the double angle, as ga_se3_exp
- *  gives it. No status: NaN in, NaN out. */
+ *  gives it. No status: NaN in, NaN out.
+ *  Accuracy: each component within 32 u (u = DBL_EPSILON) of the exact exp,
+ *  relative to max(1, |translation|); on the group to 16 u. */
 GA_API ga_rotor ga_rotor_exp(ga_generator b);
 
 /** The principal logarithm l(R) (W-L Thm 9, made robust): the generator of the
@@ -184,7 +189,11 @@ GA_API ga_rotor ga_rotor_exp(ga_generator b);
  *  at pi, and for pure translations. A rotor that has drifted from the group
  *  by at most GA_ROTOR_DRIFT_MAX is projected first; farther is GA_ERR_NOTRIGID;
  *  NaN/Inf is GA_ERR_NOTFINITE; a generator that overflows (a translation near
- *  DBL_MAX) is GA_ERR_DOMAIN. exp(l(R)) = +-R. */
+ *  DBL_MAX) is GA_ERR_DOMAIN.
+ *  Accuracy: exp(l(R)) = +-R, and l(exp(B)) = B for B of angle in [0, pi),
+ *  to 8 u relative to max(1, |B|), at every angle and size (u =
+ *  DBL_EPSILON); a tiny rotation keeps its full relative accuracy under any
+ *  translation. */
 GA_API GA_NODISCARD ga_status ga_rotor_log(ga_rotor r, ga_generator *out);
 
 /** The literal logarithm: exp(l(R)) = R exactly, no sign flip, rotation angle in
