@@ -98,6 +98,16 @@ ga_mv ga_rotor_to_mv(ga_rotor r)
     return m;
 }
 
+ga_mv ga_generator_to_mv(ga_generator b)
+{
+    ga_mv m = ga_mv_zero();
+    m.c[GA_BLADE_E12] = b.e12, m.c[GA_BLADE_E13] = b.e13, m.c[GA_BLADE_E23] = b.e23;
+    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = b.e1n;
+    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = b.e2n;
+    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = b.e3n;
+    return m;
+}
+
 /* The e123 part of P ~q: zero on the group. */
 static double rotor_pq3(ga_rotor r) { return r.s * r.e123n - v_dot(rotor_p(r), rotor_b(r)); }
 
