@@ -7,6 +7,8 @@
 #include <garotor/conformal.h>
 #include <math.h>
 
+#include "internal/eft.h"
+
 static ga_vec3 v3(double x, double y, double z)
 {
     ga_vec3 r = {x, y, z};
@@ -713,40 +715,11 @@ static double line_angle(ga_vec3 a, ga_vec3 b)
     return atan2(sqrt(dot3(x, x)), fabs(dot3(a, b)));
 }
 
-/* Double-double arithmetic (Dekker, Knuth): a value hi + lo with |lo| <= u |hi|,
-   for the differences of squares in the angle of rounds, which cancel. */
-typedef struct {
-    double hi, lo;
-} dd;
-static dd dd_norm(double s, double e) /* |s| >= |e| */
+/* a . b in double-double, for the distances of round_angle below */
+static ga__eft_dd dd_dot3(ga_vec3 a, ga_vec3 b)
 {
-    double h = s + e;
-    return (dd){h, e - (h - s)};
-}
-static dd dd_sum(double a, double b)
-{
-    double s = a + b, bb = s - a;
-    return dd_norm(s, (a - (s - bb)) + (b - bb));
-}
-static dd dd_prod(double a, double b)
-{
-    double p = a * b;
-    return dd_norm(p, fma(a, b, -p));
-}
-static dd dd_add(dd x, dd y)
-{
-    dd s = dd_sum(x.hi, y.hi);
-    return dd_norm(s.hi, s.lo + (x.lo + y.lo));
-}
-static dd dd_neg(dd x) { return (dd){-x.hi, -x.lo}; }
-static dd dd_mul(dd x, dd y)
-{
-    dd p = dd_prod(x.hi, y.hi);
-    return dd_norm(p.hi, p.lo + (x.hi * y.lo + x.lo * y.hi));
-}
-static dd dd_dot3(ga_vec3 a, ga_vec3 b)
-{
-    return dd_add(dd_add(dd_prod(a.x, b.x), dd_prod(a.y, b.y)), dd_prod(a.z, b.z));
+    return ga__eft_dd_add(ga__eft_dd_add(ga__eft_dd_prod(a.x, b.x), ga__eft_dd_prod(a.y, b.y)),
+                          ga__eft_dd_prod(a.z, b.z));
 }
 
 /* The angle between a sphere (centre c, squared radius r2) and a plane (unit
@@ -759,31 +732,32 @@ static dd dd_dot3(ga_vec3 a, ga_vec3 b)
    centres' distance). The differences of squares are taken in double-double,
    so that the sine keeps its digits where the objects nearly touch or nearly
    coincide. GA_ERR_DOMAIN where the sine's square is negative: no crossing. */
-static dd dd_scale(dd x, int e) { return (dd){ldexp(x.hi, e), ldexp(x.lo, e)}; }
 static int round_angle(const ga_object *a, const ga_object *b, double *out)
 {
-    dd x, n;
+    ga__eft_dd x, n;
     int e;
     /* every length scaled by 2^-e (exactly) to about 1, so that no square
        overflows or underflows: the angle does not depend on the scale */
     if (a->kind == GA_OBJECT_SPHERE && b->kind == GA_OBJECT_SPHERE) {
-        dd d[3] = {dd_sum(a->centre.x, -b->centre.x), dd_sum(a->centre.y, -b->centre.y),
-                   dd_sum(a->centre.z, -b->centre.z)};
+        ga__eft_dd d[3] = {ga__eft_dd_sum(a->centre.x, -b->centre.x),
+                           ga__eft_dd_sum(a->centre.y, -b->centre.y),
+                           ga__eft_dd_sum(a->centre.z, -b->centre.z)};
         frexp(fmax(fmax(fmax(fabs(d[0].hi), fabs(d[1].hi)), fabs(d[2].hi)), sqrt(fmax(a->r2, b->r2))), &e);
-        dd D = {0.0, 0.0};
+        ga__eft_dd D = {0.0, 0.0};
         for (int i = 0; i < 3; i++) {
-            dd di = dd_scale(d[i], -e);
-            D = dd_add(D, dd_mul(di, di));
+            ga__eft_dd di = ga__eft_dd_ldexp(d[i], -e);
+            D = ga__eft_dd_add(D, ga__eft_dd_mul(di, di));
         }
         double r1 = ldexp(a->r2, -2 * e), r2 = ldexp(b->r2, -2 * e);
-        x = dd_add(dd_sum(r1, r2), dd_neg(D));
-        n = dd_add(dd_prod(4.0 * r1, r2), dd_neg(dd_mul(x, x)));
+        x = ga__eft_dd_add(ga__eft_dd_sum(r1, r2), ga__eft_dd_neg(D));
+        n = ga__eft_dd_add(ga__eft_dd_prod(4.0 * r1, r2), ga__eft_dd_neg(ga__eft_dd_mul(x, x)));
     } else {
         const ga_object *sp = a->kind == GA_OBJECT_SPHERE ? a : b, *pl = a->kind == GA_OBJECT_SPHERE ? b : a;
-        x = dd_add(dd_dot3(pl->direction, sp->centre), dd_neg(dd_dot3(pl->direction, pl->centre)));
+        x = ga__eft_dd_add(dd_dot3(pl->direction, sp->centre),
+                           ga__eft_dd_neg(dd_dot3(pl->direction, pl->centre)));
         frexp(fmax(fabs(x.hi), sqrt(sp->r2)), &e);
-        x = dd_scale(x, -e);
-        n = dd_add((dd){ldexp(sp->r2, -2 * e), 0.0}, dd_neg(dd_mul(x, x)));
+        x = ga__eft_dd_ldexp(x, -e);
+        n = ga__eft_dd_add((ga__eft_dd){ldexp(sp->r2, -2 * e), 0.0}, ga__eft_dd_neg(ga__eft_dd_mul(x, x)));
     }
     if (!(n.hi >= 0.0))
         return GA_ERR_DOMAIN; /* they do not cross */
