@@ -5,6 +5,8 @@
 
 #include <math.h>
 
+#include "internal/vec3.h"
+
 ga_mv ga_mv_n(void) { return ga_mv_vector(0, 0, 0, 1, 1); }
 ga_mv ga_mv_nbar(void) { return ga_mv_vector(0, 0, 0, 1, -1); }
 ga_mv ga_mv_e4(void) { return ga_mv_blade(GA_BLADE_E4); }
@@ -12,19 +14,6 @@ ga_mv ga_mv_e5(void) { return ga_mv_blade(GA_BLADE_E5); }
 ga_mv ga_mv_i3(void) { return ga_mv_blade(GA_BLADE_E123); }
 ga_mv ga_mv_i5(void) { return ga_mv_blade(GA_BLADE_E12345); }
 ga_mv ga_vec3_to_mv(ga_vec3 x) { return ga_mv_vector(x.x, x.y, x.z, 0, 0); }
-
-static double dot3(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ga_vec3 v3(double x, double y, double z)
-{
-    ga_vec3 r = {x, y, z};
-    return r;
-}
-static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
-{
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-/* The e1 e2 e3 part of a vector. */
-static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_BLADE_E1], X.c[GA_BLADE_E2], X.c[GA_BLADE_E3]); }
 
 /* X scaled by a power of 2 (exactly) so that its largest coefficient is in
  * [1/2, 1). Every object here is homogeneous (X and k X are the same object),
@@ -51,8 +40,8 @@ static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_mv_sub(X, ga_mv
    e_i: x_i / lambda; e4: (x^2 - lambda^2) / (2 lambda^2); e5: (x^2 + lambda^2) / (2 lambda^2). */
 static ga_mv point_up(ga_vec3 x, double lambda)
 {
-    ga_vec3 y = v3(x.x / lambda, x.y / lambda, x.z / lambda);
-    double y2 = dot3(y, y);
+    ga_vec3 y = ga__v3_div(x, lambda);
+    double y2 = ga__v3_dot(y, y);
     return ga_mv_vector(y.x, y.y, y.z, 0.5 * (y2 - 1.0), 0.5 * (y2 + 1.0));
 }
 
@@ -80,16 +69,16 @@ static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
     double s = ga_mv_maxabs(X);
     if (s == 0.0 || off_grade(X, 1) > GA_POINT_TOL * s)
         return GA_ERR_NOTPOINT;
-    ga_vec3 e = euclid(X);
+    ga_vec3 e = ga__v3_of_mv(X);
     double x4 = X.c[GA_BLADE_E4], x5 = X.c[GA_BLADE_E5];
     double xn = x4 - x5; /* X.n */
     if (!(fabs(xn) > GA_POINT_TOL * s) || x5 == 0.0)
         return GA_ERR_NOTPOINT;
     /* w = -X.n + X.X / (2 X5): cancellation-free, and -X.n itself when X is null */
-    double w = (dot3(e, e) + xn * xn) / (2.0 * x5);
-    ga_vec3 y = v3(e.x / w, e.y / w, e.z / w);
+    double w = (ga__v3_dot(e, e) + xn * xn) / (2.0 * x5);
+    ga_vec3 y = ga__v3_div(e, w);
     /* X must be w F(y) to the tolerance; this is X.X = 0 (see conformal.h) */
-    double y2 = dot3(y, y);
+    double y2 = ga__v3_dot(y, y);
     if (fabs(x4 - 0.5 * w * (y2 - 1.0)) > GA_POINT_TOL * s ||
         fabs(x5 - 0.5 * w * (y2 + 1.0)) > GA_POINT_TOL * s)
         return GA_ERR_NOTPOINT;
@@ -111,7 +100,7 @@ ga_status ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
         return st;
     /* a large lambda can overflow the point (found by fuzz/fuzz_numeric:
        fuzz/regress/numeric/down-scaled-overflow) */
-    ga_vec3 x = v3(lambda * y.x, lambda * y.y, lambda * y.z);
+    ga_vec3 x = ga__v3_scale(y, lambda);
     if (!isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
         return GA_ERR_DOMAIN;
     *out = x;
@@ -130,7 +119,6 @@ static ga_mv translated(ga_mv X, ga_vec3 a)
     T.c[GA_BLADE_SCALAR] = 1.0;
     return ga_mv_gp(ga_mv_gp(T, X), ga_mv_reverse(T));
 }
-static ga_vec3 sub3(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 
 /* Each object is built about its first point a and then translated to it:
    F(a) ^ F(b) ^ ... = T_a (F(0) ^ F(b - a) ^ ...) ~T_a, as T_a F(x) ~T_a = F(x + a).
@@ -140,27 +128,27 @@ static ga_vec3 sub3(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z 
 static ga_mv about(ga_vec3 a, ga_mv local) { return translated(local, a); }
 ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b)
 {
-    return about(a, ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a))));
+    return about(a, ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a))));
 }
 ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
-    return about(a, ga_mv_op(pp, ga_point_up(sub3(c, a))));
+    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
+    return about(a, ga_mv_op(pp, ga_point_up(ga__v3_sub(c, a))));
 }
 ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
+    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
     return about(a, ga_mv_op(pp, ga_mv_n()));
 }
 ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
-    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(sub3(c, a))), ga_point_up(sub3(d, a))));
+    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
+    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(ga__v3_sub(c, a))), ga_point_up(ga__v3_sub(d, a))));
 }
 ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(v3(0, 0, 0)), ga_point_up(sub3(b, a)));
-    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(sub3(c, a))), ga_mv_n()));
+    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
+    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(ga__v3_sub(c, a))), ga_mv_n()));
 }
 
 ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
@@ -216,9 +204,9 @@ static int dual_sphere_params(ga_mv s, ga_vec3 *centre, double *radius)
     double w = s.c[GA_BLADE_E5] - s.c[GA_BLADE_E4];
     if (!(fabs(w) > GA_POINT_TOL * sc))
         return GA_ERR_NOTBLADE; /* a plane (or the point at infinity) */
-    ga_vec3 c = euclid(s);
-    c = v3(c.x / w, c.y / w, c.z / w);
-    double r2 = dot3(c, c) - (s.c[GA_BLADE_E4] + s.c[GA_BLADE_E5]) / w;
+    ga_vec3 c = ga__v3_of_mv(s);
+    c = ga__v3_div(c, w);
+    double r2 = ga__v3_dot(c, c) - (s.c[GA_BLADE_E4] + s.c[GA_BLADE_E5]) / w;
     /* r^2 is a difference of terms up to 2 sc / |w|: negative beyond that is imaginary */
     if (r2 < -GA_POINT_TOL * 2.0 * sc / fabs(w))
         return GA_ERR_IMAGINARY;
@@ -238,11 +226,11 @@ ga_status ga_sphere_params(ga_mv S, ga_vec3 *centre, double *radius)
 static int dual_plane_params(ga_mv p, ga_vec3 *normal, double *distance)
 {
     double sc = ga_mv_maxabs(p);
-    ga_vec3 m = euclid(p);
-    double len = sqrt(dot3(m, m));
+    ga_vec3 m = ga__v3_of_mv(p);
+    double len = sqrt(ga__v3_dot(m, m));
     if (fabs(p.c[GA_BLADE_E4] - p.c[GA_BLADE_E5]) > GA_POINT_TOL * sc || !(len > GA_POINT_TOL * sc))
         return GA_ERR_NOTBLADE; /* a sphere (p.n != 0), or n: the plane at infinity */
-    *normal = v3(m.x / len, m.y / len, m.z / len);
+    *normal = ga__v3_div(m, len);
     *distance = 0.5 * (p.c[GA_BLADE_E4] + p.c[GA_BLADE_E5]) / len;
     return GA_OK;
 }
@@ -273,16 +261,16 @@ ga_status ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
     if (s == 0.0 || off_grade(L, 3) > GA_POINT_TOL * s)
         return GA_ERR_NOTBLADE;
     /* L = w (u e45 + B ^ n), B = p ^ u: u from the e_i45, B from the e_ij4 and e_ij5 */
-    ga_vec3 u = v3(L.c[GA_BLADE_E145], L.c[GA_BLADE_E245], L.c[GA_BLADE_E345]);
-    double w = sqrt(dot3(u, u));
+    ga_vec3 u = ga__v3(L.c[GA_BLADE_E145], L.c[GA_BLADE_E245], L.c[GA_BLADE_E345]);
+    double w = sqrt(ga__v3_dot(u, u));
     if (!(w > GA_POINT_TOL * s))
         return GA_ERR_NOTBLADE; /* no direction: not a line */
-    u = v3(u.x / w, u.y / w, u.z / w);
+    u = ga__v3_div(u, w);
     double b12 = 0.5 * (L.c[GA_BLADE_E124] + L.c[GA_BLADE_E125]) / w;
     double b13 = 0.5 * (L.c[GA_BLADE_E134] + L.c[GA_BLADE_E135]) / w;
     double b23 = 0.5 * (L.c[GA_BLADE_E234] + L.c[GA_BLADE_E235]) / w;
     /* B = p ^ u is the 3D moment p x u = (b23, -b13, b12); p = u x (p x u) */
-    ga_vec3 p = cross3(u, v3(b23, -b13, b12));
+    ga_vec3 p = ga__v3_cross(u, ga__v3(b23, -b13, b12));
     /* everything else (e123, e_ij4 != e_ij5, B not containing u) is the misfit */
     if (misfit(L, line_of(u, p), 1) > GA_POINT_TOL)
         return GA_ERR_NOTBLADE;
@@ -322,8 +310,8 @@ ga_status ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
     int st = carrier(PP, L, &c, &r);
     if (st != GA_OK)
         return st; /* GA_ERR_IMAGINARY for an imaginary pair */
-    ga_vec3 pa = v3(c.x - r * u.x, c.y - r * u.y, c.z - r * u.z);
-    ga_vec3 pb = v3(c.x + r * u.x, c.y + r * u.y, c.z + r * u.z);
+    ga_vec3 pa = ga__v3_sub(c, ga__v3_scale(u, r));
+    ga_vec3 pb = ga__v3_add(c, ga__v3_scale(u, r));
     if (!(r > 0.0) || misfit(PP, ga_pointpair_from_points(pa, pb), 1) > GA_POINT_TOL)
         return GA_ERR_NOTBLADE;
     *a = pa;
@@ -348,7 +336,7 @@ ga_status ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *no
     if (st != GA_OK)
         return st; /* GA_ERR_IMAGINARY for an imaginary circle */
     /* C is dual to sigma ^ pi, the carrier sphere and the plane through its centre */
-    ga_mv rebuilt = ga_mv_undual(ga_mv_op(ga_sphere_dual(c, r), ga_plane_dual(m, dot3(m, c))));
+    ga_mv rebuilt = ga_mv_undual(ga_mv_op(ga_sphere_dual(c, r), ga_plane_dual(m, ga__v3_dot(m, c))));
     if (misfit(C, rebuilt, 0) > GA_POINT_TOL)
         return GA_ERR_NOTBLADE;
     *centre = c;

@@ -231,16 +231,6 @@ static int log_closed(ga_mv R, double tol, ga_mv *out)
 
 /* ---- a null part: the log in its rigid frame ------------------------------------ */
 
-static ga_mv generator_mv(ga_generator g)
-{
-    ga_mv B = ga_mv_zero();
-    B.c[GA_BLADE_E12] = g.e12, B.c[GA_BLADE_E13] = g.e13, B.c[GA_BLADE_E23] = g.e23;
-    B.c[GA_BLADE_E14] = B.c[GA_BLADE_E15] = g.e1n;
-    B.c[GA_BLADE_E24] = B.c[GA_BLADE_E25] = g.e2n;
-    B.c[GA_BLADE_E34] = B.c[GA_BLADE_E35] = g.e3n;
-    return B;
-}
-
 /* A turn t tiny against the rounding of r (|r| u) has an axis b = sin t u
    known to u |r| / t only, and its tilt off the translation p leaks
    |p| u / t of p into a perpendicular part, which the log divides by
@@ -298,7 +288,7 @@ static int log_null_part(ga_mv R, int cand, ga_mv *out)
     st = ga_rotor_log_literal(r, &g);
     if (st != GA_OK)
         return GA_ERR_DOMAIN;
-    *out = ga_mv_grade(gabf_sandwich(ga_mv_reverse(V), generator_mv(g)), 2);
+    *out = ga_mv_grade(gabf_sandwich(ga_mv_reverse(V), ga_generator_to_mv(g)), 2);
     return GA_OK;
 }
 

@@ -7,20 +7,9 @@
 #include <garotor/conformal.h>
 #include <math.h>
 
-static ga_vec3 v3(double x, double y, double z)
-{
-    ga_vec3 r = {x, y, z};
-    return r;
-}
-static double dot3(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ga_vec3 add3(ga_vec3 a, ga_vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
-static ga_vec3 sub3(ga_vec3 a, ga_vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static ga_vec3 mul3(ga_vec3 a, double k) { return v3(k * a.x, k * a.y, k * a.z); }
-static ga_vec3 cross3(ga_vec3 a, ga_vec3 b)
-{
-    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-static ga_vec3 euclid(ga_mv X) { return v3(X.c[GA_BLADE_E1], X.c[GA_BLADE_E2], X.c[GA_BLADE_E3]); }
+#include "internal/eft.h"
+#include "internal/vec3.h"
+
 static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_mv_sub(X, ga_mv_grade(X, k))); }
 
 /* X scaled by a power of two so that max |coefficient| is in [1/2, 1) (exact). */
@@ -51,28 +40,28 @@ static int flat_part(double part, double s)
 static int read_dual(ga_mv v, int strict, ga_object *o)
 {
     double s = ga_mv_maxabs(v), w = v.c[GA_BLADE_E5] - v.c[GA_BLADE_E4];
-    ga_vec3 m = euclid(v);
+    ga_vec3 m = ga__v3_of_mv(v);
     int flat = flat_part(fabs(w), s);
     if (flat < 0 && strict)
         return GA_ERR_PRECISION;
     if (flat > 0) { /* v.n = 0: a plane w (m + d n) */
-        double len = sqrt(dot3(m, m));
+        double len = sqrt(ga__v3_dot(m, m));
         if (!(len > GA_POINT_TOL * s)) {
             o->kind = GA_OBJECT_EMPTY; /* n: the plane at infinity */
             return GA_OK;
         }
         o->kind = GA_OBJECT_PLANE;
-        o->direction = mul3(m, 1.0 / len);
-        o->centre = mul3(o->direction, 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len);
+        o->direction = ga__v3_scale(m, 1.0 / len);
+        o->centre = ga__v3_scale(o->direction, 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len);
         return GA_OK;
     }
     /* w (F(c) - (r^2/2) n): c = <v>_E / w, r^2 = |c|^2 - (v4 + v5) / w (conformal.h) */
-    ga_vec3 c = mul3(m, 1.0 / w);
+    ga_vec3 c = ga__v3_scale(m, 1.0 / w);
     if (strict && !round_precise(s, w))
         return GA_ERR_PRECISION;
     o->kind = GA_OBJECT_SPHERE;
     o->centre = c;
-    o->r2 = dot3(c, c) - (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / w;
+    o->r2 = ga__v3_dot(c, c) - (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / w;
     return GA_OK;
 }
 
@@ -100,8 +89,8 @@ static int classify(ga_mv X, int strict, ga_object *o)
             return GA_ERR_PRECISION;
         if (flat > 0) {
             if (k == 3) { /* u e45 + (p ^ u) ^ n, or a line at infinity */
-                ga_vec3 u = v3(X.c[GA_BLADE_E145], X.c[GA_BLADE_E245], X.c[GA_BLADE_E345]);
-                if (sqrt(dot3(u, u)) <= GA_POINT_TOL * s) {
+                ga_vec3 u = ga__v3(X.c[GA_BLADE_E145], X.c[GA_BLADE_E245], X.c[GA_BLADE_E345]);
+                if (sqrt(ga__v3_dot(u, u)) <= GA_POINT_TOL * s) {
                     r.kind = GA_OBJECT_EMPTY;
                     st = GA_OK;
                 } else {
@@ -110,13 +99,13 @@ static int classify(ga_mv X, int strict, ga_object *o)
                 }
             } else { /* w (F(p) ^ n) = w (p ^ n - e45): e_i4 = e_i5 = w p_i, e45 = -w */
                 double w = -X.c[GA_BLADE_E45];
-                ga_vec3 p = v3(X.c[GA_BLADE_E14], X.c[GA_BLADE_E24], X.c[GA_BLADE_E34]);
+                ga_vec3 p = ga__v3(X.c[GA_BLADE_E14], X.c[GA_BLADE_E24], X.c[GA_BLADE_E34]);
                 if (fabs(w) <= GA_POINT_TOL * s) {
                     r.kind = GA_OBJECT_EMPTY; /* a direction ^ n: at infinity */
                     r.direction = p;
                 } else {
                     r.kind = GA_OBJECT_FLATPOINT;
-                    r.centre = mul3(p, 1.0 / w);
+                    r.centre = ga__v3_scale(p, 1.0 / w);
                 }
                 st = GA_OK;
             }
@@ -143,7 +132,7 @@ static int classify(ga_mv X, int strict, ga_object *o)
     if (st != GA_OK)
         return st;
     if (r.kind >= GA_OBJECT_POINTPAIR) {
-        double L2 = fmax(1.0, dot3(r.centre, r.centre));
+        double L2 = fmax(1.0, ga__v3_dot(r.centre, r.centre));
         r.reality = fabs(r.r2) <= GA_OBJECT_TANGENT_TOL * L2 ? GA_REALITY_TANGENT
                   : r.r2 < 0.0                               ? GA_REALITY_IMAGINARY
                                                              : GA_REALITY_REAL;
@@ -167,18 +156,18 @@ ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_obj
     int st = classify(X, 1, &o);
     if (st != GA_OK)
         return st;
-    ga_vec3 c = mul3(o.centre, lambda);
+    ga_vec3 c = ga__v3_scale(o.centre, lambda);
     switch (o.kind) {
     case GA_OBJECT_EMPTY: break;
     case GA_OBJECT_PLANE: /* m.(x - origin) = lambda d: m.x = lambda d + m.origin */
-        o.centre = mul3(o.direction, dot3(c, o.direction) + dot3(o.direction, origin));
+        o.centre = ga__v3_scale(o.direction, ga__v3_dot(c, o.direction) + ga__v3_dot(o.direction, origin));
         break;
     case GA_OBJECT_LINE: { /* the point of the line closest to the world's origin */
-        ga_vec3 q = add3(c, origin);
-        o.centre = sub3(q, mul3(o.direction, dot3(q, o.direction)));
+        ga_vec3 q = ga__v3_add(c, origin);
+        o.centre = ga__v3_sub(q, ga__v3_scale(o.direction, ga__v3_dot(q, o.direction)));
         break;
     }
-    default: o.centre = add3(c, origin); /* rounds and flat points */
+    default: o.centre = ga__v3_add(c, origin); /* rounds and flat points */
     }
     o.r2 *= lambda * lambda;
     if (!finite3(o.centre) || !isfinite(o.r2))
@@ -227,7 +216,7 @@ ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
            vanishes: n t n = 0), which has no t^2 terms to cancel; the full
            sandwich loses u |t|^2 of X's size where the flat comes near. */
         X = scale_n_nbar(X, 1.0, 0.0);
-        ga_mv nt = ga_mv_gp(ga_mv_n(), ga_vec3_to_mv(mul3(origin, -1.0)));
+        ga_mv nt = ga_mv_gp(ga_mv_n(), ga_vec3_to_mv(ga__v3_scale(origin, -1.0)));
         Y = ga_mv_add(X, ga_mv_scale(ga_mv_add(ga_mv_gp(nt, X), ga_mv_gp(X, ga_mv_reverse(nt))), 0.5));
         Y = scale_n_nbar(Y, 1.0 / lambda, 0.0);
         if (kind.kind == GA_OBJECT_LINE) {
@@ -235,11 +224,11 @@ ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
                b_ij the e_ij4 (= e_ij5) coefficients, is known to u |origin|
                from a line far out, u |origin| / lambda in the units of
                lambda: its part along u, which no line has, is dropped */
-            ga_vec3 dir = v3(Y.c[GA_BLADE_E145], Y.c[GA_BLADE_E245], Y.c[GA_BLADE_E345]);
-            ga_vec3 M = v3(Y.c[GA_BLADE_E234], -Y.c[GA_BLADE_E134], Y.c[GA_BLADE_E124]);
-            double uu = dot3(dir, dir);
+            ga_vec3 dir = ga__v3(Y.c[GA_BLADE_E145], Y.c[GA_BLADE_E245], Y.c[GA_BLADE_E345]);
+            ga_vec3 M = ga__v3(Y.c[GA_BLADE_E234], -Y.c[GA_BLADE_E134], Y.c[GA_BLADE_E124]);
+            double uu = ga__v3_dot(dir, dir);
             if (uu > 0.0)
-                M = sub3(M, mul3(dir, dot3(M, dir) / uu));
+                M = ga__v3_sub(M, ga__v3_scale(dir, ga__v3_dot(M, dir) / uu));
             Y.c[GA_BLADE_E234] = Y.c[GA_BLADE_E235] = M.x;
             Y.c[GA_BLADE_E134] = Y.c[GA_BLADE_E135] = -M.y;
             Y.c[GA_BLADE_E124] = Y.c[GA_BLADE_E125] = M.z;
@@ -248,7 +237,7 @@ ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
         /* x -> x / lambda: o -> lambda o, n -> n / lambda, e_i fixed (then
            F(x) -> lambda F(x / lambda)); blades with e45 (o ^ n) and without
            e4, e5 are fixed */
-        Y = scale_n_nbar(translate(X, mul3(origin, -1.0)), 1.0 / lambda, lambda);
+        Y = scale_n_nbar(translate(X, ga__v3_scale(origin, -1.0)), 1.0 / lambda, lambda);
     }
     if (one_grade)
         Y = ga_mv_grade(Y, k);
@@ -305,7 +294,7 @@ static ga_mv meet_whole(ga_mv A, ga_mv B)
         if (classify(is_round(A) ? A : B, 0, &oa) == GA_OK)
             o = oa.centre;
     }
-    ga_mv a = translate(A, mul3(o, -1.0)), b = translate(B, mul3(o, -1.0));
+    ga_mv a = translate(A, ga__v3_scale(o, -1.0)), b = translate(B, ga__v3_scale(o, -1.0));
     return translate(ga_mv_undual(ga_mv_op(ga_mv_dual(a), ga_mv_dual(b))), o);
 }
 
@@ -537,23 +526,23 @@ static double local_frame(ga_mv A, ga_mv B, ga_vec3 *o, double *lambda)
     int ha = classify(A, 0, &oa) == GA_OK && oa.kind != GA_OBJECT_EMPTY && finite3(oa.centre);
     int hb = classify(B, 0, &ob) == GA_OK && ob.kind != GA_OBJECT_EMPTY && finite3(ob.centre);
     double size = 0.0;
-    *o = ha ? oa.centre : hb ? ob.centre : v3(0, 0, 0);
+    *o = ha ? oa.centre : hb ? ob.centre : ga__v3(0, 0, 0);
     if (ha)
         size = fmax(size, sqrt(fabs(oa.r2)));
     if (hb)
         size = fmax(size, sqrt(fabs(ob.r2)));
     if (ha && hb) {
-        ga_vec3 d = sub3(oa.centre, ob.centre);
-        size = fmax(size, sqrt(dot3(d, d)));
+        ga_vec3 d = ga__v3_sub(oa.centre, ob.centre);
+        size = fmax(size, sqrt(ga__v3_dot(d, d)));
     }
     /* not below 2^-10 |o|: a flat's rounding, a few hundred u |o| from its
        construction, stays below 2^18 u ~ 3e-11 of lambda (two flats that are
        the same read as such, however near their centres) */
-    size = fmax(size, 0x1p-10 * sqrt(dot3(*o, *o)));
+    size = fmax(size, 0x1p-10 * sqrt(ga__v3_dot(*o, *o)));
     *lambda = isfinite(size) && size > 0.0 ? ldexp(1.0, ilogb(size)) : 1.0;
     int round = (ha && oa.kind >= GA_OBJECT_POINTPAIR) || (hb && ob.kind >= GA_OBJECT_POINTPAIR) ||
                 (!ha && is_round(A)) || (!hb && is_round(B));
-    double far = sqrt(dot3(*o, *o)) / *lambda;
+    double far = sqrt(ga__v3_dot(*o, *o)) / *lambda;
     return fmax(GA_OBJECT_JOIN_TOL, 64.0 * U * (round ? far * far : far));
 }
 
@@ -575,7 +564,7 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
     double tol = local_frame(a, b, &o, &lam);
     if (ga_mv_localize(a, o, lam, &al) != GA_OK || ga_mv_localize(b, o, lam, &bl) != GA_OK ||
         ga_mv_maxabs(al) == 0.0 || ga_mv_maxabs(bl) == 0.0) {
-        o = v3(0, 0, 0);
+        o = ga__v3(0, 0, 0);
         lam = 1.0;
         al = a;
         bl = b;
@@ -603,7 +592,7 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
                part A ^ nbar: what rounding left there is dropped */
             if (holds_n(sp.qa, ka, sp.c, r, tol))
                 jl = scale_n_nbar(jl, 1.0, 0.0);
-            if ((st = ga_mv_localize(jl, mul3(o, -1.0 / lam), 1.0 / lam, &j)) != GA_OK)
+            if ((st = ga_mv_localize(jl, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, &j)) != GA_OK)
                 return st;
         }
         if (ka + r == 5) { /* the whole space: the meet of ga_mv_meet */
@@ -618,7 +607,7 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
                 ml = scale_n_nbar(ml, 1.0, 0.0); /* both flats: so is the meet */
             if (m == 0)
                 mt = ml; /* a scalar: no common point */
-            else if ((st = ga_mv_localize(ml, mul3(o, -1.0 / lam), 1.0 / lam, &mt)) != GA_OK)
+            else if ((st = ga_mv_localize(ml, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, &mt)) != GA_OK)
                 return st;
         }
     }
@@ -658,10 +647,10 @@ static int read_real_pair(ga_mv A, ga_mv B, ga_object *a, ga_object *b)
 /* Nearest point of a round of centre c and radius r in the direction d from c. */
 static int onto_round(ga_vec3 c, double r, ga_vec3 d, ga_vec3 *out)
 {
-    double len = sqrt(dot3(d, d));
+    double len = sqrt(ga__v3_dot(d, d));
     if (!(len > 0.0))
         return r > 0.0 ? GA_ERR_DOMAIN : (*out = c, GA_OK);
-    *out = add3(c, mul3(d, r / len));
+    *out = ga__v3_add(c, ga__v3_scale(d, r / len));
     return GA_OK;
 }
 
@@ -671,16 +660,20 @@ ga_status ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
     int st = read_real(O, &o);
     if (st != GA_OK)
         return st;
-    ga_vec3 c = o.centre, u = o.direction, y = sub3(x, c);
+    ga_vec3 c = o.centre, u = o.direction, y = ga__v3_sub(x, c);
     double r = sqrt(fmax(o.r2, 0.0));
     switch (o.kind) {
     case GA_OBJECT_FLATPOINT: *out = c; return GA_OK;
-    case GA_OBJECT_PLANE: *out = sub3(x, mul3(u, dot3(u, y))); return GA_OK; /* x - (m.x - d) m */
-    case GA_OBJECT_LINE: *out = add3(c, mul3(u, dot3(u, y))); return GA_OK;  /* p + ((x - p).u) u */
-    case GA_OBJECT_SPHERE: return onto_round(c, r, y, out);                  /* c + r (x - c)/|x - c| */
-    case GA_OBJECT_CIRCLE: return onto_round(c, r, sub3(y, mul3(u, dot3(u, y))), out);
+    case GA_OBJECT_PLANE:
+        *out = ga__v3_sub(x, ga__v3_scale(u, ga__v3_dot(u, y)));
+        return GA_OK; /* x - (m.x - d) m */
+    case GA_OBJECT_LINE:
+        *out = ga__v3_add(c, ga__v3_scale(u, ga__v3_dot(u, y)));
+        return GA_OK;                                       /* p + ((x - p).u) u */
+    case GA_OBJECT_SPHERE: return onto_round(c, r, y, out); /* c + r (x - c)/|x - c| */
+    case GA_OBJECT_CIRCLE: return onto_round(c, r, ga__v3_sub(y, ga__v3_scale(u, ga__v3_dot(u, y))), out);
     default: /* the pair c -+ r u: the nearer one */
-        *out = add3(c, mul3(u, dot3(u, y) >= 0.0 ? r : -r));
+        *out = ga__v3_add(c, ga__v3_scale(u, ga__v3_dot(u, y) >= 0.0 ? r : -r));
         return GA_OK;
     }
 }
@@ -690,7 +683,7 @@ ga_status ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
     ga_vec3 p;
     int st = ga_point_project(x, O, &p);
     if (st == GA_OK)
-        *out = sub3(x, p);
+        *out = ga__v3_sub(x, p);
     return st;
 }
 
@@ -699,7 +692,7 @@ ga_status ga_point_distance(ga_vec3 x, ga_mv O, double *out)
     ga_vec3 d;
     int st = ga_point_reject(x, O, &d);
     if (st == GA_OK)
-        *out = sqrt(dot3(d, d));
+        *out = sqrt(ga__v3_dot(d, d));
     return st;
 }
 
@@ -709,44 +702,15 @@ ga_status ga_point_distance(ga_vec3 x, ga_mv O, double *out)
    the cosine alone loses half the digits near 0). */
 static double line_angle(ga_vec3 a, ga_vec3 b)
 {
-    ga_vec3 x = cross3(a, b);
-    return atan2(sqrt(dot3(x, x)), fabs(dot3(a, b)));
+    ga_vec3 x = ga__v3_cross(a, b);
+    return atan2(sqrt(ga__v3_dot(x, x)), fabs(ga__v3_dot(a, b)));
 }
 
-/* Double-double arithmetic (Dekker, Knuth): a value hi + lo with |lo| <= u |hi|,
-   for the differences of squares in the angle of rounds, which cancel. */
-typedef struct {
-    double hi, lo;
-} dd;
-static dd dd_norm(double s, double e) /* |s| >= |e| */
+/* a . b in double-double, for the distances of round_angle below */
+static ga__eft_dd dd_dot3(ga_vec3 a, ga_vec3 b)
 {
-    double h = s + e;
-    return (dd){h, e - (h - s)};
-}
-static dd dd_sum(double a, double b)
-{
-    double s = a + b, bb = s - a;
-    return dd_norm(s, (a - (s - bb)) + (b - bb));
-}
-static dd dd_prod(double a, double b)
-{
-    double p = a * b;
-    return dd_norm(p, fma(a, b, -p));
-}
-static dd dd_add(dd x, dd y)
-{
-    dd s = dd_sum(x.hi, y.hi);
-    return dd_norm(s.hi, s.lo + (x.lo + y.lo));
-}
-static dd dd_neg(dd x) { return (dd){-x.hi, -x.lo}; }
-static dd dd_mul(dd x, dd y)
-{
-    dd p = dd_prod(x.hi, y.hi);
-    return dd_norm(p.hi, p.lo + (x.hi * y.lo + x.lo * y.hi));
-}
-static dd dd_dot3(ga_vec3 a, ga_vec3 b)
-{
-    return dd_add(dd_add(dd_prod(a.x, b.x), dd_prod(a.y, b.y)), dd_prod(a.z, b.z));
+    return ga__eft_dd_add(ga__eft_dd_add(ga__eft_dd_prod(a.x, b.x), ga__eft_dd_prod(a.y, b.y)),
+                          ga__eft_dd_prod(a.z, b.z));
 }
 
 /* The angle between a sphere (centre c, squared radius r2) and a plane (unit
@@ -759,31 +723,32 @@ static dd dd_dot3(ga_vec3 a, ga_vec3 b)
    centres' distance). The differences of squares are taken in double-double,
    so that the sine keeps its digits where the objects nearly touch or nearly
    coincide. GA_ERR_DOMAIN where the sine's square is negative: no crossing. */
-static dd dd_scale(dd x, int e) { return (dd){ldexp(x.hi, e), ldexp(x.lo, e)}; }
 static int round_angle(const ga_object *a, const ga_object *b, double *out)
 {
-    dd x, n;
+    ga__eft_dd x, n;
     int e;
     /* every length scaled by 2^-e (exactly) to about 1, so that no square
        overflows or underflows: the angle does not depend on the scale */
     if (a->kind == GA_OBJECT_SPHERE && b->kind == GA_OBJECT_SPHERE) {
-        dd d[3] = {dd_sum(a->centre.x, -b->centre.x), dd_sum(a->centre.y, -b->centre.y),
-                   dd_sum(a->centre.z, -b->centre.z)};
+        ga__eft_dd d[3] = {ga__eft_dd_sum(a->centre.x, -b->centre.x),
+                           ga__eft_dd_sum(a->centre.y, -b->centre.y),
+                           ga__eft_dd_sum(a->centre.z, -b->centre.z)};
         frexp(fmax(fmax(fmax(fabs(d[0].hi), fabs(d[1].hi)), fabs(d[2].hi)), sqrt(fmax(a->r2, b->r2))), &e);
-        dd D = {0.0, 0.0};
+        ga__eft_dd D = {0.0, 0.0};
         for (int i = 0; i < 3; i++) {
-            dd di = dd_scale(d[i], -e);
-            D = dd_add(D, dd_mul(di, di));
+            ga__eft_dd di = ga__eft_dd_ldexp(d[i], -e);
+            D = ga__eft_dd_add(D, ga__eft_dd_mul(di, di));
         }
         double r1 = ldexp(a->r2, -2 * e), r2 = ldexp(b->r2, -2 * e);
-        x = dd_add(dd_sum(r1, r2), dd_neg(D));
-        n = dd_add(dd_prod(4.0 * r1, r2), dd_neg(dd_mul(x, x)));
+        x = ga__eft_dd_add(ga__eft_dd_sum(r1, r2), ga__eft_dd_neg(D));
+        n = ga__eft_dd_add(ga__eft_dd_prod(4.0 * r1, r2), ga__eft_dd_neg(ga__eft_dd_mul(x, x)));
     } else {
         const ga_object *sp = a->kind == GA_OBJECT_SPHERE ? a : b, *pl = a->kind == GA_OBJECT_SPHERE ? b : a;
-        x = dd_add(dd_dot3(pl->direction, sp->centre), dd_neg(dd_dot3(pl->direction, pl->centre)));
+        x = ga__eft_dd_add(dd_dot3(pl->direction, sp->centre),
+                           ga__eft_dd_neg(dd_dot3(pl->direction, pl->centre)));
         frexp(fmax(fabs(x.hi), sqrt(sp->r2)), &e);
-        x = dd_scale(x, -e);
-        n = dd_add((dd){ldexp(sp->r2, -2 * e), 0.0}, dd_neg(dd_mul(x, x)));
+        x = ga__eft_dd_ldexp(x, -e);
+        n = ga__eft_dd_add((ga__eft_dd){ldexp(sp->r2, -2 * e), 0.0}, ga__eft_dd_neg(ga__eft_dd_mul(x, x)));
     }
     if (!(n.hi >= 0.0))
         return GA_ERR_DOMAIN; /* they do not cross */
@@ -800,10 +765,10 @@ ga_status ga_object_angle(ga_mv A, ga_mv B, double *out)
     int fa = a.kind == GA_OBJECT_PLANE || a.kind == GA_OBJECT_LINE;
     int fb = b.kind == GA_OBJECT_PLANE || b.kind == GA_OBJECT_LINE;
     if (fa && fb) {
-        ga_vec3 u = a.direction, v = b.direction, x = cross3(u, v);
+        ga_vec3 u = a.direction, v = b.direction, x = ga__v3_cross(u, v);
         /* a line and a plane: the complement of the angle of direction and
            normal, atan2(|u . v|, |u ^ v|) with no subtraction from pi/2 */
-        *out = a.kind == b.kind ? line_angle(u, v) : atan2(fabs(dot3(u, v)), sqrt(dot3(x, x)));
+        *out = a.kind == b.kind ? line_angle(u, v) : atan2(fabs(ga__v3_dot(u, v)), sqrt(ga__v3_dot(x, x)));
         return GA_OK;
     }
     if ((a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_PLANE) &&
@@ -816,10 +781,10 @@ ga_status ga_object_angle(ga_mv A, ga_mv B, double *out)
    perpendicular axis when b = -a). */
 static ga_rotor turn(ga_vec3 a, ga_vec3 b)
 {
-    ga_vec3 x = cross3(a, b);
-    double sn = sqrt(dot3(x, x)), cs = dot3(a, b);
+    ga_vec3 x = ga__v3_cross(a, b);
+    double sn = sqrt(ga__v3_dot(x, x)), cs = ga__v3_dot(a, b);
     if (sn == 0.0 && cs < 0.0)
-        x = cross3(a, fabs(a.x) < 0.5 ? v3(1, 0, 0) : v3(0, 1, 0));
+        x = ga__v3_cross(a, fabs(a.x) < 0.5 ? ga__v3(1, 0, 0) : ga__v3(0, 1, 0));
     return ga_rotor_rotation(x, atan2(sn, cs));
 }
 
@@ -831,12 +796,12 @@ ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
         return st;
     if (a.kind != b.kind)
         return GA_ERR_ARG;
-    double L2 = fmax(1.0, fmax(dot3(a.centre, a.centre), dot3(b.centre, b.centre)));
+    double L2 = fmax(1.0, fmax(ga__v3_dot(a.centre, a.centre), ga__v3_dot(b.centre, b.centre)));
     if (fabs(a.r2 - b.r2) > GA_POINT_TOL * L2)
         return GA_ERR_NOTRIGID;
     ga_rotor R = a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_FLATPOINT ? ga_rotor_identity()
                                                                              : turn(a.direction, b.direction);
     *out = ga_rotor_mul(ga_rotor_translation(b.centre),
-                        ga_rotor_mul(R, ga_rotor_translation(mul3(a.centre, -1.0))));
+                        ga_rotor_mul(R, ga_rotor_translation(ga__v3_scale(a.centre, -1.0))));
     return GA_OK;
 }

@@ -17,51 +17,15 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "internal/vec3.h"
+
 /* R X ~R of ga_rotor_apply_mv: written by gen/generate.py */
 #include "rotor_sandwich.inc"
 
-typedef struct {
-    double x, y, z;
-} vec;
+static ga_vec3 rotor_b(ga_rotor r) { return ga__v3(r.e23, -r.e13, r.e12); }
+static ga_vec3 rotor_p(ga_rotor r) { return ga__v3(r.e1n, r.e2n, r.e3n); }
 
-static vec v_make(double x, double y, double z)
-{
-    vec r = {x, y, z};
-    return r;
-}
-static vec v_add(vec a, vec b) { return v_make(a.x + b.x, a.y + b.y, a.z + b.z); }
-static vec v_sub(vec a, vec b) { return v_make(a.x - b.x, a.y - b.y, a.z - b.z); }
-static vec v_scale(vec a, double k) { return v_make(k * a.x, k * a.y, k * a.z); }
-/* a / k, divided (1/k overflows for a subnormal k) */
-static vec v_div(vec a, double k) { return v_make(a.x / k, a.y / k, a.z / k); }
-static double v_dot(vec a, vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static vec v_cross(vec a, vec b)
-{
-    return v_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-}
-/* |a| without underflow or overflow: scale by the largest component first.
- * Divide by m rather than multiply by 1/m, which overflows to Inf for a
- * subnormal m (found by fuzz/fuzz_numeric: l(R) was NaN for a rotation of
- * 1e-322 rad; fuzz/regress/numeric/rotor-log-subnormal-rotation replays it). */
-static double v_norm(vec a)
-{
-    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
-    if (m == 0.0 || !isfinite(m))
-        return m;
-    a = v_div(a, m);
-    return m * sqrt(v_dot(a, a));
-}
-static vec v_of(ga_vec3 a) { return v_make(a.x, a.y, a.z); }
-static ga_vec3 v_out(vec a)
-{
-    ga_vec3 r = {a.x, a.y, a.z};
-    return r;
-}
-
-static vec rotor_b(ga_rotor r) { return v_make(r.e23, -r.e13, r.e12); }
-static vec rotor_p(ga_rotor r) { return v_make(r.e1n, r.e2n, r.e3n); }
-
-static ga_rotor rotor_make(double s, vec b, vec p, double p4)
+static ga_rotor rotor_make(double s, ga_vec3 b, ga_vec3 p, double p4)
 {
     ga_rotor r = {s, b.z, -b.y, b.x, p.x, p.y, p.z, p4};
     return r;
@@ -98,8 +62,18 @@ ga_mv ga_rotor_to_mv(ga_rotor r)
     return m;
 }
 
+ga_mv ga_generator_to_mv(ga_generator b)
+{
+    ga_mv m = ga_mv_zero();
+    m.c[GA_BLADE_E12] = b.e12, m.c[GA_BLADE_E13] = b.e13, m.c[GA_BLADE_E23] = b.e23;
+    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = b.e1n;
+    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = b.e2n;
+    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = b.e3n;
+    return m;
+}
+
 /* The e123 part of P ~q: zero on the group. */
-static double rotor_pq3(ga_rotor r) { return r.s * r.e123n - v_dot(rotor_p(r), rotor_b(r)); }
+static double rotor_pq3(ga_rotor r) { return r.s * r.e123n - ga__v3_dot(rotor_p(r), rotor_b(r)); }
 
 /* Distance from the group (rotor.h, ga_rotor_check); NaN for non-finite input. */
 static double rotor_drift(ga_rotor r)
@@ -141,9 +115,9 @@ static int rotor_near_group(ga_rotor r)
 static inline ga_rotor rotor_project(ga_rotor r, double k)
 {
     double s = k * r.s, p4 = k * r.e123n;
-    vec b = v_scale(rotor_b(r), k), p = v_scale(rotor_p(r), k);
-    double mu = s * p4 - v_dot(p, b);
-    return rotor_make(s, b, v_add(p, v_scale(b, mu)), p4 - mu * s);
+    ga_vec3 b = ga__v3_scale(rotor_b(r), k), p = ga__v3_scale(rotor_p(r), k);
+    double mu = s * p4 - ga__v3_dot(p, b);
+    return rotor_make(s, b, ga__v3_add(p, ga__v3_scale(b, mu)), p4 - mu * s);
 }
 
 ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out)
@@ -233,28 +207,27 @@ ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
 
 ga_rotor ga_rotor_rotation(ga_vec3 axis, double angle)
 {
-    vec u = v_of(axis);
-    double len = v_norm(u);
+    double len = ga__v3_norm_scaled(axis);
     if (!(len > 0.0))
         return ga_rotor_identity();
     double h = 0.5 * angle, sh = sin(h) / len;
     /* cos(h) - sin(h) u I3: b = -sin(h) u */
-    return rotor_make(cos(h), v_scale(u, -sh), v_make(0, 0, 0), 0.0);
+    return rotor_make(cos(h), ga__v3_scale(axis, -sh), ga__v3(0, 0, 0), 0.0);
 }
 
 ga_rotor ga_rotor_translation(ga_vec3 a)
 {
     /* 1 + n a/2 = 1 - (a/2) n */
-    return rotor_make(1.0, v_make(0, 0, 0), v_scale(v_of(a), -0.5), 0.0);
+    return rotor_make(1.0, ga__v3(0, 0, 0), ga__v3_scale(a, -0.5), 0.0);
 }
 
 ga_rotor ga_rotor_twist(double psi, ga_generator plane, ga_vec3 a)
 {
-    vec b = v_make(plane.e23, -plane.e13, plane.e12);
-    double len = v_norm(b);
+    ga_vec3 b = ga__v3(plane.e23, -plane.e13, plane.e12);
+    double len = ga__v3_norm_scaled(b);
     ga_rotor rot = ga_rotor_identity();
     if (len > 0.0)
-        rot = rotor_make(cos(0.5 * psi), v_scale(b, sin(0.5 * psi) / len), v_make(0, 0, 0), 0.0);
+        rot = rotor_make(cos(0.5 * psi), ga__v3_scale(b, sin(0.5 * psi) / len), ga__v3(0, 0, 0), 0.0);
     return ga_rotor_mul(rot, ga_rotor_translation(a));
 }
 
@@ -279,9 +252,9 @@ ga_twist ga_generator_to_twist(ga_generator b)
 
 ga_rotor ga_rotor_exp(ga_generator g)
 {
-    vec beta = v_make(g.e23, -g.e13, g.e12), c = v_make(g.e1n, g.e2n, g.e3n);
-    double phi2 = v_dot(beta, beta), bc = v_dot(beta, c), cs, sinc;
-    vec p;
+    ga_vec3 beta = ga__v3(g.e23, -g.e13, g.e12), c = ga__v3(g.e1n, g.e2n, g.e3n);
+    double phi2 = ga__v3_dot(beta, beta), bc = ga__v3_dot(beta, c), cs, sinc;
+    ga_vec3 p;
     if (phi2 <= (GA_PI / 4) * (GA_PI / 4)) {
         /* phi <= pi/4: the series, no trig call and no division */
         double y2 = phi2 * phi2, y4 = y2 * y2, y8 = y4 * y4;
@@ -289,7 +262,7 @@ ga_rotor ga_rotor_exp(ga_generator g)
         sinc = ga__series_estrin9(GA__SERIES_F1, phi2, y2, y4, y8);
         double k = ga__series_estrin9(GA__SERIES_K, phi2, y2, y4, y8);
         /* P = cos c_par + sinc c_perp + sinc (beta.c) I = sinc c + k (beta.c) beta + I sinc (beta.c) */
-        p = v_add(v_scale(c, sinc), v_scale(beta, k * bc));
+        p = ga__v3_add(ga__v3_scale(c, sinc), ga__v3_scale(beta, k * bc));
     } else if (isinf(phi2)) {
         /* phi = |beta| beyond ~1.3e154 (a twist's angle beyond ~2.7e154),
          * where phi^2 overflows (and gave NaN): the scaled norm, the unit
@@ -297,14 +270,14 @@ ga_rotor ga_rotor_exp(ga_generator g)
          * sin phi (u.c), so that libm's sin and cos see the angle, as
          * ga_se3_exp does; the rotation is exact for the double angle, but
          * an angle that large is known only to its ulp (>= 2 from 2^53) */
-        vec bs = v_scale(beta, 0x1p-600);
-        double ns = sqrt(v_dot(bs, bs)), phi = ns * 0x1p600, sn = sin(phi);
-        vec u = v_div(bs, ns);
-        double uc = v_dot(u, c);
+        ga_vec3 bs = ga__v3_scale(beta, 0x1p-600);
+        double ns = sqrt(ga__v3_dot(bs, bs)), phi = ns * 0x1p600, sn = sin(phi);
+        ga_vec3 u = ga__v3_div(bs, ns);
+        double uc = ga__v3_dot(u, c);
         cs = cos(phi);
         sinc = sn / phi;
-        p = v_add(v_scale(c, sinc), v_scale(u, (cs - sinc) * uc));
-        return rotor_make(cs, v_scale(u, sn), p, sn * uc);
+        p = ga__v3_add(ga__v3_scale(c, sinc), ga__v3_scale(u, (cs - sinc) * uc));
+        return rotor_make(cs, ga__v3_scale(u, sn), p, sn * uc);
     } else {
         double phi = sqrt(phi2), m = bc / phi2; /* c_par = m beta */
         if (phi <= 3 * GA_PI / 4) {
@@ -322,9 +295,9 @@ ga_rotor ga_rotor_exp(ga_generator g)
         /* P = sinc c + (cos - sinc) c_par: for phi >= pi/4 the difference
          * loses at most 2.3 bits of its own, which is an absolute error of
          * a few 2^-53 |c_par|, as large as the rounding of sinc c anyway */
-        p = v_add(v_scale(c, sinc), v_scale(beta, (cs - sinc) * m));
+        p = ga__v3_add(ga__v3_scale(c, sinc), ga__v3_scale(beta, (cs - sinc) * m));
     }
-    return rotor_make(cs, v_scale(beta, sinc), p, sinc * bc);
+    return rotor_make(cs, ga__v3_scale(beta, sinc), p, sinc * bc);
 }
 
 /* atan2(y, x) for y > 0 and x >= 0, in [0, pi/2], without a call: with
@@ -362,8 +335,8 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
         if (!(rotor_drift(r) <= GA_ROTOR_DRIFT_MAX))
             return GA_ERR_NOTRIGID;
     }
-    vec b = rotor_b(r), beta, c;
-    double nb2 = v_dot(b, b);
+    ga_vec3 b = rotor_b(r), beta, c;
+    double nb2 = ga__v3_dot(b, b);
     if (nb2 >= 0x1p-900) {
         /* The common case, |b| >= 2^-450 (so 1/|b| is finite): l of the
          * projection R (R ~R)^(-1/2), computed from R itself. Projecting
@@ -380,20 +353,20 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
            s < 0 gives pi - atan2(nb, -s), with pi = 2 GA_PIO2_HI + 2 GA_PIO2_LO */
         double phi = s >= 0.0 ? atan2_quadrant(nb, s)
                               : (2 * GA_PIO2_HI - atan2_quadrant(nb, -s)) + 2 * GA_PIO2_LO;
-        vec u = v_scale(b, sg * inv), p = v_scale(rotor_p(r), sg);
-        double pu = v_dot(p, u);
+        ga_vec3 u = ga__v3_scale(b, sg * inv), p = ga__v3_scale(rotor_p(r), sg);
+        double pu = ga__v3_dot(p, u);
         double cpar = (s * pu + nb * (sg * r.e123n)) / q2;
-        vec pperp = v_sub(p, v_scale(u, pu));
-        beta = v_scale(u, phi);
-        vec cperp = v_scale(pperp, phi * inv);
+        ga_vec3 pperp = ga__v3_sub(p, ga__v3_scale(u, pu));
+        beta = ga__v3_scale(u, phi);
+        ga_vec3 cperp = ga__v3_scale(pperp, phi * inv);
         /* pperp is perpendicular to u only to rounding of |p|; near a full
            turn (the literal log, s < 0) phi / |b| ~ pi / (pi - phi) magnifies
            that along u, where exp does not damp it (the translation along the
            axis): 2.4e-12 of |p| at pi - phi = 1e-4 in exp(l(R)) - R. Taken
            out again, it is rounding of |c_perp|. */
         if (!principal && s < 0.0) /* (the principal log has s >= 0) */
-            cperp = v_sub(cperp, v_scale(u, v_dot(cperp, u)));
-        c = v_add(cperp, v_scale(u, cpar));
+            cperp = ga__v3_sub(cperp, ga__v3_scale(u, ga__v3_dot(cperp, u)));
+        c = ga__v3_add(cperp, ga__v3_scale(u, cpar));
         /* finite when rotor_near_group(r) (|p| <= 1e150, phi/|b| <= pi 2^450);
          * past it, as below: x - x is 0 for finite x, NaN for Inf and NaN */
         if (!((c.x - c.x) + (c.y - c.y) + (c.z - c.z) == 0.0))
@@ -406,49 +379,50 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
      * the sign of the projection's scale */
     double k = 1.0 / sqrt(r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23);
     r = rotor_project(r, principal && r.s < 0.0 ? -k : k);
-    vec p = rotor_p(r);
+    ga_vec3 p = rotor_p(r);
     b = rotor_b(r);
     /* nb = sin(phi) = |b|, b = sin(phi) u. |b| <= 1 after the projection, so
      * b.b cannot overflow; for |b| >= 2^-450 it does not underflow either,
      * its plain sqrt is exact to rounding and 1/|b| is finite. Below that,
      * the scaled norm, and divisions (a subnormal |b| has no finite reciprocal). */
-    nb2 = v_dot(b, b);
+    nb2 = ga__v3_dot(b, b);
     int big = nb2 >= 0x1p-900;
-    double nb = big ? sqrt(nb2) : v_norm(b);
+    double nb = big ? sqrt(nb2) : ga__v3_norm_scaled(b);
     if (nb == 0.0) {
         if (r.s > 0.0) { /* q = 1: a pure translation, P = c */
-            beta = v_make(0, 0, 0);
+            beta = ga__v3(0, 0, 0);
             c = p;
         } else { /* q = -1: a turn of 2 pi; P = cos(pi) c_par, so the axis is along p */
-            double np = v_norm(p);
-            vec u = np > 0.0 ? v_div(p, np) : v_make(0, 0, 1);
-            beta = v_scale(u, GA_PI);
-            c = v_scale(p, -1.0);
+            double np = ga__v3_norm_scaled(p);
+            ga_vec3 u = np > 0.0 ? ga__v3_div(p, np) : ga__v3(0, 0, 1);
+            beta = ga__v3_scale(u, GA_PI);
+            c = ga__v3_scale(p, -1.0);
         }
     } else {
         double phi = atan2(nb, r.s), f; /* f = phi / sin(phi) = 1 / sinc(phi) */
-        vec u;
+        ga_vec3 u;
         if (big) {
             double inv = 1.0 / nb;
-            u = v_scale(b, inv);
+            u = ga__v3_scale(b, inv);
             f = phi * inv;
         } else {
             /* u from b scaled up by 2^600 (exact): nb itself may be subnormal,
                rounded to a few bits, and b / nb then not a unit vector (found by
                fuzz/fuzz_numeric: 0.4% off for a rotation of 1e-321 rad;
                fuzz/regress/numeric/log-subnormal-rotation-axis replays it) */
-            vec bs = v_scale(b, 0x1p600);
-            u = v_div(bs, sqrt(v_dot(bs, bs)));
+            ga_vec3 bs = ga__v3_scale(b, 0x1p600);
+            u = ga__v3_div(bs, sqrt(ga__v3_dot(bs, bs)));
             f = phi / nb;
         }
-        double pu = v_dot(p, u);
+        double pu = ga__v3_dot(p, u);
         /* P = cos c_par + sinc c_perp + I sin (c.u): c.u = cos (p.u) + sin p4 */
         double cpar = r.s * pu + nb * r.e123n;
-        vec pperp = v_sub(p, v_scale(u, pu));
-        beta = v_scale(u, phi);
+        ga_vec3 pperp = ga__v3_sub(p, ga__v3_scale(u, pu));
+        beta = ga__v3_scale(u, phi);
         /* when f = phi / nb overflows (a literal log within 1e-308 of a full
            turn), (pperp phi) / nb: 0 for pperp = 0, else Inf, reported below */
-        c = v_add(isfinite(f) ? v_scale(pperp, f) : v_div(v_scale(pperp, phi), nb), v_scale(u, cpar));
+        c = ga__v3_add(isfinite(f) ? ga__v3_scale(pperp, f) : ga__v3_div(ga__v3_scale(pperp, phi), nb),
+                       ga__v3_scale(u, cpar));
     }
     /* A generator beyond the range of double (a translation near DBL_MAX, or
        the literal log's translation across the axis divided by sin(phi) -> 0
@@ -474,21 +448,21 @@ ga_status ga_rotor_to_screw(ga_rotor r, ga_screw *out)
     if (st != GA_OK)
         return st;
     ga_twist xi = ga_generator_to_twist(g);
-    vec w = v_of(xi.w), v = v_of(xi.v);
-    double th = v_norm(w), nv = v_norm(v);
+    ga_vec3 w = xi.w, v = xi.v;
+    double th = ga__v3_norm_scaled(w), nv = ga__v3_norm_scaled(v);
     ga_screw s = {0, {0, 0, 1}, {0, 0, 0}, 0, 0};
     if (th == 0.0) {
         if (nv > 0.0) {
-            s.axis = v_out(v_div(v, nv));
+            s.axis = ga__v3_div(v, nv);
             s.shift = nv;
             s.pitch = INFINITY;
         }
     } else {
-        vec u = v_div(w, th);
+        ga_vec3 u = ga__v3_div(w, th);
         s.angle = th;
-        s.axis = v_out(u);
-        s.shift = v_dot(u, v);
-        s.point = v_out(v_div(v_cross(u, v), th));
+        s.axis = u;
+        s.shift = ga__v3_dot(u, v);
+        s.point = ga__v3_div(ga__v3_cross(u, v), th);
         s.pitch = s.shift / th;
         if (!isfinite(s.pitch))
             return GA_ERR_DOMAIN;
@@ -506,16 +480,16 @@ ga_status ga_rotor_to_screw(ga_rotor r, ga_screw *out)
 
 ga_rotor ga_rotor_from_screw(ga_screw s)
 {
-    vec u = v_of(s.axis);
-    double len = v_norm(u);
+    ga_vec3 u = s.axis;
+    double len = ga__v3_norm_scaled(u);
     if (!(len > 0.0))
         return ga_rotor_identity();
-    u = v_div(u, len);
+    u = ga__v3_div(u, len);
     if (s.angle == 0.0)
-        return ga_rotor_translation(v_out(v_scale(u, s.shift)));
+        return ga_rotor_translation(ga__v3_scale(u, s.shift));
     /* w = angle u, v = -w x point + shift u */
-    vec w = v_scale(u, s.angle);
-    ga_twist xi = {v_out(w), v_out(v_add(v_cross(v_of(s.point), w), v_scale(u, s.shift)))};
+    ga_vec3 w = ga__v3_scale(u, s.angle);
+    ga_twist xi = {w, ga__v3_add(ga__v3_cross(s.point, w), ga__v3_scale(u, s.shift))};
     return ga_rotor_exp(ga_twist_to_generator(xi));
 }
 

@@ -13,6 +13,7 @@
 #include <garotor/rotor.h>
 
 #include "ga/internal/series.h"
+#include "ga/internal/vec3.h"
 #include "internal/group_fast.h"
 #include "internal/groups.h"
 
@@ -132,9 +133,9 @@ void gig_twist_branch(const double *prev, double *x)
  * Every matrix is applied as a chain of cross products. */
 void gig_se3_dexp(const double *x, const double *y, double *out)
 {
-    ga_vec3 w = gig_v3(x[0], x[1], x[2]), v = gig_v3(x[3], x[4], x[5]);
-    ga_vec3 dw = gig_v3(y[0], y[1], y[2]), dv = gig_v3(y[3], y[4], y[5]);
-    double t2 = w.x * w.x + w.y * w.y + w.z * w.z, th = sqrt(t2);
+    ga_vec3 w = ga__v3(x[0], x[1], x[2]), v = ga__v3(x[3], x[4], x[5]);
+    ga_vec3 dw = ga__v3(y[0], y[1], y[2]), dv = ga__v3(y[3], y[4], y[5]);
+    double t2 = ga__v3_dot(w, w), th = sqrt(t2);
     double h = 0.5 * th, sh = h > 0 ? sin(h) / h : 1.0; /* sinc(th/2) */
     double a1 = 0.5 * sh * sh;                          /* (1 - cos th)/th^2 */
     double a, b, c;

@@ -13,6 +13,7 @@
 
 /* the series of ga_rotor_exp, for the screw sampler */
 #include "ga/internal/series.h"
+#include "ga/internal/vec3.h"
 #include "internal/groups.h"
 
 static void cga_identity(void *out) { *(ga_rotor *)out = ga_rotor_identity(); }
@@ -75,7 +76,7 @@ static void cga_to_qt(const void *g, double q[4], double p[3])
 static void cga_from_qt(const double q[4], const double p[3], void *out)
 {
     ga_quat a = {q[0], q[1], q[2], q[3]};
-    *(ga_rotor *)out = ga_rotor_from_quat(a, gig_v3(p[0], p[1], p[2]));
+    *(ga_rotor *)out = ga_rotor_from_quat(a, ga__v3(p[0], p[1], p[2]));
 }
 static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (ga_rotor *)out); }
 static ga_mat4 cga_to_mat4(const void *g) { return ga_rotor_to_mat4(*(const ga_rotor *)g); }

@@ -290,16 +290,6 @@ static int mv_to_generator(ga_mv m, ga_generator *b)
     return GA_OK;
 }
 
-static ga_mv generator_to_mv(ga_generator b)
-{
-    ga_mv m = ga_mv_zero();
-    m.c[GA_BLADE_E12] = b.e12, m.c[GA_BLADE_E13] = b.e13, m.c[GA_BLADE_E23] = b.e23;
-    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = b.e1n;
-    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = b.e2n;
-    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = b.e3n;
-    return m;
-}
-
 /* exp: a rigid-motion generator through the compact rotor (the tool's exp,
    bit for bit), any other bivector through ga_mv_exp; anything with other
    grades is refused (to 1e-9 of max(1, max|m|), as mv_to_generator) */
@@ -330,7 +320,7 @@ static PyObject *MV_log(MVObject *self, PyObject *u)
     if (st == GA_OK)
         st = ga_rotor_log(r, &b);
     if (st == GA_OK)
-        return gpy_mv_new(generator_to_mv(b));
+        return gpy_mv_new(ga_generator_to_mv(b));
     if (st == GA_ERR_NOTRIGID) {
         ga_mv L;
         st = ga_mv_log(self->mv, &L);

@@ -97,15 +97,6 @@ static double gdiff(ga_generator a, ga_generator b)
     return tk_max(tk_max(fabs(a.e12 - b.e12), tk_max(fabs(a.e13 - b.e13), fabs(a.e23 - b.e23))),
                   tk_max(fabs(a.e1n - b.e1n), tk_max(fabs(a.e2n - b.e2n), fabs(a.e3n - b.e3n))));
 }
-static ga_mv gen_mv(ga_generator g)
-{
-    ga_mv m = ga_mv_zero();
-    m.c[GA_BLADE_E12] = g.e12, m.c[GA_BLADE_E13] = g.e13, m.c[GA_BLADE_E23] = g.e23;
-    m.c[GA_BLADE_E14] = m.c[GA_BLADE_E15] = g.e1n;
-    m.c[GA_BLADE_E24] = m.c[GA_BLADE_E25] = g.e2n;
-    m.c[GA_BLADE_E34] = m.c[GA_BLADE_E35] = g.e3n;
-    return m;
-}
 static ga_twist twist(ga_vec3 w, ga_vec3 v)
 {
     ga_twist t = {w, v};
@@ -129,7 +120,7 @@ static ga_rotor mv_exp(ga_generator g, int *k_out)
     ga_generator gu = {g.e12, g.e13, g.e23, kc * g.e1n, kc * g.e2n, kc * g.e3n};
     int k = 0;
     while (nb > 0.125) nb *= 0.5, k++;
-    ga_mv X = ga_mv_scale(gen_mv(gu), ldexp(1.0, -k)), E = ga_mv_scalar(1.0), T = E;
+    ga_mv X = ga_mv_scale(ga_generator_to_mv(gu), ldexp(1.0, -k)), E = ga_mv_scalar(1.0), T = E;
     for (int j = 1; j <= 14; j++) {
         T = ga_mv_scale(ga_mv_gp(T, X), 1.0 / j);
         E = ga_mv_add(E, T);
@@ -692,7 +683,7 @@ static void check_paper_forms(void)
         ga_generator plane = {a.x * b.y - a.y * b.x, a.x * b.z - a.z * b.x, a.y * b.z - a.z * b.y, 0, 0, 0};
         ga_generator B = {h * plane.e12, h * plane.e13, h * plane.e23, t.x / 2, t.y / 2, t.z / 2};
         ga_mv R = ga_rotor_to_mv(ga_rotor_exp(B));
-        ga_mv P = gen_mv(plane);
+        ga_mv P = ga_generator_to_mv(plane);
         /* Def. 4: tau = [cos + sin P][1 + n a/2], built here in the full algebra */
         ga_mv rot = ga_mv_add(ga_mv_scalar(cos(h)), ga_mv_scale(P, sin(h)));
         ga_mv tau = ga_mv_gp(rot,
@@ -726,7 +717,7 @@ static void check_paper_forms(void)
         ga_generator lit;
         TK_OK(ga_rotor_log_literal(ga_rotor_exp(B), &lit));
         /* acos near its ends loses ~EPS/sin: compare relative to 1/sin(nab) */
-        tk_add(&w_t9, tk_mv_maxabs(ga_mv_sub(ell, gen_mv(lit))) / 10 * sin(nab));
+        tk_add(&w_t9, tk_mv_maxabs(ga_mv_sub(ell, ga_generator_to_mv(lit))) / 10 * sin(nab));
     }
     tk_end(&w_tau);
     tk_end(&w_l5);

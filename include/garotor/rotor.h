@@ -111,6 +111,10 @@ GA_API ga_rotor ga_rotor_reverse(ga_rotor r);
 /** The full 32-component multivector of r (e_i n = e_i4 + e_i5, e123 n = e1234 + e1235). */
 GA_API ga_mv ga_rotor_to_mv(ga_rotor r);
 
+/** The full 32-component multivector of the generator b, a bivector (e_i n = e_i4 + e_i5);
+ *  exact: each coefficient is copied, none rounded. */
+GA_API ga_mv ga_generator_to_mv(ga_generator b);
+
 /** The compact rotor of a multivector m. GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_NOTRIGID if a
  *  coefficient outside the 8-component form exceeds tol * max(1, max|m|), if
  *  e_i4 and e_i5 (or e1234 and e1235) differ by more than that, or if the

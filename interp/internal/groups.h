@@ -31,12 +31,6 @@ static inline void gig_twist_put(ga_twist t, double *x)
     x[5] = t.v.z;
 }
 
-static inline ga_vec3 gig_v3(double x, double y, double z)
-{
-    ga_vec3 r = {x, y, z};
-    return r;
-}
-
 /* exp and log report a result that is not finite (the group's contract: a
  * status, never Inf or NaN with GA_OK). NaN/Inf in is GA_ERR_NOTFINITE; finite
  * in and not finite out is GA_ERR_DOMAIN: ga_rotor_exp of a translation near
