@@ -22,7 +22,7 @@ ga_status ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out
     size_t nf = gip_nfac(p->scheme);
     int st;
     double x[GIP_MAXD], xd[GIP_MAXD];
-    const struct gai_group_fast *f = gip_screw_fast(p);
+    const gai_group_fast *f = gip_screw_fast(p);
     if (f) /* the group's own screw sampler */
         return gip_screw_eval(p, f, seg, u, out);
     if (gip_is_decoupled(p->scheme))

@@ -168,8 +168,6 @@ ga_mat4 gig_m4_to_mat4(const void *g) { return *(const ga_mat4 *)g; }
 /* ---- the list of groups ------------------------------------------------------------- */
 
 static const ga_group *const groups[] = {&ga_group_cga, &ga_group_se3, &ga_group_affine};
-/* groups[i]'s fast operations (internal/group_fast.h), NULL where it has none */
-static const gai_group_fast *const fast[] = {&gig_cga_fast, NULL, NULL};
 
 const ga_group *ga_group_nth(size_t i) { return i < sizeof groups / sizeof groups[0] ? groups[i] : NULL; }
 
@@ -179,12 +177,4 @@ const ga_group *ga_group_by_name(const char *name)
         if (strcmp(name, groups[i]->name) == 0)
             return groups[i];
     return NULL;
-}
-
-const gai_group_fast *gai_group_fast_of(const ga_group *g)
-{
-    for (size_t i = 0; i < sizeof groups / sizeof groups[0]; ++i)
-        if (g == groups[i])
-            return fast[i];
-    return NULL; /* a group defined outside the library */
 }

@@ -159,6 +159,45 @@ ga_status ga_path_stepper_init(const ga_path *p, ga_eval ev, double step, size_t
     return GA_OK;
 }
 
+/* DIRECT and EXACT samples of SCREW by the group's screw sampler: slot 0 is
+ * the running sample A_i exp(u B) and slot 1 exp(dt/h B) (EXACT), slots 2
+ * to 4 the sampler's preparation for segment s->seg, made whenever s->seg
+ * changes. */
+static int screw_next(ga_path_stepper *s, const gai_group_fast *f, size_t seg, double u, void *out)
+{
+    const ga_path *p = s->path;
+    const ga_group *g = p->group;
+    int newseg = seg != s->seg;
+    if (newseg)
+        f->screw_prep(gip_key_of(p, seg), gip_seg_coef(p, seg), s->slot[2], s->slot[3], s->slot[4]);
+    s->seg = seg;
+    if (s->eval == GA_EVAL_DIRECT) { /* as gip_eval_direct: the key itself at a key time */
+        if (u == 0.0 || u == 1.0) {
+            gip_copy_elem(g, out, gip_key_of(p, seg + (u == 1.0)));
+            return GA_OK;
+        }
+        return f->screw_at(s->slot[2], s->slot[3], s->slot[4], u, out);
+    }
+    if (!newseg && s->since < GA_PATH_EXACT_REANCHOR) { /* as step.c's exact_advance */
+        ++s->since;
+        return f->screw_step(s->slot[0], s->slot[1], out); /* G_0 <- G_0 exp(dt/h B) */
+    }
+    /* as step.c's exact_anchor */
+    int st = f->screw_at(s->slot[2], s->slot[3], s->slot[4], u, s->slot[0]);
+    if (st == GA_OK && newseg) {
+        double x[GIP_MAXD], delta = s->dt / gip_seg_len(p, seg);
+        gip_lin(g->dim, x, gip_poly_diff(gip_fac_poly(p->scheme, 0), 1, u, delta), gip_seg_coef(p, seg), 0.0,
+                gip_seg_coef(p, seg));
+        st = g->exp(x, s->slot[1]);
+    }
+    s->since = 1;
+    if (st == GA_OK) {
+        gip_copy_elem(g, out, s->slot[0]);
+        st = gip_finite_elem(g, s->slot[0]);
+    }
+    return st;
+}
+
 ga_status ga_path_stepper_next(ga_path_stepper *s, void *out)
 {
     if (!s || !out || s->k >= s->n)
@@ -166,7 +205,7 @@ ga_status ga_path_stepper_next(ga_path_stepper *s, void *out)
     const ga_path *p = s->path;
     double t = s->k + 1 == s->n ? s->t1 : s->t0 + (double)s->k * s->dt, u;
     size_t seg = s->seg;
-    const struct gai_group_fast *f;
+    const gai_group_fast *f;
     int st;
     if (seg != SIZE_MAX && gip_knot(p, seg) <= t &&
         (t < gip_knot(p, seg + 1) || (seg + 1 == gip_nseg(p) && t == gip_knot(p, seg + 1)))) {
@@ -179,7 +218,7 @@ ga_status ga_path_stepper_next(ga_path_stepper *s, void *out)
     if (s->eval == GA_EVAL_EULER) {
         st = euler_sample(p, s->step, &s->seg, &s->grid, s->slot[0], seg, u, out);
     } else if ((f = gip_screw_fast(p))) {
-        st = gip_screw_next(s, f, seg, u, out);
+        st = screw_next(s, f, seg, u, out);
     } else if (s->eval == GA_EVAL_DIRECT || gip_nfac(p->scheme) == 0 || p->n == 1) {
         st = gip_eval_direct(p, seg, u, out);
         s->seg = seg; /* DIRECT keeps no state: seg is only where to look first */

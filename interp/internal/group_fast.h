@@ -26,8 +26,15 @@ typedef struct gai_group_fast {
     int (*screw_step)(void *a, const void *e, void *out);
 } gai_group_fast;
 
+/* The groups' tables (group_cga.c has one; se3 and affine have none). */
+extern const gai_group_fast gig_cga_fast;
+
 /* The fast operations of g, or NULL (any group but the library's own, and
- * those of the library's groups that have none). */
-const gai_group_fast *gai_group_fast_of(const ga_group *g);
+ * those of the library's groups that have none). Inline: a sampler asks it
+ * for every sample. */
+static inline const gai_group_fast *gai_group_fast_of(const ga_group *g)
+{
+    return g == &ga_group_cga ? &gig_cga_fast : NULL;
+}
 
 #endif

@@ -66,7 +66,4 @@ void gig_m4_identity(void *out);
 void gig_m4_compose(const void *a, const void *b, void *out);
 ga_mat4 gig_m4_to_mat4(const void *g);
 
-/* The fast operations of the cga group (group_cga.c). */
-extern const gai_group_fast gig_cga_fast;
-
 #endif

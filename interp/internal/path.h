@@ -13,6 +13,8 @@
 #include <garotor/mat4.h>
 #include <garotor/path.h>
 
+#include "group_fast.h"
+
 #define GIP_MAXD GA_GROUP_MAX_DIM
 #define GIP_MAXE GA_GROUP_MAX_ELEM
 
@@ -181,13 +183,19 @@ int gip_eval_direct(const ga_path *p, size_t seg, double u, void *out);
 /* body velocity per unit u on segment seg */
 int gip_velocity_u(const ga_path *p, size_t seg, double u, double *v);
 
-/* ---- scheme_screw.c: the group's fast screw sampler (internal/group_fast.h) ---------- */
+/* ---- the group's fast screw sampler (internal/group_fast.h) ------------------------- */
 
-struct gai_group_fast;
 /* The group's fast operations when p is a SCREW path of at least two keys
- * on a group that has a screw sampler, else NULL. */
-const struct gai_group_fast *gip_screw_fast(const ga_path *p);
-int gip_screw_eval(const ga_path *p, const struct gai_group_fast *f, size_t seg, double u, void *out);
-int gip_screw_next(ga_path_stepper *s, const struct gai_group_fast *f, size_t seg, double u, void *out);
+ * on a group that has a screw sampler, else NULL. Inline: the samplers ask
+ * for every sample. */
+static inline const gai_group_fast *gip_screw_fast(const ga_path *p)
+{
+    if (p->scheme != GA_SCHEME_SCREW || p->n < 2)
+        return NULL;
+    const gai_group_fast *f = gai_group_fast_of(p->group);
+    return f && f->screw_prep && f->screw_at && f->screw_step ? f : NULL;
+}
+/* scheme_screw.c: A_i exp(u B) on segment seg by the group's screw sampler */
+int gip_screw_eval(const ga_path *p, const gai_group_fast *f, size_t seg, double u, void *out);
 
 #endif
