@@ -153,7 +153,7 @@ static long refused; /* lihao2 on affine: GA_ERR_DOMAIN (below) */
 
 /* Build the path through k; on affine the factors' condition joins K. Li-Hao's
  * chained quadratic on affine keys may grow until a factor has no real log
- * (test_interp's affine lihao2): GA_ERR_DOMAIN there is that limit, counted,
+ * (test_interp_paths' affine lihao2): GA_ERR_DOMAIN there is that limit, counted,
  * and the key set skipped (returns 0); any other failure fails check c. */
 static int build_or_skip(const ga_group *g, ga_scheme s, keyset *k, double *work, ga_path *p, tk_check *c)
 {

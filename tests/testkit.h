@@ -74,6 +74,13 @@ static inline uint64_t tk_next(tk_rng *r)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
 }
+/** The stream seeded `seed` after n draws: splitmix64's state moves by the
+ *  same constant every draw, so a test can start a section where the draws
+ *  before it left the stream without making them. */
+static inline tk_rng tk_rng_after(uint64_t seed, uint64_t n)
+{
+    return (tk_rng){seed + n * 0x9E3779B97F4A7C15ull};
+}
 /** Uniform in [0, 1). */
 static inline double tk_uni(tk_rng *r) { return (double)(tk_next(r) >> 11) * 0x1p-53; }
 /** Uniform in [lo, hi). */

@@ -1,0 +1,287 @@
+/* bench/cases.c: the measured cases of garotor-bench: its timed loops (each
+ * operation called as a user's code calls it, over rings of inputs) and the
+ * table of benchmarks, their keys and what one call of each does.
+ *
+ * The rings, paths and tables the loops read are defined here, beside the
+ * loops, so that every loop addresses them directly as in one file.
+ */
+#include "floors.h"
+
+/* ---- inputs and outputs --------------------------------------------------- */
+
+ga_mv mv_a[RING], mv_b[RING];
+ga_rotor rot_a[RING], rot_b[RING];
+ga_dualquat dq_a[RING], dq_b[RING];
+ga_vec3 pts[RING];
+ga_twist twists[RING];
+ga_generator gens[RING];
+ga_mat4 rigid_a[RING], rigid_b[RING];
+ga_mat4 hats[RING];
+ga_mat4 gen_x[RING];
+ga_mat4 gen_m[RING];
+double gp_sign[32][32];
+unsigned char gp_index[32][32];
+
+static ga_mv out_mv[RING];
+static ga_rotor out_rot[RING];
+static ga_dualquat out_dq[RING];
+static ga_vec3 out_v3[RING];
+static ga_generator out_gen[RING];
+static ga_twist out_tw[RING];
+static ga_mat4 out_mat[RING];
+#ifdef GAROTOR_BENCH_EIGEN
+static double out_pose[RING][7];
+#endif
+
+volatile double sink;
+static size_t cursor; /* where the next batch continues in the rings */
+int status_or;
+
+/* ---- paths ----------------------------------------------------------------- */
+
+const path_kind_def path_kind[N_PATH_KINDS] = {
+    {&ga_group_cga, GA_SCHEME_SCREW},
+    {&ga_group_se3, GA_SCHEME_SCREW},
+    {&ga_group_cga, GA_SCHEME_LIHAO3},
+    {&ga_group_se3, GA_SCHEME_LIHAO3},
+};
+
+ga_path paths[N_PATH_KINDS][N_PATHS];
+double key_poses[N_PATHS][N_KEYS][7];
+static double sample_buf[N_SAMPLES * GA_GROUP_MAX_ELEM];
+static size_t path_cursor;
+
+/* ---- the timed loops ---------------------------------------------------------
+ * Each takes its calls n and returns how many it made (the sampling loops make
+ * whole paths of N_SAMPLES poses). */
+
+/* Every loop over the input rings has this shape: for each call, j is the
+ * next slot of the rings (k & MASK), BODY computes the output at j (st |= the
+ * status where one comes back, in = the ring ctx selects where there is a
+ * choice), and the last output, LAST (at slot `last`), goes to the sink so
+ * that nothing can be optimised away. A macro, so that each loop is compiled
+ * with its call inlined, as a loop written out by hand would be. */
+#define RING_LOOP(name, BODY, LAST)                                                                          \
+    static size_t name(const void *ctx, size_t n)                                                            \
+    {                                                                                                        \
+        const ga_mat4 *in = ctx;                                                                             \
+        (void)in;                                                                                            \
+        size_t k = cursor;                                                                                   \
+        int st = 0;                                                                                          \
+        for (size_t i = 0; i < n; i++, k++) {                                                                \
+            size_t j = k & MASK;                                                                             \
+            BODY;                                                                                            \
+        }                                                                                                    \
+        cursor = k;                                                                                          \
+        status_or |= st;                                                                                     \
+        size_t last = (k - 1) & MASK;                                                                        \
+        sink = (LAST);                                                                                       \
+        return n;                                                                                            \
+    }
+
+RING_LOOP(run_gp_full, out_mv[j] = ga_mv_gp(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_motor_mul, out_rot[j] = ga_rotor_mul_inline(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_motor_mul_call, out_rot[j] = ga_rotor_mul(rot_a[j], rot_b[j]), out_rot[last].e123n)
+RING_LOOP(run_dualquat_mul, out_dq[j] = dualquat_mul(dq_a[j], dq_b[j]), out_dq[last].dual.z)
+RING_LOOP(run_gp_table, gp_table(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
+RING_LOOP(run_mat4_mul, out_mat[j] = ga_mat4_mul(rigid_a[j], rigid_b[j]), out_mat[last].m[11])
+RING_LOOP(run_motor_apply, out_v3[j] = ga_rotor_apply_inline(rot_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_motor_apply_call, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), out_v3[last].z)
+/* the same point moved through the full algebra: F(x), R F(x) ~R, down */
+RING_LOOP(run_apply_sandwich,
+          st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]), out_v3[last].z)
+RING_LOOP(run_mat4_apply, out_v3[j] = mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
+RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
+RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
+RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
+RING_LOOP(run_se3_log, st |= ga_se3_log(rigid_a[j], &out_tw[j]), out_tw[last].v.z)
+/* twist -> 4x4 matrix through the rotor: exp, then the rotor's matrix */
+RING_LOOP(run_exp_to_mat4,
+          out_mat[j] = ga_rotor_to_mat4_inline(ga_rotor_exp(ga_twist_to_generator(twists[j]))),
+          out_mat[last].m[11])
+/* 4x4 rigid matrix -> twist through the rotor: checked Shepperd, then the log */
+RING_LOOP(run_log_from_mat4, ga_rotor r; ga_generator g; st |= ga_rotor_from_mat4_inline(rigid_a[j], &r);
+          st |= ga_rotor_log(r, &g); out_tw[j] = ga_generator_to_twist(g), out_tw[last].v.z)
+/* Chains (latency): each call takes the previous call's result, so the figure
+ * is the time from an input to its result, not the throughput of independent
+ * calls. A product chain multiplies its running result by the next ring
+ * entry; an exp chain adds 0.0 * (previous result) to one component of the
+ * next input (exactly the same input, but the compiler cannot know it: one
+ * multiplication and one addition of latency, the same in exp_chain and
+ * se3_exp_chain). */
+#define CHAIN_LOOP(name, T, init, STEP, LAST)                                                                \
+    static size_t name(const void *ctx, size_t n)                                                            \
+    {                                                                                                        \
+        (void)ctx;                                                                                           \
+        static T carry;                                                                                      \
+        static int started;                                                                                  \
+        if (!started) {                                                                                      \
+            carry = (init);                                                                                  \
+            started = 1;                                                                                     \
+        }                                                                                                    \
+        T x = carry;                                                                                         \
+        size_t k = cursor;                                                                                   \
+        for (size_t i = 0; i < n; i++, k++) {                                                                \
+            size_t j = k & MASK;                                                                             \
+            STEP;                                                                                            \
+        }                                                                                                    \
+        cursor = k;                                                                                          \
+        carry = x;                                                                                           \
+        sink = (LAST);                                                                                       \
+        return n;                                                                                            \
+    }
+
+CHAIN_LOOP(run_motor_mul_chain, ga_rotor, rot_a[0], x = ga_rotor_mul_inline(x, rot_b[j]), x.e123n)
+CHAIN_LOOP(run_dualquat_mul_chain, ga_dualquat, dq_a[0], x = dualquat_mul(x, dq_b[j]), x.dual.z)
+CHAIN_LOOP(run_exp_chain, ga_rotor, rot_a[0], ga_generator g = gens[j]; g.e12 += 0.0 * x.e123n;
+           x = ga_rotor_exp(g), x.e123n)
+CHAIN_LOOP(run_se3_exp_chain, ga_mat4, rigid_a[0], ga_twist xi = twists[j]; xi.w.x += 0.0 * x.m[11];
+           x = ga_se3_exp(xi), x.m[11])
+
+/* ga_mat4_expm / ga_mat4_logm (and Eigen's) of the ring selected by ctx */
+RING_LOOP(run_mat4_expm, st |= ga_mat4_expm(in[j], &out_mat[j]), out_mat[last].m[11])
+RING_LOOP(run_mat4_logm, st |= ga_mat4_logm(in[j], &out_mat[j]), out_mat[last].m[11])
+
+#ifdef GAROTOR_BENCH_EIGEN
+RING_LOOP(run_eigen_expm, garotor_eigen_expm(in[j].m, out_mat[j].m), out_mat[last].m[11])
+RING_LOOP(run_eigen_logm, garotor_eigen_logm(in[j].m, out_mat[j].m), out_mat[last].m[11])
+
+/* Decoupled interpolation at the same sample times as the sample_* figures:
+ * locate the segment, then slerp + lerp between its two keys. */
+static size_t run_eigen_slerp_lerp(const void *ctx, size_t n)
+{
+    (void)ctx;
+    size_t done = 0;
+    while (done < n) {
+        double(*pose)[7] = key_poses[path_cursor++ % N_PATHS];
+        for (size_t s = 0; s < N_SAMPLES; s++) {
+            double t = (double)s * (1.0 / SAMPLES_PER_SEG);
+            int seg = (int)t;
+            if (seg > N_KEYS - 2)
+                seg = N_KEYS - 2;
+            garotor_eigen_slerp_lerp(pose[seg], pose[seg + 1], t - seg, out_pose[s & MASK]);
+        }
+        done += N_SAMPLES;
+    }
+    sink = out_pose[0][6];
+    return done;
+}
+#endif
+
+/* ctx for the sampling loops: the path kind and the evaluator */
+typedef struct {
+    int kind;
+    ga_eval eval;
+} sample_ctx;
+
+/* One call of ga_path_sample_uniform fills N_SAMPLES poses; the figure is per pose. */
+static size_t run_sample(const void *ctx, size_t n)
+{
+    const sample_ctx *c = ctx;
+    size_t done = 0;
+    int st = 0;
+    while (done < n) {
+        const ga_path *p = &paths[c->kind][path_cursor++ % N_PATHS];
+        st |= ga_path_sample_uniform(p, c->eval, EULER_STEP, N_SAMPLES, 0.0, N_KEYS - 1.0, sample_buf);
+        done += N_SAMPLES;
+    }
+    status_or |= st;
+    sink = sample_buf[7];
+    return done;
+}
+
+/* ---- the benchmark table --------------------------------------------------- */
+
+static const sample_ctx ctx_cga_screw_direct = {PG_CGA_SCREW, GA_EVAL_DIRECT};
+static const sample_ctx ctx_cga_screw_exact = {PG_CGA_SCREW, GA_EVAL_EXACT};
+static const sample_ctx ctx_cga_screw_euler = {PG_CGA_SCREW, GA_EVAL_EULER};
+static const sample_ctx ctx_se3_screw_direct = {PG_SE3_SCREW, GA_EVAL_DIRECT};
+static const sample_ctx ctx_se3_screw_exact = {PG_SE3_SCREW, GA_EVAL_EXACT};
+static const sample_ctx ctx_se3_screw_euler = {PG_SE3_SCREW, GA_EVAL_EULER};
+static const sample_ctx ctx_cga_lihao3_direct = {PG_CGA_LIHAO3, GA_EVAL_DIRECT};
+static const sample_ctx ctx_cga_lihao3_exact = {PG_CGA_LIHAO3, GA_EVAL_EXACT};
+static const sample_ctx ctx_cga_lihao3_euler = {PG_CGA_LIHAO3, GA_EVAL_EULER};
+static const sample_ctx ctx_se3_lihao3_direct = {PG_SE3_LIHAO3, GA_EVAL_DIRECT};
+static const sample_ctx ctx_se3_lihao3_exact = {PG_SE3_LIHAO3, GA_EVAL_EXACT};
+static const sample_ctx ctx_se3_lihao3_euler = {PG_SE3_LIHAO3, GA_EVAL_EULER};
+
+bench benches[] = {
+    /* the keys of docs/conventions.md */
+    {"gp_full", "ga_mv_gp: full 32x32 geometric product, two dense multivectors", run_gp_full, NULL, 0, NULL,
+     0, 0, 0},
+    {"motor_mul", "ga_rotor_mul_inline: product of two compact rotors (8 doubles)", run_motor_mul, NULL, 0,
+     NULL, 0, 0, 0},
+    {"dualquat_mul", "textbook unit dual-quaternion product (in the bench, inline, 48 mul)", run_dualquat_mul,
+     NULL, 0, NULL, 0, 0, 0},
+    {"gp_table", "plain table-driven dense 32x32 product (in the bench: sign and index tables)", run_gp_table,
+     NULL, 0, NULL, 0, 0, 0},
+    {"motor_apply", "ga_rotor_apply_inline: one 3D point moved by a rotor", run_motor_apply, NULL, 0, NULL, 0,
+     0, 0},
+    {"mat4_apply", "4x4 rigid motion times a point (in the bench, inline)", run_mat4_apply, NULL, 0, NULL, 0,
+     0, 0},
+    {"exp", "ga_rotor_exp: generator -> rotor, closed form", run_exp, NULL, 0, NULL, 0, 0, 0},
+    {"log", "ga_rotor_log: rotor -> generator, principal", run_log, NULL, 0, NULL, 0, 0, 0},
+    {"se3_exp", "ga_se3_exp: twist -> 4x4, Eberly's closed form", run_se3_exp, NULL, 0, NULL, 0, 0, 0},
+    {"se3_log", "ga_se3_log: 4x4 rigid -> twist (checked), Eberly", run_se3_log, NULL, 0, NULL, 0, 0, 0},
+    {"sample_direct", "screw path on rotors, per pose: closed form", run_sample, &ctx_cga_screw_direct, 0,
+     NULL, 0, 0, 0},
+    {"sample_exact", "screw path on rotors, per pose: exact incremental stepping", run_sample,
+     &ctx_cga_screw_exact, 0, NULL, 0, 0, 0},
+    {"sample_euler", "screw path on rotors, per pose: Li-Hao Euler, 1 step", run_sample, &ctx_cga_screw_euler,
+     0, NULL, 0, 0, 0},
+    /* extras */
+    {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
+    {"motor_mul_call", "ga_rotor_mul: the same product through the library's symbol", run_motor_mul_call,
+     NULL, 0, NULL, 0, 0, 0},
+    {"motor_apply_call", "ga_rotor_apply: the same point action through the library's symbol",
+     run_motor_apply_call, NULL, 0, NULL, 0, 0, 0},
+    {"motor_mul_chain", "ga_rotor_mul_inline, each call on the previous result (latency)",
+     run_motor_mul_chain, NULL, 0, NULL, 0, 0, 0},
+    {"dualquat_mul_chain", "the bench's dual-quaternion product, chained (latency)", run_dualquat_mul_chain,
+     NULL, 0, NULL, 0, 0, 0},
+    {"exp_chain", "ga_rotor_exp, input depending on the previous result (latency)", run_exp_chain, NULL, 0,
+     NULL, 0, 0, 0},
+    {"se3_exp_chain", "ga_se3_exp, input depending on the previous result (latency)", run_se3_exp_chain, NULL,
+     0, NULL, 0, 0, 0},
+    {"apply_sandwich", "ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x))): full sandwich",
+     run_apply_sandwich, NULL, 0, NULL, 0, 0, 0},
+    {"exp_to_mat4", "twist -> 4x4 through the rotor: exp, ga_rotor_to_mat4_inline", run_exp_to_mat4, NULL, 0,
+     NULL, 0, 0, 0},
+    {"log_from_mat4", "4x4 -> twist through the rotor: ga_rotor_from_mat4_inline, log", run_log_from_mat4,
+     NULL, 0, NULL, 0, 0, 0},
+    {"mat4_expm_se3", "ga_mat4_expm (Pade) of the se3_exp inputs' twist^", run_mat4_expm, hats, 0, NULL, 0, 0,
+     0},
+    {"mat4_logm_se3", "ga_mat4_logm (inverse scaling and squaring) of the se3_log inputs", run_mat4_logm,
+     rigid_a, 0, NULL, 0, 0, 0},
+    {"mat4_expm", "ga_mat4_expm of general 4x4 (last row 0)", run_mat4_expm, gen_x, 0, NULL, 0, 0, 0},
+    {"mat4_logm", "ga_mat4_logm of general invertible 4x4", run_mat4_logm, gen_m, 0, NULL, 0, 0, 0},
+#ifdef GAROTOR_BENCH_EIGEN
+    {"eigen_expm", "Eigen MatrixFunctions .exp() of the se3_exp inputs' twist^", run_eigen_expm, hats, 0,
+     NULL, 0, 0, 0},
+    {"eigen_logm", "Eigen MatrixFunctions .log() of the se3_log inputs", run_eigen_logm, rigid_a, 0, NULL, 0,
+     0, 0},
+    {"eigen_expm_general", "Eigen .exp() of the mat4_expm inputs", run_eigen_expm, gen_x, 0, NULL, 0, 0, 0},
+    {"eigen_logm_general", "Eigen .log() of the mat4_logm inputs", run_eigen_logm, gen_m, 0, NULL, 0, 0, 0},
+    {"eigen_slerp_lerp", "Eigen Quaterniond slerp + lerp, per pose, same sample times", run_eigen_slerp_lerp,
+     NULL, 0, NULL, 0, 0, 0},
+#endif
+    {"sample_direct_se3", "screw path on 4x4 matrices, per pose: closed form", run_sample,
+     &ctx_se3_screw_direct, 0, NULL, 0, 0, 0},
+    {"sample_exact_se3", "screw path on 4x4 matrices, per pose: exact stepping", run_sample,
+     &ctx_se3_screw_exact, 0, NULL, 0, 0, 0},
+    {"sample_euler_se3", "screw path on 4x4 matrices, per pose: Euler, 1 step", run_sample,
+     &ctx_se3_screw_euler, 0, NULL, 0, 0, 0},
+    {"sample_direct_lihao3", "lihao3 path on rotors, per pose: closed form", run_sample,
+     &ctx_cga_lihao3_direct, 0, NULL, 0, 0, 0},
+    {"sample_exact_lihao3", "lihao3 path on rotors, per pose: exact stepping", run_sample,
+     &ctx_cga_lihao3_exact, 0, NULL, 0, 0, 0},
+    {"sample_euler_lihao3", "lihao3 path on rotors, per pose: Euler, 1 step", run_sample,
+     &ctx_cga_lihao3_euler, 0, NULL, 0, 0, 0},
+    {"sample_direct_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: closed form", run_sample,
+     &ctx_se3_lihao3_direct, 0, NULL, 0, 0, 0},
+    {"sample_exact_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: exact stepping", run_sample,
+     &ctx_se3_lihao3_exact, 0, NULL, 0, 0, 0},
+    {"sample_euler_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: Euler, 1 step", run_sample,
+     &ctx_se3_lihao3_euler, 0, NULL, 0, 0, 0},
+};
+const size_t n_benches = sizeof benches / sizeof benches[0];
