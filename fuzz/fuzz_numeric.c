@@ -600,12 +600,12 @@ static void mv_any(const ga_mv *X, double lambda)
         FZ_CHECK(rotor_finite(R) && ga_rotor_check(R, 1e-12) == GA_OK, "from_mv: GA_OK with a bad rotor");
 }
 
-/* exp and log of the general algebra (versor.h), on B = the bivector part of
+/* exp and log of the general algebra (mv.h), on B = the bivector part of
  * X, and log on X itself.
  *
  * Bounds. ga_mv_exp writes each coefficient of R = exp(B) as a short sum of
  * products of the coefficients of B, B^2 and B B^2 with the closed-form
- * functions of the parts' squares l1, l2 (versor.c), every term at most
+ * functions of the parts' squares l1, l2 (ga/mv_exp.c), every term at most
  * |R| = max |coefficient| in size, so that R is within a few dozen roundings,
  * k u |R| with k ~ 60 (u = 1.1e-16; measured 1.4e-14 |R|, docs/versors.md).
  * On the principal domain kept here (every elliptic half-angle t_i <= 1.5,
@@ -633,7 +633,7 @@ static ga_mv mv_biv(ga_mv X)
 
 /* The largest elliptic half-angle of B and the sum of both (0 for
    hyperbolic and null parts): l1, l2 the roots of l^2 - s l + qq/4 as in
-   versor.c, an elliptic part l < 0 of half-angle sqrt(-l). */
+   ga/internal/bivector_fns.h, an elliptic part l < 0 of half-angle sqrt(-l). */
 static void mv_angles(ga_mv B, double *tmax, double *tsum)
 {
     ga_mv b2 = ga_mv_gp(B, B), q = ga_mv_grade(b2, 4);
@@ -675,7 +675,7 @@ static void mv_exp_log(const ga_mv *X)
     if (bfin) {
         /* a bivector of the Euclidean 4-space e1234 has only elliptic parts:
            its exp is bounded and on the group at any size (beyond ~1e77 its
-           square overflows: versor.c's exp_huge) */
+           square overflows: ga/mv_exp.c's exp_huge_*) */
         ga_mv E = ga_mv_zero();
         static const int e1234[] = {GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E14,
                                     GA_BLADE_E23, GA_BLADE_E24, GA_BLADE_E34};
