@@ -47,6 +47,8 @@ static ga_mv point_up(ga_vec3 x, double lambda)
 
 ga_status ga_point_up_scaled(ga_vec3 x, double lambda, ga_mv *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!isfinite(lambda) || !isfinite(x.x) || !isfinite(x.y) || !isfinite(x.z))
         return GA_ERR_NOTFINITE;
     if (!(lambda > 0.0))
@@ -89,6 +91,8 @@ static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
 
 ga_status ga_point_down_scaled(ga_mv X, double lambda, ga_vec3 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!isfinite(lambda))
         return GA_ERR_NOTFINITE;
     if (!(lambda > 0.0))
@@ -217,6 +221,8 @@ static int dual_sphere_params(ga_mv s, ga_vec3 *centre, double *radius)
 
 ga_status ga_sphere_params(ga_mv S, ga_vec3 *centre, double *radius)
 {
+    if (!centre || !radius)
+        return GA_ERR_ARG;
     ga_mv s;
     int st = dual_vector(S, &s);
     return st != GA_OK ? st : dual_sphere_params(s, centre, radius);
@@ -237,6 +243,8 @@ static int dual_plane_params(ga_mv p, ga_vec3 *normal, double *distance)
 
 ga_status ga_plane_params(ga_mv P, ga_vec3 *normal, double *distance)
 {
+    if (!normal || !distance)
+        return GA_ERR_ARG;
     ga_mv p;
     int st = dual_vector(P, &p);
     return st != GA_OK ? st : dual_plane_params(p, normal, distance);
@@ -254,6 +262,8 @@ static ga_mv line_of(ga_vec3 u, ga_vec3 p)
 
 ga_status ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
 {
+    if (!direction || !closest)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(L))
         return GA_ERR_NOTFINITE;
     L = unit_scaled(L);
@@ -296,6 +306,8 @@ static int carrier(ga_mv X, ga_mv flat, ga_vec3 *centre, double *radius)
 
 ga_status ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
 {
+    if (!a || !b)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(PP))
         return GA_ERR_NOTFINITE;
     PP = unit_scaled(PP);
@@ -321,6 +333,8 @@ ga_status ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
 
 ga_status ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *normal)
 {
+    if (!centre || !radius || !normal)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(C))
         return GA_ERR_NOTFINITE;
     C = unit_scaled(C);

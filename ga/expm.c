@@ -475,6 +475,8 @@ static int expm_square(ga_mat4 *xio, const ga_mat4 *a, int s, int h, int plain)
 
 ga_status ga_mat4_expm(ga_mat4 a, ga_mat4 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!ga__mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
     /* A homogeneous generator (last row 0): every power and U have last row

@@ -447,6 +447,8 @@ static void logm_fix_blocks(ga_mat4 *l, double t[4][4], double lam1, int shifted
 
 ga_status ga_mat4_logm(ga_mat4 a, ga_mat4 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!ga__mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;
     ga__mat4_lu f;

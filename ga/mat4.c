@@ -121,6 +121,8 @@ ga_mat4 ga__mat4_lu_solve(const ga__mat4_lu *f, ga_mat4 b)
 
 ga_status ga_mat4_inverse(ga_mat4 a, ga_mat4 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga__mat4_lu f;
     if (!ga__mat4_isfinite(&a))
         return GA_ERR_NOTFINITE;

@@ -9,6 +9,7 @@
 #include <garotor/mv.h>
 #include <garotor/numtext.h>
 
+#include <locale.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -274,6 +275,8 @@ double ga_mv_norm(ga_mv a) { return sqrt(fabs(ga_mv_norm2(a))); }
 
 ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(a))
         return GA_ERR_NOTFINITE;
     /* work on a 2^-e (exact), its largest coefficient in [1/2, 1): a ~a of a
@@ -309,6 +312,8 @@ ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
    ga_double_format's shortest form unless it is +-1 on a blade, then the blade's name. */
 ga_status ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
 {
+    if (!buf || !len)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(a))
         return GA_ERR_NOTFINITE;
     char tmp[GA_MV_TEXT_MAX];
@@ -334,7 +339,7 @@ ga_status ga_mv_format(ga_mv a, char *buf, size_t cap, size_t *len)
     if (n == 0)
         tmp[n++] = '0';
     tmp[n] = '\0';
-    if (!buf || n + 1 > cap)
+    if (n + 1 > cap)
         return GA_ERR_ARG;
     memcpy(buf, tmp, n + 1);
     *len = n;
@@ -386,19 +391,35 @@ static int read_number(const char **s, double *out)
         while (p[k] >= '0' && p[k] <= '9') k++;
     }
     /* strtod on the text itself where it stops where the number does (it
-       reads a decimal of any length, as the tool's reader does); where it
-       would read on ("2e12": 2 e12 here, 2x10^12 to strtod), on a copy of
-       the number alone. A beyond-range decimal is what strtod makes of it:
-       +-Inf (GA_ERR_NOTFINITE in ga_mv_parse), 0 or a subnormal below. */
+       reads a decimal of any length, as the tool's reader does). Where it
+       does not: it would read on ("2e12": 2 e12 here, 2x10^12 to strtod), or
+       LC_NUMERIC's decimal point is not '.' and it stopped at the '.' (a
+       German locale reads "1.5" as 1); then on a copy of the number alone,
+       its '.' replaced by the locale's decimal point, which strtod must read
+       whole. So the text is read the same whatever the locale. A
+       beyond-range decimal is what strtod makes of it: +-Inf
+       (GA_ERR_NOTFINITE in ga_mv_parse), 0 or a subnormal below. */
     char *end;
     double v = strtod(p, &end);
     if (end != p + k) {
         char tmp[400];
-        if (k >= sizeof tmp)
-            return 0; /* a mantissa of 400 characters or more glued to a blade name */
-        memcpy(tmp, p, k);
-        tmp[k] = '\0';
-        v = strtod(tmp, NULL);
+        const char *dp = localeconv()->decimal_point;
+        if (!dp || !*dp)
+            dp = ".";
+        size_t ld = strlen(dp), n = 0;
+        for (size_t i = 0; i < k; i++) {
+            if (n + ld >= sizeof tmp)
+                return 0; /* 400 characters or more: glued to a blade name, or a '.' under a ',' locale */
+            if (p[i] == '.') {
+                memcpy(tmp + n, dp, ld);
+                n += ld;
+            } else
+                tmp[n++] = p[i];
+        }
+        tmp[n] = '\0';
+        v = strtod(tmp, &end);
+        if (end != tmp + n)
+            return 0;
     }
     *out = v;
     *s = p + k;
@@ -407,7 +428,7 @@ static int read_number(const char **s, double *out)
 
 ga_status ga_mv_parse(const char *text, ga_mv *out)
 {
-    if (!text)
+    if (!text || !out)
         return GA_ERR_ARG;
     ga_mv r = ga_mv_zero();
     const char *s = skip_blanks(text);

@@ -358,6 +358,8 @@ static int log_candidates(ga_mv R, double tol, double scale, ga_mv cand[7], doub
 
 ga_status ga_mv_log(ga_mv R, ga_mv *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(R))
         return GA_ERR_NOTFINITE;
     double scale = ga_mv_maxabs(R), tol = 1e-9;

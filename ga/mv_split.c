@@ -177,6 +177,8 @@ static void split_unit(ga_mv b, ga_mv *b1, ga_mv *b2)
 
 ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
 {
+    if (!B1 || !B2)
+        return GA_ERR_ARG;
     ga_mv b = ga_mv_grade(B, 2);
     if (!ga_mv_isfinite(b))
         return GA_ERR_NOTFINITE;
@@ -200,6 +202,8 @@ ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2)
 
 ga_status ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2)
 {
+    if (!R1 || !R2)
+        return GA_ERR_ARG;
     ga_mv L, B1, B2;
     int st = ga_mv_log(R, &L);
     if (st == GA_OK)

@@ -141,13 +141,15 @@ static int classify(ga_mv X, int strict, ga_object *o)
     return GA_OK;
 }
 
-ga_status ga_object_from_mv(ga_mv X, ga_object *out) { return classify(X, 1, out); }
+ga_status ga_object_from_mv(ga_mv X, ga_object *out) { return out ? classify(X, 1, out) : GA_ERR_ARG; }
 
 static ga_mv translate(ga_mv X, ga_vec3 a);
 static int finite3(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!finite3(origin) || !isfinite(lambda))
         return GA_ERR_NOTFINITE;
     if (!(lambda > 0.0))
@@ -194,6 +196,8 @@ static ga_mv scale_n_nbar(ga_mv X, double kn, double kb)
 
 ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(X) || !finite3(origin) || !isfinite(lambda))
         return GA_ERR_NOTFINITE;
     if (!(lambda > 0.0))
@@ -249,6 +253,8 @@ ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
 
 ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out)
 {
+    if (!new_origin || !out)
+        return GA_ERR_ARG;
     double r[8] = {R.s, R.e12, R.e13, R.e23, R.e1n, R.e2n, R.e3n, R.e123n};
     for (int i = 0; i < 8; i++)
         if (!isfinite(r[i]))
@@ -620,9 +626,12 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
     return GA_OK;
 }
 
-ga_status ga_mv_join(ga_mv A, ga_mv B, ga_mv *out) { return join_meet(A, B, out, NULL); }
+ga_status ga_mv_join(ga_mv A, ga_mv B, ga_mv *out) { return out ? join_meet(A, B, out, NULL) : GA_ERR_ARG; }
 
-ga_status ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out) { return join_meet(A, B, NULL, out); }
+ga_status ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out)
+{
+    return out ? join_meet(A, B, NULL, out) : GA_ERR_ARG;
+}
 
 /* The object of O, refusing what has no nearest point. */
 static int read_real(ga_mv O, ga_object *o)
@@ -656,6 +665,8 @@ static int onto_round(ga_vec3 c, double r, ga_vec3 d, ga_vec3 *out)
 
 ga_status ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga_object o;
     int st = read_real(O, &o);
     if (st != GA_OK)
@@ -680,6 +691,8 @@ ga_status ga_point_project(ga_vec3 x, ga_mv O, ga_vec3 *out)
 
 ga_status ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga_vec3 p;
     int st = ga_point_project(x, O, &p);
     if (st == GA_OK)
@@ -689,6 +702,8 @@ ga_status ga_point_reject(ga_vec3 x, ga_mv O, ga_vec3 *out)
 
 ga_status ga_point_distance(ga_vec3 x, ga_mv O, double *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga_vec3 d;
     int st = ga_point_reject(x, O, &d);
     if (st == GA_OK)
@@ -758,6 +773,8 @@ static int round_angle(const ga_object *a, const ga_object *b, double *out)
 
 ga_status ga_object_angle(ga_mv A, ga_mv B, double *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga_object a, b;
     int st = read_real_pair(A, B, &a, &b);
     if (st != GA_OK)
@@ -790,6 +807,8 @@ static ga_rotor turn(ga_vec3 a, ga_vec3 b)
 
 ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga_object a, b;
     int st = read_real_pair(A, B, &a, &b);
     if (st != GA_OK)

@@ -122,6 +122,8 @@ static inline ga_rotor rotor_project(ga_rotor r, double k)
 
 ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!rotor_isfinite(r))
         return GA_ERR_NOTFINITE;
     double m = fmax(fmax(fabs(r.s), fabs(r.e12)), fmax(fabs(r.e13), fabs(r.e23)));
@@ -161,6 +163,8 @@ ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out)
 
 ga_status ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     static const int inside[12] = {GA_BLADE_SCALAR, GA_BLADE_E12, GA_BLADE_E13,   GA_BLADE_E23,
                                    GA_BLADE_E14,    GA_BLADE_E15, GA_BLADE_E24,   GA_BLADE_E25,
                                    GA_BLADE_E34,    GA_BLADE_E35, GA_BLADE_E1234, GA_BLADE_E1235};
@@ -436,13 +440,18 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
     return GA_OK;
 }
 
-ga_status ga_rotor_log(ga_rotor r, ga_generator *out) { return rotor_log(r, 1, out); }
-ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out) { return rotor_log(r, 0, out); }
+ga_status ga_rotor_log(ga_rotor r, ga_generator *out) { return out ? rotor_log(r, 1, out) : GA_ERR_ARG; }
+ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out)
+{
+    return out ? rotor_log(r, 0, out) : GA_ERR_ARG;
+}
 
 /* ---- screws ---------------------------------------------------------------- */
 
 ga_status ga_rotor_to_screw(ga_rotor r, ga_screw *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     ga_generator g;
     int st = ga_rotor_log(r, &g);
     if (st != GA_OK)
@@ -503,7 +512,10 @@ ga_rotor ga_rotor_from_quat(ga_quat q, ga_vec3 t) { return ga_rotor_from_quat_in
 
 ga_mat4 ga_rotor_to_mat4(ga_rotor r) { return ga_rotor_to_mat4_inline(r); }
 
-ga_status ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out) { return ga_rotor_from_mat4_inline(mm, out); }
+ga_status ga_rotor_from_mat4(ga_mat4 mm, ga_rotor *out)
+{
+    return out ? ga_rotor_from_mat4_inline(mm, out) : GA_ERR_ARG;
+}
 
 ga_dualquat ga_rotor_to_dualquat(ga_rotor r)
 {
@@ -519,6 +531,8 @@ ga_rotor ga_rotor_from_dualquat(ga_dualquat d)
 
 ga_status ga_quat_normalize(ga_quat q, double tol, ga_quat *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!(tol >= 0.0 && tol <= GA_SE3_NORMALIZE_TOL))
         return GA_ERR_ARG;
     if (!isfinite(q.w) || !isfinite(q.x) || !isfinite(q.y) || !isfinite(q.z))

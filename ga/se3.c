@@ -208,6 +208,8 @@ ga_twist ga__se3_log_core(const ga_mat4 *m) { return se3_log_core(m); }
 
 ga_status ga_se3_log(ga_mat4 m, ga_twist *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     int st = se3_check(&m, GA_SE3_TOL);
     if (st != GA_OK)
         return st;
@@ -222,6 +224,8 @@ ga_status ga_se3_log(ga_mat4 m, ga_twist *out)
 
 ga_status ga_se3_geodesic(ga_mat4 h0, ga_mat4 h1, double t, ga_mat4 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     int st = ga_se3_check(h0, GA_SE3_TOL);
     if (st == GA_OK)
         st = ga_se3_check(h1, GA_SE3_TOL);
@@ -265,6 +269,8 @@ ga_twist ga_se3_adjoint(ga_mat4 g, ga_twist xi)
  * step changes no entry by more than 4 ulp, at most 8 steps. */
 ga_status ga_se3_normalize(ga_mat4 m, double tol, ga_mat4 *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!(tol >= 0.0 && tol <= GA_SE3_NORMALIZE_TOL))
         return GA_ERR_ARG;
     int st = se3_check(&m, tol);

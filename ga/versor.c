@@ -13,6 +13,8 @@
 
 ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!ga_mv_isfinite(V) || !ga_mv_isfinite(X))
         return GA_ERR_NOTFINITE;
     double ev = 0.0, od = 0.0;
@@ -40,6 +42,8 @@ ga_mv ga_versor_inversion(ga_vec3 centre, double radius) { return ga_sphere_dual
 
 ga_status ga_versor_dilation(ga_vec3 c, double s, ga_mv *out)
 {
+    if (!out)
+        return GA_ERR_ARG;
     if (!isfinite(s) || !isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z))
         return GA_ERR_NOTFINITE;
     if (!(s > 0.0))

@@ -171,7 +171,7 @@ ga_status ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, d
 
 ga_status ga_path_acceleration(const ga_path *p, double t, double *a)
 {
-    return ga_path_differentiate(p, t, GA_FRAME_BODY, NULL, a);
+    return a ? ga_path_differentiate(p, t, GA_FRAME_BODY, NULL, a) : GA_ERR_ARG;
 }
 
 ga_status ga_path_differentiate_segment(const ga_path *p, size_t seg, double u, ga_frame f, double *v,

@@ -26,7 +26,9 @@ const char *ga_scheme_name(ga_scheme s) { return (unsigned)s < GA_SCHEME_COUNT ?
 
 ga_status ga_scheme_by_name(const char *name, ga_scheme *out)
 {
-    for (unsigned i = 0; name && i < GA_SCHEME_COUNT; ++i)
+    if (!name || !out)
+        return GA_ERR_ARG;
+    for (unsigned i = 0; i < GA_SCHEME_COUNT; ++i)
         if (strcmp(name, scheme_names[i]) == 0) {
             *out = (ga_scheme)i;
             return GA_OK;
@@ -38,7 +40,9 @@ const char *ga_eval_name(ga_eval e) { return (unsigned)e < 3 ? eval_names[e] : "
 
 ga_status ga_eval_by_name(const char *name, ga_eval *out)
 {
-    for (unsigned i = 0; name && i < 3; ++i)
+    if (!name || !out)
+        return GA_ERR_ARG;
+    for (unsigned i = 0; i < 3; ++i)
         if (strcmp(name, eval_names[i]) == 0) {
             *out = (ga_eval)i;
             return GA_OK;
@@ -126,8 +130,16 @@ size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n)
 {
     if (!g || n < 1 || (unsigned)s >= GA_SCHEME_COUNT || rigid_only(g, s))
         return 0;
-    size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double);
-    return sizeof(double) * (n + n * stride + gip_scheme_doubles(s, n, g->dim));
+    size_t stride = (g->elem_size + sizeof(double) - 1) / sizeof(double), d = g->dim;
+    /* The doubles are linear in n: base + (n - 1) per. Refuse (0) an n whose
+       bytes do not fit in a size_t, rather than return them wrapped around;
+       below that bound no term of the sum below can wrap either. */
+    size_t base = 1 + stride + gip_scheme_doubles(s, 1, d);
+    size_t per = 1 + stride + gip_scheme_doubles(s, 2, d) - gip_scheme_doubles(s, 1, d);
+    size_t room = SIZE_MAX / sizeof(double);
+    if (base > room || n - 1 > (room - base) / per)
+        return 0;
+    return sizeof(double) * (n + n * stride + gip_scheme_doubles(s, n, d));
 }
 
 /* Check the arguments and lay the arrays out in the workspace. */
@@ -140,7 +152,9 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
         return GA_ERR_ARG; /* rotation and translation apart, screw motions: rigid groups only */
     if (n != 1 && (n < ga_scheme_min_keys(s) || (s == GA_SCHEME_QUADRATIC && n != 3)))
         return GA_ERR_ARG; /* one key: the constant path, on every scheme */
-    if (bytes < ga_path_workspace_size(g, s, n) || (uintptr_t)work % _Alignof(double))
+    /* 0: the bytes of n keys do not fit in a size_t */
+    size_t need = ga_path_workspace_size(g, s, n);
+    if (need == 0 || bytes < need || (uintptr_t)work % _Alignof(double))
         return GA_ERR_ARG;
     if (!gip_allfinite(times, n))
         return GA_ERR_NOTFINITE;
@@ -152,7 +166,7 @@ static int layout(ga_path *p, const ga_group *g, ga_scheme s, size_t n, const do
     size_t d = g->dim, m = n;
     if (ga_scheme_can_append(s)) { /* every key the workspace has room for */
         size_t one = ga_path_workspace_size(g, s, 1), per = ga_path_workspace_size(g, s, 2) - one;
-        m += (bytes - ga_path_workspace_size(g, s, n)) / per;
+        m += (bytes - need) / per;
     }
     double *w = work;
     memset(p, 0, sizeof *p);
@@ -383,6 +397,8 @@ ga_status ga_path_segment_range(const ga_path *p, size_t seg, double *t0, double
 
 ga_status ga_path_locate(const ga_path *p, double t, size_t *seg, double *u)
 {
+    if (!p || !seg || !u)
+        return GA_ERR_ARG;
     size_t m = gip_nseg(p);
     if (!(t >= gip_knot(p, 0) && t <= gip_knot(p, m)))
         return GA_ERR_ARG; /* also NaN */

@@ -165,6 +165,11 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
             goto done;
         }
         wbytes = ga_path_workspace_size(g, scheme, (size_t)cap);
+        if (wbytes == 0) { /* its size does not fit in a size_t (path.h) */
+            PyErr_Format(PyExc_ValueError,
+                         "Path: capacity %zd is too large: its workspace does not fit in memory", cap);
+            goto done;
+        }
     }
     const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
     for (npy_intp i = 0; i < n; i++)

@@ -144,7 +144,9 @@ GA_API GA_NODISCARD ga_status ga_mv_format(ga_mv a, char *buf, size_t cap, size_
  *  smallest subnormal ("1e-400") it reads as 0, as there. "1e400" is 1 e400,
  *  an unknown name: GA_ERR_ARG. GA_ERR_ARG for anything else (an empty
  *  text, an unknown name, "e21", "nan", a mantissa of 400 characters or
- *  more glued to a blade name); *out untouched on any error. */
+ *  more glued to a blade name); *out untouched on any error. The decimal
+ *  point is '.' whatever LC_NUMERIC (docs/conventions.md, "Multivectors as
+ *  text"). */
 GA_API GA_NODISCARD ga_status ga_mv_parse(const char *text, ga_mv *out);
 
 /* ---- norm and inverse ------------------------------------------------- */

@@ -292,9 +292,10 @@ GA_API int ga_scheme_can_append(ga_scheme s);
  *  NaN counts as off). */
 GA_API size_t ga_times_uneven(size_t n, const double *times);
 
-/** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, or if
- *  the scheme is not defined on g: DECOUPLED and DECOUPLED_C2 on a group
- *  without to_qt/from_qt, C2 on a group that is not rigid: affine). A
+/** Bytes of workspace a path of n keys needs (0 if g is NULL or n < 1, if
+ *  the size does not fit in a size_t, or if the scheme is not defined on g:
+ *  DECOUPLED and DECOUPLED_C2 on a group without to_qt/from_qt, C2 on a
+ *  group that is not rigid: affine). A
  *  workspace of this size for m > n keys, given to ga_path_init with n keys,
  *  leaves room for ga_path_append to add m - n (schemes that can append). */
 GA_API size_t ga_path_workspace_size(const ga_group *g, ga_scheme s, size_t n);

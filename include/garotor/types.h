@@ -6,7 +6,12 @@
  *     xi^ = [[w]x, v; 0, 0];
  *   - a function that can fail returns a ga_status (GA_OK or a negative
  *     GA_E* code) and writes its result through its last pointer argument;
- *     on failure that result is left untouched.
+ *     on failure that result is left untouched;
+ *   - such a function given NULL for a pointer argument, an output or an
+ *     input (a text, times, keys, a path), returns GA_ERR_ARG before
+ *     anything else and writes nothing; only the pointers its comment calls
+ *     optional may be NULL (ga_path_init's velocities, the v and a of
+ *     ga_path_differentiate).
  */
 #ifndef GAROTOR_TYPES_H
 #define GAROTOR_TYPES_H

@@ -560,6 +560,11 @@ def test_path_append_errors(rng):
         garotor.Path(times, K, scheme="lihao3").append(times[-1] + 1, K[0])
     with pytest.raises(ValueError, match="capacity 3 is less than the 4 keys"):
         garotor.Path(times, K, capacity=3)
+    # a capacity whose workspace does not fit in a size_t is refused, not
+    # wrapped around to a small one (2**61 + 100 keys once became 100)
+    for cap in (2**61 + 100, 2**63 - 1):
+        with pytest.raises(ValueError, match="too large"):
+            garotor.Path(times, K, capacity=cap)
     with pytest.raises(ValueError, match="scheme must be one of 'screw', "):
         garotor.Path(times, K, scheme="spline")
     even = 0.5 * np.arange(6.0)
