@@ -109,8 +109,8 @@ static int c_scheme_by_name(void) { return ga_scheme_by_name(IN(0, "lihao2"), OU
 static int c_eval_by_name(void) { return ga_eval_by_name(IN(0, "euler"), OUT(1)); }
 static int c_path_init(void)
 {
-    return ga_path_init(IN(0, G), GA_SCHEME_SCREW, 4, IN(1, times), IN(2, keys), NULL, IN(3, work), work_bytes,
-                        OUT(4));
+    return ga_path_init(IN(0, G), GA_SCHEME_SCREW, 4, IN(1, times), IN(2, keys), NULL, IN(3, work),
+                        work_bytes, OUT(4));
 }
 static int c_path_init_mat4(void)
 {
@@ -174,7 +174,10 @@ typedef struct {
     unsigned out; /* which of them are outputs (bit k: buffer k) */
 } api_case;
 
-#define CASE(f, n, out) {#f, c_##f, n, out}
+#define CASE(f, n, out)                                                                                      \
+    {                                                                                                        \
+#f, c_##f, n, out                                                                                    \
+    }
 static const api_case cases[] = {
     CASE(point_up_scaled, 1, 1),
     CASE(point_down, 1, 1),
@@ -271,7 +274,8 @@ static void setup_inputs(void)
                      GA_OK);
     static double work_path[8192];
     tk_expect_status("setup: the path",
-                     ga_path_init(G, GA_SCHEME_SCREW, 4, times, keys, NULL, work_path, work_bytes, &path), GA_OK);
+                     ga_path_init(G, GA_SCHEME_SCREW, 4, times, keys, NULL, work_path, work_bytes, &path),
+                     GA_OK);
     tk_expect_status("setup: the stepper",
                      ga_path_stepper_init(&path, GA_EVAL_EULER, 0.1, 5, 0.25, 1.75, &stepper), GA_OK);
 }
@@ -316,9 +320,9 @@ static void section_null_pointers(void)
     /* the optional outputs stay optional */
     tk_expect_status("ga_path_differentiate: v and a NULL allowed",
                      ga_path_differentiate(&path, 0.7, GA_FRAME_BODY, NULL, &buf[0].d), GA_OK);
-    tk_expect_status("ga_path_init: velocities NULL allowed",
-                     ga_path_init(G, GA_SCHEME_LIHAO2, 4, times, keys, NULL, work, work_bytes, (void *)buf[0].b),
-                     GA_OK);
+    tk_expect_status(
+        "ga_path_init: velocities NULL allowed",
+        ga_path_init(G, GA_SCHEME_LIHAO2, 4, times, keys, NULL, work, work_bytes, (void *)buf[0].b), GA_OK);
 }
 
 /* ---- workspace ---------------------------------------------------------------- */
@@ -337,8 +341,10 @@ static void section_workspace(void)
             /* the sizes are linear in n: one + (n - 1) per, which fits for
                n - 1 <= (SIZE_MAX - one) / per */
             size_t last = (SIZE_MAX - one) / per + 1;
-            size_t ns[] = {1000, SIZE_MAX / 64, SIZE_MAX / 8 + 1, ((size_t)1 << (sizeof(size_t) * 8 - 3)) + 100,
-                           SIZE_MAX / 2, SIZE_MAX - 1, SIZE_MAX, last - 1, last, last + 1};
+            size_t ns[] = {
+                1000,         SIZE_MAX / 64, SIZE_MAX / 8 + 1, ((size_t)1 << (sizeof(size_t) * 8 - 3)) + 100,
+                SIZE_MAX / 2, SIZE_MAX - 1,  SIZE_MAX,         last - 1,
+                last,         last + 1};
             for (size_t i = 0; i < TK_COUNT(ns); i++) {
                 size_t n = ns[i], got = ga_path_workspace_size(g, (ga_scheme)s, n);
                 size_t want = n - 1 <= (SIZE_MAX - one) / per ? one + (n - 1) * per : 0;
@@ -361,7 +367,8 @@ static void section_workspace(void)
     ga_mat4 k4[4] = {ga_mat4_identity(), ga_mat4_identity(), ga_mat4_identity(), ga_mat4_identity()};
     double k[4 * GA_GROUP_MAX_ELEM] = {0};
     tk_expect_status("ga_path_init: 2^61 + 100 keys refused",
-                     ga_path_init(&ga_group_cga, GA_SCHEME_SCREW, n, t, k, NULL, w, sizeof w, &p), GA_ERR_ARG);
+                     ga_path_init(&ga_group_cga, GA_SCHEME_SCREW, n, t, k, NULL, w, sizeof w, &p),
+                     GA_ERR_ARG);
     tk_expect_status("ga_path_init_mat4: 2^61 + 100 keys refused",
                      ga_path_init_mat4(&ga_group_se3, GA_SCHEME_BIVECTOR, n, t, k4, NULL, w, sizeof w, &p),
                      GA_ERR_ARG);
