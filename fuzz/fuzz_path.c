@@ -385,7 +385,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 if (valid && sst == GA_OK && rst == GA_OK && ev == GA_EVAL_EXACT) {
                     double d = elem_dist(g, e, r), v[GA_GROUP_MAX_DIM];
                     double tk = k + 1 == ns ? t1 : t0 + (double)k * ((t1 - t0) / (double)(ns - 1));
-                    FZ_CHECK(ga_path_velocity(&p, tk, v) == GA_OK, "velocity at sample %zu", k);
+                    int vk = ga_path_velocity(&p, tk, v);
+                    FZ_CHECK(vk == GA_OK, "velocity at sample %zu: %d (%s on %s, t %.17g in [%.17g, %.17g])",
+                             k, vk, ga_scheme_name(p.scheme), g->name, tk, t0, t1);
                     double bound = 1e-9 + speed(g, r, v) * grid_gap(t0, t1);
                     FZ_CHECK(d <= bound, "exact stepping differs from direct by %.3g > %.3g (sample %zu)", d,
                              bound, k);
