@@ -392,13 +392,16 @@ static double local_frame(ga_mv A, ga_mv B, ga_vec3 *o, double *lambda)
         ga_vec3 d = ga__v3_sub(oa.centre, ob.centre);
         size = fmax(size, sqrt(ga__v3_dot(d, d)));
     }
-    /* not below 2^-10 |o|: a flat's rounding, a few hundred u |o| from its
-       construction, stays below 2^18 u ~ 3e-11 of lambda (two flats that are
-       the same read as such, however near their centres) */
-    size = fmax(size, 0x1p-10 * sqrt(ga__v3_dot(*o, *o)));
-    *lambda = isfinite(size) && size > 0.0 ? ldexp(1.0, ilogb(size)) : 1.0;
     int round = (ha && oa.kind >= GA_OBJECT_POINTPAIR) || (hb && ob.kind >= GA_OBJECT_POINTPAIR) ||
                 (!ha && is_round(A)) || (!hb && is_round(B));
+    /* not below 2^-10 |o| with a round, 2^-2 |o| for two flats: a flat's
+       rounding, u |o| times the condition of its construction (u D / S for
+       points S apart at D: 1e4 at D = 1e4, S = 1), stays below
+       GA_OBJECT_JOIN_TOL of lambda, so two flats that are the same up to it
+       read as such however near their centres (two flats have no size of
+       their own: the scene's is their distance from the origin) */
+    size = fmax(size, (round ? 0x1p-10 : 0x1p-2) * sqrt(ga__v3_dot(*o, *o)));
+    *lambda = isfinite(size) && size > 0.0 ? ldexp(1.0, ilogb(size)) : 1.0;
     double far = sqrt(ga__v3_dot(*o, *o)) / *lambda;
     return fmax(GA_OBJECT_JOIN_TOL, 64.0 * U * (round ? far * far : far));
 }

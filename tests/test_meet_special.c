@@ -46,7 +46,8 @@ static double iround(tk_rng *t, double D) { return floor(tk_range(t, -D, D)); }
    stored and only the constructions round. */
 static void scene_exact(tk_rng *t, double D)
 {
-    double k = D == 1.0 ? 1 : floor(tk_loguni(t, 1, D / 8)), X = iround(t, D), Y = iround(t, D), Z = iround(t, D);
+    double k = D == 1.0 ? 1 : floor(tk_loguni(t, 1, D / 8)), X = iround(t, D), Y = iround(t, D),
+           Z = iround(t, D);
     /* the circle of radius 5k about (X, Y, Z) in the plane z = Z, and the
        sphere of radius 13k about it */
     ga_vec3 q[6] = {iv(X + 3 * k, Y + 4 * k, Z), iv(X - 4 * k, Y + 3 * k, Z), iv(X + 5 * k, Y, Z),
@@ -56,7 +57,8 @@ static void scene_exact(tk_rng *t, double D)
                     iv(X + 5 * k, Y + 12 * k, Z), iv(X, Y, Z + 13 * k)};
     ga_mv C1 = ga_circle_from_points(q[0], q[1], q[2]);
     zero_meet("exact: circle with itself from other points", D, C1, ga_circle_from_points(q[3], q[4], q[5]));
-    ga_mv S1 = ga_sphere_from_points(p[0], p[1], p[2], p[3]), S2 = ga_sphere_from_points(p[4], p[5], p[6], p[7]);
+    ga_mv S1 = ga_sphere_from_points(p[0], p[1], p[2], p[3]),
+          S2 = ga_sphere_from_points(p[4], p[5], p[6], p[7]);
     zero_meet("exact: sphere with itself from other points", D, S1, S2);
     zero_meet("exact: sphere (points) with the dual sphere", D, S1, ga_sphere_dual(iv(X, Y, Z), 13 * k));
     /* the plane z = Z from three of the circle's points and from three others */
@@ -103,7 +105,8 @@ static void section_special(void)
             ga_mv P = ga_plane_from_points(a, b, d);
             zero_meet("plane with itself", D, P, P);
             zero_meet("line lying in a plane (its points)", D, ga_line_from_points(a, b), P);
-            zero_meet("two lines through a common point", D, ga_line_from_points(a, b), ga_line_from_points(a, x));
+            zero_meet("two lines through a common point", D, ga_line_from_points(a, b),
+                      ga_line_from_points(a, x));
             /* built about b instead of a, the plane carries the rounding of
                the differences of its points, some 10 u D / S of its size
                (measured: 77 u at D / S = 8): within the meet's tolerance of
@@ -188,8 +191,48 @@ static void section_general(void)
     tk_end(&nz);
 }
 
+/* ga_mv_meet_rel and ga_mv_join of a line and the same line through two
+   other of its points (computed, so off it by their rounding, u D of their
+   spacing S times D / S): the same line, not two lines meeting in a flat
+   point; and ga_mv_localize of a round built in world coordinates far out:
+   refused, as its local form would claim digits it does not hold. */
+static void section_rel(void)
+{
+    tk_rng t = {2727};
+    for (int k = 0; k < 5; k++) {
+        double D = dists[k];
+        char name[96];
+        snprintf(name, sizeof name, "D=%-5g line and itself from other points: meet_rel, join the line", D);
+        tk_check *c = tk_get(name);
+        for (int i = 0; i < 300; i++) {
+            /* points S apart, S from D / 1e4 (a construction condition of 1e4) to D */
+            double S = D == 1.0 ? 1.0 : tk_loguni(&t, D / 1e4, D);
+            ga_vec3 a = tk_scale(tk_unit(&t), D), u = tk_scale(tk_unit(&t), S);
+            double s1 = tk_range(&t, -3, 3), s2 = tk_range(&t, 4, 9);
+            ga_mv L1 = ga_line_from_points(a, add(a, u));
+            ga_mv L2 = ga_line_from_points(add(a, tk_scale(u, s1)), add(a, tk_scale(u, s2)));
+            ga_mv M, J;
+            ga_object om, oj;
+            int ok = ga_mv_meet_rel(L1, L2, &M) == GA_OK && ga_mv_join(L1, L2, &J) == GA_OK &&
+                     ga_object_from_mv(M, &om) == GA_OK && ga_object_from_mv(J, &oj) == GA_OK &&
+                     om.kind == GA_OBJECT_LINE && oj.kind == GA_OBJECT_LINE;
+            tk_add_bool(c, ok);
+        }
+    }
+    ga_mv Y;
+    tk_expect_status("localize a unit sphere built at 1e5 about its centre: refused",
+                     ga_mv_localize(ga_sphere_dual((ga_vec3){1e5, 0, 0}, 1), (ga_vec3){1e5, 0, 0}, 1, &Y),
+                     GA_ERR_PRECISION);
+    tk_expect_status("localize a sphere of radius 1 at 1 about its centre: GA_OK",
+                     ga_mv_localize(ga_sphere_dual((ga_vec3){1, 0, 0}, 1), (ga_vec3){1, 0, 0}, 1, &Y), GA_OK);
+    tk_expect_status("localize a plane built at 1e8: GA_OK",
+                     ga_mv_localize(ga_plane_dual((ga_vec3){0, 0, 1}, 1e8), (ga_vec3){0, 0, 1e8}, 1, &Y),
+                     GA_OK);
+}
+
 static const tk_section sections[] = {
     {"special", section_special, 0},
+    {"rel", section_rel, 0},
     {"general", section_general, 0},
 };
 

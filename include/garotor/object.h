@@ -195,7 +195,7 @@ GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
  *  sines: the singular values of the part of B's basis orthogonal to A's,
  *  modified Gram-Schmidt twice). Where the rounding that the move to (o,
  *  lambda) adds is larger, that is the tolerance: 64 u |o| / lambda for two
- *  flats (at most 64 u 2^10 ~ 7e-12, as lambda >= 2^-10 |o|), 64 u
+ *  flats (at most 64 u 2^3 ~ 6e-14, as lambda >= 2^-2 |o| there), 64 u
  *  (|o| / lambda)^2 with a round or a point (above 1e-9 for rounds some 400
  *  of their sizes from the origin: hold such scenes about a local origin).
  *  An input is a blade when the k-th smallest singular value of x -> x ^ X
@@ -224,7 +224,10 @@ GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
  *  The decisions are made about a local origin o (A's centre, or its point
  *  nearest the origin for a flat; B's if A has none) in units of a power of
  *  two lambda near the larger of the radii and the distance of the two
- *  centres, and at least 2^-10 |o| (ga_mv_localize), where the coefficients
+ *  centres, and at least 2^-10 |o| with a round, 2^-2 |o| for two flats (whose
+ *  rounding, u |o| times the condition of their construction, must stay
+ *  below the tolerance: a line and the same line through two other of its
+ *  points, 1e-4 |o| apart, are one line) (ga_mv_localize), where the coefficients
  *  are of the scene's size; GA_OBJECT_JOIN_TOL has the tolerance. A join
  *  that holds n (a plane of two circles) is returned without A ^ nbar parts,
  *  as ga_mv_localize does for flats. Status: GA_ERR_NOTFINITE for NaN/Inf in A or B (first),
