@@ -28,54 +28,57 @@ static ga_mv translator(ga_vec3 a)
     return T;
 }
 
-/* r += s a b over the blades of a (double-double) and b (double), skipping zeros */
-static void dd_gp_acc(const ga__eft_dd *a, const double *b, ga__eft_dd *r)
+/* the indices of the nonzero coefficients of x (n of them) */
+static int nonzero(const double *x, int *idx)
 {
-    for (int i = 0; i < 32; i++) {
-        if (a[i].hi == 0.0)
-            continue;
-        unsigned mi = ga_blade_mask(i);
-        for (int j = 0; j < 32; j++) {
-            if (b[j] == 0.0)
-                continue;
-            unsigned mj = ga_blade_mask(j);
-            ga__eft_dd p = ga__eft_dd_prod(a[i].hi, b[j]);
-            p = ga__eft_dd_norm(p.hi, p.lo + a[i].lo * b[j]);
-            if (gabl_sign(mi, mj) < 0.0)
-                p = ga__eft_dd_neg(p);
-            int k = gabl_index_of[mi ^ mj];
-            r[k] = ga__eft_dd_add(r[k], p);
-        }
-    }
+    int n = 0;
+    for (int i = 0; i < 32; i++)
+        if (x[i] != 0.0)
+            idx[n++] = i;
+    return n;
 }
 
 ga_mv gao_translate(ga_mv X, ga_vec3 a)
 {
-    ga_mv T = translator(a), Tr = ga_mv_reverse(T);
+    ga_mv T = translator(a);
     ga__eft_dd p[32] = {{0, 0}}, y[32] = {{0, 0}};
+    int it[32], ix[32], ip[32], nt = nonzero(T.c, it), nx = nonzero(X.c, ix);
     /* p = T X, each product exact (two-product), the sums double-double */
-    for (int i = 0; i < 32; i++) {
-        if (T.c[i] == 0.0)
-            continue;
-        unsigned mi = ga_blade_mask(i);
-        for (int j = 0; j < 32; j++) {
-            if (X.c[j] == 0.0)
-                continue;
-            unsigned mj = ga_blade_mask(j);
+    for (int u = 0; u < nt; u++) {
+        int i = it[u];
+        unsigned mi = gabl_mask[i];
+        for (int v = 0; v < nx; v++) {
+            int j = ix[v];
+            unsigned mj = gabl_mask[j];
             ga__eft_dd q = ga__eft_dd_prod(T.c[i], X.c[j]);
-            if (gabl_sign(mi, mj) < 0.0)
-                q = ga__eft_dd_neg(q);
             int k = gabl_index_of[mi ^ mj];
-            p[k] = ga__eft_dd_add(p[k], q);
+            p[k] = ga__eft_dd_add(p[k], gabl_sign(mi, mj) < 0.0 ? ga__eft_dd_neg(q) : q);
         }
     }
-    dd_gp_acc(p, Tr.c, y);
+    /* y = p ~T, ~T = 1 - (T - 1): the same blades, the bivectors negated */
+    int np = 0;
+    for (int i = 0; i < 32; i++)
+        if (p[i].hi != 0.0)
+            ip[np++] = i;
+    for (int u = 0; u < np; u++) {
+        int i = ip[u];
+        unsigned mi = gabl_mask[i];
+        for (int v = 0; v < nt; v++) {
+            int j = it[v];
+            unsigned mj = gabl_mask[j];
+            double tj = j == 0 ? T.c[j] : -T.c[j];
+            ga__eft_dd q = ga__eft_dd_prod(p[i].hi, tj);
+            q = ga__eft_dd_norm(q.hi, q.lo + p[i].lo * tj);
+            int k = gabl_index_of[mi ^ mj];
+            y[k] = ga__eft_dd_add(y[k], gabl_sign(mi, mj) < 0.0 ? ga__eft_dd_neg(q) : q);
+        }
+    }
     /* a translation keeps each grade: the grades X has none of stay 0 (the
        double-double sums leave ~u^2 of their terms there) */
     int has[6] = {0};
-    for (int i = 0; i < 32; i++) has[ga_blade_grade(i)] |= X.c[i] != 0.0;
+    for (int v = 0; v < nx; v++) has[gabl_popcount5(gabl_mask[ix[v]])] = 1;
     ga_mv r;
-    for (int i = 0; i < 32; i++) r.c[i] = has[ga_blade_grade(i)] ? y[i].hi + y[i].lo : 0.0;
+    for (int i = 0; i < 32; i++) r.c[i] = has[gabl_popcount5(gabl_mask[i])] ? y[i].hi + y[i].lo : 0.0;
     return r;
 }
 
@@ -85,9 +88,9 @@ ga_mv gao_op_exact(ga_mv a, ga_mv b)
     for (int i = 0; i < 32; i++) {
         if (a.c[i] == 0.0)
             continue;
-        unsigned mi = ga_blade_mask(i);
+        unsigned mi = gabl_mask[i];
         for (int j = 0; j < 32; j++) {
-            unsigned mj = ga_blade_mask(j);
+            unsigned mj = gabl_mask[j];
             if (b.c[j] == 0.0 || (mi & mj))
                 continue;
             ga__eft_dd q = ga__eft_dd_prod(a.c[i], b.c[j]);
@@ -114,10 +117,10 @@ ga_mv gao_abs_gp(ga_mv a, ga_mv b)
     for (int i = 0; i < 32; i++) {
         if (a.c[i] == 0.0)
             continue;
-        unsigned mi = ga_blade_mask(i);
+        unsigned mi = gabl_mask[i];
         for (int j = 0; j < 32; j++)
             if (b.c[j] != 0.0)
-                r.c[gabl_index_of[mi ^ ga_blade_mask(j)]] += fabs(a.c[i]) * fabs(b.c[j]);
+                r.c[gabl_index_of[mi ^ gabl_mask[j]]] += fabs(a.c[i]) * fabs(b.c[j]);
     }
     return r;
 }
@@ -131,7 +134,7 @@ ga_mv gao_abs_translate(ga_mv X, ga_vec3 a)
 /* the class of blade i: its grade + 6 (number of its factors e4, e5), 0..17 */
 static int blade_class(int i)
 {
-    unsigned m = ga_blade_mask(i);
+    unsigned m = gabl_mask[i];
     return gabl_popcount5(m) + 6 * gabl_popcount5(m & 0x18u);
 }
 
