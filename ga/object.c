@@ -151,14 +151,18 @@ static int read_round(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int strict, ga
 {
     ga_mv Fr = ga_mv_reverse(F), aX = gao_abs(X), aF = gao_abs(F);
     double f = ga_mv_sp(F, Fr), ef = 2.0 * abs_dot(aF, eF) + 8.0 * U * abs_dot(aF, aF);
-    if (!(ef <= 0.25 * fabs(f)))
-        return strict ? GA_ERR_PRECISION : GA_ERR_NOTBLADE;
+    if (strict && !(ef <= 0.25 * fabs(f)))
+        return GA_ERR_PRECISION;
+    if (f == 0.0)
+        return GA_ERR_NOTBLADE;
     ga_mv g = ga_mv_gp(X, Fr), sigma = ga_mv_scale(g, 1.0 / f);
     ga_mv eg = ga_mv_add(ga_mv_add(gao_abs_gp(e, aF), gao_abs_gp(aX, eF)),
                          ga_mv_scale(gao_abs_gp(aX, aF), 64.0 * U));
     ga_mv es = ga_mv_scale(ga_mv_add(eg, ga_mv_scale(gao_abs(sigma), ef)), 1.0 / (fabs(f) - ef));
     double off = gao_off_grade(sigma, 1), ss = ga_mv_maxabs(sigma);
-    if (!(off <= GA_POINT_TOL * ss))
+    /* beyond GA_POINT_TOL of sigma and beyond what the uncertainty makes of
+       it, X is no round (a rough reading takes sigma's vector part as it is) */
+    if (strict && !(off <= GA_POINT_TOL * ss) && !(off <= 4.0 * ga_mv_maxabs(es)))
         return GA_ERR_NOTBLADE;
     for (int i = 0; i < 32; i++) es.c[i] += off;
     ga_object flat;
@@ -188,13 +192,31 @@ static int read_round(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int strict, ga
 static int read_round_local(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int strict, ga_object *o)
 {
     ga_object r0;
-    if (read_round(X, e, F, eF, k, 0, &r0) != GA_OK || !finite3(r0.centre))
+    if (read_round(X, e, F, eF, k, 0, &r0) != GA_OK || !finite3(r0.centre) || !isfinite(r0.r2))
         return read_round(X, e, F, eF, k, strict, o);
+    /* about c0, in units of lambda, a power of two near the round's size
+       (and at least 1, the unit of L): x -> (x - c0) / lambda, n -> n /
+       lambda, nbar -> lambda nbar. There the round's parts are of one size,
+       and its uncertainty, carried in null coordinates, keeps the weight
+       apart from the n parts that the move to c0 makes large. */
     ga_vec3 c0 = r0.centre, mc0 = ga__v3_scale(c0, -1.0);
-    ga_mv Y = gao_translate(X, mc0);
-    Y = ga_mv_grade(Y, k);
-    ga_mv eY = ga_mv_add(gao_abs_translate(ga_mv_add(e, ga_mv_scale(gao_abs(X), 4.0 * U * U)), mc0),
-                         ga_mv_scale(gao_abs(Y), U));
+    double size = sqrt(fabs(r0.r2)), lam = size >= 1.0 && isfinite(size) ? ldexp(1.0, ilogb(size)) : 1.0;
+    ga_mv Y = ga_mv_grade(gao_translate(X, mc0), k);
+    /* X's uncertainty moved to c0, and the rounding of the move (u of each
+       coefficient of Y), in null coordinates */
+    ga_mv eN = gao_abs_translate_null(gao_unc_to_null(ga_mv_add(e, ga_mv_scale(gao_abs(X), 4.0 * U * U))),
+                                      mc0);
+    eN = ga_mv_add(eN, gao_unc_to_null(ga_mv_scale(gao_abs(Y), U)));
+    for (int i = 0; i < 32; i++) {
+        unsigned m = ga_blade_mask(i) & 0x18u;
+        if (m == 0x8u) { /* Y's pair A e4, A e5 as A ^ (hn n / lambda + hb lambda nbar) */
+            double hn = 0.5 * (Y.c[i] + Y.c[i + 1]) / lam, hb = 0.5 * (Y.c[i] - Y.c[i + 1]) * lam;
+            Y.c[i] = hn + hb;
+            Y.c[i + 1] = hn - hb;
+        }
+    }
+    /* to lambda's units, and the rounding of that (hn, hb above) */
+    ga_mv eY = ga_mv_add(gao_unc_from_null(eN, 1.0 / lam, lam), ga_mv_scale(gao_abs(Y), 2.0 * U));
     /* scale both by a power of two (exactly), Y's largest coefficient ~ 1 */
     int ex;
     frexp(ga_mv_maxabs(Y), &ex);
@@ -206,9 +228,11 @@ static int read_round_local(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int stri
     int st = read_round(Y, eY, FY, eFY, k, strict, o);
     if (st != GA_OK)
         return st;
-    ga_vec3 cl = o->centre;
+    ga_vec3 cl = ga__v3_scale(o->centre, lam);
     o->centre = ga__v3_add(c0, cl);
-    o->err += U * (norm3(c0) + norm3(cl));
+    o->err = o->err * lam + U * (norm3(c0) + norm3(cl));
+    o->r2 *= lam * lam;
+    o->r2_err = o->r2_err * lam * lam + 2.0 * U * fabs(o->r2);
     return GA_OK;
 }
 

@@ -131,6 +131,56 @@ ga_mv gao_abs_translate(ga_mv X, ga_vec3 a)
     return gao_abs_gp(gao_abs_gp(T, gao_abs(X)), T);
 }
 
+/* The pairs of blades A e4, A e5 (A without e4, e5): e4 at i, e5 at i + 1
+   in the canonical order; in null coordinates A ^ n and A ^ nbar, with
+   coefficients (p + q) / 2 and (p - q) / 2 (n = e4 + e5, nbar = e4 - e5). */
+static int pair_e4(int i) { return (gabl_mask[i] & 0x18u) == 0x8u; }
+static int pair_e5(int i) { return i > 0 && pair_e4(i - 1); }
+
+ga_mv gao_unc_to_null(ga_mv e)
+{
+    for (int i = 0; i < 32; i++)
+        if (pair_e4(i)) {
+            double h = 0.5 * (e.c[i] + e.c[i + 1]);
+            e.c[i] = e.c[i + 1] = h;
+        }
+    return e;
+}
+
+ga_mv gao_unc_from_null(ga_mv e, double kn, double kb)
+{
+    for (int i = 0; i < 32; i++)
+        if (pair_e4(i)) {
+            double h = e.c[i] * kn + e.c[i + 1] * kb;
+            e.c[i] = e.c[i + 1] = h;
+        }
+    return e;
+}
+
+ga_mv gao_abs_translate_null(ga_mv e, ga_vec3 a)
+{
+    ga_mv r = ga_mv_zero();
+    for (int j = 0; j < 32; j++) {
+        if (e.c[j] == 0.0)
+            continue;
+        /* the null blade of slot j in e4/e5 coefficients, moved exactly */
+        ga_mv B = ga_mv_zero();
+        B.c[j] = 1.0;
+        if (pair_e4(j))
+            B.c[j + 1] = 1.0; /* A ^ n */
+        else if (pair_e5(j))
+            B.c[j - 1] = 1.0, B.c[j] = -1.0; /* A ^ nbar */
+        ga_mv Y = gao_translate(B, a);
+        for (int i = 0; i < 32; i++) {
+            double y = pair_e4(i) ? 0.5 * (Y.c[i] + Y.c[i + 1])
+                     : pair_e5(i) ? 0.5 * (Y.c[i - 1] - Y.c[i])
+                                  : Y.c[i];
+            r.c[i] += e.c[j] * fabs(y);
+        }
+    }
+    return r;
+}
+
 /* the class of blade i: its grade + 6 (number of its factors e4, e5), 0..17 */
 static int blade_class(int i)
 {

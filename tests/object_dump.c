@@ -20,8 +20,8 @@ static void dump(const char *name, double D, ga_mv X)
     int st = ga_object_from_mv(X, &o);
     printf("%s %g", name, D);
     for (int i = 0; i < 32; i++) printf(" %a", X.c[i]);
-    printf(" %d %d %d %a %a %a %a %a %a %a %a %a %a\n", st, o.kind, o.reality, o.centre.x, o.centre.y, o.centre.z,
-           o.direction.x, o.direction.y, o.direction.z, o.r2, o.err, o.r2_err, o.angle_err);
+    printf(" %d %d %d %a %a %a %a %a %a %a %a %a %a\n", st, o.kind, o.reality, o.centre.x, o.centre.y,
+           o.centre.z, o.direction.x, o.direction.y, o.direction.z, o.r2, o.err, o.r2_err, o.angle_err);
 }
 
 int main(void)
@@ -46,10 +46,13 @@ int main(void)
             double r2 = S * tk_range(&t, 0.2, 1);
             double dist[3] = {tk_range(&t, fabs(r - r2), r + r2), r + r2, (r + r2) * tk_range(&t, 1.1, 3)};
             for (int j = 0; j < 3; j++)
-                dump("meet-spheres", D, ga_mv_meet(ga_sphere_dual(c, r), ga_sphere_dual(add(c, tk_scale(e, dist[j])), r2)));
-            ga_mv L = ga_line_from_points(add(c, tk_scale(e, 0.5 * r)), add(c, tk_scale(tk_unit(&t), 0.8 * r)));
+                dump("meet-spheres", D,
+                     ga_mv_meet(ga_sphere_dual(c, r), ga_sphere_dual(add(c, tk_scale(e, dist[j])), r2)));
+            ga_mv L = ga_line_from_points(add(c, tk_scale(e, 0.5 * r)),
+                                          add(c, tk_scale(tk_unit(&t), 0.8 * r)));
             dump("meet-line-sphere", D, ga_mv_meet(L, ga_sphere_dual(c, r)));
-            dump("meet-plane-sphere", D, ga_mv_meet(ga_plane_from_points(p[0], p[1], p[3]), ga_sphere_dual(c, r)));
+            dump("meet-plane-sphere", D,
+                 ga_mv_meet(ga_plane_from_points(p[0], p[1], p[3]), ga_sphere_dual(c, r)));
             dump("meet-line-plane", D, ga_mv_meet(L, ga_plane_from_points(p[0], p[1], p[2])));
         }
     }

@@ -44,6 +44,18 @@ ga_mv gao_op_exact(ga_mv a, ga_mv b);
 /* The magnitudes of T_a X ~T_a: the sandwich of |X| by |T_a| with every sign
    positive (a bound of what a perturbation of X becomes). */
 ga_mv gao_abs_translate(ga_mv X, ga_vec3 a);
+/* Uncertainties in null coordinates: the slot of A e4 holds that of the
+   coefficient of A ^ n, the slot of A e5 that of A ^ nbar (n = e4 + e5,
+   nbar = e4 - e5). A translation is triangular there (n fixed, E -> E + n,
+   nbar -> nbar + E + n), so the magnitudes of its action bound the moved
+   uncertainty without the t^2 that independent e4, e5 parts would add to the
+   weight. gao_unc_from_null scales the n parts by kn and the nbar parts by
+   kb (x -> x / lambda: kn = 1 / lambda, kb = lambda) and gives the e4, e5
+   parts each the sum. */
+ga_mv gao_unc_to_null(ga_mv e);
+ga_mv gao_unc_from_null(ga_mv e, double kn, double kb);
+/* sum_j e_j |T_a b_j ~T_a| in null coordinates, b_j the null blades */
+ga_mv gao_abs_translate_null(ga_mv e, ga_vec3 a);
 /* sum |a_i| |b_j| over the products of blades i and j, at the index of their
    product: a bound of every term of a b, a ^ b, a _| b at that blade */
 ga_mv gao_abs_gp(ga_mv a, ga_mv b);
