@@ -36,5 +36,6 @@
 #include "mat4.h"
 #include "group.h"
 #include "path.h"
+#include "fit.h"
 
 #endif
