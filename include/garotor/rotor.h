@@ -277,7 +277,7 @@ GA_API ga_rotor ga_rotor_from_dualquat(ga_dualquat d);
  *  the sum of the logs and of the products M^-1 R_i. The mean is
  *  unique where the rotations lie in a ball of radius pi/2 (Pennec and
  *  Arsigny), and the iteration converges linearly, the faster the closer
- *  the rotors (docs/rotors.md has the rates); where the mean is not unique
+ *  the rotors (docs/conformal.md, "More algebra", has the rates); where the mean is not unique
  *  (rotations spread over more than a half turn) it returns one of them.
  *  GA_ERR_DOMAIN where it has not converged after GA_ROTOR_MEAN_ITER
  *  iterations. Refuses:
