@@ -2,7 +2,7 @@
  * points, by the linear method of the conformal model (Dorst, "Total least
  * squares fitting of k-spheres in n-D Euclidean space using an
  * (n+2)-D isometric representation", J. Math. Imaging Vis. 50, 2014;
- * Hildenbrand, "Foundations of Geometric Algebra Computing", 2013, §10).
+ * Hildenbrand, "Foundations of Geometric Algebra Computing", 2013).
  *
  * A dual sphere or plane s = m + a n + b nbar (m Euclidean) has
  * F(x).s = b |x|^2 + m.x - a, zero on the object, and s^2 = |m|^2 + 4 a b

@@ -4,7 +4,7 @@
  *
  * The general inverse is the closed form of Hitzer and Sangwine for algebras
  * of five dimensions ("Multivector and multivector matrix inverses in real
- * Clifford algebras", Appl. Math. Comput. 311, 2017, §8): with m^ the grade
+ * Clifford algebras", Appl. Math. Comput. 311, 2017): with m^ the grade
  * involution, ~m the reverse and m- the Clifford conjugate,
  *
  *     B = m m- m^ ~m     (grades 0, 1 and 4 only),
@@ -15,6 +15,12 @@
  * Since m^ ~m is the grade involution of P = m m-, B = P P^ and the
  * numerator is m- P^ C: four products. tests/algebra_check.py checks the
  * identity in exact rational arithmetic.
+ *
+ * ga_mv_inverse takes ~m / (m ~m) where m ~m is a scalar to its rounding
+ * (versors and blades, as before), this closed form where its d is well
+ * above its rounding, Gaussian elimination otherwise (near a zero divisor),
+ * and then Newton steps to a residual at the rounding of a; mv.h states the
+ * criteria.
  */
 #include <garotor/mv.h>
 
@@ -227,7 +233,7 @@ ga_mv ga_mv_commutator(ga_mv a, ga_mv b)
 
 /* ---- projection and rejection ------------------------------------------------- */
 
-/* The right contraction x |_ y = (~y _| ~x)~ (DFM §3.5.5) */
+/* The right contraction x |_ y = (~y _| ~x)~ */
 static ga_mv rc(ga_mv x, ga_mv y) { return ga_mv_reverse(ga_mv_lc(ga_mv_reverse(y), ga_mv_reverse(x))); }
 
 ga_status ga_mv_project(ga_mv A, ga_mv B, ga_mv *out)

@@ -156,9 +156,9 @@ GA_API double ga_mv_norm2(ga_mv a);
 GA_API double ga_mv_norm(ga_mv a);
 /** The multiple of u in ga_mv_inverse's tests of "to its rounding". */
 #define GA_MV_INVERSE_TOL 64
-/** The inverse of any invertible multivector a: a a^-1 = a^-1 a = 1. Worked
- *  on a 2^-e (exact), e the exponent of a's largest coefficient, in one of
- *  two ways:
+/** The inverse of any invertible multivector a: a a^-1 = a^-1 a = 1 (one
+ *  inverse serves both sides). Worked on a 2^-e (exact), e the exponent of
+ *  a's largest coefficient, in one of two ways:
  *   - a versor or a blade, where a ~a is a scalar s to its rounding (every
  *     other coefficient of a ~a at most GA_MV_INVERSE_TOL u sbar, sbar =
  *     sum of a_i^2, which bounds the terms each coefficient sums): ~a / s.
@@ -166,16 +166,22 @@ GA_API double ga_mv_norm(ga_mv a);
  *     or versor, to its rounding). a a^-1 = 1 to 2 GA_MV_INVERSE_TOL u
  *     sbar / |s|;
  *   - any other multivector: the closed form of Hitzer and Sangwine for
- *     five dimensions (2017, §8): with P = a a- (a- the Clifford
+ *     five dimensions (2017): with P = a a- (a- the Clifford
  *     conjugate, ^ the grade involution), B = P P^ (grades 0, 1, 4) and C = B
  *     with grades 1 and 4 negated, d = <B C>_0 is a scalar and a^-1 =
- *     a- P^ C / d; then one Newton step r + r (1 - a r). GA_ERR_SINGULAR
- *     where |d| <= GA_MV_INVERSE_TOL u dbar, dbar the same chain of products
- *     taken with every coefficient and sign positive (which bounds what the
- *     rounding of a and of the products can make of d): a zero divisor to
- *     its rounding. a a^-1 = 1 to u |a|_1 |a^-1|_1 (|x|_1: the sum of the
- *     absolute coefficients), so a^-1 is within u |a|_1 |a^-1|_1^2 of the
- *     exact inverse.
+ *     a- P^ C / d. Where |d| is at most GA_MV_INVERSE_TOL times a
+ *     first-order bound of what the rounding of a (u per coefficient) and
+ *     of the products can make of it (d goes as the eighth power of a's
+ *     distance from the nearest zero divisor, and is lost to rounding long
+ *     before a is singular), Gaussian elimination with partial pivoting on
+ *     the 32 x 32 matrix of x -> a x instead. Then Newton steps r + r (1 - a r),
+ *     at most three, until the residual 1 - a r, as computed, is at most
+ *     u |a|_1 |r|_1 (|x|_1: the sum of the absolute coefficients).
+ *     GA_ERR_SINGULAR where a pivot is at most 32 u |a|_max or no step
+ *     reaches that residual: a is a zero divisor to its rounding (within a
+ *     few u |a| of one), its inverse not determined in double. So a a^-1 = 1
+ *     to u |a|_1 |a^-1|_1, a^-1 is within u |a|_1 |a^-1|_1^2 of the exact
+ *     inverse, and a^-1 a = 1 to u (|a|_1 |a^-1|_1)^2.
  *  Also GA_ERR_SINGULAR where the inverse overflows, GA_ERR_NOTFINITE on
  *  NaN/Inf. */
 GA_API GA_NODISCARD ga_status ga_mv_inverse(ga_mv a, ga_mv *out);
@@ -275,7 +281,7 @@ GA_API GA_NODISCARD ga_status ga_mv_sqrt(ga_mv R, ga_mv *out);
  *  coefficients, it has the outer product's rounding. ganja.js's `&` (Vee);
  *  docs/conventions.md states the convention. No status. */
 GA_API ga_mv ga_mv_regressive(ga_mv a, ga_mv b);
-/** The commutator product a x b = (a b - b a) / 2 (DFM §8.1; for bivectors
+/** The commutator product a x b = (a b - b a) / 2 (for bivectors
  *  the Lie bracket of the rotors' algebra, a bivector again). No status. */
 GA_API ga_mv ga_mv_commutator(ga_mv a, ga_mv b);
 /** The projection of a blade A onto an invertible blade B, (A _| B) _| B^-1
