@@ -223,6 +223,22 @@ static void section_inverse_singular(void)
         ga_mv near = ga_mv_add(ga_mv_gp(z, Y), ga_mv_scale(rand_mv(&rng), 1e-6));
         inverse_case("1e-6 from a zero divisor", near, -1);
     }
+    /* the way from a zero divisor z Y to its rounding: eps W added, eps from
+       1e-3 to 1e-12 of |z Y| (~1) is invertible (condition up to ~1e12),
+       eps = 2^-53, half an ulp of the coefficients near 1, is a zero
+       divisor to its rounding */
+    for (int k = 3; k <= 12; k++)
+        for (int t = 0; t < 100; t++) {
+            ga_mv Y = rand_mv(&rng), W = rand_mv(&rng);
+            inverse_case("1e-3..1e-12 from a zero divisor",
+                         ga_mv_add(ga_mv_gp(one_e45, Y), ga_mv_scale(W, pow(10, -k))), -1);
+        }
+    for (int t = 0; t < 1000; t++) {
+        ga_mv Y = rand_mv(&rng), W = rand_mv(&rng), out;
+        check_status("u/2 from a zero divisor: GA_ERR_SINGULAR",
+                     ga_mv_inverse(ga_mv_add(ga_mv_gp(one_e45, Y), ga_mv_scale(W, 0x1p-53)), &out),
+                     GA_ERR_SINGULAR);
+    }
     ga_mv out = ga_mv_scalar(42), bad = ga_mv_scalar(1);
     /* an inverse beyond DBL_MAX */
     check_status("1e-310 (its inverse overflows): GA_ERR_SINGULAR", ga_mv_inverse(ga_mv_scalar(1e-310), &out),
