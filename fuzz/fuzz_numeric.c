@@ -572,7 +572,7 @@ static void mv_any(const ga_mv *X, double lambda)
     st = ga_mv_localize(*X, og, lambda, &Y);
     FZ_CHECK(!fin || !isfinite(lambda) ? st == GA_ERR_NOTFINITE
              : !lam_ok                 ? st == GA_ERR_ARG
-                                       : (st == GA_OK || st == GA_ERR_DOMAIN),
+                                       : (st == GA_OK || st == GA_ERR_DOMAIN || st == GA_ERR_PRECISION),
              "localize, lambda %.17g: %d", lambda, st);
     if (st == GA_OK)
         FZ_CHECK(fz_all_finite(Y.c, 32), "localize: GA_OK with a non-finite result");

@@ -5,6 +5,7 @@
 
 #include <math.h>
 
+#include "internal/object.h"
 #include "internal/vec3.h"
 
 ga_mv ga_mv_n(void) { return ga_mv_vector(0, 0, 0, 1, 1); }
@@ -15,26 +16,12 @@ ga_mv ga_mv_i3(void) { return ga_mv_blade(GA_BLADE_E123); }
 ga_mv ga_mv_i5(void) { return ga_mv_blade(GA_BLADE_E12345); }
 ga_mv ga_vec3_to_mv(ga_vec3 x) { return ga_mv_vector(x.x, x.y, x.z, 0, 0); }
 
-/* X scaled by a power of 2 (exactly) so that its largest coefficient is in
- * [1/2, 1). Every object here is homogeneous (X and k X are the same object),
- * so the read-backs work on this copy: without it, squares of coefficients
- * beyond ~1e154 overflowed (a dual plane 1e200 (m + d n) read back a zero
- * normal with GA_OK) and below ~1e-154 underflowed (found by
- * fuzz/fuzz_numeric; fuzz/regress/numeric/plane-params-huge-coefficients
- * replays it). X must be finite. */
-static ga_mv unit_scaled(ga_mv X)
-{
-    double s = ga_mv_maxabs(X);
-    if (s == 0.0)
-        return X;
-    int e;
-    frexp(s, &e);
-    for (int i = 0; i < 32; i++) X.c[i] = ldexp(X.c[i], -e);
-    return X;
-}
-
-/* Largest coefficient of X outside grade k. */
-static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_mv_sub(X, ga_mv_grade(X, k))); }
+/* Every object is homogeneous (X and k X are the same object), so the
+   read-backs work on gao_unit_scaled(X): without it, squares of coefficients
+   beyond ~1e154 overflowed (a dual plane 1e200 (m + d n) read back a zero
+   normal with GA_OK) and below ~1e-154 underflowed (found by
+   fuzz/fuzz_numeric; fuzz/regress/numeric/plane-params-huge-coefficients
+   replays it). */
 
 /* (x^2 n + 2 lambda x - lambda^2 nbar) / (2 lambda^2), coefficient by coefficient:
    e_i: x_i / lambda; e4: (x^2 - lambda^2) / (2 lambda^2); e5: (x^2 + lambda^2) / (2 lambda^2). */
@@ -67,9 +54,9 @@ static int down_unit(ga_mv X, double *w_out, ga_vec3 *y_out)
 {
     if (!ga_mv_isfinite(X))
         return GA_ERR_NOTFINITE;
-    X = unit_scaled(X);
+    X = gao_unit_scaled(X);
     double s = ga_mv_maxabs(X);
-    if (s == 0.0 || off_grade(X, 1) > GA_POINT_TOL * s)
+    if (s == 0.0 || gao_off_grade(X, 1) > GA_POINT_TOL * s)
         return GA_ERR_NOTPOINT;
     ga_vec3 e = ga__v3_of_mv(X);
     double x4 = X.c[GA_BLADE_E4], x5 = X.c[GA_BLADE_E5];
@@ -115,21 +102,13 @@ ga_status ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 
 
 /* ---- objects ---------------------------------------------------------------- */
 
-/* T_a X ~T_a, T_a = 1 + n a / 2 (Wareham-Lasenby §2.2): moves every object by a
-   exactly, and adds the large e4/e5 terms of a far object without cancelling them. */
-static ga_mv translated(ga_mv X, ga_vec3 a)
-{
-    ga_mv T = ga_mv_scale(ga_mv_op(ga_mv_n(), ga_vec3_to_mv(a)), 0.5);
-    T.c[GA_BLADE_SCALAR] = 1.0;
-    return ga_mv_gp(ga_mv_gp(T, X), ga_mv_reverse(T));
-}
-
 /* Each object is built about its first point a and then translated to it:
    F(a) ^ F(b) ^ ... = T_a (F(0) ^ F(b - a) ^ ...) ~T_a, as T_a F(x) ~T_a = F(x + a).
    Wedged directly, the coefficients (|x|^2 -+ 1)/2 of far points cancelled
    (the plane z = 1e5 read back d = 99999.928); this way the object is as
-   accurate as its storage (object.h). */
-static ga_mv about(ga_vec3 a, ga_mv local) { return translated(local, a); }
+   accurate as its storage (object.h): the translation is exact, rounded once
+   (gao_translate), so a flat comes out with its e4 and e5 parts equal. */
+static ga_mv about(ga_vec3 a, ga_mv local) { return gao_translate(local, a); }
 ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b)
 {
     return about(a, ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a))));
@@ -187,13 +166,13 @@ static int dual_vector(ga_mv X, ga_mv *v)
 {
     if (!ga_mv_isfinite(X))
         return GA_ERR_NOTFINITE;
-    X = unit_scaled(X);
+    X = gao_unit_scaled(X);
     double s = ga_mv_maxabs(X);
     if (s == 0.0)
         return GA_ERR_NOTBLADE;
-    if (off_grade(X, 1) <= GA_POINT_TOL * s)
+    if (gao_off_grade(X, 1) <= GA_POINT_TOL * s)
         *v = ga_mv_grade(X, 1);
-    else if (off_grade(X, 4) <= GA_POINT_TOL * s)
+    else if (gao_off_grade(X, 4) <= GA_POINT_TOL * s)
         *v = ga_mv_grade(ga_mv_undual(X), 1);
     else
         return GA_ERR_NOTBLADE;
@@ -266,9 +245,9 @@ ga_status ga_line_params(ga_mv L, ga_vec3 *direction, ga_vec3 *closest)
         return GA_ERR_ARG;
     if (!ga_mv_isfinite(L))
         return GA_ERR_NOTFINITE;
-    L = unit_scaled(L);
+    L = gao_unit_scaled(L);
     double s = ga_mv_maxabs(L);
-    if (s == 0.0 || off_grade(L, 3) > GA_POINT_TOL * s)
+    if (s == 0.0 || gao_off_grade(L, 3) > GA_POINT_TOL * s)
         return GA_ERR_NOTBLADE;
     /* L = w (u e45 + B ^ n), B = p ^ u: u from the e_i45, B from the e_ij4 and e_ij5 */
     ga_vec3 u = ga__v3(L.c[GA_BLADE_E145], L.c[GA_BLADE_E245], L.c[GA_BLADE_E345]);
@@ -299,7 +278,7 @@ static int carrier(ga_mv X, ga_mv flat, ga_vec3 *centre, double *radius)
         return GA_ERR_NOTBLADE;
     ga_mv sigma = ga_mv_gp(X, inv);
     double s = ga_mv_maxabs(sigma);
-    if (s == 0.0 || off_grade(sigma, 1) > GA_POINT_TOL * s)
+    if (s == 0.0 || gao_off_grade(sigma, 1) > GA_POINT_TOL * s)
         return GA_ERR_NOTBLADE;
     return dual_sphere_params(ga_mv_grade(sigma, 1), centre, radius);
 }
@@ -310,9 +289,9 @@ ga_status ga_pointpair_points(ga_mv PP, ga_vec3 *a, ga_vec3 *b)
         return GA_ERR_ARG;
     if (!ga_mv_isfinite(PP))
         return GA_ERR_NOTFINITE;
-    PP = unit_scaled(PP);
+    PP = gao_unit_scaled(PP);
     double s = ga_mv_maxabs(PP);
-    if (s == 0.0 || off_grade(PP, 2) > GA_POINT_TOL * s)
+    if (s == 0.0 || gao_off_grade(PP, 2) > GA_POINT_TOL * s)
         return GA_ERR_NOTBLADE;
     ga_mv L = ga_mv_op(PP, ga_mv_n());
     ga_vec3 u, p, c;
@@ -337,9 +316,9 @@ ga_status ga_circle_params(ga_mv C, ga_vec3 *centre, double *radius, ga_vec3 *no
         return GA_ERR_ARG;
     if (!ga_mv_isfinite(C))
         return GA_ERR_NOTFINITE;
-    C = unit_scaled(C);
+    C = gao_unit_scaled(C);
     double s = ga_mv_maxabs(C);
-    if (s == 0.0 || off_grade(C, 3) > GA_POINT_TOL * s)
+    if (s == 0.0 || gao_off_grade(C, 3) > GA_POINT_TOL * s)
         return GA_ERR_NOTBLADE;
     ga_mv P = ga_mv_op(C, ga_mv_n());
     ga_vec3 m, c;

@@ -15,37 +15,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The canonical order of docs/conventions.md, as bit masks (grade first, then lexicographic). */
-static const unsigned char blade_mask[32] = {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x03, 0x05, 0x09, 0x11, 0x06,
-                                             0x0a, 0x12, 0x0c, 0x14, 0x18, 0x07, 0x0b, 0x13, 0x0d, 0x15, 0x19,
-                                             0x0e, 0x16, 0x1a, 0x1c, 0x0f, 0x17, 0x1b, 0x1d, 0x1e, 0x1f};
+#include "internal/blade.h"
 
 static const char *const blade_names[32] = {
     "1",    "e1",   "e2",   "e3",   "e4",    "e5",    "e12",   "e13",   "e14",   "e15",   "e23",
     "e24",  "e25",  "e34",  "e35",  "e45",   "e123",  "e124",  "e125",  "e134",  "e135",  "e145",
     "e234", "e235", "e245", "e345", "e1234", "e1235", "e1245", "e1345", "e2345", "e12345"};
 
-static int popcount5(unsigned m)
-{
-    int k = 0;
-    for (; m; m &= m - 1) k++;
-    return k;
-}
-
-/* Sign of the product of blades a and b (as masks): reordering, then metric. */
-static double blade_sign(unsigned a, unsigned b)
-{
-    int swaps = 0;
-    /* each vector of a must move past every vector of b with a lower index */
-    for (unsigned x = a >> 1; x; x >>= 1) swaps += popcount5(x & b);
-    if ((a & b) & 0x10) /* e5 e5 = -1 */
-        swaps++;
-    return (swaps & 1) ? -1.0 : 1.0;
-}
-
-int ga_blade_grade(int i) { return (i >= 0 && i < 32) ? popcount5(blade_mask[i]) : -1; }
+int ga_blade_grade(int i) { return (i >= 0 && i < 32) ? gabl_popcount5(gabl_mask[i]) : -1; }
 const char *ga_blade_name(int i) { return (i >= 0 && i < 32) ? blade_names[i] : "?"; }
-unsigned ga_blade_mask(int i) { return (i >= 0 && i < 32) ? blade_mask[i] : 0u; }
+unsigned ga_blade_mask(int i) { return (i >= 0 && i < 32) ? gabl_mask[i] : 0u; }
 
 ga_mv ga_mv_zero(void)
 {
@@ -197,21 +176,18 @@ ga_mv ga_mv_lc(ga_mv a, ga_mv b)
    not a hot path). */
 static ga_mv dot_product(ga_mv a, ga_mv b, int hestenes)
 {
-    /* the inverse of blade_mask: the index of each mask */
-    static const unsigned char index_of[32] = {0, 1, 2,  6,  3,  7,  10, 16, 4,  8,  11, 17, 13, 19, 22, 26,
-                                               5, 9, 12, 18, 14, 20, 23, 27, 15, 21, 24, 28, 25, 29, 30, 31};
     ga_mv r = {{0}};
     for (int i = 0; i < 32; i++) {
-        unsigned ma = blade_mask[i];
-        int ga = popcount5(ma);
+        unsigned ma = gabl_mask[i];
+        int ga = gabl_popcount5(ma);
         if (hestenes && ga == 0)
             continue;
         for (int j = 0; j < 32; j++) {
-            unsigned mb = blade_mask[j];
-            int gb = popcount5(mb);
+            unsigned mb = gabl_mask[j];
+            int gb = gabl_popcount5(mb);
             if ((hestenes && gb == 0) || ((ma & mb) != ma && (ma & mb) != mb))
                 continue;
-            r.c[index_of[ma ^ mb]] += blade_sign(ma, mb) * a.c[i] * b.c[j];
+            r.c[gabl_index_of[ma ^ mb]] += gabl_sign(ma, mb) * a.c[i] * b.c[j];
         }
     }
     return r;
@@ -224,14 +200,14 @@ double ga_mv_sp(ga_mv a, ga_mv b)
 {
     /* <ab>_0 pairs each blade with itself */
     double s = 0.0;
-    for (int i = 0; i < 32; i++) s += blade_sign(blade_mask[i], blade_mask[i]) * a.c[i] * b.c[i];
+    for (int i = 0; i < 32; i++) s += gabl_sign(gabl_mask[i], gabl_mask[i]) * a.c[i] * b.c[i];
     return s;
 }
 
 /* Multiply the grade-k part by sign[k]. */
 static ga_mv grade_signs(ga_mv a, const double sign[6])
 {
-    for (int i = 0; i < 32; i++) a.c[i] *= sign[popcount5(blade_mask[i])];
+    for (int i = 0; i < 32; i++) a.c[i] *= sign[gabl_popcount5(gabl_mask[i])];
     return a;
 }
 
@@ -256,7 +232,7 @@ ga_mv ga_mv_conjugate(ga_mv a)
 ga_mv ga_mv_grade(ga_mv a, int k)
 {
     for (int i = 0; i < 32; i++)
-        if (popcount5(blade_mask[i]) != k)
+        if (gabl_popcount5(gabl_mask[i]) != k)
             a.c[i] = 0.0;
     return a;
 }

@@ -8,60 +8,207 @@
 #include <math.h>
 
 #include "internal/eft.h"
+#include "internal/object.h"
 #include "internal/vec3.h"
 
-static double off_grade(ga_mv X, int k) { return ga_mv_maxabs(ga_mv_sub(X, ga_mv_grade(X, k))); }
+#define U GAO_U
 
-/* X scaled by a power of two so that max |coefficient| is in [1/2, 1) (exact). */
-static ga_mv unit_scaled(ga_mv X)
+static int finite3(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+static double norm3(ga_vec3 a) { return sqrt(ga__v3_dot(a, a)); }
+static ga_vec3 abs3(ga_vec3 a) { return ga__v3(fabs(a.x), fabs(a.y), fabs(a.z)); }
+
+/* What a vanishing part (v.n of a dual vector, X ^ n of a blade) says about
+   the kind: FLAT when it is exactly zero (the constructors of conformal.h and
+   the meets of flats leave it so), ROUND when some coefficient is beyond its
+   uncertainty e, UNSURE when every one is within it: that object is a flat
+   and a round alike to the accuracy of its input (a unit sphere 1e8 from the
+   origin, a plane moved by arithmetic that left rounding in e4 - e5). */
+enum { FLAT, ROUND, UNSURE };
+static int flat_kind(ga_mv part, ga_mv e)
 {
-    int e;
-    frexp(ga_mv_maxabs(X), &e);
-    for (int i = 0; i < 32; i++) X.c[i] = ldexp(X.c[i], -e);
-    return X;
+    int zero = 1, within = 1;
+    for (int i = 0; i < 32; i++) {
+        if (part.c[i] != 0.0)
+            zero = 0;
+        if (fabs(part.c[i]) > e.c[i])
+            within = 0;
+    }
+    return zero ? FLAT : within ? UNSURE : ROUND;
 }
 
-/* Rounding bound of the weight of a round read about the origin: the e4 and e5
-   coefficients, up to s, are stored to u s, and w = v5 - v4 is their difference,
-   so every length read as (coefficient) / w is off by about 8 u s / |w| times
-   its size (8: the few operations of a construction or meet). */
-#define U 1.1102230246251565e-16
-static int round_precise(double s, double w) { return 8.0 * U * s <= GA_OBJECT_TOL * fabs(w); }
-/* A part that vanishes for a flat (v.n of a dual vector, X ^ n of a blade) is
-   zero when at most 64 u s, rounding of a flat built in a few dozen operations;
-   above that and below GA_POINT_TOL s it is a round too far out to tell from a
-   flat at all: GA_ERR_PRECISION, where conformal.h's read-backs say "flat". */
-static int flat_part(double part, double s)
-{
-    return part <= 64.0 * U * s ? 1 : part <= GA_POINT_TOL * s ? -1 : 0;
-}
-
-/* A dual vector v (sphere or plane) into o. */
-static int read_dual(ga_mv v, int strict, ga_object *o)
+/* A dual vector v (sphere or plane), each coefficient known to e, into o with
+   its bounds (first order, the factor f covering the second where the weight
+   is known to 1/4 of itself or better). */
+static int read_dual(ga_mv v, ga_mv e, int strict, ga_object *o)
 {
     double s = ga_mv_maxabs(v), w = v.c[GA_BLADE_E5] - v.c[GA_BLADE_E4];
-    ga_vec3 m = ga__v3_of_mv(v);
-    int flat = flat_part(fabs(w), s);
-    if (flat < 0 && strict)
-        return GA_ERR_PRECISION;
-    if (flat > 0) { /* v.n = 0: a plane w (m + d n) */
-        double len = sqrt(ga__v3_dot(m, m));
+    double e4 = e.c[GA_BLADE_E4], e5 = e.c[GA_BLADE_E5];
+    ga_vec3 m = ga__v3_of_mv(v), em = ga__v3_of_mv(e);
+    ga_mv wpart = ga_mv_zero(), we = ga_mv_zero();
+    wpart.c[GA_BLADE_E5] = w;
+    double dw = e4 + e5 + U * fabs(w); /* w's uncertainty, and its rounding */
+    we.c[GA_BLADE_E5] = dw;
+    int kind = flat_kind(wpart, we);
+    if (kind == UNSURE) {
+        if (strict)
+            return GA_ERR_PRECISION;
+        kind = fabs(w) <= 64.0 * U * s ? FLAT : ROUND; /* a rough reading */
+    }
+    if (kind == FLAT) { /* v.n = 0: a plane w (m + d n) */
+        double len = norm3(m);
         if (!(len > GA_POINT_TOL * s)) {
             o->kind = GA_OBJECT_EMPTY; /* n: the plane at infinity */
             return GA_OK;
         }
+        double d = 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len, dm = norm3(em);
         o->kind = GA_OBJECT_PLANE;
         o->direction = ga__v3_scale(m, 1.0 / len);
-        o->centre = ga__v3_scale(o->direction, 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len);
+        o->centre = ga__v3_scale(o->direction, d);
+        o->angle_err = dm / len + 4.0 * U;
+        o->err = (0.5 * (e4 + e5) + fabs(d) * dm) / len + fabs(d) * o->angle_err + 4.0 * U * fabs(d);
         return GA_OK;
     }
+    if (strict && !(dw <= 0.25 * fabs(w)))
+        return GA_ERR_PRECISION; /* the weight is not known to 1/4 of itself */
+    double q = fmin(dw / fabs(w), 0.5), f = 1.0 / ((1.0 - q) * (1.0 - q));
     /* w (F(c) - (r^2/2) n): c = <v>_E / w, r^2 = |c|^2 - (v4 + v5) / w (conformal.h) */
-    ga_vec3 c = ga__v3_scale(m, 1.0 / w);
-    if (strict && !round_precise(s, w))
-        return GA_ERR_PRECISION;
+    ga_vec3 c = ga__v3_scale(m, 1.0 / w), ac = abs3(c);
+    double P = (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / w, cc = ga__v3_dot(c, c);
+    ga_vec3 dc = ga__v3_add(ga__v3_scale(ga__v3_add(em, ga__v3_scale(ac, dw)), 1.0 / fabs(w)),
+                            ga__v3_scale(ac, 2.0 * U));
+    double dP = (e4 + e5 + fabs(P) * dw) / fabs(w) + 3.0 * U * fabs(P);
     o->kind = GA_OBJECT_SPHERE;
     o->centre = c;
-    o->r2 = ga__v3_dot(c, c) - (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / w;
+    o->r2 = cc - P;
+    o->err = f * norm3(dc);
+    o->r2_err = f * (2.0 * ga__v3_dot(ac, dc) + dP) + 6.0 * U * (cc + fabs(P));
+    return GA_OK;
+}
+
+/* sum |a_i| |b_i|: a bound of <a ~b>_0's terms */
+static double abs_dot(ga_mv a, ga_mv b)
+{
+    double s = 0.0;
+    for (int i = 0; i < 32; i++) s += fabs(a.c[i]) * fabs(b.c[i]);
+    return s;
+}
+
+/* The carrier flat F = X ^ n of a round or flat blade X (grade 2 or 3), and
+   its uncertainty from X's (e) and from its own rounding. */
+static ga_mv carrier_flat(ga_mv X, ga_mv e, ga_mv *eF)
+{
+    ga_mv n = ga_mv_n();
+    *eF = ga_mv_add(gao_abs_gp(e, n), ga_mv_scale(gao_abs_gp(gao_abs(X), n), U));
+    return ga_mv_op(X, n);
+}
+
+/* A flat blade X of grade k (2: flat point, 3: line), known to e, into o. */
+static int read_flat(ga_mv X, ga_mv e, int k, double s, ga_object *o)
+{
+    if (k == 3) { /* w (u e45 + (p ^ u) ^ n), or a line at infinity */
+        ga_vec3 u = ga__v3(X.c[GA_BLADE_E145], X.c[GA_BLADE_E245], X.c[GA_BLADE_E345]);
+        ga_vec3 eu = ga__v3(e.c[GA_BLADE_E145], e.c[GA_BLADE_E245], e.c[GA_BLADE_E345]);
+        if (norm3(u) <= GA_POINT_TOL * s) {
+            o->kind = GA_OBJECT_EMPTY;
+            return GA_OK;
+        }
+        o->kind = GA_OBJECT_LINE;
+        if (ga_line_params(X, &o->direction, &o->centre) != GA_OK)
+            return GA_ERR_NOTBLADE;
+        /* the moment's coefficients e_ij4, e_ij5 over the weight |u| */
+        double eb = sqrt(e.c[GA_BLADE_E124] * e.c[GA_BLADE_E124] + e.c[GA_BLADE_E134] * e.c[GA_BLADE_E134] +
+                         e.c[GA_BLADE_E234] * e.c[GA_BLADE_E234]),
+               w = norm3(u), p = norm3(o->centre);
+        o->angle_err = norm3(eu) / w + 4.0 * U;
+        o->err = eb / w + p * o->angle_err + 8.0 * U * p;
+        return GA_OK;
+    }
+    /* w (F(p) ^ n) = w (p ^ n - e45): e_i4 = e_i5 = w p_i, e45 = -w */
+    double w = -X.c[GA_BLADE_E45], dw = e.c[GA_BLADE_E45];
+    ga_vec3 p = ga__v3(X.c[GA_BLADE_E14], X.c[GA_BLADE_E24], X.c[GA_BLADE_E34]);
+    ga_vec3 ep = ga__v3(e.c[GA_BLADE_E14], e.c[GA_BLADE_E24], e.c[GA_BLADE_E34]);
+    if (fabs(w) <= GA_POINT_TOL * s) {
+        o->kind = GA_OBJECT_EMPTY; /* a direction ^ n: at infinity */
+        o->direction = p;
+        return GA_OK;
+    }
+    if (!(dw <= 0.25 * fabs(w)))
+        return GA_ERR_PRECISION;
+    o->kind = GA_OBJECT_FLATPOINT;
+    o->centre = ga__v3_scale(p, 1.0 / w);
+    double f = 1.0 / (1.0 - dw / fabs(w));
+    o->err = f * (norm3(ep) + norm3(o->centre) * dw) / fabs(w) + 2.0 * U * norm3(o->centre);
+    return GA_OK;
+}
+
+/* A round blade X of grade k (2: point pair, 3: circle), known to e, with
+   its carrier flat F known to eF: the carrier sphere sigma = X F^-1 =
+   X ~F / <F ~F>_0 (conformal.c's carrier), read as a dual vector. What of
+   sigma is not a vector is rounding or X is not quite a blade: up to
+   GA_POINT_TOL of sigma it is taken into sigma's uncertainty, beyond it X
+   is no round. */
+static int read_round(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int strict, ga_object *o)
+{
+    ga_mv Fr = ga_mv_reverse(F), aX = gao_abs(X), aF = gao_abs(F);
+    double f = ga_mv_sp(F, Fr), ef = 2.0 * abs_dot(aF, eF) + 8.0 * U * abs_dot(aF, aF);
+    if (!(ef <= 0.25 * fabs(f)))
+        return strict ? GA_ERR_PRECISION : GA_ERR_NOTBLADE;
+    ga_mv g = ga_mv_gp(X, Fr), sigma = ga_mv_scale(g, 1.0 / f);
+    ga_mv eg = ga_mv_add(ga_mv_add(gao_abs_gp(e, aF), gao_abs_gp(aX, eF)),
+                         ga_mv_scale(gao_abs_gp(aX, aF), 64.0 * U));
+    ga_mv es = ga_mv_scale(ga_mv_add(eg, ga_mv_scale(gao_abs(sigma), ef)), 1.0 / (fabs(f) - ef));
+    double off = gao_off_grade(sigma, 1), ss = ga_mv_maxabs(sigma);
+    if (!(off <= GA_POINT_TOL * ss))
+        return GA_ERR_NOTBLADE;
+    for (int i = 0; i < 32; i++) es.c[i] += off;
+    ga_object flat;
+    int st = read_dual(ga_mv_grade(sigma, 1), ga_mv_grade(es, 1), strict, o);
+    if (st != GA_OK)
+        return st;
+    if (o->kind != GA_OBJECT_SPHERE)
+        return strict ? GA_ERR_PRECISION : GA_ERR_NOTBLADE;
+    ga_mv ef2 = gao_uncertainty(F, GAO_KAPPA);
+    for (int i = 0; i < 32; i++) ef2.c[i] = fmax(ef2.c[i], eF.c[i]);
+    if ((st = k == 2 ? read_flat(F, ef2, 3, ga_mv_maxabs(F), &flat)
+                     : read_dual(ga_mv_grade(ga_mv_undual(F), 1), ga_mv_grade(ga_mv_undual(ef2), 1), 1,
+                                 &flat)) != GA_OK)
+        return st == GA_ERR_PRECISION && !strict ? GA_ERR_NOTBLADE : st;
+    if (flat.kind != (k == 2 ? GA_OBJECT_LINE : GA_OBJECT_PLANE))
+        return GA_ERR_NOTBLADE;
+    o->kind = k == 2 ? GA_OBJECT_POINTPAIR : GA_OBJECT_CIRCLE;
+    o->direction = flat.direction;
+    o->angle_err = flat.angle_err;
+    return GA_OK;
+}
+
+/* read_round about the round's own centre c0 (read roughly first): there
+   its coefficients are of its own size, and X ~F has no cancellation of
+   c0's square; X moved there exactly (gao_translate) with its uncertainty,
+   and the centre moved back. */
+static int read_round_local(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int strict, ga_object *o)
+{
+    ga_object r0;
+    if (read_round(X, e, F, eF, k, 0, &r0) != GA_OK || !finite3(r0.centre))
+        return read_round(X, e, F, eF, k, strict, o);
+    ga_vec3 c0 = r0.centre, mc0 = ga__v3_scale(c0, -1.0);
+    ga_mv Y = gao_translate(X, mc0);
+    Y = ga_mv_grade(Y, k);
+    ga_mv eY = ga_mv_add(gao_abs_translate(ga_mv_add(e, ga_mv_scale(gao_abs(X), 4.0 * U * U)), mc0),
+                         ga_mv_scale(gao_abs(Y), U));
+    /* scale both by a power of two (exactly), Y's largest coefficient ~ 1 */
+    int ex;
+    frexp(ga_mv_maxabs(Y), &ex);
+    for (int i = 0; i < 32; i++) {
+        Y.c[i] = ldexp(Y.c[i], -ex);
+        eY.c[i] = ldexp(eY.c[i], -ex);
+    }
+    ga_mv eFY, FY = carrier_flat(Y, eY, &eFY);
+    int st = read_round(Y, eY, FY, eFY, k, strict, o);
+    if (st != GA_OK)
+        return st;
+    ga_vec3 cl = o->centre;
+    o->centre = ga__v3_add(c0, cl);
+    o->err += U * (norm3(c0) + norm3(cl));
     return GA_OK;
 }
 
@@ -72,79 +219,51 @@ static int classify(ga_mv X, int strict, ga_object *o)
         return GA_ERR_NOTFINITE;
     if (ga_mv_maxabs(X) == 0.0)
         return GA_ERR_SINGULAR;
-    X = unit_scaled(X);
+    X = gao_unit_scaled(X);
     double s = ga_mv_maxabs(X);
     int k = 1;
-    while (k <= 4 && off_grade(X, k) > GA_POINT_TOL * s) k++;
+    while (k <= 4 && gao_off_grade(X, k) > GA_POINT_TOL * s) k++;
     if (k > 4)
         return GA_ERR_NOTBLADE;
-    ga_object r = {GA_OBJECT_EMPTY, GA_REALITY_REAL, {0, 0, 0}, {0, 0, 0}, 0.0};
+    /* the parts of other grades are rounding (or X is no object): they
+       are dropped, and added to the uncertainty of the rest */
+    double off = gao_off_grade(X, k);
+    X = ga_mv_grade(X, k);
+    ga_object r = {GA_OBJECT_EMPTY, GA_REALITY_REAL, {0, 0, 0}, {0, 0, 0}, 0.0, 0.0, 0.0, 0.0};
     int st;
     if (k == 1 || k == 4) {
-        st = read_dual(k == 1 ? ga_mv_grade(X, 1) : ga_mv_grade(ga_mv_undual(X), 1), strict, &r);
+        ga_mv v = k == 1 ? X : ga_mv_grade(ga_mv_undual(X), 1), e = gao_uncertainty(v, GAO_KAPPA);
+        for (int i = 0; i < 32; i++) e.c[i] += off;
+        st = read_dual(v, ga_mv_grade(e, 1), strict, &r);
     } else {
-        ga_mv F = ga_mv_op(X, ga_mv_n()); /* the carrier flat */
-        int flat = flat_part(ga_mv_maxabs(F), s);
-        if (flat < 0 && strict)
+        ga_mv e = gao_uncertainty(X, GAO_KAPPA), eF;
+        for (int i = 0; i < 32; i++) e.c[i] += off;
+        ga_mv F = carrier_flat(X, e, &eF);
+        int kind = flat_kind(F, eF);
+        if (kind == UNSURE && !strict)
+            kind = ga_mv_maxabs(F) <= 64.0 * U * s ? FLAT : ROUND;
+        if (kind == UNSURE)
             return GA_ERR_PRECISION;
-        if (flat > 0) {
-            if (k == 3) { /* u e45 + (p ^ u) ^ n, or a line at infinity */
-                ga_vec3 u = ga__v3(X.c[GA_BLADE_E145], X.c[GA_BLADE_E245], X.c[GA_BLADE_E345]);
-                if (sqrt(ga__v3_dot(u, u)) <= GA_POINT_TOL * s) {
-                    r.kind = GA_OBJECT_EMPTY;
-                    st = GA_OK;
-                } else {
-                    r.kind = GA_OBJECT_LINE;
-                    st = ga_line_params(X, &r.direction, &r.centre) == GA_OK ? GA_OK : GA_ERR_NOTBLADE;
-                }
-            } else { /* w (F(p) ^ n) = w (p ^ n - e45): e_i4 = e_i5 = w p_i, e45 = -w */
-                double w = -X.c[GA_BLADE_E45];
-                ga_vec3 p = ga__v3(X.c[GA_BLADE_E14], X.c[GA_BLADE_E24], X.c[GA_BLADE_E34]);
-                if (fabs(w) <= GA_POINT_TOL * s) {
-                    r.kind = GA_OBJECT_EMPTY; /* a direction ^ n: at infinity */
-                    r.direction = p;
-                } else {
-                    r.kind = GA_OBJECT_FLATPOINT;
-                    r.centre = ga__v3_scale(p, 1.0 / w);
-                }
-                st = GA_OK;
-            }
-        } else { /* a round: its carrier sphere <X F^-1>_1 (conformal.c's carrier) */
-            /* a failure below is rounding when F is small against X (a round far
-               out, as for the weight in round_precise), else X is no round */
-            int bad = round_precise(s, ga_mv_maxabs(F)) ? GA_ERR_NOTBLADE : GA_ERR_PRECISION;
-            ga_mv inv, sigma;
-            if (ga_mv_inverse(F, &inv) != GA_OK)
-                return bad;
-            sigma = ga_mv_gp(X, inv);
-            if (off_grade(sigma, 1) > GA_POINT_TOL * ga_mv_maxabs(sigma))
-                return bad;
-            ga_object flat;
-            if ((st = read_dual(ga_mv_grade(sigma, 1), strict, &r)) != GA_OK)
-                return st;
-            if (r.kind != GA_OBJECT_SPHERE || classify(F, 1, &flat) != GA_OK)
-                return bad;
-            r.kind = k == 2 ? GA_OBJECT_POINTPAIR : GA_OBJECT_CIRCLE;
-            r.direction = flat.direction;
-            /* the round must be the carrier sphere met with its carrier flat */
-        }
+        st = kind == FLAT ? read_flat(X, e, k, s, &r) : read_round_local(X, e, F, eF, k, strict, &r);
     }
     if (st != GA_OK)
         return st;
     if (r.kind >= GA_OBJECT_POINTPAIR) {
-        double L2 = fmax(1.0, ga__v3_dot(r.centre, r.centre));
-        r.reality = fabs(r.r2) <= GA_OBJECT_TANGENT_TOL * L2 ? GA_REALITY_TANGENT
-                  : r.r2 < 0.0                               ? GA_REALITY_IMAGINARY
-                                                             : GA_REALITY_REAL;
+        double L = fmax(1.0, norm3(r.centre) + sqrt(fabs(r.r2)));
+        double band = fmax(GA_OBJECT_TANGENT_TOL * L * L, r.r2_err);
+        r.reality = fabs(r.r2) <= band ? GA_REALITY_TANGENT
+                  : r.r2 < 0.0         ? GA_REALITY_IMAGINARY
+                                       : GA_REALITY_REAL;
     }
+    if (!finite3(r.centre) || !isfinite(r.r2) || !isfinite(r.err) || !isfinite(r.r2_err))
+        return GA_ERR_DOMAIN;
     *o = r;
     return GA_OK;
 }
 
-ga_status ga_object_from_mv(ga_mv X, ga_object *out) { return out ? classify(X, 1, out) : GA_ERR_ARG; }
+int gao_classify(ga_mv X, int strict, ga_object *o) { return classify(X, strict, o); }
 
-static ga_mv translate(ga_mv X, ga_vec3 a);
-static int finite3(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+ga_status ga_object_from_mv(ga_mv X, ga_object *out) { return out ? classify(X, 1, out) : GA_ERR_ARG; }
 
 ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out)
 {
@@ -172,473 +291,24 @@ ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_obj
     default: o.centre = ga__v3_add(c, origin); /* rounds and flat points */
     }
     o.r2 *= lambda * lambda;
+    o.r2_err = o.r2_err * lambda * lambda + 2.0 * U * fabs(o.r2);
+    o.err = o.err * lambda + 4.0 * U * (norm3(o.centre) + norm3(origin));
     if (!finite3(o.centre) || !isfinite(o.r2))
         return GA_ERR_DOMAIN;
     *out = o;
     return GA_OK;
 }
 
-/* The parts A e4, A e5 (A without e4, e5) of X with coefficients p, q are
-   A ^ ((p + q)/2 n + (p - q)/2 nbar): each pair is rewritten as
-   A ^ (kn (p + q)/2 n + kb (p - q)/2 nbar). */
-static ga_mv scale_n_nbar(ga_mv X, double kn, double kb)
-{
-    for (int i = 0; i < 32; i++) {
-        if ((ga_blade_mask(i) & 0x18u) != 0x8u)
-            continue;
-        int j = i + 1; /* A e5 follows A e4 in canonical order */
-        double hn = 0.5 * (X.c[i] + X.c[j]) * kn, hb = kb == 0.0 ? 0.0 : 0.5 * (X.c[i] - X.c[j]) * kb;
-        X.c[i] = hn + hb;
-        X.c[j] = hn - hb;
-    }
-    return X;
-}
-
-ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out)
-{
-    if (!out)
-        return GA_ERR_ARG;
-    if (!ga_mv_isfinite(X) || !finite3(origin) || !isfinite(lambda))
-        return GA_ERR_NOTFINITE;
-    if (!(lambda > 0.0))
-        return GA_ERR_ARG;
-    /* an object is of one grade: what rounding left in the others (1e-18 of a
-       plane built 1e4 out) is dropped, as the translation would magnify it */
-    int k = 0;
-    for (int g = 1; g <= 5; g++)
-        if (ga_mv_maxabs(ga_mv_grade(X, g)) > ga_mv_maxabs(ga_mv_grade(X, k)))
-            k = g;
-    int one_grade = off_grade(X, k) <= GA_POINT_TOL * ga_mv_maxabs(X);
-    if (one_grade)
-        X = ga_mv_grade(X, k);
-    ga_object kind;
-    ga_mv Y;
-    if (classify(X, 0, &kind) == GA_OK && kind.kind <= GA_OBJECT_PLANE) {
-        /* A flat has no part A ^ nbar (a dual plane m + d n, a direct flat
-           F ^ n): what rounding left there is dropped. Then T X ~T = X +
-           (n t X + X t n)/2 exactly, t = -origin (the term n t X t n / 4
-           vanishes: n t n = 0), which has no t^2 terms to cancel; the full
-           sandwich loses u |t|^2 of X's size where the flat comes near. */
-        X = scale_n_nbar(X, 1.0, 0.0);
-        ga_mv nt = ga_mv_gp(ga_mv_n(), ga_vec3_to_mv(ga__v3_scale(origin, -1.0)));
-        Y = ga_mv_add(X, ga_mv_scale(ga_mv_add(ga_mv_gp(nt, X), ga_mv_gp(X, ga_mv_reverse(nt))), 0.5));
-        Y = scale_n_nbar(Y, 1.0 / lambda, 0.0);
-        if (kind.kind == GA_OBJECT_LINE) {
-            /* w (u e45 + (p ^ u) ^ n): the moment p x u = (b23, -b13, b12),
-               b_ij the e_ij4 (= e_ij5) coefficients, is known to u |origin|
-               from a line far out, u |origin| / lambda in the units of
-               lambda: its part along u, which no line has, is dropped */
-            ga_vec3 dir = ga__v3(Y.c[GA_BLADE_E145], Y.c[GA_BLADE_E245], Y.c[GA_BLADE_E345]);
-            ga_vec3 M = ga__v3(Y.c[GA_BLADE_E234], -Y.c[GA_BLADE_E134], Y.c[GA_BLADE_E124]);
-            double uu = ga__v3_dot(dir, dir);
-            if (uu > 0.0)
-                M = ga__v3_sub(M, ga__v3_scale(dir, ga__v3_dot(M, dir) / uu));
-            Y.c[GA_BLADE_E234] = Y.c[GA_BLADE_E235] = M.x;
-            Y.c[GA_BLADE_E134] = Y.c[GA_BLADE_E135] = -M.y;
-            Y.c[GA_BLADE_E124] = Y.c[GA_BLADE_E125] = M.z;
-        }
-    } else {
-        /* x -> x / lambda: o -> lambda o, n -> n / lambda, e_i fixed (then
-           F(x) -> lambda F(x / lambda)); blades with e45 (o ^ n) and without
-           e4, e5 are fixed */
-        Y = scale_n_nbar(translate(X, ga__v3_scale(origin, -1.0)), 1.0 / lambda, lambda);
-    }
-    if (one_grade)
-        Y = ga_mv_grade(Y, k);
-    if (!ga_mv_isfinite(Y))
-        return GA_ERR_DOMAIN;
-    *out = Y;
-    return GA_OK;
-}
-
-ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, ga_mv X, ga_vec3 *new_origin, ga_mv *out)
-{
-    if (!new_origin || !out)
-        return GA_ERR_ARG;
-    double r[8] = {R.s, R.e12, R.e13, R.e23, R.e1n, R.e2n, R.e3n, R.e123n};
-    for (int i = 0; i < 8; i++)
-        if (!isfinite(r[i]))
-            return GA_ERR_NOTFINITE;
-    if (!finite3(origin) || !ga_mv_isfinite(X))
-        return GA_ERR_NOTFINITE;
-    /* R T_o = T_R(o) Q with Q = T_-R(o) R T_o: Q fixes the origin, so it is
-       the rotation q of R = T_t q (R(o) = q(o) + t) */
-    ga_rotor Q = {R.s, R.e12, R.e13, R.e23, 0.0, 0.0, 0.0, 0.0};
-    ga_vec3 o2 = ga_rotor_apply(R, origin);
-    ga_mv Y = ga_rotor_apply_mv(Q, X);
-    if (!finite3(o2) || !ga_mv_isfinite(Y))
-        return GA_ERR_DOMAIN;
-    *new_origin = o2;
-    *out = Y;
-    return GA_OK;
-}
-
-/* T_a X ~T_a with T_a = 1 + n a / 2 (Wareham-Lasenby §2.2): exact for any X,
-   and free of cancellation (it adds the multiples of a the object needs). */
-static ga_mv translate(ga_mv X, ga_vec3 a)
-{
-    ga_mv T = ga_mv_scale(ga_mv_op(ga_mv_n(), ga_vec3_to_mv(a)), 0.5);
-    T.c[GA_BLADE_SCALAR] = 1.0;
-    return ga_mv_gp(ga_mv_gp(T, X), ga_mv_reverse(T));
-}
-
-static int is_round(ga_mv X)
-{
-    ga_object o;
-    return classify(X, 0, &o) == GA_OK && o.kind >= GA_OBJECT_POINTPAIR;
-}
-
-/* ((A I^-1) ^ (B I^-1)) I, A and B direct */
-static ga_mv meet_whole(ga_mv A, ga_mv B)
-{
-    /* Two flats meet directly: their coefficients grow like the distance, not
-       its square, and translating them would cancel squares. With a round,
-       meet about the round's centre o (its e4/e5 terms are squares anyway). */
-    ga_object oa;
-    ga_vec3 o = {0, 0, 0};
-    if (ga_mv_isfinite(A) && ga_mv_isfinite(B) && (is_round(A) || is_round(B))) {
-        if (classify(is_round(A) ? A : B, 0, &oa) == GA_OK)
-            o = oa.centre;
-    }
-    ga_mv a = translate(A, ga__v3_scale(o, -1.0)), b = translate(B, ga__v3_scale(o, -1.0));
-    return translate(ga_mv_undual(ga_mv_op(ga_mv_dual(a), ga_mv_dual(b))), o);
-}
-
-ga_mv ga_mv_meet(ga_mv A, ga_mv B)
-{
-    if (ga_mv_maxabs(ga_mv_sub(A, ga_mv_grade(A, 1))) == 0.0)
-        A = ga_mv_dual(A);
-    if (ga_mv_maxabs(ga_mv_sub(B, ga_mv_grade(B, 1))) == 0.0)
-        B = ga_mv_dual(B);
-    return meet_whole(A, B);
-}
-
-/* ---- the join, and the meet of objects in special position -------------------
-   The subspace of a blade X is {x : x ^ X = 0}. The decisions below are made
-   in the Euclidean metric of the coefficients (every e_i squares to +1
-   there): the join and the meet as subspaces do not depend on the metric
-   (DFM §5.7), and in this metric a blade has orthonormal factors, every
-   nonzero blade is invertible (X^-1 = ~X / |X|^2) and the distance of a
-   subspace from another is measured by the sines of the principal angles. */
-
-/* One-sided Jacobi (Hestenes) on the n columns (column j at a + j m, each of
-   length m) of a small matrix: plane rotations make the columns mutually
-   orthogonal; the same rotations turn the n x n matrix v (column j at v + j n)
-   from the identity into the right singular vectors, and the columns' norms
-   are then the singular values. Each rotation is exact to a few u, and the
-   singular values come out to a few u of the largest: an error linear in
-   the perturbation, not in its square as through the Gram matrix. */
-static void jacobi(double *a, int m, int n, double *v)
-{
-    for (int i = 0; i < n * n; i++) v[i] = i % (n + 1) == 0 ? 1.0 : 0.0;
-    for (int sweep = 0; sweep < 60; sweep++) {
-        int rotated = 0;
-        for (int p = 0; p < n - 1; p++)
-            for (int q = p + 1; q < n; q++) {
-                double *x = a + p * m, *y = a + q * m, al = 0.0, be = 0.0, ga = 0.0;
-                for (int i = 0; i < m; i++) {
-                    al += x[i] * x[i];
-                    be += y[i] * y[i];
-                    ga += x[i] * y[i];
-                }
-                if (!(fabs(ga) > 4.0 * U * sqrt(al) * sqrt(be)))
-                    continue;
-                rotated = 1;
-                double ze = (be - al) / (2.0 * ga);
-                double t = (ze >= 0.0 ? 1.0 : -1.0) / (fabs(ze) + hypot(1.0, ze));
-                double c = 1.0 / hypot(1.0, t), s = c * t;
-                for (int i = 0; i < m; i++) {
-                    double xi = x[i], yi = y[i];
-                    x[i] = c * xi - s * yi;
-                    y[i] = s * xi + c * yi;
-                }
-                double *vx = v + p * n, *vy = v + q * n;
-                for (int i = 0; i < n; i++) {
-                    double xi = vx[i], yi = vy[i];
-                    vx[i] = c * xi - s * yi;
-                    vy[i] = s * xi + c * yi;
-                }
-            }
-        if (!rotated)
-            break;
-    }
-}
-
-static double dot5(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] + a[4] * b[4];
-}
-static double col_norm(const double *a, int m)
-{
-    double s = 0.0;
-    for (int i = 0; i < m; i++) s += a[i] * a[i];
-    return sqrt(s);
-}
-/* the indices 0..n-1 ordered by s, ascending (up = 1) or descending */
-static void order(const double *s, int n, int up, int *ord)
-{
-    for (int i = 0; i < n; i++) {
-        int j = i;
-        while (j > 0 && (up ? s[ord[j - 1]] > s[i] : s[ord[j - 1]] < s[i])) {
-            ord[j] = ord[j - 1];
-            j--;
-        }
-        ord[j] = i;
-    }
-}
-
-/* An orthonormal basis q[0..k-1] of the subspace of X, a grade-k part
-   (1 <= k <= 4), scaled to max |coefficient| ~ 1: the right singular vectors
-   of x -> x ^ X for its k smallest singular values. For a blade these are 0
-   and the other 5 - k all equal |X| (|x ^ X| = |x| |X| for x orthogonal to
-   it), so the k-th smallest over the largest says how far X is from a blade:
-   returned. */
-static double blade_basis(ga_mv X, int k, double q[5][5])
-{
-    double a[5 * 10], v[25], s[5];
-    int idx[10], m = 0, ord[5];
-    for (int i = 0; i < 32; i++)
-        if (ga_blade_grade(i) == k + 1)
-            idx[m++] = i;
-    for (int j = 0; j < 5; j++) {
-        ga_mv y = ga_mv_op(ga_mv_blade(1 + j), X);
-        for (int i = 0; i < m; i++) a[j * m + i] = y.c[idx[i]];
-    }
-    jacobi(a, m, 5, v);
-    for (int j = 0; j < 5; j++) s[j] = col_norm(a + j * m, m);
-    order(s, 5, 1, ord);
-    for (int i = 0; i < k; i++)
-        for (int j = 0; j < 5; j++) q[i][j] = v[ord[i] * 5 + j];
-    return s[ord[4]] > 0.0 ? s[ord[k - 1]] / s[ord[4]] : INFINITY;
-}
-
-/* The grade k (1..4) of an object X, after the checks of ga_mv_join. */
-static int object_grade(ga_mv X, int *k)
-{
-    if (ga_mv_maxabs(X) == 0.0)
-        return GA_ERR_SINGULAR;
-    X = unit_scaled(X);
-    double s = ga_mv_maxabs(X), q[5][5];
-    int g = 0;
-    while (g <= 5 && off_grade(X, g) > GA_POINT_TOL * s) g++;
-    if (g > 5)
-        return GA_ERR_NOTBLADE; /* mixed grades */
-    if (g == 0 || g == 5)
-        return GA_ERR_DOMAIN;
-    if (!(blade_basis(ga_mv_grade(X, g), g, q) <= GA_OBJECT_JOIN_TOL))
-        return GA_ERR_NOTBLADE;
-    *k = g;
-    return GA_OK;
-}
-
-/* The subspaces of a (grade ka) and b (grade kb), both held about a local
-   origin: an orthonormal basis of a's, and the directions of b's outside it,
-   c[0..kb-1] with the sines s of the principal angles, largest first: the
-   left singular vectors of the part of b's basis orthogonal to a's
-   (modified Gram-Schmidt, twice). */
-typedef struct {
-    double qa[5][5], qb[5][5], c[5][5], s[5];
-} spans;
-static void span_of(ga_mv a, int ka, ga_mv b, int kb, spans *sp)
-{
-    double(*qb)[5] = sp->qb, R[25], v[25], s[5];
-    int ord[5];
-    blade_basis(unit_scaled(a), ka, sp->qa);
-    blade_basis(unit_scaled(b), kb, qb);
-    for (int j = 0; j < kb; j++) {
-        double *x = R + 5 * j;
-        for (int i = 0; i < 5; i++) x[i] = qb[j][i];
-        for (int pass = 0; pass < 2; pass++)
-            for (int i = 0; i < ka; i++) {
-                double d = dot5(sp->qa[i], x);
-                for (int l = 0; l < 5; l++) x[l] -= d * sp->qa[i][l];
-            }
-    }
-    jacobi(R, 5, kb, v);
-    for (int j = 0; j < kb; j++) s[j] = col_norm(R + 5 * j, 5);
-    order(s, kb, 0, ord);
-    for (int i = 0; i < kb; i++) {
-        double *c = sp->c[i];
-        sp->s[i] = s[ord[i]];
-        for (int l = 0; l < 5; l++) c[l] = R[5 * ord[i] + l];
-        /* orthogonal again to a's basis and the directions before it */
-        for (int pass = 0; pass < 2; pass++) {
-            for (int j = 0; j < ka; j++) {
-                double d = dot5(sp->qa[j], c);
-                for (int l = 0; l < 5; l++) c[l] -= d * sp->qa[j][l];
-            }
-            for (int j = 0; j < i; j++) {
-                double d = dot5(sp->c[j], c);
-                for (int l = 0; l < 5; l++) c[l] -= d * sp->c[j][l];
-            }
-        }
-        double nc = col_norm(c, 5);
-        for (int l = 0; l < 5; l++) c[l] = nc > 0.0 ? c[l] / nc : 0.0;
-    }
-}
-
-/* The left contraction a _| b in the Euclidean metric of the coefficients:
-   e_A _| e_B = e_A e_B for A a subset of B, the sign that of the swaps that
-   sort A B (no e5 e5 = -1). */
-static ga_mv lc_euclid(ga_mv a, ga_mv b)
-{
-    int idx[32];
-    for (int i = 0; i < 32; i++) idx[ga_blade_mask(i)] = i;
-    ga_mv r = ga_mv_zero();
-    for (int i = 0; i < 32; i++) {
-        unsigned ma = ga_blade_mask(i);
-        if (a.c[i] == 0.0)
-            continue;
-        for (int j = 0; j < 32; j++) {
-            unsigned mb = ga_blade_mask(j);
-            if (b.c[j] == 0.0 || (ma & mb) != ma)
-                continue;
-            int swaps = 0;
-            for (unsigned x = ma >> 1; x; x >>= 1)
-                for (unsigned y = x & mb; y; y &= y - 1) swaps++;
-            r.c[idx[ma ^ mb]] += (swaps & 1 ? -1.0 : 1.0) * a.c[i] * b.c[j];
-        }
-    }
-    return r;
-}
-
-/* Whether n lies in the span of the orthonormal q[0..k-1] and c[0..r-1]:
-   the residual of n / |n| after projecting them out at most tol. */
-static int holds_n(double q[5][5], int k, double c[5][5], int r, double tol)
-{
-    double x[5] = {0, 0, 0, sqrt(0.5), sqrt(0.5)};
-    for (int pass = 0; pass < 2; pass++)
-        for (int i = 0; i < k + r; i++) {
-            const double *b = i < k ? q[i] : c[i - k];
-            double d = dot5(b, x);
-            for (int l = 0; l < 5; l++) x[l] -= d * b[l];
-        }
-    return col_norm(x, 5) <= tol;
-}
-
-static ga_mv vec5(const double *x) { return ga_mv_vector(x[0], x[1], x[2], x[3], x[4]); }
-
-/* The local origin o and length lambda (a power of two) of the pair: o the
-   centre of A as ga_object_from_mv reads it roughly (its point closest to the
-   origin for a flat), else B's, else 0; lambda near the larger of the radii
-   and the distance of the two centres (at least 2^-10 |o|), 1 when that is 0. Returns the
-   tolerance of the decisions about (o, lambda): GA_OBJECT_JOIN_TOL, or the
-   rounding that moving there may add when that is larger: 64 u |o| / lambda
-   of a flat's size (its coefficients grow like the distance), 64 u
-   (|o| / lambda)^2 with a round or point (like its square). */
-static double local_frame(ga_mv A, ga_mv B, ga_vec3 *o, double *lambda)
-{
-    ga_object oa, ob;
-    int ha = classify(A, 0, &oa) == GA_OK && oa.kind != GA_OBJECT_EMPTY && finite3(oa.centre);
-    int hb = classify(B, 0, &ob) == GA_OK && ob.kind != GA_OBJECT_EMPTY && finite3(ob.centre);
-    double size = 0.0;
-    *o = ha ? oa.centre : hb ? ob.centre : ga__v3(0, 0, 0);
-    if (ha)
-        size = fmax(size, sqrt(fabs(oa.r2)));
-    if (hb)
-        size = fmax(size, sqrt(fabs(ob.r2)));
-    if (ha && hb) {
-        ga_vec3 d = ga__v3_sub(oa.centre, ob.centre);
-        size = fmax(size, sqrt(ga__v3_dot(d, d)));
-    }
-    /* not below 2^-10 |o|: a flat's rounding, a few hundred u |o| from its
-       construction, stays below 2^18 u ~ 3e-11 of lambda (two flats that are
-       the same read as such, however near their centres) */
-    size = fmax(size, 0x1p-10 * sqrt(ga__v3_dot(*o, *o)));
-    *lambda = isfinite(size) && size > 0.0 ? ldexp(1.0, ilogb(size)) : 1.0;
-    int round = (ha && oa.kind >= GA_OBJECT_POINTPAIR) || (hb && ob.kind >= GA_OBJECT_POINTPAIR) ||
-                (!ha && is_round(A)) || (!hb && is_round(B));
-    double far = sqrt(ga__v3_dot(*o, *o)) / *lambda;
-    return fmax(GA_OBJECT_JOIN_TOL, 64.0 * U * (round ? far * far : far));
-}
-
-/* The join and the meet of A and B. */
-static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
-{
-    int ka, kb, st;
-    if (!ga_mv_isfinite(A) || !ga_mv_isfinite(B))
-        return GA_ERR_NOTFINITE;
-    if ((st = object_grade(A, &ka)) != GA_OK || (st = object_grade(B, &kb)) != GA_OK)
-        return st;
-    /* the subspaces do not depend on the scale: max |coefficient| ~ 1 (by a
-       power of two, exactly), so that nothing below over- or underflows */
-    ga_mv a = unit_scaled(ga_mv_grade(A, ka)), b = unit_scaled(ga_mv_grade(B, kb)), al, bl;
-    /* about the local origin, in units of the scene (ga_mv_localize); where
-       that overflows, about the origin */
-    ga_vec3 o;
-    double lam;
-    double tol = local_frame(a, b, &o, &lam);
-    if (ga_mv_localize(a, o, lam, &al) != GA_OK || ga_mv_localize(b, o, lam, &bl) != GA_OK ||
-        ga_mv_maxabs(al) == 0.0 || ga_mv_maxabs(bl) == 0.0) {
-        o = ga__v3(0, 0, 0);
-        lam = 1.0;
-        al = a;
-        bl = b;
-        tol = GA_OBJECT_JOIN_TOL;
-    }
-    spans sp;
-    span_of(al, ka, bl, kb, &sp);
-    int r = 0; /* the directions of B outside A */
-    while (r < kb && r < 5 - ka && sp.s[r] > tol) r++;
-    int m = kb - r; /* the dimension of the meet */
-    ga_mv j, mt;
-    if (r == 0) { /* B in A */
-        j = A;
-        mt = B;
-    } else if (m == ka) { /* A in B */
-        j = B;
-        mt = A;
-    } else {
-        if (m == 0) { /* no common direction: A ^ B */
-            j = ga_mv_op(A, B);
-        } else { /* A ^ c1 ^ ... ^ cr about the local origin, back in the world */
-            ga_mv jl = unit_scaled(al);
-            for (int i = 0; i < r; i++) jl = ga_mv_op(jl, vec5(sp.c[i]));
-            /* a flat (n in its subspace, as for coplanar circles) has no
-               part A ^ nbar: what rounding left there is dropped */
-            if (holds_n(sp.qa, ka, sp.c, r, tol))
-                jl = scale_n_nbar(jl, 1.0, 0.0);
-            if ((st = ga_mv_localize(jl, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, &j)) != GA_OK)
-                return st;
-        }
-        if (ka + r == 5) { /* the whole space: the meet of ga_mv_meet */
-            mt = meet_whole(A, B);
-        } else { /* (B _| J^-1) _| A about the local origin, the metric Euclidean */
-            ga_mv au = unit_scaled(al), jl = au;
-            for (int i = 0; i < r; i++) jl = ga_mv_op(jl, vec5(sp.c[i]));
-            double jj = 0.0;
-            for (int i = 0; i < 32; i++) jj += jl.c[i] * jl.c[i];
-            ga_mv ml = lc_euclid(lc_euclid(bl, ga_mv_scale(ga_mv_reverse(jl), 1.0 / jj)), au);
-            if (holds_n(sp.qa, ka, sp.c, 0, tol) && holds_n(sp.qb, kb, sp.c, 0, tol))
-                ml = scale_n_nbar(ml, 1.0, 0.0); /* both flats: so is the meet */
-            if (m == 0)
-                mt = ml; /* a scalar: no common point */
-            else if ((st = ga_mv_localize(ml, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, &mt)) != GA_OK)
-                return st;
-        }
-    }
-    if (!ga_mv_isfinite(j) || !ga_mv_isfinite(mt))
-        return GA_ERR_DOMAIN;
-    if (J)
-        *J = j;
-    if (M)
-        *M = mt;
-    return GA_OK;
-}
-
-ga_status ga_mv_join(ga_mv A, ga_mv B, ga_mv *out) { return out ? join_meet(A, B, out, NULL) : GA_ERR_ARG; }
-
-ga_status ga_mv_meet_rel(ga_mv A, ga_mv B, ga_mv *out)
-{
-    return out ? join_meet(A, B, NULL, out) : GA_ERR_ARG;
-}
-
-/* The object of O, refusing what has no nearest point. */
+/* The object of O, refusing what has no nearest point, and what is not
+   known to GA_OBJECT_TOL (the functions below state no bound of their own). */
 static int read_real(ga_mv O, ga_object *o)
 {
     int st = classify(O, 1, o);
     if (st != GA_OK)
         return st;
+    double L = fmax(1.0, norm3(o->centre) + sqrt(fabs(o->r2)));
+    if (o->err > GA_OBJECT_TOL * L || o->r2_err > GA_OBJECT_TOL * L * L)
+        return GA_ERR_PRECISION;
     if (o->kind == GA_OBJECT_EMPTY)
         return GA_ERR_NOTBLADE;
     if (o->reality == GA_REALITY_IMAGINARY)

@@ -75,8 +75,9 @@ static void twist_other_branch(double *x)
         y[3 + i] = k * (x[3 + i] - par) + par;
         y[i] = k * x[i];
     }
-    /* a rotation so small that |k| ~ 2 pi/th overflows (th ~ 1e-308) has no
-     * representable other branch: x is kept */
+    /* an other branch that overflows (|k| v_perp near DBL_MAX; |k| itself at
+     * th ~ 1e-308, which the branch rule no longer offers) is not
+     * representable: x is kept */
     for (int i = 0; i < 6; ++i)
         if (!isfinite(y[i]))
             return;
@@ -113,10 +114,17 @@ void gig_twist_half_turn(double *x)
 /* The branch of x that continues prev (group.h branch): W-L's rotor rule
  * <R_i ~R_{i-1}>_0 >= 0 in twist coordinates. A relative half turn
  * (dot = cos(relative angle/2) ~ 0) is a tie that rounding would break at
- * random: inside the half-turn band x is kept. */
+ * random: inside the half-turn band x is kept. So is a rotation th below the
+ * band, whose other branch is a full turn less th: its w' and v_perp' are
+ * |k| ~ 2 pi/th times the principal's (a turn about an axis at distance
+ * |v_perp|/th), and its axis rests on the key's rounding (found by CI's fuzz
+ * run: fuzz/regress/path/smooth-matrix-velocity-domain, th = 2.5e-307 and
+ * |v'| = 3.1e306). */
 void gig_twist_branch(const double *prev, double *x)
 {
     double q0[4], q1[4];
+    if (twist_angle(x) < GA_GROUP_HALF_TURN_BAND)
+        return;
     twist_quat(prev, q0);
     twist_quat(x, q1);
     if (q0[0] * q1[0] + q0[1] * q1[1] + q0[2] * q1[2] + q0[3] * q1[3] < -0.5 * GA_GROUP_HALF_TURN_BAND)

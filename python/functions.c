@@ -379,7 +379,7 @@ PyObject *gpy_to_pose(PyObject *self, PyObject *args, PyObject *kw)
     /* the run length is T's last leading dimension (one input: no
      * broadcast); the kernel reads it through the context */
     pose_ctx c = {0, {1, 0, 0, 0}};
-    PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(T, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *a = gpy_as_doubles(T);
     if (!a)
         return NULL;
     if (continuous && PyArray_NDIM(a) >= 3)

@@ -19,7 +19,9 @@ static double now_seconds(void)
 /* _c_loop(kind, x, path=None): seconds for the library calls that exp, log or
  * Path.sample make per element, in a plain C loop over a C-contiguous float64
  * x ((n, 6) twists, (n, 4, 4) motions, (n,) times) into a scratch buffer: no
- * numpy, no broadcasting, no kernel pointer (python/bench.py). */
+ * numpy, no broadcasting, no kernel pointer, no check of the numbers beyond
+ * the library's own (python/bench.py). A bad element stops it with
+ * garotor.Error naming its index, as the module's calls do. */
 static PyObject *c_loop(PyObject *self, PyObject *args)
 {
     (void)self;
@@ -27,7 +29,7 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     PyObject *xo, *po = Py_None;
     if (!PyArg_ParseTuple(args, "sO|O:_c_loop", &kind, &xo, &po))
         return NULL;
-    PyArrayObject *x = (PyArrayObject *)PyArray_FROM_OTF(xo, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *x = gpy_as_doubles(xo);
     if (!x)
         return NULL;
     int k = strcmp(kind, "exp") == 0    ? 0
@@ -54,23 +56,28 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     const double *in = PyArray_DATA(x);
     const ga_group *g = &ga_group_cga;
     int st = GA_OK;
+    npy_intp bad = -1;
     memset(buf, 0, (size_t)(n ? n : 1) * 16 * sizeof *buf); /* the pages, before the clock starts */
     double t0 = now_seconds();
     Py_BEGIN_ALLOW_THREADS;
     if (lock)
         PyThread_acquire_lock(lock, WAIT_LOCK);
-    for (npy_intp i = 0; i < n && st == GA_OK; i++) {
+    /* a failed call writes nothing to e (the library's rule): e is read only
+       after a success, and the loop stops at the first failure */
+    for (npy_intp i = 0; i < n; i++) {
         double e[GA_GROUP_MAX_ELEM];
         if (k == 0) {
-            st = g->exp(in + 6 * i, e);
-            gpy_mat_put(g->to_mat4(e), buf + 16 * i);
+            if ((st = g->exp(in + 6 * i, e)) == GA_OK)
+                gpy_mat_put(g->to_mat4(e), buf + 16 * i);
         } else if (k == 1) {
             st = g->from_mat4(gpy_mat_get(in + 16 * i), e);
             if (st == GA_OK)
                 st = g->log(e, buf + 16 * i);
-        } else {
-            st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in + i, e);
+        } else if ((st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in + i, e)) == GA_OK)
             gpy_mat_put(p->group->to_mat4(e), buf + 16 * i);
+        if (st != GA_OK) {
+            bad = i;
+            break;
         }
     }
     if (lock)
@@ -79,8 +86,10 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     double dt = now_seconds() - t0;
     PyMem_Free(buf);
     Py_DECREF(x);
-    if (st != GA_OK)
-        return gpy_status_error("_c_loop", st);
+    if (bad >= 0) { /* as the module's calls name the element */
+        gpy_raise_status("_c_loop", 1, &n, bad, st);
+        return NULL;
+    }
     return PyFloat_FromDouble(dt);
 }
 

@@ -40,15 +40,33 @@ extern PyObject *gpy_error; /* garotor.Error, a subclass of ValueError */
 void gpy_raise_status_why(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status,
                           const char *why);
 void gpy_raise_status(const char *what, int nlead, const npy_intp *lead, npy_intp flat, int status);
-/* garotor.Error("<what>: <status text>"); NULL */
+/* garotor.Error("<what>: <status text>"), index () and status; NULL */
 PyObject *gpy_status_error(const char *what, int status);
 /* x as Python's repr writes it (the shortest text that reads back as x) in
  * buf[32]; buf. With the GIL held. */
 const char *gpy_repr_text(double x, char buf[32]);
 
+/* ---- numbers in (kernel.c) ------------------------------------------------- */
+
+/* obj as a C-contiguous aligned float64 array, read as numpy reads a list of
+ * numbers: an array of another real dtype cast, an object array's items each
+ * read by float() (as a list's are), anything else as np.asarray(obj, float)
+ * reads it. NULL with an exception. */
+PyArrayObject *gpy_as_doubles(PyObject *obj);
+/* 1 if v[0..n-1] holds no NaN and no infinity. Without the GIL too. */
+int gpy_all_finite(const double *v, npy_intp n);
+/* The index of the first NaN or infinity in v[0..n-1]; -1 if there is none.
+ * Without the GIL too. */
+npy_intp gpy_first_nonfinite(const double *v, npy_intp n);
+/* "<name>[i, j] is nan": the number at flat index `flat` of a (C-contiguous
+ * float64), with its index in a's shape ("<name> is inf" for a 0-d a), into
+ * why[size]. With the GIL held. */
+void gpy_nonfinite_why(const char *name, PyArrayObject *a, npy_intp flat, char *why, size_t size);
+
 /* ---- the vectorised loop (kernel.c) --------------------------------------- */
 
 #define GPY_MAX_IN 3
+#define GPY_MAX_OUT 32 /* numbers in one element of a result (up: a multivector) */
 
 typedef struct {
     int ncore;        /* trailing dimensions of one element */
@@ -65,8 +83,13 @@ typedef struct {
         2, {n, m}, name                                                                                      \
     }
 
-/* One element: in[j] points at input j's element, out at the output's.
- * Returns GA_OK or a GA_ERR_* status. k is the flat index of the element. */
+/* One element: in[j] points at input j's element, out at a scratch buffer
+ * for the output's (copied to its place when the kernel succeeds and it is
+ * finite). Returns GA_OK or a GA_ERR_* status. k is the flat index of the
+ * element. A NaN or an infinity in the element must give a status (any) or
+ * a result that is not finite: the loop then names it (GA_ERR_NOTFINITE);
+ * the library's functions with a status refuse one anywhere in their input
+ * (docs/errors.md). */
 typedef int (*gpy_kernel_fn)(void *ctx, const double *const *in, double *out, npy_intp k);
 
 typedef struct {
@@ -88,8 +111,9 @@ typedef struct {
 } gpy_kernel_call;
 
 /* Run kc over the inputs objs[0..nin-1]: convert each to a C-contiguous
- * float64 array with its core shape, broadcast, loop with the GIL released,
- * then raise or return the result (or `out`, filled). */
+ * float64 array with its core shape, broadcast, loop with the GIL released
+ * (each result checked finite; a failed element's numbers too), then raise or
+ * return the result (or `out`, filled in place). */
 PyObject *gpy_run_kernel(gpy_kernel_call *kc, PyObject *const *objs, PyObject *out);
 
 /* The group called name (NULL: "cga"); NULL with a ValueError naming what if
@@ -130,6 +154,10 @@ typedef struct {
     ga_scheme scheme;
     ga_path path;
     void *work;
+    /* the velocities given to the constructor (nvel doubles, the group's
+       coordinates), or NULL: kept for pickling (Path.__reduce__) */
+    double *vel;
+    size_t nvel;
     /* guards path against Path.append in another thread while a call reads
        it with the GIL released; taken only with the GIL released (or
        without waiting), so that no thread waits for it holding the GIL */

@@ -19,6 +19,31 @@ PyObject *gpy_mv_new(ga_mv m)
     return (PyObject *)o;
 }
 
+/* A Multivector's coefficients are finite: one is never made from a NaN or
+ * an infinity (garotor.Error, GA_ERR_NOTFINITE), and an operation whose
+ * result would not be finite raises instead (GA_ERR_DOMAIN), as the array
+ * calls do (kernel.c). Comparing is not computing: == takes any number. */
+
+/* m as a new Multivector from the operation `what`; NULL with garotor.Error
+ * if a coefficient is not finite. */
+static PyObject *mv_result(const char *what, ga_mv m)
+{
+    if (!ga_mv_isfinite(m)) {
+        gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_DOMAIN, "the result would not be finite");
+        return NULL;
+    }
+    return gpy_mv_new(m);
+}
+
+static PyObject *number_result(const char *what, double x)
+{
+    if (!isfinite(x)) {
+        gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_DOMAIN, "the result would not be finite");
+        return NULL;
+    }
+    return PyFloat_FromDouble(x);
+}
+
 /* A Multivector, or a real number as a scalar multivector; 0 if neither. */
 static int mv_coerce(PyObject *x, ga_mv *out)
 {
@@ -39,6 +64,52 @@ static int mv_coerce(PyObject *x, ga_mv *out)
     return 0;
 }
 
+/* 1 if s is finite; -1 with garotor.Error naming it if not. */
+static int finite_number(const char *what, double s)
+{
+    if (isfinite(s))
+        return 1;
+    char why[64], num[32];
+    snprintf(why, sizeof why, "the number is %s", gpy_repr_text(s, num));
+    gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_NOTFINITE, why);
+    return -1;
+}
+
+/* mv_coerce for an operand of `what`: 1, 0 if x is neither (NotImplemented),
+ * -1 with garotor.Error for a number that is NaN or infinite. */
+static int mv_operand(const char *what, PyObject *x, ga_mv *out)
+{
+    if (!mv_coerce(x, out))
+        return 0;
+    return PyObject_TypeCheck(x, &gpy_MVType) ? 1 : finite_number(what, out->c[0]);
+}
+
+/* obj, a 1-d array-like of count finite numbers, into v; what (the call)
+ * and name (the argument) for messages. 0, or -1 with an exception. */
+static int read_numbers(const char *what, const char *name, PyObject *obj, npy_intp count,
+                        const char *shape_msg, double *v)
+{
+    PyArrayObject *a = gpy_as_doubles(obj);
+    if (!a)
+        return -1;
+    if (PyArray_NDIM(a) != 1 || PyArray_DIM(a, 0) != count) {
+        Py_DECREF(a);
+        PyErr_SetString(PyExc_ValueError, shape_msg);
+        return -1;
+    }
+    npy_intp bad = gpy_first_nonfinite(PyArray_DATA(a), count);
+    if (bad >= 0) {
+        char why[160];
+        gpy_nonfinite_why(name, a, bad, why, sizeof why);
+        gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_NOTFINITE, why);
+        Py_DECREF(a);
+        return -1;
+    }
+    memcpy(v, PyArray_DATA(a), (size_t)count * sizeof *v);
+    Py_DECREF(a);
+    return 0;
+}
+
 static PyObject *MV_new(PyTypeObject *type, PyObject *args, PyObject *kw)
 {
     (void)type;
@@ -49,18 +120,9 @@ static PyObject *MV_new(PyTypeObject *type, PyObject *args, PyObject *kw)
     ga_mv m = ga_mv_zero();
     if (c && PyObject_TypeCheck(c, &gpy_MVType))
         return gpy_mv_new(((MVObject *)c)->mv);
-    if (c) {
-        PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(c, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
-        if (!a)
-            return NULL;
-        if (PyArray_NDIM(a) != 1 || PyArray_DIM(a, 0) != 32) {
-            Py_DECREF(a);
-            PyErr_SetString(PyExc_ValueError, "Multivector: needs 32 coefficients in canonical order");
-            return NULL;
-        }
-        memcpy(m.c, PyArray_DATA(a), sizeof m.c);
-        Py_DECREF(a);
-    }
+    if (c &&
+        read_numbers("Multivector", "c", c, 32, "Multivector: needs 32 coefficients in canonical order", m.c))
+        return NULL;
     return gpy_mv_new(m);
 }
 
@@ -103,41 +165,60 @@ static PyObject *MV_repr(MVObject *self)
     return r;
 }
 
-#define MV_BINOP(name, expr)                                                                                 \
+#define MV_BINOP(name, op, expr)                                                                             \
     static PyObject *MV_##name(PyObject *x, PyObject *y)                                                     \
     {                                                                                                        \
         ga_mv a, b;                                                                                          \
-        if (!mv_coerce(x, &a) || !mv_coerce(y, &b))                                                          \
+        int ra = mv_operand("Multivector " op, x, &a),                                                       \
+            rb = ra > 0 ? mv_operand("Multivector " op, y, &b) : 0;                                          \
+        if (ra < 0 || rb < 0)                                                                                \
+            return NULL;                                                                                     \
+        if (!ra || !rb)                                                                                      \
             Py_RETURN_NOTIMPLEMENTED;                                                                        \
-        return gpy_mv_new(expr);                                                                             \
+        return mv_result("Multivector " op, expr);                                                           \
     }
-MV_BINOP(add, ga_mv_add(a, b))
-MV_BINOP(sub, ga_mv_sub(a, b))
-MV_BINOP(mul, ga_mv_gp(a, b))
-MV_BINOP(xor, ga_mv_op(a, b))
-MV_BINOP(or, ga_mv_lc(a, b))
+MV_BINOP(add, "+", ga_mv_add(a, b))
+MV_BINOP(sub, "-", ga_mv_sub(a, b))
+MV_BINOP(mul, "*", ga_mv_gp(a, b))
+MV_BINOP(xor, "^", ga_mv_op(a, b))
+MV_BINOP(or, "|", ga_mv_lc(a, b))
 
 static PyObject *MV_truediv(PyObject *x, PyObject *y)
 {
-    ga_mv a;
+    ga_mv a, sv;
     if (!PyObject_TypeCheck(x, &gpy_MVType) ||
         !(PyFloat_Check(y) || PyLong_Check(y) || PyArray_IsScalar(y, Number)))
         Py_RETURN_NOTIMPLEMENTED;
     a = ((MVObject *)x)->mv;
-    double s = PyFloat_AsDouble(y);
-    if (s == -1.0 && PyErr_Occurred())
+    int r = mv_operand("Multivector /", y, &sv);
+    if (r < 0)
         return NULL;
+    double s = sv.c[0];
+    if (r == 0) { /* another numpy number (a complex one): as float() reads it */
+        s = PyFloat_AsDouble(y);
+        if ((s == -1.0 && PyErr_Occurred()) || finite_number("Multivector /", s) < 0)
+            return NULL;
+    }
     if (s == 0.0) { /* as Python's float division */
         PyErr_SetString(PyExc_ZeroDivisionError, "Multivector division by zero");
         return NULL;
     }
     for (int i = 0; i < 32; i++) a.c[i] /= s;
-    return gpy_mv_new(a);
+    return mv_result("Multivector /", a);
 }
 
 static PyObject *MV_neg(MVObject *x) { return gpy_mv_new(ga_mv_scale(x->mv, -1.0)); }
 static PyObject *MV_pos(MVObject *x) { return gpy_mv_new(x->mv); }
 static PyObject *MV_invert(MVObject *x) { return gpy_mv_new(ga_mv_reverse(x->mv)); }
+
+/* False for the zero multivector (every coefficient 0 or -0), True otherwise */
+static int MV_bool(MVObject *x)
+{
+    for (int i = 0; i < 32; i++)
+        if (x->mv.c[i] != 0.0)
+            return 1;
+    return 0;
+}
 
 static PyNumberMethods MV_as_number = {
     .nb_add = MV_add,
@@ -149,6 +230,7 @@ static PyNumberMethods MV_as_number = {
     .nb_negative = (unaryfunc)MV_neg,
     .nb_positive = (unaryfunc)MV_pos,
     .nb_invert = (unaryfunc)MV_invert,
+    .nb_bool = (inquiry)MV_bool,
 };
 
 static PyObject *MV_richcompare(PyObject *x, PyObject *y, int op)
@@ -251,7 +333,7 @@ static PyObject *MV_conjugate(MVObject *self, PyObject *u)
 static PyObject *MV_norm2(MVObject *self, PyObject *u)
 {
     (void)u;
-    return PyFloat_FromDouble(ga_mv_norm2(self->mv));
+    return number_result("Multivector.norm2", ga_mv_norm2(self->mv));
 }
 
 static PyObject *MV_inverse(MVObject *self, PyObject *u)
@@ -299,12 +381,12 @@ static PyObject *MV_exp(MVObject *self, PyObject *u)
     ga_generator b;
     int st = mv_to_generator(self->mv, &b);
     if (st == GA_OK)
-        return gpy_mv_new(ga_rotor_to_mv(ga_rotor_exp(b)));
+        return mv_result("Multivector.exp", ga_rotor_to_mv(ga_rotor_exp(b)));
     if (st == GA_ERR_NOTBLADE) {
         ga_mv m = self->mv;
         double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
         if (ga_mv_maxabs(ga_mv_sub(m, ga_mv_grade(m, 2))) <= tol)
-            return gpy_mv_new(ga_mv_exp(ga_mv_grade(m, 2)));
+            return mv_result("Multivector.exp", ga_mv_exp(ga_mv_grade(m, 2)));
     }
     return gpy_status_error("Multivector.exp", st);
 }
@@ -333,21 +415,19 @@ static PyObject *MV_log(MVObject *self, PyObject *u)
 static PyObject *MV_dot(MVObject *self, PyObject *o)
 {
     ga_mv b;
-    if (!mv_coerce(o, &b)) {
+    int r = mv_operand("Multivector.dot", o, &b);
+    if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.dot: a Multivector or a number");
-        return NULL;
-    }
-    return gpy_mv_new(ga_mv_dot(self->mv, b));
+    return r > 0 ? mv_result("Multivector.dot", ga_mv_dot(self->mv, b)) : NULL;
 }
 
 static PyObject *MV_ip(MVObject *self, PyObject *o)
 {
     ga_mv b;
-    if (!mv_coerce(o, &b)) {
+    int r = mv_operand("Multivector.ip", o, &b);
+    if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.ip: a Multivector or a number");
-        return NULL;
-    }
-    return gpy_mv_new(ga_mv_ip(self->mv, b));
+    return r > 0 ? mv_result("Multivector.ip", ga_mv_ip(self->mv, b)) : NULL;
 }
 
 static PyObject *MV_down(MVObject *self, PyObject *u)
@@ -369,18 +449,26 @@ static PyObject *MV_down(MVObject *self, PyObject *u)
 static PyObject *MV_up(PyObject *cls, PyObject *arg)
 {
     (void)cls;
-    PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(arg, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
-    if (!a)
+    double x[3];
+    if (read_numbers("Multivector.up", "x", arg, 3, "Multivector.up: x must have shape (3,)", x))
         return NULL;
-    if (PyArray_NDIM(a) != 1 || PyArray_DIM(a, 0) != 3) {
-        Py_DECREF(a);
-        PyErr_SetString(PyExc_ValueError, "Multivector.up: x must have shape (3,)");
-        return NULL;
+    return mv_result("Multivector.up", ga_point_up((ga_vec3){x[0], x[1], x[2]}));
+}
+
+/* pickling and copying: Multivector(c), c the 32 coefficients as floats */
+static PyObject *MV_reduce(MVObject *self, PyObject *u)
+{
+    (void)u;
+    PyObject *c = PyTuple_New(32);
+    for (int i = 0; c && i < 32; i++) {
+        PyObject *x = PyFloat_FromDouble(self->mv.c[i]);
+        if (!x) {
+            Py_CLEAR(c);
+            break;
+        }
+        PyTuple_SET_ITEM(c, i, x);
     }
-    const double *x = PyArray_DATA(a);
-    ga_mv m = ga_point_up((ga_vec3){x[0], x[1], x[2]});
-    Py_DECREF(a);
-    return gpy_mv_new(m);
+    return c ? Py_BuildValue("O(N)", (PyObject *)Py_TYPE(self), c) : NULL;
 }
 
 static PyObject *MV_blade(PyObject *cls, PyObject *key)
@@ -410,6 +498,7 @@ static PyMethodDef MV_methods[] = {
     {"down", (PyCFunction)MV_down, METH_NOARGS, "the point x of a conformal point X = w F(x)"},
     {"up", (PyCFunction)MV_up, METH_O | METH_CLASS, "Multivector.up(x): the conformal point F(x)"},
     {"blade", (PyCFunction)MV_blade, METH_O | METH_CLASS, "Multivector.blade(i or name): a basis blade"},
+    {"__reduce__", (PyCFunction)MV_reduce, METH_NOARGS, "pickling and copying: Multivector(c)"},
     {NULL, NULL, 0, NULL}};
 
 PyTypeObject gpy_MVType = {

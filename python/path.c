@@ -48,6 +48,7 @@ static PyObject *Path_new(PyTypeObject *type, PyObject *args, PyObject *kw)
 static void Path_dealloc(gpy_PathObject *self)
 {
     PyMem_Free(self->work);
+    PyMem_Free(self->vel);
     if (self->lock)
         PyThread_free_lock(self->lock);
     Py_TYPE(self)->tp_free((PyObject *)self);
@@ -56,7 +57,7 @@ static void Path_dealloc(gpy_PathObject *self)
 /* velocities for lihao2 ((6,) or, affine, (4, 4)) and lihao3 ((n, 6) / (n, 4, 4)) into dim doubles each */
 static int read_velocities(const ga_group *g, PyObject *obj, size_t count, double *vel)
 {
-    PyArrayObject *a = (PyArrayObject *)PyArray_FROM_OTF(obj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *a = gpy_as_doubles(obj);
     if (!a)
         return -1;
     int nd = PyArray_NDIM(a), lihao3 = count > 1;
@@ -69,6 +70,15 @@ static int read_velocities(const ga_group *g, PyObject *obj, size_t count, doubl
         return -1;
     }
     const double *v = PyArray_DATA(a);
+    npy_intp n = (npy_intp)count, per = PyArray_SIZE(a) / n;
+    npy_intp bad = gpy_first_nonfinite(v, PyArray_SIZE(a));
+    if (bad >= 0) {
+        char why[160];
+        gpy_nonfinite_why("velocities", a, bad, why, sizeof why);
+        gpy_raise_status_why("Path: velocities", lihao3, &n, bad / per, GA_ERR_NOTFINITE, why);
+        Py_DECREF(a);
+        return -1;
+    }
     for (size_t i = 0; i < count; i++) {
         ga_mat4 m = twist ? ga_twist_hat((ga_twist){{v[6 * i], v[6 * i + 1], v[6 * i + 2]},
                                                     {v[6 * i + 3], v[6 * i + 4], v[6 * i + 5]}})
@@ -80,13 +90,43 @@ static int read_velocities(const ga_group *g, PyObject *obj, size_t count, doubl
                     st = GA_ERR_NOTFINITE;
         }
         if (st != GA_OK) {
-            npy_intp n = (npy_intp)count;
             gpy_raise_status("Path: velocities", lihao3, &n, (npy_intp)i, st);
             Py_DECREF(a);
             return -1;
         }
     }
     Py_DECREF(a);
+    return 0;
+}
+
+/* Build self's path (Path_init, Path.__setstate__) in a new workspace of
+ * wbytes: n keys at times t, 4x4 matrices (mat4) or group elements; *vel
+ * (nvel doubles, or NULL) becomes self's on success (kept for pickling) and
+ * *vel NULL. 0, or -1 with an exception. */
+static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme, size_t n, const double *t,
+                      const void *keys, int mat4, double **vel, size_t nvel, size_t wbytes)
+{
+    void *work = PyMem_Malloc(wbytes);
+    if (!work) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    ga_path path;
+    int st = mat4 ? ga_path_init_mat4(g, scheme, n, t, keys, *vel, work, wbytes, &path)
+                  : ga_path_init(g, scheme, n, t, keys, *vel, work, wbytes, &path);
+    if (st != GA_OK) {
+        PyErr_Format(gpy_error, "Path: cannot build the %s path: %s", ga_scheme_name(scheme),
+                     ga_status_string(st));
+        PyMem_Free(work);
+        return -1;
+    }
+    self->path = path;
+    self->work = work;
+    self->group = g;
+    self->scheme = scheme;
+    self->vel = *vel;
+    self->nvel = *vel ? nvel : 0;
+    *vel = NULL;
     return 0;
 }
 
@@ -117,9 +157,10 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     }
     int rc = -1;
     double *vel = NULL;
+    size_t nvel = 0;
     ga_mat4 *keys = NULL;
-    PyArrayObject *t = (PyArrayObject *)PyArray_FROM_OTF(tobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
-    PyArrayObject *p = t ? (PyArrayObject *)PyArray_FROM_OTF(pobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY) : NULL;
+    PyArrayObject *t = gpy_as_doubles(tobj);
+    PyArrayObject *p = t ? gpy_as_doubles(pobj) : NULL;
     if (!p)
         goto done;
     if (PyArray_NDIM(t) != 1) {
@@ -174,10 +215,12 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
     for (npy_intp i = 0; i < n; i++)
         if (!isfinite(tv[i]) || (i > 0 && !(tv[i] > tv[i - 1]))) {
-            char why[128] = "", a[32], b[32];
+            char why[160] = "", a[32], b[32];
             if (isfinite(tv[i]))
                 snprintf(why, sizeof why, "%s is not after the time before it, %s (times must increase)",
                          gpy_repr_text(tv[i], a), gpy_repr_text(tv[i - 1], b));
+            else
+                gpy_nonfinite_why("times", t, i, why, sizeof why);
             gpy_raise_status_why("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE,
                                  *why ? why : NULL);
             goto done;
@@ -189,6 +232,13 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
             "Path: scheme 'bspline' needs evenly spaced times (to 1e-9 of the spacing): index %zu is off "
             "the even grid of the first and last",
             bad);
+        goto done;
+    }
+    npy_intp badp = gpy_first_nonfinite(pv, PyArray_SIZE(p));
+    if (badp >= 0) {
+        char why[160];
+        gpy_nonfinite_why("poses", p, badp, why, sizeof why);
+        gpy_raise_status_why("Path: poses", 1, &n, badp / (pose ? 7 : 16), GA_ERR_NOTFINITE, why);
         goto done;
     }
     keys = PyMem_Malloc((size_t)n * sizeof *keys);
@@ -215,7 +265,8 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
             goto done;
         }
         size_t count = scheme == GA_SCHEME_LIHAO3 ? (size_t)n : 1;
-        vel = PyMem_Malloc(count * g->dim * sizeof *vel);
+        nvel = count * g->dim;
+        vel = PyMem_Malloc(nvel * sizeof *vel);
         if (!vel) {
             PyErr_NoMemory();
             goto done;
@@ -223,21 +274,7 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
         if (read_velocities(g, vobj, count, vel))
             goto done;
     }
-    self->work = PyMem_Malloc(wbytes);
-    if (!self->work) {
-        PyErr_NoMemory();
-        goto done;
-    }
-    int st = ga_path_init_mat4(g, scheme, (size_t)n, tv, keys, vel, self->work, wbytes, &self->path);
-    if (st != GA_OK) {
-        PyErr_Format(gpy_error, "Path: cannot build the %s path: %s", sname, ga_status_string(st));
-        PyMem_Free(self->work);
-        self->work = NULL;
-        goto done;
-    }
-    self->group = g;
-    self->scheme = scheme;
-    rc = 0;
+    rc = path_build(self, g, scheme, (size_t)n, tv, keys, 1, &vel, nvel, wbytes);
 done:
     PyMem_Free(keys);
     PyMem_Free(vel);
@@ -288,8 +325,6 @@ static int k_velocity(void *ctx, const double *const *in, double *out, npy_intp 
     (void)k;
     const ga_path *p = ((path_ctx *)ctx)->path;
     double v[GA_GROUP_MAX_DIM];
-    if (!isfinite(in[0][0]))
-        return path_failed(ctx, GA_ERR_NOTFINITE);
     int st = ga_path_velocity(p, in[0][0], v);
     if (st != GA_OK)
         return path_failed(ctx, st);
@@ -305,8 +340,6 @@ static int k_acceleration(void *ctx, const double *const *in, double *out, npy_i
     (void)k;
     const ga_path *p = ((path_ctx *)ctx)->path;
     double a[GA_GROUP_MAX_DIM];
-    if (!isfinite(in[0][0]))
-        return path_failed(ctx, GA_ERR_NOTFINITE);
     int st = ga_path_acceleration(p, in[0][0], a);
     if (st != GA_OK)
         return path_failed(ctx, st);
@@ -317,7 +350,8 @@ static int k_acceleration(void *ctx, const double *const *in, double *out, npy_i
     return GA_OK;
 }
 
-/* A time the path is not defined at: outside its range (or NaN). */
+/* A time the path is not defined at: outside its range (a NaN or an
+ * infinity does not come here: the loop refuses it first). */
 static void explain_time(void *ctx, const double *const *in, int status, char *why, size_t size)
 {
     const path_ctx *pc = ctx;
@@ -325,9 +359,7 @@ static void explain_time(void *ctx, const double *const *in, int status, char *w
     if (status == GA_ERR_NOTFINITE || pc->range_status != GA_OK)
         return;
     char a[32], b[32], c[32];
-    if (isnan(t))
-        snprintf(why, size, "t is NaN");
-    else if (t < t0 || t > t1)
+    if (t < t0 || t > t1)
         snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", gpy_repr_text(t, a),
                  gpy_repr_text(t0, b), gpy_repr_text(t1, c));
 }
@@ -463,10 +495,16 @@ static PyObject *Path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
                      ga_scheme_name(self->scheme));
         return NULL;
     }
+    if (!isfinite(op.t)) { /* as every call refuses a NaN or an infinity */
+        char why[64], num[32];
+        snprintf(why, sizeof why, "t is %s", gpy_repr_text(op.t, num));
+        gpy_raise_status_why("Path.append", 0, NULL, 0, GA_ERR_NOTFINITE, why);
+        return NULL;
+    }
     path_locked(self, append_step, &op);
     if (op.refused)
         return append_refused(self, &op);
-    PyArrayObject *p = (PyArrayObject *)PyArray_FROM_OTF(pobj, NPY_DOUBLE, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *p = gpy_as_doubles(pobj);
     if (!p)
         return NULL;
     int pose = PyArray_NDIM(p) == 1 && PyArray_DIM(p, 0) == 7 && self->group->rigid;
@@ -476,6 +514,14 @@ static PyObject *Path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
         PyErr_SetString(PyExc_ValueError, self->group->rigid
                                               ? "Path.append: pose must have shape (4, 4) or (7,)"
                                               : "Path.append: pose must have shape (4, 4)");
+        Py_DECREF(p);
+        return NULL;
+    }
+    npy_intp bad = gpy_first_nonfinite(PyArray_DATA(p), PyArray_SIZE(p));
+    if (bad >= 0) {
+        char why[160];
+        gpy_nonfinite_why("pose", p, bad, why, sizeof why);
+        gpy_raise_status_why("Path.append", 0, NULL, 0, GA_ERR_NOTFINITE, why);
         Py_DECREF(p);
         return NULL;
     }
@@ -543,6 +589,169 @@ static PyObject *Path_repr(gpy_PathObject *self)
                                 self->group->name, n);
 }
 
+/* ---- pickling and copying ----------------------------------------------------- */
+
+/* A path's state: the first n key times and keys (as the group holds them) */
+typedef struct {
+    size_t n;
+    double *t, *keys;
+} state_copy;
+
+static void copy_state(gpy_PathObject *self, void *arg)
+{
+    state_copy *c = arg;
+    const ga_path *p = &self->path;
+    size_t ed = p->group->elem_size / sizeof(double);
+    memcpy(c->t, p->t, c->n * sizeof(double));
+    for (size_t i = 0; i < c->n; i++)
+        memcpy(c->keys + i * ed, p->key + i * p->key_stride, ed * sizeof(double));
+}
+
+/* __reduce__: copyreg.__newobj__(Path), then __setstate__(state) with state
+ * (group, scheme, times, keys, velocities, capacity): the keys as the group
+ * holds them ((n, elem_size / 8) doubles: a rotor's 8 coefficients on cga,
+ * a 4x4 matrix on matrix and affine), the velocities given to the
+ * constructor in the group's coordinates ((count, dim), or None). Built from
+ * these by ga_path_init, the path is the one pickled, bit for bit: the same
+ * keys, times, velocities and room, and an appended path equals the one built
+ * from all its keys (ga_path_append). Nothing in it is a pointer. */
+static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
+{
+    (void)unused;
+    if (!path_ready(self))
+        return NULL;
+    const ga_group *g = self->group;
+    size_t n;
+    path_locked(self, read_n, &n); /* keys are only added: the first n stay */
+    npy_intp tn = (npy_intp)n, kd[2] = {(npy_intp)n, (npy_intp)(g->elem_size / sizeof(double))};
+    PyArrayObject *t = (PyArrayObject *)PyArray_SimpleNew(1, &tn, NPY_DOUBLE);
+    PyArrayObject *k = t ? (PyArrayObject *)PyArray_SimpleNew(2, kd, NPY_DOUBLE) : NULL;
+    PyObject *v = Py_None, *copyreg = k ? PyImport_ImportModule("copyreg") : NULL;
+    PyObject *newobj = copyreg ? PyObject_GetAttrString(copyreg, "__newobj__") : NULL;
+    Py_INCREF(v);
+    if (newobj && self->vel) {
+        npy_intp vd[2] = {(npy_intp)(self->nvel / g->dim), (npy_intp)g->dim};
+        Py_SETREF(v, PyArray_SimpleNew(2, vd, NPY_DOUBLE));
+        if (v)
+            memcpy(PyArray_DATA((PyArrayObject *)v), self->vel, self->nvel * sizeof(double));
+    }
+    PyObject *r = NULL;
+    if (newobj && v) {
+        state_copy sc = {n, PyArray_DATA(t), PyArray_DATA(k)};
+        path_locked(self, copy_state, &sc);
+        r = Py_BuildValue("O(O)(ssOOOn)", newobj, (PyObject *)Py_TYPE(self), g->name,
+                          ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
+                          (Py_ssize_t)self->path.cap);
+    }
+    Py_XDECREF(t);
+    Py_XDECREF(k);
+    Py_XDECREF(v);
+    Py_XDECREF(copyreg);
+    Py_XDECREF(newobj);
+    return r;
+}
+
+static PyObject *state_error(const char *what)
+{
+    PyErr_Format(PyExc_ValueError, "Path: state: %s", what);
+    return NULL;
+}
+
+/* __setstate__(state): an uninitialised Path (copyreg.__newobj__) built
+ * from the state __reduce__ gives, each part checked as the constructor
+ * checks its arguments: the keys must be the group's elements (each read
+ * back from its 4x4 matrix by the group, to 1e-9) */
+static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
+{
+    if (self->work) {
+        PyErr_SetString(PyExc_TypeError, "Path: already initialised");
+        return NULL;
+    }
+    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) != 6 ||
+        !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)))
+        return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity)");
+    const char *gname = PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 0));
+    const char *sname = gname ? PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 1)) : NULL;
+    if (!sname)
+        return NULL;
+    const ga_group *g = gpy_group_arg("Path: state", gname);
+    ga_scheme scheme;
+    if (!g)
+        return NULL;
+    if (ga_scheme_by_name(sname, &scheme) != GA_OK)
+        return state_error("no such scheme");
+    Py_ssize_t cap = PyNumber_AsSsize_t(PyTuple_GET_ITEM(state, 5), PyExc_OverflowError);
+    if (cap == -1 && PyErr_Occurred())
+        return NULL;
+    PyObject *ret = NULL;
+    double *vel = NULL;
+    size_t nvel = 0, ed = g->elem_size / sizeof(double);
+    PyArrayObject *t = gpy_as_doubles(PyTuple_GET_ITEM(state, 2));
+    PyArrayObject *k = t ? gpy_as_doubles(PyTuple_GET_ITEM(state, 3)) : NULL;
+    PyArrayObject *v = NULL;
+    if (!k)
+        goto done;
+    npy_intp n = PyArray_NDIM(t) == 1 ? PyArray_DIM(t, 0) : 0;
+    if (n < 1) {
+        state_error("times must be a 1-d array of one time or more");
+        goto done;
+    }
+    if (PyArray_NDIM(k) != 2 || PyArray_DIM(k, 0) != n || PyArray_DIM(k, 1) != (npy_intp)ed) {
+        PyErr_Format(PyExc_ValueError, "Path: state: keys must have shape (%zd, %zu)", (Py_ssize_t)n, ed);
+        goto done;
+    }
+    if (cap < n || (cap > n && !ga_scheme_can_append(scheme))) {
+        state_error("the capacity does not fit the keys and the scheme");
+        goto done;
+    }
+    const double *kv = PyArray_DATA(k);
+    for (npy_intp i = 0; i < n; i++) {
+        double e[GA_GROUP_MAX_ELEM];
+        int st = gpy_first_nonfinite(kv + i * ed, (npy_intp)ed) >= 0
+                   ? GA_ERR_NOTFINITE
+                   : g->from_mat4(g->to_mat4(kv + i * ed), e);
+        if (st != GA_OK) {
+            gpy_raise_status("Path: state: keys", 1, &n, i, st);
+            goto done;
+        }
+    }
+    if (PyTuple_GET_ITEM(state, 4) != Py_None) {
+        npy_intp count = scheme == GA_SCHEME_LIHAO3 ? n : 1;
+        if (!(v = gpy_as_doubles(PyTuple_GET_ITEM(state, 4))))
+            goto done;
+        if ((scheme != GA_SCHEME_LIHAO2 && scheme != GA_SCHEME_LIHAO3) || PyArray_NDIM(v) != 2 ||
+            PyArray_DIM(v, 0) != count || PyArray_DIM(v, 1) != (npy_intp)g->dim) {
+            state_error("the velocities do not fit the keys and the scheme");
+            goto done;
+        }
+        nvel = (size_t)count * g->dim;
+        if (gpy_first_nonfinite(PyArray_DATA(v), (npy_intp)nvel) >= 0) {
+            state_error("the velocities are not finite");
+            goto done;
+        }
+        if (!(vel = PyMem_Malloc(nvel * sizeof *vel))) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        memcpy(vel, PyArray_DATA(v), nvel * sizeof *vel);
+    }
+    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)cap);
+    if (wbytes == 0) {
+        state_error("the capacity is too large, or the scheme is not defined on the group");
+        goto done;
+    }
+    if (path_build(self, g, scheme, (size_t)n, PyArray_DATA(t), kv, 0, &vel, nvel, wbytes) == 0) {
+        Py_INCREF(Py_None);
+        ret = Py_None;
+    }
+done:
+    PyMem_Free(vel);
+    Py_XDECREF(t);
+    Py_XDECREF(k);
+    Py_XDECREF(v);
+    return ret;
+}
+
 static PyMethodDef Path_methods[] = {
     {"sample", (PyCFunction)(void (*)(void))Path_sample, METH_VARARGS | METH_KEYWORDS,
      "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
@@ -558,6 +767,11 @@ static PyMethodDef Path_methods[] = {
      "building one "
      "new segment; the Path then equals one built from all the keys, bit for bit. Room: Path(..., "
      "capacity=m)."},
+    {"__reduce__", (PyCFunction)Path_reduce, METH_NOARGS,
+     "pickling and copying: (copyreg.__newobj__, (Path,), state), state = (group, scheme, times, keys, "
+     "velocities, capacity)"},
+    {"__setstate__", (PyCFunction)Path_setstate, METH_O,
+     "build an uninitialised Path from the state __reduce__ gives (unpickling, copying)"},
     {NULL, NULL, 0, NULL}};
 
 static PyGetSetDef Path_getset[] = {

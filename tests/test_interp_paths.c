@@ -2,7 +2,8 @@
  * bivector, quadratic, smooth, lihao2, lihao3; interp/path.h) on the three
  * groups of interp/group.h: through the keys, continuity and C1 at the keys,
  * the analytic velocity and acceleration against finite differences (body and
- * spatial frames), one key, the growth rule of the key velocities, cga = se3.
+ * spatial frames), one key, the growth rule of the key velocities, cga = se3,
+ * the branch rule (keys turning by less than its band keep their principal log).
  * Seeded (interp_kit.h), so every run is the same; a second.
  */
 #include "interp_kit.h"
@@ -515,9 +516,141 @@ static void test_cga_se3(void)
     tk_end(&c_vel);
 }
 
+/* ---- the branch rule (group.h branch) --------------------------------------------- */
+
+/* A path through twist keys, each key exp(x_i) on the group (as
+ * fuzz/fuzz_path.c builds them), with the given times. */
+static int twist_path(pathbuf *b, const ga_group *g, ga_scheme s, int n, const double *t,
+                      const double (*x)[6])
+{
+    double keys[MAXK * 16];
+    size_t es = g->elem_size / sizeof(double);
+    for (int i = 0; i < n; ++i)
+        if (g->exp(x[i], keys + (size_t)i * es) != GA_OK)
+            return GA_ERR_DOMAIN;
+    return ga_path_init(g, s, (size_t)n, t, keys, NULL, b->work, sizeof b->work, &b->p);
+}
+
+/* Velocity and acceleration in both frames at 41 times over the keys: their
+ * statuses go to c; returns the largest |entry| of any (NaN kept). */
+static double derivs(const ga_path *p, tk_check *c)
+{
+    double t0 = p->t[0], t1 = p->t[p->n - 1], big = 0;
+    for (int q = 0; q <= 40; ++q) {
+        double t = q == 40 ? t1 : t0 + (t1 - t0) * q / 40, v[6], a[6];
+        int st = ga_path_velocity(p, t, v);
+        tk_add_status(c, st, GA_OK);
+        for (int i = 0; i < 6 && st == GA_OK; ++i) big = tk_max(big, fabs(v[i]));
+        for (int f = 0; f < 2; ++f) {
+            st = ga_path_differentiate(p, t, (ga_frame)f, v, a);
+            tk_add_status(c, st, GA_OK);
+            for (int i = 0; i < 6 && st == GA_OK; ++i) big = tk_max(big, tk_max(fabs(v[i]), fabs(a[i])));
+        }
+    }
+    return big;
+}
+
+/* The rule keeps a key whose rotation is below GA_GROUP_HALF_TURN_BAND: its
+ * other branch, a full turn less th, has |k| ~ 2 pi/th times its w and its
+ * translation across the axis (fuzz/regress/path/smooth-matrix-velocity-domain:
+ * th 2.5e-307, |v'| 1e306, ga_path_velocity GA_ERR_DOMAIN on matrix). Above
+ * the band the rule is W-L's, as before: the other branch wherever the
+ * rotation quaternions of consecutive keys have a negative dot product. */
+static void test_branch(void)
+{
+    static const ga_scheme gen_schemes[3] = {GA_SCHEME_BIVECTOR, GA_SCHEME_QUADRATIC, GA_SCHEME_SMOOTH};
+    const ga_group *gs[2] = {&ga_group_cga, &ga_group_se3};
+    tk_check c_fz = tk_begin("fuzz keys (2.5e-307 rad after 10.7): velocity, accel status", 0);
+    tk_check c_fzb = tk_begin("fuzz keys: |v|, |a| finite", 0);
+    tk_check c_kept = tk_begin("turn below the band after 190 deg: principal log kept", 0);
+    tk_check c_small = tk_begin("turn below the band: velocity, accel GA_OK", 0);
+    tk_check c_smallb = tk_begin("turn below the band: max |v|, |a| / 1e3", 1.0);
+    tk_check c_flip = tk_begin("turn above the band: other branch, ||w'| - (2pi - th)| / 2pi", 1e-14);
+    tk_check c_cm = tk_begin("cga == matrix key generators, / max |X_i|", 1e-14);
+    tk_check c_mid = tk_begin("170 -> 190 deg about z: bivector half-way R = diag(-1,-1,1)", 1e-15);
+
+    /* the fuzz input's keys and times (smooth on matrix), bivector and smooth */
+    static const double tf[5] = {0, 1, 2, 3, 4};
+    static const double xf[5][6] = {
+        {0, 6.1875, 6.1875, 6.1875, 6.1875, 6.1875},
+        {6.1875, 6.1875, 6.1875, 6.1875, 6.1875, 6.1875},
+        {6.1875, 6.1875, 6.1875, 6.1875, 6.1875, 6.1875},
+        {6.1875, 6.1875, 6.1875, 6.1875, 6.1875, 6.4375},
+        {1.7800590868057611e-307, 1.7800590868057611e-307, 0, 8.9547513199638558e-274, 0.25, -0.0}};
+    for (int gi = 0; gi < 2; ++gi)
+        for (int si = 0; si < 3; si += 2) {
+            pathbuf b;
+            int st = twist_path(&b, gs[gi], gen_schemes[si], 5, tf, xf);
+            tk_add_status(&c_fz, st, GA_OK);
+            if (st == GA_OK)
+                tk_add_bool(&c_fzb, isfinite(derivs(&b.p, &c_fz)));
+        }
+
+    /* 170 deg about z, 190 deg about z (the other branch of its principal
+     * log, 170 deg about -z), then a turn th about x with a translation
+     * across it: every generator scheme (quadratic takes three keys). Below
+     * the band the key generators are the principal logs, at most 3.5
+     * apart over spacings of 1 and 1.5: velocities and accelerations of a
+     * few units (the bound, 1e3, leaves room); the other branch would make
+     * the last generator 0.25 |k| >= 3e9. */
+    static const double th[8] = {1e-300, 1e-100, 1e-15, 5e-10, 2e-9, 1e-6, 1e-2, 1.0};
+    static const double t3[3] = {0, 1, 2.5};
+    double a170 = 170 * PI / 180;
+    for (int k = 0; k < 8; ++k) {
+        double x3[3][6] = {{0, 0, a170, 0.5, 0, 0}, {0, 0, -a170, 1, 0.25, 0}, {th[k], 0, 0, 0, 0.25, 0}};
+        double gen[2][18] = {{0}};
+        for (int gi = 0; gi < 2; ++gi)
+            for (int si = 0; si < 3; ++si) {
+                const ga_group *g = gs[gi];
+                pathbuf b;
+                int st = twist_path(&b, g, gen_schemes[si], 3, t3, (const double(*)[6])x3);
+                tk_add_status(&c_small, st, GA_OK);
+                if (st != GA_OK)
+                    continue;
+                memcpy(gen[gi], b.p.gen, sizeof gen[gi]);
+                /* key 1 is 190 deg about +z, as W-L's rule makes it */
+                tk_add_bool(&c_kept, b.p.gen[8] > PI);
+                double e[16], x2[6], *g2 = b.p.gen + 12;
+                TK_OK(g->exp(x3[2], e));
+                TK_OK(g->log(e, x2));
+                double w2 = sqrt(g2[0] * g2[0] + g2[1] * g2[1] + g2[2] * g2[2]);
+                if (th[k] < GA_GROUP_HALF_TURN_BAND) {
+                    tk_add_bool(&c_kept, memcmp(g2, x2, sizeof x2) == 0);
+                    tk_add(&c_smallb, derivs(&b.p, &c_small) / 1e3);
+                } else {
+                    tk_add(&c_flip, fabs(w2 - (2 * PI - th[k])) / (2 * PI));
+                }
+            }
+        double sc = 0;
+        for (int i = 0; i < 18; ++i) sc = fmax(sc, fabs(gen[1][i]));
+        for (int i = 0; i < 18; ++i) tk_add(&c_cm, fabs(gen[0][i] - gen[1][i]) / sc);
+    }
+
+    /* docs/schemes.md's keys: 170 and 190 deg about z, bivector at 0.5 */
+    for (int gi = 0; gi < 2; ++gi) {
+        keyset k = {.n = 2, .t = {0, 1}};
+        k.m[0] = rigid((ga_vec3){0, 0, 1}, a170, (ga_vec3){0, 0, 0});
+        k.m[1] = rigid((ga_vec3){0, 0, 1}, 190 * PI / 180, (ga_vec3){1, 0, 0});
+        pathbuf b;
+        TK_OK(mkpath(&b, gs[gi], GA_SCHEME_BIVECTOR, &k, NULL));
+        ga_mat4 m = at(&b.p, 0.5), want = {{-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
+        for (int i = 0; i < 3; ++i) m.m[4 * i + 3] = 0; /* the rotation */
+        tk_add(&c_mid, mdiff(m, want));
+    }
+    tk_end(&c_fz);
+    tk_end(&c_fzb);
+    tk_end(&c_kept);
+    tk_end(&c_small);
+    tk_end(&c_smallb);
+    tk_end(&c_flip);
+    tk_end(&c_cm);
+    tk_end(&c_mid);
+}
+
 static const tk_section sections[] = {
     {"keys", test_keys, TK_STREAM},     {"c1", test_c1, TK_STREAM},   {"accel", test_accel, 0},
-    {"growth", test_growth, TK_STREAM}, {"cga_se3", test_cga_se3, 0}, {"time", tk_cpu_time, TK_SETUP},
+    {"growth", test_growth, TK_STREAM}, {"cga_se3", test_cga_se3, 0}, {"branch", test_branch, 0},
+    {"time", tk_cpu_time, TK_SETUP},
 };
 
 int main(int argc, char **argv)

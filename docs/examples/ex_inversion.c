@@ -16,8 +16,8 @@ int main(void)
     if (ga_versor_apply(V, L, &C) != GA_OK || ga_object_from_mv(C, &o) != GA_OK)
         return 1;
     printf("image of the line: %s, centre (%g, %g, %g), r^2 = %g, normal (%g, %g, %g)\n", kind[o.kind],
-           o.centre.x, o.centre.y, o.centre.z + 0.0, o.r2, o.direction.x + 0.0, o.direction.y + 0.0,
-           o.direction.z);
+           o.centre.x + 0.0, o.centre.y + 0.0, o.centre.z + 0.0, o.r2, o.direction.x + 0.0,
+           o.direction.y + 0.0, o.direction.z);
     /* the images of a and b, point by point, and their distance from the circle */
     const ga_vec3 *p[] = {&a, &b};
     for (int i = 0; i < 2; i++) {

@@ -35,6 +35,19 @@ static void show(const char *what, ga_mv X)
     printf("\n");
 }
 
+/* a round with the bounds its read-back states (object.h, "Accuracy") */
+static void show_bounds(const char *what, ga_mv X)
+{
+    ga_object o;
+    int st = ga_object_from_mv(X, &o);
+    if (st != GA_OK) {
+        printf("%-28s %s\n", what, ga_status_string(st));
+        return;
+    }
+    printf("%-28s %s, %s: centre (%.6g, %.6g, %.6g) to %.2g, r^2 = %.6g to %.2g\n", what, kind[o.kind],
+           reality[o.reality], o.centre.x + 0.0, o.centre.y + 0.0, o.centre.z + 0.0, o.err, o.r2, o.r2_err);
+}
+
 int main(void)
 {
     ga_vec3 o = {0, 0, 0}, ex = {1, 0, 0}, ez = {0, 0, 1};
@@ -48,7 +61,9 @@ int main(void)
     show("plane z = 0 ^ plane z = 1", ga_mv_meet(ga_plane_dual(ez, 0), ga_plane_dual(ez, 1)));
     show("plane z = 1e5 from points",
          ga_plane_from_points((ga_vec3){0, 0, 1e5}, (ga_vec3){1, 0, 1e5}, (ga_vec3){0, 1, 1e5}));
-    show("unit sphere at 1e4", ga_sphere_dual((ga_vec3){1e4, 0, 0}, 1));
+    show_bounds("sphere r = 50 at 100", ga_sphere_dual((ga_vec3){100, 0, 0}, 50));
+    show_bounds("unit sphere at 1e4", ga_sphere_dual((ga_vec3){1e4, 0, 0}, 1));
+    show_bounds("unit sphere at 1e8", ga_sphere_dual((ga_vec3){1e8, 0, 0}, 1));
     ga_vec3 p;
     double d;
     check(ga_point_project((ga_vec3){3, 4, 0}, S1, &p), "ga_point_project");

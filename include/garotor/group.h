@@ -32,7 +32,8 @@ extern "C" {
 /** The largest element size of any group here, in doubles (a 4x4 matrix). */
 #define GA_GROUP_MAX_ELEM 16
 /** Half-turn band (rad) of the twist groups' half-turn and branch rules
- *  (ga_group.half_turn, ga_group.branch). */
+ *  (ga_group.half_turn, ga_group.branch); the branch rule also keeps the
+ *  principal log of a rotation smaller than it. */
 #define GA_GROUP_HALF_TURN_BAND 1e-9
 
 typedef struct ga_group ga_group;
@@ -107,9 +108,12 @@ struct ga_group {
      *  quaternions q(x) = (cos(|w|/2), sin(|w|/2) w/|w|) of prev and x have a
      *  dot product below -GA_GROUP_HALF_TURN_BAND/2: W-L's rotor rule
      *  <R_i ~R_{i-1}>_0 >= 0 (consecutive keys take the shortest motion) in
-     *  twist coordinates, so that cga and se3 choose alike. Within the band
-     *  (keys a half turn apart, where rounding would decide) and for a pure
-     *  translation (th = 0, no other branch) x is kept. */
+     *  twist coordinates, so that cga and se3 choose alike. x is kept within
+     *  the band (keys a half turn apart, where rounding would decide), for a
+     *  rotation th < GA_GROUP_HALF_TURN_BAND (its other branch, a full turn
+     *  less th, is |k| ~ 2 pi/th times its w and v_perp, and its axis rests on
+     *  the key's rounding) and for a pure translation (th = 0, no other
+     *  branch). */
     void (*branch)(const double *prev, double *x);
     /** The rotation and translation of a rigid element: q = (w, x, y, z) a
      *  unit quaternion (Hamilton's convention, either sign) and p such that

@@ -13,25 +13,37 @@
  * A flat with no finite point (the meet of parallel planes, of a line
  * parallel to a plane) is empty.
  *
- * Accuracy. Lengths read back (centres, points, distances) are compared with
- * L = max(1, |c| + |r|), the object's extent from the origin in units of
- * lambda = 1, and squared radii with L^2. A vector stored in the e4/e5 basis
- * holds (|x|^2 -+ 1)/2, so a round about the origin carries its weight
- * w = -X.n only to about u L^2 / |w|:
- *   - flats (planes, lines, flat points) keep their lengths to a few u L
- *     anywhere up to 1e8 from the origin: conformal.h's constructors build
- *     about the first point and translate (the translation rotor moves F(x) to
- *     F(x + a) without cancelling), and the meet of two flats is taken
- *     directly;
- *   - rounds are read back where 8 u s <= GA_OBJECT_TOL |w| (s the largest
- *     coefficient of the carrier sphere) and refused with GA_ERR_PRECISION (or,
- *     when rounding already broke the blade, GA_ERR_NOTBLADE) beyond; for a
- *     unit-sized round that is within a few tens of units of the origin. A
- *     dual vector whose weight is below 64 u s is a flat as stored: at 1e8,
- *     ga_sphere_dual of a sphere of radius below ~1e7 is already a plane.
- * No read-back of one ga_mv can keep 1e-12 for every round far out: the
- * stored e4/e5 coefficients have lost what it needs (docs/conformal.md, "Far
- * from the origin").
+ * Accuracy. GA_OK means the answer is right to the bound it states. The
+ * input is taken as known to its own rounding: each coefficient to u = 2^-53
+ * times the largest coefficient of its class (the blades of one grade with
+ * as many factors e4 or e5), the error of its last rounding. ga_object_from_mv
+ * reads the object of every multivector within that, and states in the
+ * ga_object how far it can be off: err (the centre), r2_err, angle_err (the
+ * direction), first-order bounds of the input's rounding and its own. They
+ * are no promise about how the input was made: a chain of operations before
+ * it carries its own errors, which no read-back can see.
+ *   - Flats (planes, lines, flat points) keep their lengths to a few u L,
+ *     L = max(1, |c| + |r|), anywhere up to 1e8 from the origin: conformal.h's
+ *     constructors build about the first point and translate exactly, the meet
+ *     of two flats is exact to its rounding, and a flat's e4 and e5 parts come
+ *     out equal (its weight v.n, or X ^ n, exactly 0: that is what "flat" means
+ *     to the read-back).
+ *   - A round's weight (-X.n) is a difference of e4 and e5 coefficients of the
+ *     size of its squared distance from the origin, so it is known only to u
+ *     times that: a unit sphere built 1e4 from the origin has r^2 = 1 to about
+ *     3 (and reads as tangent: at the scale of its distance it is a point), and
+ *     at 1e8 its weight rounds to 0 in storage: it is a plane as stored, and
+ *     read as one.
+ *   - Refused with GA_ERR_PRECISION: a weight within its uncertainty of 0 but
+ *     not 0 (round and flat at once to the input's accuracy), or not known to
+ *     a quarter of itself.
+ *   - Real, tangent and imaginary use the same bound: tangent when |r^2| is
+ *     within max(GA_OBJECT_TANGENT_TOL L^2, r2_err).
+ *   - The functions below that state no bound of their own (ga_point_project,
+ *     _reject, _distance, ga_object_angle, ga_rotor_between) promise
+ *     GA_OBJECT_TOL: they refuse with GA_ERR_PRECISION an object whose err
+ *     exceeds GA_OBJECT_TOL L or whose r2_err exceeds GA_OBJECT_TOL L^2.
+ * docs/conformal.md ("Far from the origin") has the figures.
  *
  * Local origin and length scale. The answer is to carry an origin o and a
  * length lambda with the object: a scene held "about (o, lambda)" is the
@@ -88,8 +100,9 @@ enum {
  *  below 1e-6 L is therefore reported tangent, and its r^2 is still given. */
 #define GA_OBJECT_TANGENT_TOL 1e-12
 
-/** The accuracy promised, relative to L (above): a round whose rounding bound
- *  exceeds it is refused with GA_ERR_PRECISION. */
+/** The accuracy promised, relative to L (above), by the functions that state
+ *  no bound of their own: an object whose bounds exceed it is refused there
+ *  with GA_ERR_PRECISION (ga_object_from_mv states the bounds instead). */
 #define GA_OBJECT_TOL 1e-12
 
 /** What an object is and where. For a flat point: centre is the point. Line:
@@ -105,14 +118,20 @@ typedef struct {
     int reality; /**< GA_REALITY_* */
     ga_vec3 centre;
     ga_vec3 direction;
-    double r2; /**< signed squared radius of a round; 0 for a flat */
+    double r2;        /**< signed squared radius of a round; 0 for a flat */
+    double err;       /**< bound of the error of centre, in its length units (see "Accuracy") */
+    double r2_err;    /**< bound of the error of r2 (0 for a flat) */
+    double angle_err; /**< bound of the angle of direction from the exact one, radians (0 where none) */
 } ga_object;
 
-/** Classify X and read it back. GA_ERR_NOTFINITE on NaN/Inf, GA_ERR_SINGULAR for
- *  X = 0 (e.g. the meet of two objects not in general position: coincident
- *  planes, a line in a plane), GA_ERR_NOTBLADE when X is not one of the
- *  objects above (mixed grades, grade 0 or 5, a non-blade), to GA_POINT_TOL
- *  relative. */
+/** Classify X and read it back with its bounds ("Accuracy" above).
+ *  GA_ERR_NOTFINITE on NaN/Inf, GA_ERR_SINGULAR for X = 0 (the meet of two
+ *  objects in special position: coincident planes, a line in a plane),
+ *  GA_ERR_NOTBLADE when X is not one of the objects above (mixed grades,
+ *  grade 0 or 5, a non-blade), to GA_POINT_TOL relative (what is off the
+ *  object's grade up to that is taken into its uncertainty),
+ *  GA_ERR_PRECISION where round and flat cannot be told apart, GA_ERR_DOMAIN
+ *  where a bound overflows. */
 GA_API GA_NODISCARD ga_status ga_object_from_mv(ga_mv X, ga_object *out);
 
 /** ga_object_from_mv of an object held about (o, lambda) (see "Local origin
@@ -120,17 +139,22 @@ GA_API GA_NODISCARD ga_status ga_object_from_mv(ga_mv X, ga_object *out);
  *  centre c of a round or flat point, the point closest to the world's origin
  *  for a plane (d m, d = lambda d_o + m.o) or a line, r^2 times lambda^2;
  *  kind, reality and direction as read about (o, lambda) (tangent relative to
- *  L_o). Codes of ga_object_from_mv on X; GA_ERR_NOTFINITE for NaN/Inf in o or
- *  lambda, GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on overflow. */
+ *  L_o). Codes of ga_object_from_mv on X; the bounds in world units (times lambda, and
+ *  the rounding of the move). GA_ERR_NOTFINITE for NaN/Inf in o or lambda,
+ *  GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on overflow. */
 GA_API GA_NODISCARD ga_status ga_object_from_mv_about(ga_mv X, ga_vec3 origin, double lambda, ga_object *out);
 
 /** The object X, given in world coordinates, held about (o, lambda): translated
  *  by -o (T_-o X ~T_-o), then every length divided by lambda (o -> lambda o,
  *  n -> n / lambda in the basis n, nbar; a positive multiple of the object of
  *  the points (x - o) / lambda). A flat built in world coordinates (a plane
- *  1e8 away) comes in as accurate as it was; a round as inaccurate as it was.
- *  GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for lambda <= 0, GA_ERR_DOMAIN on
- *  overflow. */
+ *  1e8 away) comes in as accurate as it was. A round keeps only what it had:
+ *  where the move makes the rounding of its world form ("Accuracy" above)
+ *  more than 16 times u of its local form's largest coefficient, its local
+ *  read-back would claim digits the world form does not hold, and it is
+ *  refused with GA_ERR_PRECISION (build such a round about the local origin
+ *  instead). GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_ARG for lambda <= 0,
+ *  GA_ERR_DOMAIN on overflow. */
 GA_API GA_NODISCARD ga_status ga_mv_localize(ga_mv X, ga_vec3 origin, double lambda, ga_mv *out);
 
 /** The rigid motion R of an object X held about (o, lambda): R T_o X ~T_o ~R is
@@ -147,11 +171,19 @@ GA_API GA_NODISCARD ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, g
  *  Sphere/plane with sphere/plane: a circle or line (real, tangent, imaginary,
  *  or empty for parallel planes); sphere/plane with circle/line: a point pair or
  *  flat point. A vector argument is a dual sphere or plane (converted with
- *  ga_mv_dual). Zero when the objects are not in general position (their
- *  grades sum to less than 5 after dualising, or they share a flat):
- *  ga_mv_meet_rel gives their meet then. Two flats meet directly; with a
- *  round, the meet is taken about its centre (translated there and back) so
- *  that it adds no cancellation to the round's own. */
+ *  ga_mv_dual). The duals are exact, and the outer product is carried in
+ *  double-double and rounded once: the meet of A and B as given, to u of each
+ *  coefficient, at any distance from the origin.
+ *  Exactly 0 when the objects are in special position (not in general
+ *  position: their grades sum to less than 5 after dualising, or they share
+ *  a flat: a sphere and itself, a line in a plane, two lines through a
+ *  point, coincident planes), decided to the accuracy of the inputs: every
+ *  coefficient of the outer product within what moving each input
+ *  coefficient by 32 u of its class ("Accuracy" above; the roundings of a
+ *  construction of a few dozen operations) and the product's rounding can
+ *  make of it. So ga_object_from_mv of the meet says GA_ERR_SINGULAR there,
+ *  never an object read from a rounding residue; ga_mv_meet_rel gives their
+ *  meet. */
 GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 
 /** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
@@ -163,7 +195,7 @@ GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
  *  sines: the singular values of the part of B's basis orthogonal to A's,
  *  modified Gram-Schmidt twice). Where the rounding that the move to (o,
  *  lambda) adds is larger, that is the tolerance: 64 u |o| / lambda for two
- *  flats (at most 64 u 2^10 ~ 7e-12, as lambda >= 2^-10 |o|), 64 u
+ *  flats (at most 64 u 2^3 ~ 6e-14, as lambda >= 2^-2 |o| there), 64 u
  *  (|o| / lambda)^2 with a round or a point (above 1e-9 for rounds some 400
  *  of their sizes from the origin: hold such scenes about a local origin).
  *  An input is a blade when the k-th smallest singular value of x -> x ^ X
@@ -192,7 +224,10 @@ GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
  *  The decisions are made about a local origin o (A's centre, or its point
  *  nearest the origin for a flat; B's if A has none) in units of a power of
  *  two lambda near the larger of the radii and the distance of the two
- *  centres, and at least 2^-10 |o| (ga_mv_localize), where the coefficients
+ *  centres, and at least 2^-10 |o| with a round, 2^-2 |o| for two flats (whose
+ *  rounding, u |o| times the condition of their construction, must stay
+ *  below the tolerance: a line and the same line through two other of its
+ *  points, 1e-4 |o| apart, are one line) (ga_mv_localize), where the coefficients
  *  are of the scene's size; GA_OBJECT_JOIN_TOL has the tolerance. A join
  *  that holds n (a plane of two circles) is returned without A ^ nbar parts,
  *  as ga_mv_localize does for flats. Status: GA_ERR_NOTFINITE for NaN/Inf in A or B (first),

@@ -121,7 +121,9 @@
  * keys take the shortest motion, in twist coordinates; affine has none). Near
  * a rotation of 0 the other branch of a twist is ill-conditioned
  * (|k| ~ 2 pi/th): generators approach the full turn, an inherent limit of
- * generator-space interpolation.
+ * generator-space interpolation. A key turning by less than
+ * GA_GROUP_HALF_TURN_BAND keeps its principal log (group.h), as a pure
+ * translation does.
  *
  * Half turns. Every log this module takes passes through the group's
  * half-turn rule (group.h), so that cga and se3 choose the same screw where

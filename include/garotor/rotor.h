@@ -144,7 +144,9 @@ GA_API GA_NODISCARD ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out);
  *  |q|^2. */
 GA_API ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
 
-/** R X ~R for any conformal object X, through the full geometric product. */
+/** R X ~R for any conformal object X: the rotation q X ~q of R = T_t q
+ *  through the geometric product, then the translation by t carried exactly
+ *  and rounded once (no cancellation of t^2 terms however far R reaches). */
 GA_API ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X);
 
 /* ---- constructors ------------------------------------------------------- */
