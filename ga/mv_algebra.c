@@ -24,31 +24,11 @@
  */
 #include <garotor/mv.h>
 
+#include "internal/object.h"
 #include <float.h>
 #include <math.h>
 
 #define U DBL_EPSILON
-
-/* r_k = sum over the blade pairs (i, j) with mask_i ^ mask_j = mask_k of
-   |a_i| |b_j|: the geometric product with every sign +, which bounds the
-   terms that each coefficient of a b sums (the rounding of a product is at
-   most gamma_32 of it) */
-static ga_mv abs_gp(ga_mv a, ga_mv b)
-{
-    unsigned char mask[32], index_of[32];
-    for (int i = 0; i < 32; i++) {
-        mask[i] = (unsigned char)ga_blade_mask(i);
-        index_of[mask[i]] = (unsigned char)i;
-    }
-    ga_mv r = ga_mv_zero();
-    for (int i = 0; i < 32; i++) {
-        double x = fabs(a.c[i]);
-        if (x == 0.0)
-            continue;
-        for (int j = 0; j < 32; j++) r.c[index_of[mask[i] ^ mask[j]]] += x * fabs(b.c[j]);
-    }
-    return r;
-}
 
 /* Multiply the grade-k part by sign[k]. */
 static ga_mv grade_signs(ga_mv a, const double sign[6])
@@ -61,13 +41,6 @@ static ga_mv grade_signs(ga_mv a, const double sign[6])
 static ga_mv mv_ldexp(ga_mv a, int k)
 {
     for (int i = 0; i < 32; i++) a.c[i] = ldexp(a.c[i], k);
-    return a;
-}
-
-/* |a|: every coefficient's absolute value */
-static ga_mv mv_fabs(ga_mv a)
-{
-    for (int i = 0; i < 32; i++) a.c[i] = fabs(a.c[i]);
     return a;
 }
 
@@ -138,7 +111,8 @@ static ga_mv residual(ga_mv a, ga_mv r)
    Beside d, a first-order bound dd of its error: what the rounding of a
    (u |a_i| each) and of the products can make of it. A product x y of
    coefficients known to dx, dy is known to |x| dy + dx |y| + gamma_32 |x| |y|
-   (abs_gp: the product with every sign +; gamma_32 < 33 u), so
+   (gao_abs_gp of internal/object.h: the product with every sign +;
+   gamma_32 < 33 u), so
        dP = 2 u |a||a| + 33 u |a||a|,
        dB = 2 |P| dP + 33 u |P||P|,
        dd = 2 sum_k |B_k| dB_k + 33 u sum_k B_k^2
@@ -154,8 +128,8 @@ static ga_status general_inverse(ga_mv a, ga_mv *out)
     ga_mv B = ga_mv_gp(P, Ph);
     ga_mv C = grade_signs(B, neg14);
     double d = ga_mv_sp(B, C);
-    ga_mv Pa = mv_fabs(P), dP = ga_mv_scale(abs_gp(a, a), 35 * U);
-    ga_mv dB = ga_mv_add(ga_mv_scale(abs_gp(Pa, dP), 2.0), ga_mv_scale(abs_gp(Pa, Pa), 33 * U));
+    ga_mv Pa = gao_abs(P), dP = ga_mv_scale(gao_abs_gp(a, a), 35 * U);
+    ga_mv dB = ga_mv_add(ga_mv_scale(gao_abs_gp(Pa, dP), 2.0), ga_mv_scale(gao_abs_gp(Pa, Pa), 33 * U));
     double dd = 2.0 * abs_dot(B, dB) + 33 * U * abs_dot(B, B);
     ga_mv r;
     if (fabs(d) > GA_MV_INVERSE_TOL * dd)
