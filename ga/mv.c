@@ -249,39 +249,6 @@ double ga_mv_norm2(ga_mv a) { return ga_mv_sp(a, ga_mv_reverse(a)); }
 
 double ga_mv_norm(ga_mv a) { return sqrt(fabs(ga_mv_norm2(a))); }
 
-ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
-{
-    if (!out)
-        return GA_ERR_ARG;
-    if (!ga_mv_isfinite(a))
-        return GA_ERR_NOTFINITE;
-    /* work on a 2^-e (exact), its largest coefficient in [1/2, 1): a ~a of a
-       tiny or huge a underflowed or overflowed, and 1/s became Inf with GA_OK
-       (found by fuzz/fuzz_numeric; fuzz/regress/numeric/mv-inverse-underflow
-       replays it).
-       (a 2^-e)^-1 = a^-1 2^e. */
-    int e = 0;
-    if (ga_mv_maxabs(a) > 0.0)
-        frexp(ga_mv_maxabs(a), &e);
-    for (int i = 0; i < 32; i++) a.c[i] = ldexp(a.c[i], -e);
-    ga_mv rev = ga_mv_reverse(a);
-    ga_mv aa = ga_mv_gp(a, rev);
-    double s = aa.c[GA_BLADE_SCALAR];
-    /* a ~a must be a nonzero scalar: every other coefficient negligible against
-       the size of the product of the sizes (rounding of 32 terms of a*~a). */
-    double scale = ga_mv_maxabs(a);
-    double tol = 64.0 * 2.220446049250313e-16 * scale * scale;
-    aa.c[GA_BLADE_SCALAR] = 0.0;
-    if (!(fabs(s) > tol) || ga_mv_maxabs(aa) > tol + 1e-12 * fabs(s))
-        return GA_ERR_SINGULAR;
-    ga_mv r = ga_mv_scale(rev, 1.0 / s);
-    for (int i = 0; i < 32; i++) r.c[i] = ldexp(r.c[i], -e);
-    if (!ga_mv_isfinite(r))
-        return GA_ERR_SINGULAR; /* the inverse overflows, as ga_mat4_inverse */
-    *out = r;
-    return GA_OK;
-}
-
 /* ---- text ------------------------------------------------------------------ */
 
 /* One term: " - " / " + " between terms ("-" first), the coefficient in

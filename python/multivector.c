@@ -488,7 +488,7 @@ static PyMethodDef MV_methods[] = {
     {"involute", (PyCFunction)MV_involute, METH_NOARGS, "the grade involution"},
     {"conjugate", (PyCFunction)MV_conjugate, METH_NOARGS, "the Clifford conjugate"},
     {"norm2", (PyCFunction)MV_norm2, METH_NOARGS, "<X ~X>_0"},
-    {"inverse", (PyCFunction)MV_inverse, METH_NOARGS, "~X / (X ~X) of a versor or blade"},
+    {"inverse", (PyCFunction)MV_inverse, METH_NOARGS, "X^-1 of any invertible multivector (ga_mv_inverse)"},
     {"exp", (PyCFunction)MV_exp, METH_NOARGS,
      "exp of a bivector: a rigid-motion generator through the compact rotor, any other by ga_mv_exp"},
     {"log", (PyCFunction)MV_log, METH_NOARGS,

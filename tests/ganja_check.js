@@ -20,6 +20,14 @@
 // in size: the two products and the inverse each add a relative 2048 u of
 // |V| |X| |V^-1| (32^2 terms a coefficient), so the bound is 3 * 2048 u
 // times 32 |V| 32 |X| |V^-1| (max norms), relative to that scale.
+// vee (ganja's Vee, garotor's ga_mv_regressive) is an outer product between
+// moves and sign changes of coefficients: the products' bound. Inverse of a
+// dense a (ganja's Inverse, Hitzer and Sangwine's closed form as
+// garotor's): garotor's X is within u |a|_1 |X|_1^2 of a^-1 (mv.h: its
+// residual within u |a|_1 |X|_1, 2u here, times |a^-1|_1); the closed form
+// without garotor's Newton step leaves a residual some hundred times that
+// (its five products, each rounded at 32 u of sums of the sizes), so the
+// two agree to 512 u of |a|_1 |X|_1^2.
 "use strict";
 const path = require("path");
 const Algebra = require(process.argv[2] ? path.resolve(process.argv[2]) : "ganja.js");
@@ -38,7 +46,8 @@ const maxabs = (x) => { let m = 0; for (let i = 0; i < 32; i++) m = Math.max(m, 
 const unary = {reverse: (a) => a.Reverse, involute: (a) => a.Involute, conjugate: (a) => a.Conjugate,
     dual: (a) => a.UnDual, undual: (a) => a.Dual};
 const binary = {gp: (a, b) => A.Mul(a, b), op: (a, b) => A.Wedge(a, b), lc: (a, b) => A.LDot(a, b),
-    dot: (a, b) => A.Dot(a, b)};
+    dot: (a, b) => A.Dot(a, b), vee: (a, b) => A.Vee(a, b)};
+const sumabs = (x) => { let s = 0; for (let i = 0; i < 32; i++) s += Math.abs(x[i]); return s; };
 const worst = {}, count = {}, bound = {};
 let bad = 0;
 const lines = require("fs").readFileSync(0, "utf8").split("\n");
@@ -51,6 +60,9 @@ for (const line of lines) {
         got = m(1); want = unary[op](m(0)); scale = 1; tol = 0;
     } else if (op in binary) {
         got = m(2); want = binary[op](m(0), m(1)); scale = 1; tol = 2048 * u;
+    } else if (op === "inverse") {
+        got = m(1); want = m(0).Inverse;
+        scale = sumabs(m(0)) * sumabs(got) * sumabs(got); tol = 512 * u;
     } else if (op === "sandwich") {
         const V = m(0), X = m(1), Vi = V.Inverse;
         let odd = false;
@@ -74,7 +86,8 @@ for (const op of Object.keys(count)) {
     const ok = worst[op] <= bound[op];
     console.log((ok ? "ok   " : "FAIL ") + op.padEnd(10) + " n=" + String(count[op]).padEnd(6) + " worst " +
         worst[op].toExponential(3) + "  bound " + bound[op].toExponential(1) +
-        (op === "sandwich" ? " (relative to 32|V| 32|X| |V^-1|)" : ""));
+        (op === "sandwich" ? " (relative to 32|V| 32|X| |V^-1|)" : "") +
+        (op === "inverse" ? " (relative to |a|_1 |a^-1|_1^2)" : ""));
 }
-if (Object.keys(count).length !== 10) { console.log("FAIL expected 10 operations in the dump"); bad++; }
+if (Object.keys(count).length !== 12) { console.log("FAIL expected 12 operations in the dump"); bad++; }
 process.exit(bad ? 1 : 0);

@@ -9,6 +9,8 @@
  *   gp a b r, op a b r, lc a b r, dot a b r       (binary products)
  *   reverse a r, involute a r, conjugate a r,
  *   dual a r, undual a r                           (unary)
+ *   vee a b r                                      (ga_mv_regressive)
+ *   inverse a r                                    (ga_mv_inverse)
  *   sandwich V X r                                 (ga_versor_apply: V a
  *                                                   product of 1 to 4 random
  *                                                   vectors, even or odd)
@@ -60,6 +62,15 @@ int main(int argc, char **argv)
         put("dual", (const ga_mv *[]){&a, &x}, 2);
         x = ga_mv_undual(a);
         put("undual", (const ga_mv *[]){&a, &x}, 2);
+        x = ga_mv_regressive(a, b);
+        put("vee", (const ga_mv *[]){&a, &b, &x}, 3);
+        /* the general inverse of a dense multivector (ganja.js inverts by
+           the closed form of Hitzer and Sangwine too) */
+        if (ga_mv_inverse(a, &x) != GA_OK) {
+            fprintf(stderr, "ganja_dump: ga_mv_inverse refused a random multivector\n");
+            return 1;
+        }
+        put("inverse", (const ga_mv *[]){&a, &x}, 2);
         /* a versor: the product of 1 to 4 random vectors, none near null
            (|v^2| >= 0.1, so that V has a well-conditioned inverse) */
         ga_mv V = ga_mv_scalar(1);

@@ -85,6 +85,15 @@ static int c_mv_inverse(void) { return ga_mv_inverse(Rmv, OUT(0)); }
 static int c_mv_log(void) { return ga_mv_log(Rmv, OUT(0)); }
 static int c_mv_split(void) { return ga_mv_split(B, OUT(0), OUT(1)); }
 static int c_mv_factor(void) { return ga_mv_factor(Rmv, OUT(0), OUT(1)); }
+static int c_mv_pow(void) { return ga_mv_pow(Rmv, 0.3, OUT(0)); }
+static int c_mv_sqrt(void) { return ga_mv_sqrt(Rmv, OUT(0)); }
+static int c_mv_project(void) { return ga_mv_project(X, P, OUT(0)); }
+static int c_mv_reject(void) { return ga_mv_reject(X, P, OUT(0)); }
+static const ga_vec3 fit_pts[5] = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 1}, {0.6, -0.8, 0}};
+static int c_fit_sphere(void) { return ga_fit_sphere(IN(0, fit_pts), 5, OUT(1), OUT(2)); }
+static int c_fit_plane(void) { return ga_fit_plane(IN(0, fit_pts), 5, OUT(1), OUT(2)); }
+static int c_fit_circle(void) { return ga_fit_circle(IN(0, fit_pts), 5, OUT(1), OUT(2), OUT(3)); }
+static int c_fit_line(void) { return ga_fit_line(IN(0, fit_pts), 5, OUT(1), OUT(2)); }
 static int c_object_from_mv(void) { return ga_object_from_mv(S, OUT(0)); }
 static int c_object_from_mv_about(void) { return ga_object_from_mv_about(S, vb, 1.0, OUT(0)); }
 static int c_mv_localize(void) { return ga_mv_localize(S, vb, 1.0, OUT(0)); }
@@ -103,6 +112,12 @@ static int c_rotor_log(void) { return ga_rotor_log(R, OUT(0)); }
 static int c_rotor_log_literal(void) { return ga_rotor_log_literal(R, OUT(0)); }
 static int c_rotor_to_screw(void) { return ga_rotor_to_screw(R, OUT(0)); }
 static int c_rotor_from_mat4(void) { return ga_rotor_from_mat4(M, OUT(0)); }
+static int c_rotor_mean(void)
+{
+    static const double w[2] = {1.0, 0.5};
+    ga_rotor two[2] = {R, ga_rotor_identity()};
+    return ga_rotor_mean(IN(0, two), IN(1, w), 2, OUT(2));
+}
 static int c_versor_apply(void) { return ga_versor_apply(ga_versor_translation(va), X, OUT(0)); }
 static int c_versor_dilation(void) { return ga_versor_dilation(va, 2.0, OUT(0)); }
 static int c_scheme_by_name(void) { return ga_scheme_by_name(IN(0, "lihao2"), OUT(1)); }
@@ -199,6 +214,14 @@ static const api_case cases[] = {
     CASE(mv_log, 1, 1),
     CASE(mv_split, 2, 3),
     CASE(mv_factor, 2, 3),
+    CASE(mv_pow, 1, 1),
+    CASE(mv_sqrt, 1, 1),
+    CASE(mv_project, 1, 1),
+    CASE(mv_reject, 1, 1),
+    CASE(fit_sphere, 3, 6),
+    CASE(fit_plane, 3, 6),
+    CASE(fit_circle, 4, 14),
+    CASE(fit_line, 3, 6),
     CASE(object_from_mv, 1, 1),
     CASE(object_from_mv_about, 1, 1),
     CASE(mv_localize, 1, 1),
@@ -217,6 +240,7 @@ static const api_case cases[] = {
     CASE(rotor_log_literal, 1, 1),
     CASE(rotor_to_screw, 1, 1),
     CASE(rotor_from_mat4, 1, 1),
+    CASE(rotor_mean, 3, 4),
     CASE(versor_apply, 1, 1),
     CASE(versor_dilation, 1, 1),
     CASE(scheme_by_name, 2, 2),

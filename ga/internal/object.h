@@ -1,5 +1,6 @@
 /* ga/internal/object.h (internal, not installed): what conformal.c, object.c
- * and meet.c share. Prefix gao_.
+ * and meet.c share (and mv_algebra.c, whose inverse bounds its rounding by
+ * gao_abs_gp). Prefix gao_.
  *
  * The accuracy model of object.h: every coefficient of an input is known to
  * GAO_KAPPA u times the largest coefficient of its class, the blades of one

@@ -8,7 +8,8 @@
  *   types.h      value types (ga_vec3, ga_mat4, ga_twist) and status codes
  *   numtext.h    doubles as the shortest decimal that reads back the same
  *   mv.h         the full 32-component multivector of G(4,1): the reference algebra,
- *                and exp, log and split of any bivector and rotor of G(4,1)
+ *                its inverse, regressive and commutator products, projections,
+ *                and exp, log, split and powers of any bivector and rotor of G(4,1)
  *   conformal.h  the conformal model: n, nbar, points F(x), spheres, planes, lines
  *   object.h     kinds and read-back of every object, meet, projection, distance,
  *                angle, the rigid motion between two objects
@@ -20,6 +21,7 @@
  *   mat4.h       4x4 matrices: SE(3) exp and log (Eberly), general expm and logm
  *   group.h      the Lie-group interface the schemes are written against
  *   path.h       interpolation schemes through key poses, and their evaluators
+ *   fit.h        least-squares spheres, circles, planes and lines through points
  */
 #ifndef GAROTOR_H
 #define GAROTOR_H
@@ -36,5 +38,6 @@
 #include "mat4.h"
 #include "group.h"
 #include "path.h"
+#include "fit.h"
 
 #endif

@@ -154,9 +154,36 @@ GA_API GA_NODISCARD ga_status ga_mv_parse(const char *text, ga_mv *out);
 GA_API double ga_mv_norm2(ga_mv a);
 /** sqrt(|<a ~a>_0|). */
 GA_API double ga_mv_norm(ga_mv a);
-/** Inverse of a versor or blade: ~a / (a ~a). Fails with GA_ERR_SINGULAR when a ~a is
- *  not a nonzero scalar (then a is not a versor, or is null) or the inverse
- *  overflows, GA_ERR_NOTFINITE on NaN/Inf input. */
+/** The multiple of u in ga_mv_inverse's tests of "to its rounding". */
+#define GA_MV_INVERSE_TOL 64
+/** The inverse of any invertible multivector a: a a^-1 = a^-1 a = 1 (one
+ *  inverse serves both sides). Worked on a 2^-e (exact), e the exponent of
+ *  a's largest coefficient, in one of two ways:
+ *   - a versor or a blade, where a ~a is a scalar s to its rounding (every
+ *     other coefficient of a ~a at most GA_MV_INVERSE_TOL u sbar, sbar =
+ *     sum of a_i^2, which bounds the terms each coefficient sums): ~a / s.
+ *     GA_ERR_SINGULAR where |s| <= GA_MV_INVERSE_TOL u sbar (a null blade
+ *     or versor, to its rounding). a a^-1 = 1 to 2 GA_MV_INVERSE_TOL u
+ *     sbar / |s|;
+ *   - any other multivector: the closed form of Hitzer and Sangwine for
+ *     five dimensions (2017): with P = a a- (a- the Clifford
+ *     conjugate, ^ the grade involution), B = P P^ (grades 0, 1, 4) and C = B
+ *     with grades 1 and 4 negated, d = <B C>_0 is a scalar and a^-1 =
+ *     a- P^ C / d. Where |d| is at most GA_MV_INVERSE_TOL times a
+ *     first-order bound of what the rounding of a (u per coefficient) and
+ *     of the products can make of it (d goes as the eighth power of a's
+ *     distance from the nearest zero divisor, and is lost to rounding long
+ *     before a is singular), Gaussian elimination with partial pivoting on
+ *     the 32 x 32 matrix of x -> a x instead. Then Newton steps r + r (1 - a r),
+ *     at most three, until the residual 1 - a r, as computed, is at most
+ *     u |a|_1 |r|_1 (|x|_1: the sum of the absolute coefficients).
+ *     GA_ERR_SINGULAR where a pivot is at most 32 u |a|_max or no step
+ *     reaches that residual: a is a zero divisor to its rounding (within a
+ *     few u |a| of one), its inverse not determined in double. So a a^-1 = 1
+ *     to u |a|_1 |a^-1|_1, a^-1 is within u |a|_1 |a^-1|_1^2 of the exact
+ *     inverse, and a^-1 a = 1 to u (|a|_1 |a^-1|_1)^2.
+ *  Also GA_ERR_SINGULAR where the inverse overflows, GA_ERR_NOTFINITE on
+ *  NaN/Inf. */
 GA_API GA_NODISCARD ga_status ga_mv_inverse(ga_mv a, ga_mv *out);
 
 /* ---- exp and log of the whole algebra ------------------------------------
@@ -232,6 +259,48 @@ GA_API GA_NODISCARD ga_status ga_mv_split(ga_mv B, ga_mv *B1, ga_mv *B2);
  *  Refuses with the status of ga_mv_log (GA_ERR_DOMAIN where R has no real
  *  log) or of ga_mv_split. Accuracy as ga_mv_split. */
 GA_API GA_NODISCARD ga_status ga_mv_factor(ga_mv R, ga_mv *R1, ga_mv *R2);
+
+/** R^t = exp(t log R) for a rotor R of G(4,1) and any real t, with the
+ *  principal log of ga_mv_log and the exp of ga_mv_exp: every power is a
+ *  function of the one bivector log R, so R^s R^t = R^(s+t), R^1 = R and
+ *  R^-1 = ~R hold to the accuracy of exp and log (above). Refuses with the
+ *  statuses of ga_mv_log (GA_ERR_DOMAIN where R has no real log), with
+ *  GA_ERR_NOTFINITE for a NaN or infinite t, and with GA_ERR_DOMAIN where
+ *  the power overflows (a boost raised to a large t). */
+GA_API GA_NODISCARD ga_status ga_mv_pow(ga_mv R, double t, ga_mv *out);
+/** The principal square root of a rotor R: ga_mv_pow(R, 1/2), the root
+ *  whose elliptic angles are half those of log R (in [0, pi/2]), so
+ *  sqrt(R)^2 = R to the accuracy of exp(log R) = R. Statuses of ga_mv_log. */
+GA_API GA_NODISCARD ga_status ga_mv_sqrt(ga_mv R, ga_mv *out);
+
+/* ---- more products ----------------------------------------------------- */
+/** The regressive product a & b = (a* ^ b*) I, a* = a I^-1 (ga_mv_dual),
+ *  so that (a & b)* = a* ^ b*: the meet of blades whose subspaces together
+ *  span the whole space (for blades of grades r and s, grade r + s - 5), x & I
+ *  = I & x = x. Of the dual and the undual, which only move and negate
+ *  coefficients, it has the outer product's rounding. ganja.js's `&` (Vee);
+ *  docs/conventions.md states the convention. No status. */
+GA_API ga_mv ga_mv_regressive(ga_mv a, ga_mv b);
+/** The commutator product a x b = (a b - b a) / 2 (for bivectors
+ *  the Lie bracket of the rotors' algebra, a bivector again). No status. */
+GA_API ga_mv ga_mv_commutator(ga_mv a, ga_mv b);
+/** The projection of a blade A onto an invertible blade B, (A _| B) _| B^-1
+ *  (DFM §3.6; for blades equal to (A _| B) B^-1): the part of A in B's
+ *  subspace, of A's grade. B^-1 as ga_mv_inverse (for a blade: ~B / (B ~B)).
+ *  A and B are taken as given: for other multivectors the formula is
+ *  computed as written. GA_ERR_SINGULAR where B has no inverse: a null blade
+ *  (a point F(x), n, a tangent round, any blade with B ~B = 0 to its
+ *  rounding) spans a subspace on which the metric is degenerate, and there no
+ *  orthogonal projection exists (ga_point_project projects points onto such
+ *  objects in the Euclidean sense). GA_ERR_NOTFINITE on NaN/Inf,
+ *  GA_ERR_DOMAIN where the result overflows. */
+GA_API GA_NODISCARD ga_status ga_mv_project(ga_mv A, ga_mv B, ga_mv *out);
+/** The rejection of A from an invertible blade B, (A ^ B) |_ B^-1 (|_ the
+ *  right contraction; for blades equal to (A ^ B) B^-1): for a vector a,
+ *  a - ga_mv_project(a, B), the part of a orthogonal to B; for a blade A of
+ *  higher grade, the part of A orthogonal to B (zero where A and B share a
+ *  direction). Statuses of ga_mv_project. */
+GA_API GA_NODISCARD ga_status ga_mv_reject(ga_mv A, ga_mv B, ga_mv *out);
 
 #ifdef __cplusplus
 }

@@ -40,6 +40,8 @@
 #include "types.h"
 #include "mv.h"
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -252,6 +254,40 @@ GA_API ga_dualquat ga_rotor_to_dualquat(ga_rotor r);
 
 /** The rotor of a unit dual quaternion (the inverse of ga_rotor_to_dualquat). */
 GA_API ga_rotor ga_rotor_from_dualquat(ga_dualquat d);
+
+/* ---- the mean of rigid motions ------------------------------------------------ */
+
+/** The most iterations ga_rotor_mean takes. */
+#define GA_ROTOR_MEAN_ITER 100
+/** ga_rotor_mean's stopping rule, in units of u. */
+#define GA_ROTOR_MEAN_TOL 64
+
+/** The weighted mean of n rigid motions R[i] with weights w[i] >= 0 (not all
+ *  0; they are normalised to sum 1): the exponential barycentre M,
+ *  sum_i w_i log(M^-1 R_i) = 0 (Pennec and Arsigny, "Exponential
+ *  barycenters of the canonical Cartan connection and invariant means on
+ *  Lie groups", 2013), with the principal log of ga_rotor_log. For
+ *  rotations alone it is the Karcher (Frechet) mean of the rotation angle;
+ *  for pure translations the weighted mean of the translations; it is
+ *  invariant under L R_i and R_i L (the mean of those is L M, M L) and under
+ *  the order of the rotors. Found by the fixed-point iteration
+ *  M <- M exp(sum_i w_i log(M^-1 R_i)) from the rotor of largest weight
+ *  (projected onto the group), which stops when the rotation part of the
+ *  step is at most GA_ROTOR_MEAN_TOL u max(1, the logs' rotation parts) and
+ *  its translation part at most GA_ROTOR_MEAN_TOL u max(1, the logs'
+ *  translation parts, the n parts of the rotors and of M): the rounding of
+ *  the sum of the logs and of the products M^-1 R_i. The mean is
+ *  unique where the rotations lie in a ball of radius pi/2 (Pennec and
+ *  Arsigny), and the iteration converges linearly, the faster the closer
+ *  the rotors (docs/conformal.md, "More algebra", has the rates); where the mean is not unique
+ *  (rotations spread over more than a half turn) it returns one of them.
+ *  GA_ERR_DOMAIN where it has not converged after GA_ROTOR_MEAN_ITER
+ *  iterations. Refuses:
+ *  GA_ERR_ARG for n = 0, a negative weight or weights summing to 0 or
+ *  overflowing; GA_ERR_NOTFINITE for NaN/Inf in a rotor or a weight;
+ *  GA_ERR_NOTRIGID where a rotor is farther than GA_ROTOR_DRIFT_MAX from
+ *  the group (ga_rotor_log's status). */
+GA_API GA_NODISCARD ga_status ga_rotor_mean(const ga_rotor *R, const double *w, size_t n, ga_rotor *out);
 
 #ifdef __cplusplus
 }

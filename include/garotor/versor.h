@@ -22,8 +22,10 @@ extern "C" {
 /* ---- versors ------------------------------------------------------------------- */
 
 /** V X^ V^-1 (X^ = X for even V, the grade involution of X for odd V).
- *  GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_ARG when V has both even and odd parts;
- *  GA_ERR_SINGULAR when V has no inverse (ga_mv_inverse). */
+ *  V need not be a versor: any invertible V of one parity is applied (for
+ *  a versor, the sandwich keeps grades and products; for other V it need
+ *  not). GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_ARG when V has both even and
+ *  odd parts; GA_ERR_SINGULAR when V has no inverse (ga_mv_inverse). */
 GA_API GA_NODISCARD ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out);
 
 /** Reflection in the plane n.x = d (n need not be unit): the dual plane
