@@ -531,13 +531,17 @@ static void mv_any(const ga_mv *X, double lambda)
         FZ_CHECK(vfinite(a) && vfinite(b), "point pair: GA_OK with bad output");
     ga_object ob; /* object.h: a kind and finite parameters, or a status */
     st = ga_object_from_mv(*X, &ob);
-    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_NOTBLADE || st == GA_ERR_PRECISION)
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_NOTBLADE || st == GA_ERR_PRECISION ||
+                    st == GA_ERR_DOMAIN)
                  : st == GA_ERR_NOTFINITE,
              "object %d", st);
     if (st == GA_OK)
         FZ_CHECK(vfinite(ob.centre) && vfinite(ob.direction) && isfinite(ob.r2) &&
-                     ob.kind >= GA_OBJECT_EMPTY && ob.kind <= GA_OBJECT_SPHERE,
-                 "object: GA_OK with bad output");
+                     ob.kind >= GA_OBJECT_EMPTY && ob.kind <= GA_OBJECT_SPHERE && ob.err >= 0 &&
+                     isfinite(ob.err) && ob.r2_err >= 0 && isfinite(ob.r2_err) && ob.angle_err >= 0 &&
+                     isfinite(ob.angle_err),
+                 "object: GA_OK with bad output or bounds");
+
     st = ga_circle_params(*X, &a, &r, &c);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTBLADE || st == GA_ERR_IMAGINARY) : st == GA_ERR_NOTFINITE,
              "circle %d", st);
@@ -592,6 +596,23 @@ static void mv_any(const ga_mv *X, double lambda)
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR) : st == GA_ERR_NOTFINITE, "inverse %d", st);
     if (st == GA_OK)
         FZ_CHECK(fz_all_finite(inv.c, 32), "mv inverse: GA_OK with a non-finite result");
+    /* the algebra of mv.h: statuses of their lists, and finite results with GA_OK */
+    ga_mv pr, pw;
+    st = ga_mv_project(*X, ga_mv_grade(*X, 2), &pr);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE,
+             "project %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(fz_all_finite(pr.c, 32), "project: GA_OK with a non-finite result");
+    st = ga_mv_reject(*X, ga_mv_grade(*X, 1), &pr);
+    FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_SINGULAR || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE,
+             "reject %d", st);
+    if (st == GA_OK)
+        FZ_CHECK(fz_all_finite(pr.c, 32), "reject: GA_OK with a non-finite result");
+    st = ga_mv_sqrt(*X, &pw);
+    if (st == GA_OK)
+        FZ_CHECK(fz_all_finite(pw.c, 32), "sqrt: GA_OK with a non-finite result");
+    else
+        FZ_CHECK(st < 0, "sqrt %d", st);
     ga_rotor R;
     st = ga_rotor_from_mv(*X, 1e-9, &R);
     FZ_CHECK(fin ? (st == GA_OK || st == GA_ERR_NOTRIGID || st == GA_ERR_DOMAIN) : st == GA_ERR_NOTFINITE,
