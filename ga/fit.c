@@ -284,6 +284,19 @@ static ga_vec3 unit(ga_vec3 x)
     double h = sqrt(dot3(x, x));
     return (ga_vec3){x.x / h, x.y / h, x.z / h};
 }
+
+/* x / |x|, its largest component positive: a sign that does not depend on
+   the Jacobi rotations that found x */
+static ga_vec3 signed_unit(ga_vec3 x)
+{
+    ga_vec3 m = unit(x);
+    double big = m.x;
+    if (fabs(m.y) > fabs(big))
+        big = m.y;
+    if (fabs(m.z) > fabs(big))
+        big = m.z;
+    return big < 0 ? (ga_vec3){-m.x, -m.y, -m.z} : m;
+}
 static int finite3(ga_vec3 x) { return isfinite(x.x) && isfinite(x.y) && isfinite(x.z); }
 
 /* ---- the fits ------------------------------------------------------------------------ */
@@ -327,16 +340,7 @@ ga_status ga_fit_plane(const ga_vec3 *pts, size_t n, ga_vec3 *normal, double *di
     principal(pts, n, &f, e, sv);
     if (!(sv[1] > 64 * U * sv[0]))
         return GA_ERR_DOMAIN; /* collinear: every plane through the line fits */
-    ga_vec3 m = unit(e[2]);
-    /* sign: the normal's largest component positive, so that the answer does
-       not depend on the Jacobi rotations */
-    double big = m.x;
-    if (fabs(m.y) > fabs(big))
-        big = m.y;
-    if (fabs(m.z) > fabs(big))
-        big = m.z;
-    if (big < 0)
-        m = (ga_vec3){-m.x, -m.y, -m.z};
+    ga_vec3 m = signed_unit(e[2]);
     *normal = m;
     *distance = dot3(m, f.o);
     return GA_OK;
@@ -355,14 +359,7 @@ ga_status ga_fit_line(const ga_vec3 *pts, size_t n, ga_vec3 *direction, ga_vec3 
     principal(pts, n, &f, e, sv);
     if (!(sv[0] > sv[1] * (1 + 64 * U)))
         return GA_ERR_DOMAIN; /* no direction of largest spread */
-    ga_vec3 u = unit(e[0]);
-    double big = u.x;
-    if (fabs(u.y) > fabs(big))
-        big = u.y;
-    if (fabs(u.z) > fabs(big))
-        big = u.z;
-    if (big < 0)
-        u = (ga_vec3){-u.x, -u.y, -u.z};
+    ga_vec3 u = signed_unit(e[0]);
     *direction = u;
     *point = axpy(-dot3(u, f.o), u, f.o);
     return GA_OK;

@@ -210,7 +210,8 @@ ga_mv ga_mv_commutator(ga_mv a, ga_mv b)
 /* The right contraction x |_ y = (~y _| ~x)~ */
 static ga_mv rc(ga_mv x, ga_mv y) { return ga_mv_reverse(ga_mv_lc(ga_mv_reverse(y), ga_mv_reverse(x))); }
 
-ga_status ga_mv_project(ga_mv A, ga_mv B, ga_mv *out)
+/* (A _| B) _| B^-1 (project) or (A ^ B) |_ B^-1 (reject) */
+static ga_status project_reject(ga_mv A, ga_mv B, int reject, ga_mv *out)
 {
     if (!out)
         return GA_ERR_ARG;
@@ -220,26 +221,13 @@ ga_status ga_mv_project(ga_mv A, ga_mv B, ga_mv *out)
     ga_status st = ga_mv_inverse(B, &Bi);
     if (st != GA_OK)
         return st;
-    ga_mv r = ga_mv_lc(ga_mv_lc(A, B), Bi);
+    ga_mv r = reject ? rc(ga_mv_op(A, B), Bi) : ga_mv_lc(ga_mv_lc(A, B), Bi);
     if (!ga_mv_isfinite(r))
         return GA_ERR_DOMAIN;
     *out = r;
     return GA_OK;
 }
 
-ga_status ga_mv_reject(ga_mv A, ga_mv B, ga_mv *out)
-{
-    if (!out)
-        return GA_ERR_ARG;
-    if (!ga_mv_isfinite(A) || !ga_mv_isfinite(B))
-        return GA_ERR_NOTFINITE;
-    ga_mv Bi;
-    ga_status st = ga_mv_inverse(B, &Bi);
-    if (st != GA_OK)
-        return st;
-    ga_mv r = rc(ga_mv_op(A, B), Bi);
-    if (!ga_mv_isfinite(r))
-        return GA_ERR_DOMAIN;
-    *out = r;
-    return GA_OK;
-}
+ga_status ga_mv_project(ga_mv A, ga_mv B, ga_mv *out) { return project_reject(A, B, 0, out); }
+
+ga_status ga_mv_reject(ga_mv A, ga_mv B, ga_mv *out) { return project_reject(A, B, 1, out); }
