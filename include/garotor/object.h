@@ -36,7 +36,9 @@
  *     read as one.
  *   - Refused with GA_ERR_PRECISION: a weight within its uncertainty of 0 but
  *     not 0 (round and flat at once to the input's accuracy), or not known to
- *     a quarter of itself.
+ *     a quarter of itself (for a circle or point pair, read about its own
+ *     centre in units of its size: its weight or its carrier's; a small round
+ *     far out, whose radius that leaves unknown).
  *   - Real, tangent and imaginary use the same bound: tangent when |r^2| is
  *     within max(GA_OBJECT_TANGENT_TOL L^2, r2_err).
  *   - The functions below that state no bound of their own (ga_point_project,
