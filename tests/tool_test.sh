@@ -547,7 +547,7 @@ expect_error "--svg to stdout" "--svg needs a file name, not '-'" \
 expect_error "unknown view" "--view must be iso, xy, xz or yz, not 'top'" \
     "$G" interp --format pose --samples 3 --svg "$d/out.svg" --view top --in "$K" --out "$d/out"
 expect_error "demo: unknown view" "--view must be" "$G" demo --svg "$d/out.svg" --view top
-expect_error "read error" "$d: read error" "$G" exp --in "$d" --out "$d/out"
+expect_error "read error" "$d:1: read error: Is a directory" "$G" exp --in "$d" --out "$d/out"
 printf '0 0 0 0 0 2x\n' >"$d/junk"
 expect_error "junk after a number" "junk:1: junk after number 6" "$G" exp --in "$d/junk" --out "$d/out"
 printf '1000 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n' >"$d/abig"
@@ -778,6 +778,10 @@ expect_error "versor: unknown operation" "garotor versor: unknown operation 'sqr
 for c in demo exp log interp versor; do
     "$G" "$c" --help | grep -q "usage: garotor" || fail "$c --help"
 done
+
+# ---- hostile input and environment: the reader, output, signals, hints -----
+# shellcheck source=tests/tool_input_test.sh
+. "$(dirname "$0")/tool_input_test.sh"
 
 # ---- every message of docs/tool.md's error table was produced above ---------
 # A row's first code span is the message; {...} stands for any text.

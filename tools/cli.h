@@ -26,8 +26,11 @@ enum {
     OPT_EXTRAPOLATE = 1 << 19,
     OPT_HTML = 1 << 20,
     OPT_VERB = 1 << 21, /* not an option: the command takes an operation word first */
-    OPT_TIME_UNIT = 1 << 22
+    OPT_TIME_UNIT = 1 << 22,
+    OPT_MAX_LINE = 1 << 23
 };
+
+#include <stddef.h>
 
 typedef struct {
     unsigned given; /* OPT_* bits of the options on the command line */
@@ -38,14 +41,26 @@ typedef struct {
     double rate;
     int header, normalize;
     long samples;
+    size_t max_line; /* --max-line, 0 when not given (textio.h: TIO_MAX_LINE) */
     double step;
     double v0[6];
 } cli_opts;
 
-#include <stddef.h>
-
 #include <garotor/garotor.h>
 #include "textio.h"
+
+/** How the command's input (--in) is read: --header, --max-line. */
+static inline tio_read_opts cli_input(const cli_opts *o)
+{
+    tio_read_opts r = {o->header, 1, o->max_line};
+    return r;
+}
+/** How another file it reads (--times, --velocities) is read: --max-line. */
+static inline tio_read_opts cli_other_input(const cli_opts *o)
+{
+    tio_read_opts r = {0, 0, o->max_line};
+    return r;
+}
 
 /** The group named by --group (default cga), or NULL after a message. */
 const ga_group *cli_group(const char *cmd, const cli_opts *o);

@@ -62,14 +62,20 @@ static int run(const char *cmd, const cli_opts *o, int is_exp)
     if (!g)
         return 2;
     tio_items in;
-    if (tio_read(o->in, o->header, &in))
+    tio_read_opts ro = cli_input(o);
+    if (tio_read(o->in, &ro, &in))
         return 2;
     int want = is_exp ? algebra_count(g) : 16;
     for (size_t i = 0; i < in.n; i++)
         if (in.item[i].count != want) {
-            tio_error(&in, i, "expected %d numbers (%s), found %d", want,
+            /* a matrix given to exp, a twist given to log: the other command */
+            int m = in.item[i].count;
+            const char *hint = is_exp && want == 6 && m == 16 ? ": is this a matrix? garotor log reads those"
+                             : !is_exp && m == 6              ? ": is this a twist? garotor exp reads those"
+                                                              : "";
+            tio_error(&in, i, "expected %d numbers (%s), found %d%s", want,
                       is_exp ? (want == 6 ? "a twist" : "a 4x4 matrix with last row zero") : "a 4x4 matrix",
-                      in.item[i].count);
+                      m, hint);
             tio_free(&in);
             return 2;
         }

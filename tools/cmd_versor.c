@@ -81,7 +81,8 @@ int cmd_versor(const cli_opts *o)
         return 2;
     }
     tio_items in;
-    if (tio_read(o->in, o->header, &in))
+    tio_read_opts ro = cli_input(o);
+    if (tio_read(o->in, &ro, &in))
         return 2;
     int ok = 1;
     for (size_t i = 0; i < in.n && ok; i++)

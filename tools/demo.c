@@ -2,7 +2,8 @@
  * the conformal model in three lines, three key poses, the screw between
  * consecutive keys, samples of the screw and quadratic paths through them, and
  * the largest disagreement between the same paths computed with CGA rotors
- * and with 4x4 matrices. `--svg FILE` draws both paths. */
+ * and with 4x4 matrices. `--svg FILE` draws both paths, renamed onto FILE
+ * once the report is written. */
 #include "cli.h"
 #include "html.h"
 #include "svg.h"
@@ -105,6 +106,9 @@ int cmd_demo(const cli_opts *o)
                 return 2;
             }
         }
+    /* the picture and the page are renamed onto their names once the report
+       is written (svg.h): not kept when it cannot be */
+    tio_out svg = TIO_OUT_NONE, html = TIO_OUT_NONE;
     if (o->svg || o->html) {
         svg_path sp[2] = {
             {"screw", "#ff7f0e", path[0][0], DEMO_SAMPLES, 8},
@@ -120,11 +124,10 @@ int cmd_demo(const cli_opts *o)
                            0,
                            {0, 0, 0},
                            {0, 0, 0}};
-        if (o->svg && svg_write(o->svg, &pic))
+        if (o->svg && svg_write(&svg, o->svg, &pic))
             return 2;
-        if (o->html && html_write(o->html, &pic)) {
-            if (o->svg)
-                tio_out_unwrite(o->svg);
+        if (o->html && html_write(&html, o->html, &pic)) {
+            tio_out_discard(&svg);
             return 2;
         }
     }
@@ -184,5 +187,20 @@ int cmd_demo(const cli_opts *o)
         printf("\nThe picture: %s\n", o->svg);
     if (o->html)
         printf("\nThe page (drag to turn): %s\n", o->html);
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "garotor: <stdout>: write error\n");
+        tio_out_discard(&svg);
+        tio_out_discard(&html);
+        return 2;
+    }
+    if (tio_out_commit(&svg) != 0) {
+        tio_out_discard(&html);
+        return 2;
+    }
+    if (tio_out_commit(&html) != 0) {
+        if (o->svg)
+            tio_out_unwrite(o->svg);
+        return 2;
+    }
     return 0;
 }

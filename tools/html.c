@@ -77,12 +77,11 @@ static const char *script =
     " el=Math.max(-1.55,Math.min(1.55,el+0.01*(e.clientY-drag[1])));drag=[e.clientX,e.clientY];draw();};\n"
     "draw();})();\n";
 
-int html_write(const char *file, const svg_picture *pic)
+int html_write(tio_out *out, const char *file, const svg_picture *pic)
 {
-    tio_out out;
-    if (tio_out_open(&out, file))
+    if (tio_out_open(out, file))
         return -1;
-    FILE *f = out.fp;
+    FILE *f = out->fp;
     fprintf(f, "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>garotor</title>\n"
                "<style>body{margin:0;font-family:sans-serif}canvas{display:block;cursor:grab}</style>\n"
                "</head><body>\n<canvas id=\"c\" width=\"800\" height=\"560\"></canvas>\n"
@@ -109,5 +108,5 @@ int html_write(const char *file, const svg_picture *pic)
         fprintf(f, "]}");
     }
     fprintf(f, "]};\n%s</script>\n</body></html>\n", script);
-    return tio_out_close(&out, 1);
+    return tio_out_finish(out);
 }

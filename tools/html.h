@@ -21,7 +21,8 @@
 int html_options(const char *cmd, const char *html);
 
 /** Write the picture (keys, paths; view and axis unused: the page turns) to file
- *  as a web page (temporary file, then rename). 0, or -1 after a message. */
-int html_write(const char *file, const svg_picture *pic);
+ *  as a web page, through out, finished but not renamed, as svg_write does.
+ *  0, or -1 after a message. */
+int html_write(tio_out *out, const char *file, const svg_picture *pic);
 
 #endif

@@ -104,9 +104,17 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
        it (undefined; found by fuzz/fuzz_tool under UBSan:
        fuzz/regress/tool/interp-comma-line-no-numbers) */
     const double *v = f->item[i].count ? f->value + f->item[i].first : NULL;
-    if (f->item[i].count != want)
-        return tio_error(f, i, "expected %d numbers (t, then %s), found %d", want,
-                         io->pose ? "x y z qx qy qz qw" : "a 4x4 matrix", f->item[i].count);
+    if (f->item[i].count != want) {
+        /* the count says what the line probably is: a pose (t and 7) read as
+           a matrix, a matrix (t and 16) read as a pose, a key without its t */
+        int m = f->item[i].count;
+        const char *hint = !io->pose && io->g->rigid && m == 8 ? ": is this a pose file? pass --format pose"
+                         : io->pose && m == 17 ? ": is this a file of 4x4 matrices? drop --format pose"
+                         : m == want - 1       ? ": is t missing? a key is its time, then the pose"
+                                               : "";
+        return tio_error(f, i, "expected %d numbers (t, then %s), found %d%s", want,
+                         io->pose ? "x y z qx qy qz qw" : "a 4x4 matrix", m, hint);
+    }
     if (tb->ns && !ic_whole(f->first[i]))
         return tio_error(f, i, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[i]);
     if (i == 0)
@@ -126,7 +134,8 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
 int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
 {
     ga_scheme scheme = io->scheme;
-    if (tio_read_first(io->o->in, io->o->header, &in->in))
+    tio_read_opts ro = cli_input(io->o);
+    if (tio_read_first(io->o->in, &ro, &in->in))
         return -1;
     size_t n = in->n = in->in.n;
     in->times = malloc((n ? n : 1) * sizeof *in->times);
@@ -164,7 +173,8 @@ int ic_read_times(const ic_opts *io, const ic_timebase *tb, ic_input *in)
     const cli_opts *o = io->o;
     if (o->times) { /* --times FILE: one time a line */
         const tio_items *f = &in->tin;
-        if (tio_read_first(o->times, 0, &in->tin))
+        tio_read_opts ro = cli_other_input(o);
+        if (tio_read_first(o->times, &ro, &in->tin))
             return -1;
         in->nat = f->n;
         for (size_t k = 0; k < in->nat; k++)
@@ -226,7 +236,8 @@ int ic_read_velocities(const ic_opts *io, ic_input *in)
     }
     if (!o->velocities)
         return 0;
-    if (tio_read(o->velocities, 0, &in->vin))
+    tio_read_opts ro = cli_other_input(o);
+    if (tio_read(o->velocities, &ro, &in->vin))
         return -1;
     if (f->n != n) {
         if (f->n > n)

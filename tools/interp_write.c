@@ -199,9 +199,10 @@ done:
 
 /* The picture of the path: the keys (labelled with their times key_t), the
  * nm samples kept in m (of ns made, in the order sampled) and, for the
- * screw scheme on keys that follow one screw motion, its axis. */
+ * screw scheme on keys that follow one screw motion, its axis: to svg and
+ * html, finished but not renamed (svg.h). */
 static int draw(const ic_opts *io, const ic_input *in, const double *key_t, const ga_mat4 *m, size_t nm,
-                size_t ns)
+                size_t ns, tio_out *svg, tio_out *html)
 {
     const cli_opts *o = io->o;
     size_t n = in->n;
@@ -215,9 +216,9 @@ static int draw(const ic_opts *io, const ic_input *in, const double *key_t, cons
     svg_picture pic = {title, io->view, in->keys, key_t, n, &path, 1, 0, {0, 0, 0}, {0, 0, 0}};
     pic.has_axis = io->scheme == GA_SCHEME_SCREW &&
                    svg_screw_axis(in->keys, n, &pic.axis_point, &pic.axis_dir);
-    int st = o->svg ? svg_write(o->svg, &pic) : 0;
-    if (st == 0 && o->html && (st = html_write(o->html, &pic)) != 0 && o->svg)
-        tio_out_unwrite(o->svg);
+    int st = o->svg ? svg_write(svg, o->svg, &pic) : 0;
+    if (st == 0 && o->html && (st = html_write(html, o->html, &pic)) != 0)
+        tio_out_discard(svg);
     return st;
 }
 
@@ -227,7 +228,10 @@ static int draw(const ic_opts *io, const ic_input *in, const double *key_t, cons
  * and checked first, without a line written, and made again as it is
  * written. The picture (--svg, --html) needs the samples' matrices before
  * the samples are written: they are kept in that first pass (at most
- * PICTURE_MAX + 1 of them). */
+ * PICTURE_MAX + 1 of them). The picture is drawn to its temporary file and
+ * renamed after the last sample was written (and flushed), so a run cut off
+ * while it writes (a write error, `| head` and its SIGPIPE, any other
+ * signal) leaves no picture of samples it did not write. */
 int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
 {
     const cli_opts *o = io->o;
@@ -235,6 +239,7 @@ int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
     int drawn = o->svg || o->html, rc = -1;
     double *key_t = NULL;
     picture_keep pk = {NULL, 1, 0};
+    tio_out out = TIO_OUT_NONE, svg = TIO_OUT_NONE, html = TIO_OUT_NONE;
     if (drawn) { /* the picture labels the keys with their times as read */
         key_t = malloc(n * sizeof *key_t);
         pk.stride = smp->ns > PICTURE_MAX ? (smp->ns + PICTURE_MAX - 1) / PICTURE_MAX : 1;
@@ -245,7 +250,6 @@ int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
         }
         for (size_t i = 0; i < n; i++) key_t[i] = strtod(in->in.first[i], NULL);
     }
-    tio_out out;
     if (tio_out_open(&out, o->out))
         goto done;
     size_t ns = 0;
@@ -253,20 +257,38 @@ int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
         tio_out_close(&out, 0);
         goto done;
     }
-    if (drawn && draw(io, in, key_t, pk.m, pk.n, ns)) {
+    if (drawn && draw(io, in, key_t, pk.m, pk.n, ns, &svg, &html)) {
         tio_out_close(&out, 0);
         goto done;
     }
     int ok = run(smp, &out, NULL, &ns) == 0;
-    if (tio_out_close(&out, ok) == 0)
-        rc = 0;
-    else if (drawn) {
+    if (!ok || tio_out_finish(&out) != 0) {
+        tio_out_close(&out, 0);
+        goto done;
+    }
+    /* every output written: renamed, the samples last; a rename that fails
+       (rare: each is renamed within its own directory) takes back the ones
+       renamed before it */
+    if (tio_out_commit(&svg) != 0)
+        goto done;
+    if (tio_out_commit(&html) != 0) {
+        if (o->svg)
+            tio_out_unwrite(o->svg);
+        goto done;
+    }
+    if (tio_out_commit(&out) != 0) {
         if (o->svg)
             tio_out_unwrite(o->svg);
         if (o->html)
             tio_out_unwrite(o->html);
+        goto done;
     }
+    rc = 0;
 done:
+    tio_out_discard(&svg);
+    tio_out_discard(&html);
+    if (rc)
+        tio_out_discard(&out);
     free(key_t);
     free(pk.m);
     return rc;

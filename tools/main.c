@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 typedef struct {
     const char *name;
@@ -26,28 +27,31 @@ static const command commands[] = {
      "  --svg FILE       also draw the two paths as an SVG picture\n"
      "  --view V         the picture's view: iso (default), xy, xz or yz\n"
      "  --html FILE      also write a web page that draws them in 3D (drag to turn)\n"},
-    {"exp", cmd_exp, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP,
+    {"exp", cmd_exp, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_MAX_LINE,
      "usage: garotor exp [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
+     "                   [--max-line N]\n"
      "Read one twist a line (wx wy wz vx vy vz) and write its motion, the 4x4\n"
      "matrix expm([[w]x, v; 0, 0]) (16 numbers, row-major).\n"
      "  --group cga      through the rotor exp(B(xi)) (Wareham-Lasenby Thm 3; default)\n"
      "  --group matrix   through Eberly's SE(3) closed form\n"
      "  --group affine   items are 4x4 matrices with last row zero, general matrix exp\n"
      "  --in FILE, --out FILE   input and output (default standard input and output)\n"
-     "  --header         skip the first line of the input (a CSV header)\n"},
-    {"log", cmd_log, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP,
+     "  --header         skip the first line of the input (a CSV header)\n"
+     "  --max-line N     a line of more than N bytes is an error (default 1048576)\n"},
+    {"log", cmd_log, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_MAX_LINE,
      "usage: garotor log [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
+     "                   [--max-line N]\n"
      "Read one rigid motion a line (a 4x4 matrix, 16 numbers, row-major) and write\n"
      "its principal twist (6 numbers; rotation angle in [0, pi]).\n"
      "  --group cga      through the rotor logarithm l(R) (Wareham-Lasenby Thm 9; default)\n"
      "  --group matrix   through Eberly's SE(3) closed form\n"
      "  --group affine   any 4x4 with last row 0 0 0 1 and det > 0; writes the\n"
      "                   principal matrix log as a 4x4 with last row zero\n"
-     "  --in FILE, --out FILE, --header   as for exp\n"},
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
     {"interp", cmd_interp,
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
-         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT,
+         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT | OPT_MAX_LINE,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -97,9 +101,11 @@ static const command commands[] = {
      "                      at the keys and along it, the screw axis if it is one\n"
      "  --view V            the picture's view: iso (default), xy, xz or yz\n"
      "  --html FILE         also write a web page that draws the path in 3D (drag to turn)\n"
-     "  --in FILE, --out FILE, --header   as for exp\n"},
-    {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER,
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp (--max-line also\n"
+     "                      for --times and --velocities)\n"},
+    {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER | OPT_MAX_LINE,
      "usage: garotor versor exp|log|apply [--in FILE] [--out FILE] [--header]\n"
+     "                      [--max-line N]\n"
      "The general algebra of G(4,1), one item a line (docs/versors.md).\n"
      "  exp      a bivector, 10 numbers: the coefficients of\n"
      "           e12 e13 e14 e15 e23 e24 e25 e34 e35 e45; writes exp(B), 32 numbers\n"
@@ -112,7 +118,7 @@ static const command commands[] = {
      "  apply    a versor V (32 numbers) then a point x (3 numbers); writes the\n"
      "           point whose embedding is V F(x) V^-1 (with the grade involution\n"
      "           of F(x) for odd V); an error where it goes to infinity\n"
-     "  --in FILE, --out FILE, --header   as for exp\n"},
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
 };
 
 static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
@@ -156,13 +162,82 @@ static const struct {
     {"--extrapolate", OPT_EXTRAPOLATE, 1},
     {"--html", OPT_HTML, 1},
     {"--time-unit", OPT_TIME_UNIT, 1},
+    {"--max-line", OPT_MAX_LINE, 1},
 };
+
+/* A usage error of command cmd (NULL: the demo, no command named), with a
+ * hint and its tail after the argument (or ""). */
+static int usage_hint(const char *cmd, const char *what, const char *arg, const char *hint, const char *tail)
+{
+    if (cmd)
+        fprintf(stderr, "garotor %s: %s%s%s%s%s\n(garotor %s --help shows the options)\n", cmd, what,
+                arg ? ": " : "", arg ? arg : "", hint, tail, cmd);
+    else
+        fprintf(stderr,
+                "garotor: %s%s%s%s%s\n(garotor --help shows the commands, garotor demo --help the demo's "
+                "options)\n",
+                what, arg ? ": " : "", arg ? arg : "", hint, tail);
+    return 2;
+}
 
 static int usage_error(const char *cmd, const char *what, const char *arg)
 {
-    fprintf(stderr, "garotor %s: %s%s%s\n(garotor %s --help shows the options)\n", cmd, what, arg ? ": " : "",
-            arg ? arg : "", cmd);
-    return 2;
+    return usage_hint(cmd, what, arg, "", "");
+}
+
+/* The optimal string alignment distance of a[0..la) and b: the fewest
+ * letters left out, added, changed or two neighbours swapped (99 for names
+ * too long to be options). */
+static int edit_distance(const char *a, size_t la, const char *b)
+{
+    size_t lb = strlen(b);
+    int d[33][33];
+    if (la > 32 || lb > 32)
+        return 99;
+    for (size_t i = 0; i <= la; i++) d[i][0] = (int)i;
+    for (size_t j = 0; j <= lb; j++) d[0][j] = (int)j;
+    for (size_t i = 1; i <= la; i++)
+        for (size_t j = 1; j <= lb; j++) {
+            int x = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            x = d[i - 1][j] + 1 < x ? d[i - 1][j] + 1 : x;
+            x = d[i][j - 1] + 1 < x ? d[i][j - 1] + 1 : x;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < x)
+                x = d[i - 2][j - 2] + 1;
+            d[i][j] = x;
+        }
+    return d[la][lb];
+}
+
+/* Into hint: ": did you mean NAME?" (or "A or B?", "A, B or C?") for the
+ * names nearest to word[0..len): within one edit of a name of up to four
+ * letters after its dashes, two of a longer one; failing that, the names it
+ * begins, three letters at least. "" when none, or more than three. */
+static void did_you_mean(const char *word, size_t len, const char *const *name, int n, char *hint, size_t cap)
+{
+    int best = 99, pick[3], np = 0;
+    for (int k = 0; k < n; k++) {
+        size_t body = strlen(name[k]) - strspn(name[k], "-");
+        int dk = edit_distance(word, len, name[k]);
+        if (dk <= (body <= 4 ? 1 : 2) && dk < best)
+            best = dk;
+    }
+    for (int k = 0; k < n && best < 99; k++)
+        if (edit_distance(word, len, name[k]) == best && np++ < 3)
+            pick[np - 1] = k;
+    size_t dashes = strspn(word, "-");
+    if (np == 0)
+        for (int k = 0; k < n; k++)
+            if (len >= dashes + 3 && strncmp(word, name[k], len) == 0 && np++ < 3)
+                pick[np - 1] = k;
+    hint[0] = '\0';
+    if (np == 0 || np > 3)
+        return;
+    size_t at = (size_t)snprintf(hint, cap, ": did you mean ");
+    for (int k = 0; k < np && at < cap; k++)
+        at += (size_t)snprintf(hint + at, cap - at, "%s%s", name[pick[k]],
+                               k + 2 < np    ? ", "
+                               : k + 2 == np ? " or "
+                                             : "?");
 }
 
 static int parse_double(const char *s, double *out)
@@ -176,32 +251,83 @@ static int parse_double(const char *s, double *out)
     return 0;
 }
 
+#define NOPT (sizeof option_table / sizeof option_table[0])
+#define NCMD (sizeof commands / sizeof commands[0])
+
+/* argv[i], no option of command c (cmd: its name in messages, NULL for the
+ * demo named by no command): the message says what was probably meant. A
+ * word that names a file, or does not start with '-', is the input without
+ * --in; an option a letter or two off one of c's is misspelt (--version and
+ * --help included, where they are taken); an option of another command is
+ * named as such. */
+static int unknown_option(const command *c, const char *cmd, int argc, char **argv, int i, size_t len)
+{
+    const char *a = argv[i];
+    struct stat st;
+    int in_given = 0;
+    for (int j = 0; j < argc; j++)
+        in_given |= strcmp(argv[j], "--in") == 0 || strncmp(argv[j], "--in=", 5) == 0;
+    if ((c->accepts & OPT_IN) && !in_given && (a[0] != '-' || stat(a, &st) == 0))
+        return usage_hint(cmd, "unknown option", a, ": a file to read? pass --in ", a);
+    const char *name[NOPT + 2];
+    int n = 0;
+    for (size_t k = 0; k < NOPT; k++)
+        if (c->accepts & option_table[k].bit)
+            name[n++] = option_table[k].name;
+    name[n++] = "--help";
+    if (!cmd && i == 0) /* garotor --version, only there */
+        name[n++] = "--version";
+    char hint[160];
+    did_you_mean(a, len, name, n, hint, sizeof hint);
+    for (size_t k = 0; k < NOPT && !hint[0]; k++) {
+        if (strncmp(a, option_table[k].name, len) != 0 || option_table[k].name[len] != '\0')
+            continue;
+        /* another command's option: which ones take it */
+        size_t at = (size_t)snprintf(hint, sizeof hint, ": an option of garotor ");
+        int m = 0, total = 0;
+        for (size_t j = 0; j < NCMD; j++) total += (commands[j].accepts & option_table[k].bit) != 0;
+        for (size_t j = 0; j < NCMD && at < sizeof hint; j++)
+            if (commands[j].accepts & option_table[k].bit) {
+                m++;
+                at += (size_t)snprintf(hint + at, sizeof hint - at, "%s%s", commands[j].name,
+                                       m + 1 < total    ? ", "
+                                       : m + 1 == total ? " and "
+                                                        : "");
+            }
+        if (at < sizeof hint)
+            snprintf(hint + at, sizeof hint - at, cmd ? ", not of %s" : ": name the command first",
+                     cmd ? cmd : "");
+    }
+    return usage_hint(cmd, "unknown option", a, hint, "");
+}
+
 /* --name VALUE or --name=VALUE (a one-value option only); an option given
- * twice is an error rather than a silent choice of one of the two. */
-static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
+ * twice is an error rather than a silent choice of one of the two. cmd: the
+ * command's name in messages (NULL: the demo, no command named). */
+static int parse_options(const command *c, const char *cmd, int argc, char **argv, cli_opts *o)
 {
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i], *eq = strchr(a, '=');
         size_t len = (a[0] == '-' && eq) ? (size_t)(eq - a) : strlen(a);
-        size_t k = 0, nopt = sizeof option_table / sizeof option_table[0];
-        while (k < nopt && !(strncmp(a, option_table[k].name, len) == 0 && option_table[k].name[len] == '\0'))
+        size_t k = 0;
+        while (k < NOPT && !(strncmp(a, option_table[k].name, len) == 0 && option_table[k].name[len] == '\0'))
             k++;
-        if (k == nopt || !(c->accepts & option_table[k].bit))
-            return usage_error(c->name, "unknown option", a);
+        if (k == NOPT || !(c->accepts & option_table[k].bit))
+            return unknown_option(c, cmd, argc, argv, i, len);
         if (a[len] == '=' && option_table[k].takes_value != 1)
-            return usage_error(c->name,
+            return usage_error(cmd,
                                option_table[k].takes_value
                                    ? "--v0 takes its six numbers as separate words, not"
                                    : "this option takes no value",
                                a);
         if (o->given & option_table[k].bit)
-            return usage_error(c->name, "option given twice", option_table[k].name);
+            return usage_error(cmd, "option given twice", option_table[k].name);
         const char *v;
         if (a[len] == '=') {
             v = a + len + 1;
         } else {
             if (i + option_table[k].takes_value >= argc)
-                return usage_error(c->name, "missing value for", a);
+                return usage_error(cmd, "missing value for", a);
             v = argv[i + 1];
             i += option_table[k].takes_value;
         }
@@ -225,9 +351,18 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
         case OPT_TIMES: o->times = v; break;
         case OPT_EXTRAPOLATE: o->extrapolate = v; break;
         case OPT_TIME_UNIT: o->time_unit = v; break;
+        case OPT_MAX_LINE: {
+            char *end = NULL;
+            errno = 0;
+            unsigned long long x = v[0] >= '0' && v[0] <= '9' ? strtoull(v, &end, 10) : 0;
+            if (!end || *end || errno || x < 1 || x > TIO_MAX_LINE_MAX)
+                return usage_error(cmd, "--max-line needs a whole number of bytes >= 1, not", v);
+            o->max_line = (size_t)x;
+            break;
+        }
         case OPT_RATE:
             if (parse_double(v, &o->rate) || !(o->rate > 0.0))
-                return usage_error(c->name, "--rate needs a number > 0, not", v);
+                return usage_error(cmd, "--rate needs a number > 0, not", v);
             o->rate_text = v;
             break;
         case OPT_SAMPLES: {
@@ -235,21 +370,52 @@ static int parse_options(const command *c, int argc, char **argv, cli_opts *o)
             errno = 0;
             o->samples = strtol(v, &end, 10);
             if (end == v || *end || errno || o->samples < 2)
-                return usage_error(c->name, "--samples needs a whole number >= 2, not", v);
+                return usage_error(cmd, "--samples needs a whole number >= 2, not", v);
             break;
         }
         case OPT_STEP:
             if (parse_double(v, &o->step) || !(o->step >= 1e-9 && o->step <= 1.0)) /* path.h */
-                return usage_error(c->name, "--step needs a number in [1e-9, 1] (u units), not", v);
+                return usage_error(cmd, "--step needs a number in [1e-9, 1] (u units), not", v);
             break;
         case OPT_V0:
             for (int j = 0; j < 6; j++)
                 if (parse_double(argv[i - 5 + j], &o->v0[j]))
-                    return usage_error(c->name, "--v0 needs 6 finite numbers, not", argv[i - 5 + j]);
+                    return usage_error(cmd, "--v0 needs 6 finite numbers, not", argv[i - 5 + j]);
             break;
         }
     }
     return 0;
+}
+
+/* The exit status, once standard output is flushed: whatever went there
+ * (the demo's report, --help, --version, a command's results) must have
+ * reached it, else the status is 2. */
+static int flushed(int rc)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        if (rc == 0) /* a command that failed to write has said so */
+            fprintf(stderr, "garotor: <stdout>: write error\n");
+        return 2;
+    }
+    return rc;
+}
+
+/* argv[1], no command: the command meant, or the input named without one. */
+static int unknown_command(const char *word)
+{
+    const char *name[NCMD];
+    char hint[160];
+    struct stat st;
+    for (size_t k = 0; k < NCMD; k++) name[k] = commands[k].name;
+    did_you_mean(word, strlen(word), name, (int)NCMD, hint, sizeof hint);
+    if (!hint[0] && stat(word, &st) == 0)
+        fprintf(stderr,
+                "garotor: unknown command '%s': a file to read? name the command first: garotor "
+                "COMMAND --in %s\n%s",
+                word, word, usage);
+    else
+        fprintf(stderr, "garotor: unknown command '%s'%s\n%s", word, hint, usage);
+    return 2;
 }
 
 int main(int argc, char **argv)
@@ -258,31 +424,29 @@ int main(int argc, char **argv)
     int first = 1;
     if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         fputs(usage, stdout);
-        return 0;
+        return flushed(0);
     }
     if (argc > 1 && strcmp(argv[1], "--version") == 0) {
         printf("garotor %s\n", GAROTOR_VERSION_STRING);
-        return 0;
+        return flushed(0);
     }
     if (argc > 1 && argv[1][0] != '-') {
-        size_t k = 0, ncmd = sizeof commands / sizeof commands[0];
-        while (k < ncmd && strcmp(argv[1], commands[k].name) != 0) k++;
-        if (k == ncmd) {
-            fprintf(stderr, "garotor: unknown command '%s'\n%s", argv[1], usage);
-            return 2;
-        }
+        size_t k = 0;
+        while (k < NCMD && strcmp(argv[1], commands[k].name) != 0) k++;
+        if (k == NCMD)
+            return unknown_command(argv[1]);
         c = &commands[k];
         first = 2;
     }
     for (int i = first; i < argc; i++)
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             fputs(c->help, stdout);
-            return 0;
+            return flushed(0);
         }
     cli_opts o;
     memset(&o, 0, sizeof o);
     if ((c->accepts & OPT_VERB) && first < argc && argv[first][0] != '-')
         o.verb = argv[first++];
-    int st = parse_options(c, argc - first, argv + first, &o);
-    return st ? st : c->run(&o);
+    int st = parse_options(c, first == 1 ? NULL : c->name, argc - first, argv + first, &o);
+    return flushed(st ? st : c->run(&o));
 }

@@ -430,16 +430,15 @@ static void draw_legend(const canvas *c, const svg_picture *pic, int height)
     fprintf(f, "\" fill=\"#555555\">view %s</text>\n", svg_view_name(pic->view));
 }
 
-int svg_write(const char *file, const svg_picture *pic)
+int svg_write(tio_out *out, const char *file, const svg_picture *pic)
 {
     canvas c = {0};
     ga_vec3 axis_a, axis_b;
     int height = layout(pic, &c, &axis_a, &axis_b);
 
-    tio_out out;
-    if (tio_out_open(&out, file))
+    if (tio_out_open(out, file))
         return -1;
-    FILE *f = c.f = out.fp;
+    FILE *f = c.f = out->fp;
     fprintf(f,
             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
@@ -465,5 +464,5 @@ int svg_write(const char *file, const svg_picture *pic)
     draw_keys(&c, pic);
     draw_legend(&c, pic, height);
     fputs("</svg>\n", f);
-    return tio_out_close(&out, 1);
+    return tio_out_finish(out);
 }

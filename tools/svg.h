@@ -12,7 +12,8 @@
  * decimals, so the same input gives the same bytes.
  *
  * The file is written to a temporary name beside it and renamed when complete
- * (tio_out), so a failure leaves nothing behind.
+ * and the caller's other outputs are written too (tio_out), so a failure
+ * leaves nothing behind.
  */
 #ifndef GAROTOR_TOOLS_SVG_H
 #define GAROTOR_TOOLS_SVG_H
@@ -20,6 +21,8 @@
 #include <stddef.h>
 
 #include <garotor/garotor.h>
+
+#include "textio.h"
 
 /** The view: orthographic, looking from (1, 1, 1) towards the origin with z up
  *  (iso), or down an axis: xy (from +z, x right, y up), xz (from -y, x right,
@@ -65,8 +68,11 @@ int svg_screw_axis(const ga_mat4 *key, size_t n, ga_vec3 *point, ga_vec3 *dir);
  *  view (default iso). 0, or -1 after a message "garotor CMD: ...". */
 int svg_options(const char *cmd, const char *svg, const char *view, svg_view *out);
 
-/** Write the picture to file (temporary file, then rename). 0 on success, -1
- *  after a message naming the file. */
-int svg_write(const char *file, const svg_picture *pic);
+/** Write the picture to file, through out: to its temporary file, finished
+ *  but not renamed (tio_out_finish), so that the caller renames it with
+ *  tio_out_commit once its other outputs are written, or removes it with
+ *  tio_out_discard. 0 on success, -1 after a message naming the file
+ *  (nothing left). */
+int svg_write(tio_out *out, const char *file, const svg_picture *pic);
 
 #endif

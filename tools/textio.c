@@ -5,6 +5,7 @@
 #include <garotor/numtext.h>
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -48,26 +49,125 @@ void tio_free(tio_items *items)
     memset(items, 0, sizeof *items);
 }
 
-static int read_items(const char *path, int skip_header, int keep_first, tio_items *out)
+/* The lines of one input, read a block at a time with read(2), so that a
+ * line is held only up to the limit (an endless one, /dev/zero, costs the
+ * limit and a block, never more) and a failure is never taken for the end of
+ * the input. */
+enum { TIO_BLOCK = 1 << 16 };
+typedef struct {
+    int fd;
+    const char *name;
+    size_t max;  /* the longest line, bytes before its newline */
+    long lineno; /* lines returned so far */
+    char *line;  /* the current line, NUL-terminated, without its newline */
+    size_t cap;  /* bytes at line: at most max + 1 */
+    char *blk;   /* TIO_BLOCK bytes read ahead */
+    size_t pos, len;
+    int eof;
+} tio_lines;
+
+/* The next line into r->line: 1, or 0 at the end of the input, or -1 after a
+ * message (a read error, a NUL byte, a line longer than r->max, out of
+ * memory), each naming the line (and for a NUL byte its column). */
+static int next_line(tio_lines *r)
+{
+    size_t len = 0;
+    int any = 0;
+    long at = r->lineno + 1;
+    for (;;) {
+        if (r->pos == r->len) {
+            if (r->eof)
+                break;
+            ssize_t k;
+            do k = read(r->fd, r->blk, TIO_BLOCK);
+            while (k < 0 && errno == EINTR);
+            if (k < 0) {
+                fprintf(stderr, "garotor: %s:%ld: read error: %s\n", r->name, at, strerror(errno));
+                return -1;
+            }
+            if (k == 0) {
+                r->eof = 1;
+                break;
+            }
+            r->pos = 0;
+            r->len = (size_t)k;
+        }
+        any = 1;
+        const char *s = r->blk + r->pos, *nl = memchr(s, '\n', r->len - r->pos);
+        size_t take = nl ? (size_t)(nl - s) : r->len - r->pos, room = r->max - len;
+        /* in the order of the bytes: a NUL within the limit, else the byte
+           past the limit */
+        const char *z = memchr(s, '\0', take < room ? take : room);
+        if (z) {
+            fprintf(stderr,
+                    "garotor: %s:%ld:%zu: NUL byte: not text (a binary file, or UTF-16: save it as UTF-8)\n",
+                    r->name, at, len + (size_t)(z - s) + 1);
+            return -1;
+        }
+        if (take > room) {
+            fprintf(stderr, "garotor: %s:%ld: line longer than %zu bytes (--max-line N reads longer ones)\n",
+                    r->name, at, r->max);
+            return -1;
+        }
+        if (len + take + 1 > r->cap) {
+            size_t c = r->cap < 256 ? 256 : r->cap <= r->max / 2 ? 2 * r->cap : r->max + 1;
+            if (c < len + take + 1)
+                c = len + take + 1;
+            char *q = realloc(r->line, c);
+            if (!q) {
+                fprintf(stderr, "garotor: %s:%ld: out of memory\n", r->name, at);
+                return -1;
+            }
+            r->line = q;
+            r->cap = c;
+        }
+        memcpy(r->line + len, s, take);
+        len += take;
+        r->pos += take + (nl != NULL);
+        if (nl)
+            break;
+    }
+    if (!any)
+        return 0;
+    r->line[len] = '\0';
+    r->lineno = at;
+    return 1;
+}
+
+static int read_items(const char *path, const tio_read_opts *ro, int keep_first, tio_items *out)
 {
     int from_stdin = !path || strcmp(path, "-") == 0;
     tio_items it = {from_stdin ? "<stdin>" : path, NULL, NULL, 0, NULL};
     size_t fcap = 0;
-    FILE *fp = from_stdin ? stdin : fopen(path, "r");
-    if (!fp) {
+    tio_lines r = {from_stdin ? 0 : open(path, O_RDONLY),
+                   it.name,
+                   ro->max_line ? ro->max_line : TIO_MAX_LINE,
+                   0,
+                   NULL,
+                   0,
+                   NULL,
+                   0,
+                   0,
+                   0};
+    if (r.fd < 0) {
         fprintf(stderr, "garotor: %s: cannot open: %s\n", path, strerror(errno));
         return -1;
     }
     size_t vcap = 0, icap = 0, nval = 0;
-    char *buf = NULL;
-    size_t bufcap = 0;
-    long lineno = 0;
-    int status = 0;
-    while (getline(&buf, &bufcap, fp) >= 0) {
-        lineno++;
-        if (lineno == 1 && skip_header)
+    int status = 0, got;
+    if (!(r.blk = malloc(TIO_BLOCK))) {
+        fprintf(stderr, "garotor: %s:1: out of memory\n", it.name);
+        status = -1;
+    }
+    while (status == 0 && (got = next_line(&r)) != 0) {
+        if (got < 0) {
+            status = -1;
+            break;
+        }
+        long lineno = r.lineno;
+        if (lineno == 1 && ro->header)
             continue;
-        char *s = buf;
+        char *s = r.line;
         /* a UTF-8 byte-order mark (spreadsheets and Windows editors write
            one) is no character of the data */
         if (lineno == 1 && strncmp(s, "\xEF\xBB\xBF", 3) == 0)
@@ -125,7 +225,11 @@ static int read_items(const char *path, int skip_header, int keep_first, tio_ite
                     k = sizeof tok - 1;
                 memcpy(tok, s, k);
                 tok[k] = '\0';
-                status = tio_error(&it, it.n - 1, "'%s' is not a number", tok);
+                /* a header line (a CSV's column names) where --header
+                   would skip it */
+                status = tio_error(&it, it.n - 1, "'%s' is not a number%s", tok,
+                                   lineno == 1 && ro->can_header ? ": is this a header line? pass --header"
+                                                                 : "");
                 break;
             }
             if (!isfinite(x)) {
@@ -159,13 +263,10 @@ static int read_items(const char *path, int skip_header, int keep_first, tio_ite
         if (status)
             break;
     }
-    if (status == 0 && ferror(fp)) {
-        fprintf(stderr, "garotor: %s: read error\n", it.name);
-        status = -1;
-    }
-    free(buf);
+    free(r.line);
+    free(r.blk);
     if (!from_stdin)
-        fclose(fp);
+        close(r.fd);
     if (status) {
         tio_free(&it);
         return -1;
@@ -174,55 +275,104 @@ static int read_items(const char *path, int skip_header, int keep_first, tio_ite
     return 0;
 }
 
-int tio_read(const char *path, int skip_header, tio_items *out)
+int tio_read(const char *path, const tio_read_opts *ro, tio_items *out)
 {
-    return read_items(path, skip_header, 0, out);
+    return read_items(path, ro, 0, out);
 }
 
-int tio_read_first(const char *path, int skip_header, tio_items *out)
+int tio_read_first(const char *path, const tio_read_opts *ro, tio_items *out)
 {
-    return read_items(path, skip_header, 1, out);
+    return read_items(path, ro, 1, out);
 }
 
-/* Temporaries being written (at most --out, --svg and --html at once): a
- * SIGINT, SIGTERM or SIGHUP removes them before the tool dies of it, so an
- * interrupted run leaves no FILE.tmpXXXXXX behind. unlink, signal and raise
- * are async-signal-safe; a slot is cleared only after its file was renamed
- * or removed, so the handler at worst unlinks a name that is gone. */
+/* Temporaries being written (at most --out, --svg and --html at once): any
+ * signal whose default action ends the process removes them before it dies
+ * of it, so a killed run leaves no FILE.tmpXXXXXX behind: POSIX's signals
+ * that terminate (with or without a core), the real-time ones included; not
+ * SIGKILL, which cannot be caught. The handler goes only where the default
+ * action is: a signal the caller ignores (nohup) stays ignored, and one a
+ * sanitizer or a fuzzer handles (ASan's SIGSEGV, libFuzzer's SIGALRM) stays
+ * theirs. unlink, signal and raise are async-signal-safe; a slot is set and
+ * cleared with the signals blocked, when its file was created, renamed or
+ * removed, so the handler never misses a temporary nor unlinks another's. */
 #define TIO_PENDING 4
 static char *volatile tio_pending[TIO_PENDING];
+
+static const int tio_signals[] = {
+    SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP, SIGABRT, SIGBUS, SIGFPE,    SIGUSR1, SIGSEGV,
+    SIGUSR2, SIGPIPE, SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ, SIGSYS, SIGVTALRM, SIGPROF,
+#ifdef SIGPOLL
+    SIGPOLL,
+#endif
+};
 
 static void tio_on_signal(int sig)
 {
     for (int i = 0; i < TIO_PENDING; i++)
         if (tio_pending[i])
             unlink(tio_pending[i]);
+    /* the default action, on return from here: raise() pends while sig is
+       blocked in its handler (a fault repeats its instruction instead) */
     signal(sig, SIG_DFL);
     raise(sig);
 }
 
-static void tio_pend(char *tmp, int on)
+/* Install the handler on every signal whose action is the default one. */
+static void tio_handle_signals(void)
+{
+    struct sigaction sa, old;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = tio_on_signal;
+    sigfillset(&sa.sa_mask); /* one handler at a time */
+    int nsig = (int)(sizeof tio_signals / sizeof tio_signals[0]), last = 0;
+#ifdef SIGRTMIN
+    last = SIGRTMAX - SIGRTMIN + 1; /* the real-time signals, after the others */
+#endif
+    for (int i = 0; i < nsig + last; i++) {
+        int sig = i < nsig ? tio_signals[i] : 0;
+#ifdef SIGRTMIN
+        if (i >= nsig)
+            sig = SIGRTMIN + (i - nsig);
+#endif
+        if (sigaction(sig, NULL, &old) == 0 && !(old.sa_flags & SA_SIGINFO) && old.sa_handler == SIG_DFL)
+            sigaction(sig, &sa, NULL);
+    }
+}
+
+/* Block every signal (*saved: the mask before), or restore the mask. */
+static void tio_block(sigset_t *saved, int on)
+{
+    sigset_t all;
+    sigfillset(&all);
+    sigprocmask(on ? SIG_BLOCK : SIG_SETMASK, on ? &all : saved, on ? saved : NULL);
+}
+
+/* Record (on) or forget o's temporary; called with the signals blocked. */
+static void tio_pend(tio_out *o, int on)
 {
     static int installed;
     if (on && !installed) {
-        struct sigaction sa;
-        memset(&sa, 0, sizeof sa);
-        sa.sa_handler = tio_on_signal;
-        sigemptyset(&sa.sa_mask);
-        const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-        for (int i = 0; i < 3; i++) {
-            struct sigaction old;
-            /* a signal the caller ignores (nohup) stays ignored */
-            if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
-                sigaction(sigs[i], &sa, NULL);
-        }
+        tio_handle_signals();
         installed = 1;
     }
     for (int i = 0; i < TIO_PENDING; i++)
-        if (on ? !tio_pending[i] : tio_pending[i] == tmp) {
-            tio_pending[i] = on ? tmp : NULL;
-            return;
+        if (on ? !tio_pending[i] : tio_pending[i] == o->tmp) {
+            tio_pending[i] = on ? o->tmp : NULL;
+            break;
         }
+    o->pending = on;
+}
+
+/* Remove o's temporary file, if there is one. */
+static void tio_unlink_tmp(tio_out *o)
+{
+    if (!o->pending)
+        return;
+    sigset_t saved;
+    tio_block(&saved, 1);
+    unlink(o->tmp);
+    tio_pend(o, 0);
+    tio_block(&saved, 0);
 }
 
 static void tio_out_release(tio_out *o)
@@ -266,7 +416,14 @@ int tio_out_open(tio_out *o, const char *path)
         tio_out_release(o);
         return -1;
     }
+    /* created and recorded with the signals blocked: no moment when the file
+       exists and a signal would leave it */
+    sigset_t saved;
+    tio_block(&saved, 1);
     int fd = mkstemp(o->tmp);
+    if (fd >= 0)
+        tio_pend(o, 1);
+    tio_block(&saved, 0);
     /* mkstemp creates the file private (0600); give it the mode the file it
      * replaces had, or that a new file gets (0666 less the umask) */
     mode_t mask = umask(0);
@@ -274,15 +431,13 @@ int tio_out_open(tio_out *o, const char *path)
     mode_t mode = exists ? st.st_mode & 07777 : 0666 & ~mask;
     if (fd < 0 || fchmod(fd, mode) != 0 || !(o->fp = fdopen(fd, "w"))) {
         fprintf(stderr, "garotor: %s: cannot write: %s\n", path, strerror(errno));
-        if (fd >= 0) {
+        if (fd >= 0)
             close(fd);
-            unlink(o->tmp);
-        }
+        tio_unlink_tmp(o);
         tio_out_release(o);
         return -1;
     }
     setvbuf(o->fp, NULL, _IOFBF, 1 << 16); /* a line is some 300 bytes: fewer writes */
-    tio_pend(o->tmp, 1);
     return 0;
 }
 
@@ -321,10 +476,10 @@ void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n)
 
 void tio_out_line(tio_out *o, const double *v, int n) { put_numbers(o, "", 0, v, n); }
 
-int tio_out_close(tio_out *o, int ok)
+int tio_out_finish(tio_out *o)
 {
     if (!o->fp)
-        return ok ? 0 : -1;
+        return 0;
     int werr = fflush(o->fp) != 0 || ferror(o->fp);
     if (!o->path) {
         o->fp = NULL;
@@ -332,27 +487,60 @@ int tio_out_close(tio_out *o, int ok)
             fprintf(stderr, "garotor: <stdout>: write error\n");
             return -1;
         }
-        return ok ? 0 : -1;
+        return 0;
     }
     werr |= fclose(o->fp) != 0;
     o->fp = NULL;
-    int rc = -1;
-    if (o->direct) {
-        if (werr)
-            fprintf(stderr, "garotor: %s: write error\n", o->path);
-        else
-            rc = ok ? 0 : -1;
-    } else if (ok && !werr && rename(o->tmp, o->path) == 0) {
-        rc = 0;
-        tio_pend(o->tmp, 0);
-    } else {
-        if (ok)
+    if (!werr)
+        return 0;
+    if (o->direct)
+        fprintf(stderr, "garotor: %s: write error\n", o->path);
+    else
+        fprintf(stderr, "garotor: %s: cannot write: %s\n", o->path, strerror(errno));
+    tio_unlink_tmp(o);
+    tio_out_release(o);
+    return -1;
+}
+
+int tio_out_commit(tio_out *o)
+{
+    int rc = 0;
+    if (o->pending) {
+        sigset_t saved;
+        tio_block(&saved, 1);
+        if (rename(o->tmp, o->path) == 0) {
+            tio_pend(o, 0);
+        } else {
+            rc = -1;
             fprintf(stderr, "garotor: %s: cannot write: %s\n", o->path, strerror(errno));
-        unlink(o->tmp);
-        tio_pend(o->tmp, 0);
+            unlink(o->tmp);
+            tio_pend(o, 0);
+        }
+        tio_block(&saved, 0);
     }
     tio_out_release(o);
     return rc;
+}
+
+void tio_out_discard(tio_out *o)
+{
+    if (o->fp && o->path)
+        fclose(o->fp);
+    o->fp = NULL;
+    tio_unlink_tmp(o);
+    tio_out_release(o);
+}
+
+int tio_out_close(tio_out *o, int ok)
+{
+    if (ok)
+        return tio_out_finish(o) == 0 && tio_out_commit(o) == 0 ? 0 : -1;
+    /* what was written to standard output or a device stays written: its
+       write error is still told */
+    if (!o->path || o->direct)
+        tio_out_finish(o);
+    tio_out_discard(o);
+    return -1;
 }
 
 void tio_out_unwrite(const char *path)
