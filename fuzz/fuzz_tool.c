@@ -21,10 +21,17 @@
  * but the time of a run and of reading its output back grows with them, and
  * --svg holds them), and an Euler --step below 1e-3 is raised to 1e-3
  * (all legal and merely slow or large); "demo" and --help (anywhere) are skipped.
+ * --max-line passes through: the seeds give small ones, so that lines longer
+ * than the limit cost nothing, and the input's bytes are fed as they are, NUL
+ * bytes included. The tool reads its input a few bytes at a time here
+ * (tio_read_block, 1 to 61 bytes, from the input's size), so that short
+ * inputs cross reads as a long file crosses the tool's 65536-byte ones.
  *
  * Invariants (docs/tool.md, docs/errors.md), besides "no crash, no sanitizer
  * report, no leak":
  *   - the exit status is 0 or 2;
+ *   - status 0 only if no file the tool read (the input, a velocity file)
+ *     has a NUL byte or a line longer than --max-line (default 1048576);
  *   - status 2 leaves no output file, no picture and no temporary file;
  *   - status 0 leaves the output file, every number in it finite, lines of
  *     one width (6 or 16 numbers; for interp 8 or 17, plus 6, 12, 16 or 32
@@ -52,6 +59,7 @@
 #include <garotor/garotor.h>
 
 int garotor_main(int argc, char **argv);
+extern size_t tio_read_block; /* tools/textio.h */
 
 static char dir[256], in_path[300], vel_path[300], out_path[300], svg_path[300], html_path[300];
 
@@ -260,6 +268,18 @@ static void check_output(int kind, int affine, int pose, int verb, const uint8_t
     fclose(f);
 }
 
+/* A file the tool read with exit status 0: no NUL byte, no line (the bytes
+   before its newline) longer than max. */
+static void check_read_ok(const char *what, const uint8_t *p, size_t n, size_t max)
+{
+    size_t len = 0;
+    for (size_t i = 0; i < n; i++) {
+        FZ_CHECK(p[i] != 0, "exit status 0, but the %s has a NUL byte at offset %zu", what, i);
+        len = p[i] == '\n' ? 0 : len + 1;
+        FZ_CHECK(len <= max, "exit status 0, but the %s has a line longer than --max-line %zu", what, max);
+    }
+}
+
 #define MAXARG 40
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -316,6 +336,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int argc = 0;
     argv[argc++] = "garotor";
     int want_vel = 0, want_svg = 0, want_html = 0, kind = -1, affine = 0, pose = 0, verb = -1, header = 0;
+    size_t max_line = (size_t)1 << 20; /* the tool's default (TIO_MAX_LINE) */
     static char capped[3][32];
     /* the span of the keys' times (the first number of each input line), for
        capping --rate below: HZ is lowered so that it gives at most 4096
@@ -396,6 +417,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
             continue;
         }
+        if (!strcmp(tok, "--max-line")) { /* passed on; its value kept for the checks */
+            char *v = strtok_r(NULL, " \t\r", &save);
+            argv[argc++] = tok;
+            if (v) {
+                argv[argc++] = v;
+                max_line = (size_t)strtoull(v, NULL, 10);
+            }
+            continue;
+        }
         if (!strcmp(tok, "--format")) {
             char *v = strtok_r(NULL, " \t\r", &save);
             argv[argc++] = tok;
@@ -466,12 +496,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (want_vel)
         FZ_CHECK(write_file(vel_path, vel ? vel : rest, vel ? nvel : 0) == 0, "cannot write %s", vel_path);
 
+    tio_read_block = 1 + size % 61;
     int rc = garotor_main(argc, argv);
     FZ_CHECK(rc == 0 || rc == 2, "exit status %d", rc);
     if (rc == 2) {
         check_no_stray_files(0);
     } else {
         FZ_CHECK(kind != K_VERSOR || verb >= 0, "versor: exit status 0 for an unknown operation");
+        check_read_ok("input", rest, nin, max_line);
+        if (want_vel && vel)
+            check_read_ok("velocity file", vel, nvel, max_line);
         check_output(kind, affine, pose, verb, rest, nin, header);
         check_no_stray_files(1);
     }

@@ -302,6 +302,19 @@ TOOL = {
     "versor-apply-zero": "versor apply\n%s 1 2 3\n" % mv32({}),
     "versor-apply-nan": "versor apply\n%s 1 nan 3\n" % mv32({0: 1}),
     "versor-unknown": "versor sqrt\n%s\n" % mv32({0: 1}),
+    # the reader (docs/tool.md, "Text, and how long a line"): NUL bytes, lines
+    # about a small --max-line, in every file a command reads
+    "exp-nul-byte": "exp\n0 0 1 0 0 1\0junk\n",
+    "exp-nul-only": "exp\n\0\0\0\0",
+    "exp-nul-comment": "exp --header\nwx,wy\0\n# a\0b\n" + TW,
+    "exp-max-line": "exp --max-line 11\n0 0 0 0 0 0\n0 0 0 0 0 0.5\n",
+    "log-max-line": "log --max-line 40\n%s\n%s\n" % (M1, M2),
+    "interp-max-line-pose": "interp --format pose --samples 3 --max-line 52\n" + POSES,
+    "interp-max-line-velocities": "interp --scheme lihao3 --samples 3 --velocities v --max-line 15\n" + KEYS
+                                  + "%%\n0 0 0 0 0 0\n0.1 0 0 0 0 1e-3\n0 0 0 0 0 0\n",
+    "interp-nul-velocities": "interp --scheme lihao3 --samples 3 --velocities v\n" + KEYS + "%%\n" + VEL[:20]
+                             + "\0" + VEL[20:],
+    "versor-max-line": "versor apply --max-line=100\n%s 1 2 3\n" % ROT,
 }
 for name, text in TOOL.items():
     write("tool", name, text)

@@ -40,6 +40,22 @@ printf '0 0 0 0 0 0\n0 0 0 0 0 0\n0 0 \000 0 0 0\n' >"$d/nulv"
 expect_error "NUL byte in --velocities" "nulv:3:5: NUL byte" \
     "$G" interp --scheme lihao3 --format pose --in "$K3" --velocities "$d/nulv" --samples 3 --out "$d/out"
 
+# ---- lines across reads (of 65536 bytes): split nowhere, counted right -----
+# 12000 twists, each padded by 0 to 22 blanks: 7 distinct ones, 12000 lines out
+awk 'BEGIN { for (i = 0; i < 12000; i++) { s = ""; for (j = 0; j < i % 23; j++) s = s " "
+    print s "0, 0 ,0 0\t0 " (i % 7) } }' >"$d/many"
+"$G" exp --in "$d/many" | sort | uniq -c | awk '{ print $1 }' | tr '\n' ' ' >"$d/counts"
+[ "$(cat "$d/counts")" = "1715 1715 1714 1714 1714 1714 1714 " ] ||
+    fail "12000 twists across reads: counts of the 7 motions $(cat "$d/counts")"
+# comment lines of 99 bytes and a newline: the 656th spans byte 65536; then
+# a line from byte 65500 with a NUL byte at column 50, past byte 65536
+awk 'BEGIN { for (i = 0; i < 656; i++) { s = "#"; while (length(s) < 99) s = s "c"; print s } }' >"$d/span"
+"$G" exp --max-line 99 --in "$d/span" >"$d/stdout" 2>"$d/stderr" && [ ! -s "$d/stdout" ] ||
+    fail "--max-line 99: lines of 99 bytes across a read refused: $(cat "$d/stderr")"
+head -n 655 "$d/span" >"$d/spannul"
+printf '0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\000\n' >>"$d/spannul"
+expect_error "a NUL byte past the first read" "spannul:656:50: NUL byte" "$G" exp --in "$d/spannul" --out "$d/out"
+
 # ---- --max-line: a line of N bytes is read, of N + 1 an error ----------------
 printf '0 0 0 0 0 0\n' >"$d/eleven"
 "$G" exp --max-line 11 --in "$d/eleven" >"$d/ml.out" 2>"$d/err" && [ -s "$d/ml.out" ] ||
@@ -166,7 +182,7 @@ ls "$d"/head.svg* "$d"/head.html* >/dev/null 2>&1 && fail "--svg | head -1, SIGP
 # signals a background job starts with ignored (SIGINT, SIGQUIT) to their
 # default. A sanitizer handles SIGSEGV, SIGBUS and SIGFPE itself (the tool
 # leaves a handled signal alone): those three only where it is not there.
-sigs="HUP INT QUIT TERM ALRM USR1 USR2 PIPE XCPU XFSZ VTALRM PROF IO ABRT SYS TRAP ILL RTMIN RTMAX"
+sigs="HUP INT QUIT TERM ALRM USR1 USR2 PIPE XCPU XFSZ VTALRM PROF IO ABRT SYS TRAP ILL PWR RTMIN RTMAX"
 [ "$can_limit" -eq 1 ] && sigs="$sigs SEGV BUS FPE"
 mkfifo "$d/sig.fifo"
 for sig in $sigs; do

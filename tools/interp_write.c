@@ -141,7 +141,9 @@ static int run(const ic_sampler *s, tio_out *out, picture_keep *keep, size_t *co
         return ic_oom();
     if (s->kind == IC_UNIFORM)
         st = ga_path_stepper_init(s->path, s->ev, s->step, s->ns, s->times[s->i0], s->times[s->i1], &stepper);
-    for (int more = 1; st == GA_OK && more;) {
+    /* an output that fails (a full disk; a pipe whose reader left, SIGPIPE
+       ignored) stops the samples: tio_out_finish then says so */
+    for (int more = 1; st == GA_OK && more && !(out && ferror(out->fp));) {
         size_t m = 0;
         while (m < CHUNK && (more = ic_sample_time(s, k + m, &t[m], &off[m]))) m++;
         if (m == 0)

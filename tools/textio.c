@@ -53,15 +53,16 @@ void tio_free(tio_items *items)
  * line is held only up to the limit (an endless one, /dev/zero, costs the
  * limit and a block, never more) and a failure is never taken for the end of
  * the input. */
-enum { TIO_BLOCK = 1 << 16 };
+size_t tio_read_block = 1 << 16;
 typedef struct {
     int fd;
     const char *name;
-    size_t max;  /* the longest line, bytes before its newline */
-    long lineno; /* lines returned so far */
-    char *line;  /* the current line, NUL-terminated, without its newline */
-    size_t cap;  /* bytes at line: at most max + 1 */
-    char *blk;   /* TIO_BLOCK bytes read ahead */
+    size_t max;   /* the longest line, bytes before its newline */
+    long lineno;  /* lines returned so far */
+    char *line;   /* the current line, NUL-terminated, without its newline */
+    size_t cap;   /* bytes at line: at most max + 1 */
+    char *blk;    /* bytes read ahead */
+    size_t blksz; /* bytes at blk */
     size_t pos, len;
     int eof;
 } tio_lines;
@@ -79,7 +80,7 @@ static int next_line(tio_lines *r)
             if (r->eof)
                 break;
             ssize_t k;
-            do k = read(r->fd, r->blk, TIO_BLOCK);
+            do k = read(r->fd, r->blk, r->blksz);
             while (k < 0 && errno == EINTR);
             if (k < 0) {
                 fprintf(stderr, "garotor: %s:%ld: read error: %s\n", r->name, at, strerror(errno));
@@ -139,23 +140,17 @@ static int read_items(const char *path, const tio_read_opts *ro, int keep_first,
     int from_stdin = !path || strcmp(path, "-") == 0;
     tio_items it = {from_stdin ? "<stdin>" : path, NULL, NULL, 0, NULL};
     size_t fcap = 0;
-    tio_lines r = {from_stdin ? 0 : open(path, O_RDONLY),
-                   it.name,
-                   ro->max_line ? ro->max_line : TIO_MAX_LINE,
-                   0,
-                   NULL,
-                   0,
-                   NULL,
-                   0,
-                   0,
-                   0};
+    tio_lines r = {.fd = from_stdin ? 0 : open(path, O_RDONLY),
+                   .name = it.name,
+                   .max = ro->max_line ? ro->max_line : TIO_MAX_LINE,
+                   .blksz = tio_read_block ? tio_read_block : 1};
     if (r.fd < 0) {
         fprintf(stderr, "garotor: %s: cannot open: %s\n", path, strerror(errno));
         return -1;
     }
     size_t vcap = 0, icap = 0, nval = 0;
     int status = 0, got;
-    if (!(r.blk = malloc(TIO_BLOCK))) {
+    if (!(r.blk = malloc(r.blksz))) {
         fprintf(stderr, "garotor: %s:1: out of memory\n", it.name);
         status = -1;
     }
@@ -288,8 +283,8 @@ int tio_read_first(const char *path, const tio_read_opts *ro, tio_items *out)
 /* Temporaries being written (at most --out, --svg and --html at once): any
  * signal whose default action ends the process removes them before it dies
  * of it, so a killed run leaves no FILE.tmpXXXXXX behind: POSIX's signals
- * that terminate (with or without a core), the real-time ones included; not
- * SIGKILL, which cannot be caught. The handler goes only where the default
+ * that terminate (with or without a core), the real-time ones included, and
+ * Linux's SIGPWR and SIGSTKFLT; not SIGKILL, which cannot be caught. The handler goes only where the default
  * action is: a signal the caller ignores (nohup) stays ignored, and one a
  * sanitizer or a fuzzer handles (ASan's SIGSEGV, libFuzzer's SIGALRM) stays
  * theirs. unlink, signal and raise are async-signal-safe; a slot is set and
@@ -299,10 +294,16 @@ int tio_read_first(const char *path, const tio_read_opts *ro, tio_items *out)
 static char *volatile tio_pending[TIO_PENDING];
 
 static const int tio_signals[] = {
-    SIGHUP,  SIGINT,  SIGQUIT, SIGILL,  SIGTRAP, SIGABRT, SIGBUS, SIGFPE,    SIGUSR1, SIGSEGV,
-    SIGUSR2, SIGPIPE, SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ, SIGSYS, SIGVTALRM, SIGPROF,
+    SIGHUP,    SIGINT,  SIGQUIT, SIGILL,  SIGTRAP, SIGABRT, SIGBUS, SIGFPE,    SIGUSR1, SIGSEGV,
+    SIGUSR2,   SIGPIPE, SIGALRM, SIGTERM, SIGXCPU, SIGXFSZ, SIGSYS, SIGVTALRM, SIGPROF,
 #ifdef SIGPOLL
     SIGPOLL,
+#endif
+#ifdef SIGPWR /* Linux's own, which end the process too */
+    SIGPWR,
+#endif
+#ifdef SIGSTKFLT
+    SIGSTKFLT,
 #endif
 };
 

@@ -49,6 +49,10 @@ typedef struct {
 /** The largest --max-line accepted. */
 #define TIO_MAX_LINE_MAX ((size_t)-1 / 4)
 
+/** Bytes asked of each read(2) of an input: 65536. fuzz/fuzz_tool.c makes
+ *  it a few bytes, so that its short inputs cross reads as long ones do. */
+extern size_t tio_read_block;
+
 /** How an input is read. */
 typedef struct {
     int header;      /* skip the first line (--header) */
