@@ -13,7 +13,7 @@
 # can run under one at all: not under a sanitizer (ASan reserves terabytes of
 # address space) or valgrind; there `limited` is unavailable (status 77).
 can_limit=0
-(ulimit -v 100000 && "$G" --version) >/dev/null 2>&1 && can_limit=1
+(ulimit -v 100000 && "$G" --version >/dev/null 2>&1) 2>/dev/null && can_limit=1
 [ "$can_limit" -eq 1 ] || echo "note: the tool cannot run under ulimit -v here (a sanitizer or valgrind): the memory-limited cases are skipped"
 limited() {
     kb=$1
@@ -226,6 +226,9 @@ printf 'time,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n' >"$d/hdr.csv"
 expect_error "a CSV header without --header" "hdr.csv:1: 'time' is not a number: is this a header line? pass --header" \
     "$G" interp --format pose --samples 3 --in "$d/hdr.csv" --out "$d/out"
 printf '0.5\ntime\n' >"$d/hdrt"
+printf '0 0 x 0 0 0\n' >"$d/word1"
+expect_error "a word on line 1 after a number: no --header hint" "word1:1: 'x' is not a number$" \
+    "$G" exp --in "$d/word1" --out "$d/out"
 expect_error "a word in --times: no --header hint" "hdrt:2: 'time' is not a number$" \
     "$G" interp --format pose --in "$K3" --times "$d/hdrt" --out "$d/out"
 printf 'time\n0.5\n' >"$d/hdrt1"

@@ -220,11 +220,11 @@ static int read_items(const char *path, const tio_read_opts *ro, int keep_first,
                     k = sizeof tok - 1;
                 memcpy(tok, s, k);
                 tok[k] = '\0';
-                /* a header line (a CSV's column names) where --header
-                   would skip it */
+                /* a header line (a CSV's column names, a word first) where
+                   --header would skip it */
+                int header = lineno == 1 && ro->can_header && cur->count == 0;
                 status = tio_error(&it, it.n - 1, "'%s' is not a number%s", tok,
-                                   lineno == 1 && ro->can_header ? ": is this a header line? pass --header"
-                                                                 : "");
+                                   header ? ": is this a header line? pass --header" : "");
                 break;
             }
             if (!isfinite(x)) {
