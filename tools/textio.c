@@ -312,9 +312,14 @@ static void tio_on_signal(int sig)
     for (int i = 0; i < TIO_PENDING; i++)
         if (tio_pending[i])
             unlink(tio_pending[i]);
-    /* the default action, on return from here: raise() pends while sig is
-       blocked in its handler (a fault repeats its instruction instead) */
+    /* then the default action, at once: sig unblocked and raised again
+       (raised while blocked, it would wait for the handler's return, which
+       valgrind loses in a blocking call) */
     signal(sig, SIG_DFL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    sigprocmask(SIG_UNBLOCK, &one, NULL);
     raise(sig);
 }
 
