@@ -182,10 +182,10 @@ ls "$d"/head.svg* "$d"/head.html* >/dev/null 2>&1 && fail "--svg | head -1, SIGP
 # signals a background job starts with ignored (SIGINT, SIGQUIT) to their
 # default. A sanitizer handles SIGSEGV, SIGBUS and SIGFPE itself (the tool
 # leaves a handled signal alone): those three only where it is not there.
-# valgrind (TOOL_WRAPPER) keeps SIGSYS, SIGILL and SIGRTMAX for itself (sent
+# valgrind (TOOL_WRAPPER) keeps SIGSYS, SIGTRAP, SIGILL and SIGRTMAX (sent
 # by kill, they do not reach the tool): not under it.
-sigs="HUP INT QUIT TERM ALRM USR1 USR2 PIPE XCPU XFSZ VTALRM PROF IO ABRT TRAP PWR RTMIN"
-[ -n "${TOOL_WRAPPER:-}" ] || sigs="$sigs SYS ILL RTMAX"
+sigs="HUP INT QUIT TERM ALRM USR1 USR2 PIPE XCPU XFSZ VTALRM PROF IO ABRT PWR RTMIN"
+[ -n "${TOOL_WRAPPER:-}" ] || sigs="$sigs SYS TRAP ILL RTMAX"
 [ "$can_limit" -eq 1 ] && sigs="$sigs SEGV BUS FPE"
 # alive PID: the process runs (not a zombie); without /proc, until waited for
 alive() {
