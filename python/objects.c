@@ -57,7 +57,8 @@ static const char *const reality_names[] = {"real", "tangent", "imaginary"};
 
 static PyObject *object_new(const ga_object *ob)
 {
-    if (ob->kind < 0 || ob->kind > GA_OBJECT_SPHERE || ob->reality < 0 || ob->reality > GA_REALITY_IMAGINARY) {
+    if (ob->kind < 0 || ob->kind > GA_OBJECT_SPHERE || ob->reality < 0 ||
+        ob->reality > GA_REALITY_IMAGINARY) {
         PyErr_SetString(PyExc_SystemError, "Multivector.object: unknown kind or reality");
         return NULL;
     }
