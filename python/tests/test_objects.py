@@ -401,6 +401,20 @@ def test_statuses():
         garotor.e1 ** (10 ** 7)
 
 
+def test_fits_name_every_bad_number():
+    rng = np.random.default_rng(2509)
+    pts = rng.normal(size=(6, 3))
+    for fit in (garotor.fit_sphere, garotor.fit_plane, garotor.fit_circle, garotor.fit_line):
+        fit(pts)  # the clean points succeed
+        for i in range(6):
+            for j in range(3):
+                for bad in (np.nan, np.inf, -np.inf):
+                    a = pts.copy()
+                    a[i, j] = bad
+                    msg = raises(GA_ERR_NOTFINITE, fit, a)
+                    assert msg.endswith("points[%d, %d] is %s" % (i, j, bad)), msg
+
+
 def test_not_finite():
     nan = float("nan")
     msg = raises(GA_ERR_NOTFINITE, garotor.fit_sphere, [[0, 0, 0], [1, 0, 0], [0, 1, nan], [0, 0, 1]])
