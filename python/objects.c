@@ -105,6 +105,16 @@ PyObject *gpy_MV_object(PyObject *self, PyObject *args, PyObject *kw)
             return NULL;
         st = ga_object_from_mv_about(MV(self), (ga_vec3){o[0], o[1], o[2]}, scale, &ob);
     }
+    if (st == GA_ERR_SINGULAR) {
+        int zero = 1;
+        for (int i = 0; i < 32; i++) zero = zero && MV(self).c[i] == 0.0;
+        if (zero) {
+            gpy_raise_status_why("Multivector.object", 0, NULL, 0, st,
+                                 "the multivector is 0 (the meet of objects in special position: "
+                                 "meet_rel gives it)");
+            return NULL;
+        }
+    }
     return st == GA_OK ? object_new(&ob) : gpy_status_error("Multivector.object", st);
 }
 
@@ -336,6 +346,17 @@ static ga_vec3 *read_points(const char *what, PyObject *obj, size_t *n)
     return p;
 }
 
+/* (a, b) (n = 2) or (a, b, c) (n = 3), taking the references; NULL if
+ * any is NULL (an exception set) */
+static PyObject *tuple_of(int n, PyObject *a, PyObject *b, PyObject *c)
+{
+    PyObject *t = !a || !b ? NULL : n == 2 ? PyTuple_Pack(2, a, b) : c ? PyTuple_Pack(3, a, b, c) : NULL;
+    Py_XDECREF(a);
+    Py_XDECREF(b);
+    Py_XDECREF(c);
+    return t;
+}
+
 PyObject *gpy_fit_sphere(PyObject *self, PyObject *obj)
 {
     (void)self;
@@ -349,7 +370,7 @@ PyObject *gpy_fit_sphere(PyObject *self, PyObject *obj)
     Py_END_ALLOW_THREADS PyMem_Free(p);
     if (st != GA_OK)
         return gpy_status_error("fit_sphere", st);
-    return Py_BuildValue("(Nd)", vec3_array(c), r);
+    return tuple_of(2, vec3_array(c), PyFloat_FromDouble(r), NULL);
 }
 
 PyObject *gpy_fit_plane(PyObject *self, PyObject *obj)
@@ -365,7 +386,7 @@ PyObject *gpy_fit_plane(PyObject *self, PyObject *obj)
     Py_END_ALLOW_THREADS PyMem_Free(p);
     if (st != GA_OK)
         return gpy_status_error("fit_plane", st);
-    return Py_BuildValue("(Nd)", vec3_array(m), d);
+    return tuple_of(2, vec3_array(m), PyFloat_FromDouble(d), NULL);
 }
 
 PyObject *gpy_fit_circle(PyObject *self, PyObject *obj)
@@ -381,7 +402,7 @@ PyObject *gpy_fit_circle(PyObject *self, PyObject *obj)
     Py_END_ALLOW_THREADS PyMem_Free(p);
     if (st != GA_OK)
         return gpy_status_error("fit_circle", st);
-    return Py_BuildValue("(NdN)", vec3_array(c), r, vec3_array(m));
+    return tuple_of(3, vec3_array(c), PyFloat_FromDouble(r), vec3_array(m));
 }
 
 PyObject *gpy_fit_line(PyObject *self, PyObject *obj)
@@ -396,5 +417,5 @@ PyObject *gpy_fit_line(PyObject *self, PyObject *obj)
     Py_END_ALLOW_THREADS PyMem_Free(p);
     if (st != GA_OK)
         return gpy_status_error("fit_line", st);
-    return Py_BuildValue("(NN)", vec3_array(u), vec3_array(q));
+    return tuple_of(2, vec3_array(u), vec3_array(q), NULL);
 }

@@ -293,6 +293,14 @@ def test_meet_of_two_spheres_is_the_known_circle():
     assert dual_sphere([0, 0, 0], 1).meet(dual_sphere([2, 0, 0], 1)).object().reality == "tangent"
 
 
+def test_object_pickles():
+    import pickle
+    ob = dual_sphere([1, 2, 3], 2).meet(garotor.e3 + garotor.n).object()
+    back = pickle.loads(pickle.dumps(ob))
+    assert type(back) is garotor.Object and back.kind == ob.kind == "circle"
+    assert back[:2] == ob[:2] and all(same(x, y) for x, y in zip(back[2:], ob[2:]))
+
+
 def test_kinds_read_back():
     rng = np.random.default_rng(2506)
     s = scene(rng)
@@ -374,7 +382,10 @@ def test_statuses():
     s = dual_sphere([1, 2, 3], 2)
     # a sphere met with a multiple of itself: 0 exactly, read back as singular
     assert not s.meet(3 * s)
-    raises(GA_ERR_SINGULAR, lambda: s.meet(3 * s).object())
+    msg = raises(GA_ERR_SINGULAR, lambda: s.meet(3 * s).object())
+    assert msg.endswith("the multivector is 0 (the meet of objects in special position: meet_rel gives it)")
+    # ... where meet_rel gives the sphere (the smaller one as given: B)
+    assert s.dual().meet_rel((3 * s).dual()) == (3 * s).dual()
     raises(GA_ERR_NOTBLADE, lambda: (garotor.e1 + garotor.e12).object())
     raises(GA_ERR_SINGULAR, lambda: M().join(garotor.e1))
     raises(GA_ERR_DOMAIN, lambda: M.blade(0).join(garotor.e1))
