@@ -126,6 +126,14 @@ static PyMethodDef module_methods[] = {
      "from_dualquat(d, *, out=None): unit dual quaternions (..., 8) -> (..., 4, 4)."},
     {"up", FN(gpy_up), KW, "up(x, *, out=None): points (..., 3) -> conformal points (..., 32)."},
     {"down", FN(gpy_down), KW, "down(X, *, out=None): conformal points (..., 32) -> points (..., 3)."},
+    {"fit_sphere", gpy_fit_sphere, METH_O,
+     "fit_sphere(points): the least-squares sphere through (n, 3) points, n >= 4: (centre, radius)."},
+    {"fit_plane", gpy_fit_plane, METH_O,
+     "fit_plane(points): the least-squares plane m.x = d through (n, 3) points, n >= 3: (m, d)."},
+    {"fit_circle", gpy_fit_circle, METH_O,
+     "fit_circle(points): the least-squares circle through (n, 3) points, n >= 3: (centre, radius, normal)."},
+    {"fit_line", gpy_fit_line, METH_O,
+     "fit_line(points): the least-squares line through (n, 3) points, n >= 2: (direction, point)."},
     {"_c_loop", c_loop, METH_VARARGS,
      "_c_loop(kind, x, path=None): the benchmark's plain C loop (python/bench.py)."},
     {NULL, NULL, 0, NULL}};
@@ -160,7 +168,7 @@ PyMODINIT_FUNC PyInit_garotor(void)
                                           PyExc_ValueError, NULL);
     if (!gpy_error || PyModule_AddObjectRef(m, "Error", gpy_error) < 0 ||
         PyModule_AddObjectRef(m, "Path", (PyObject *)&gpy_PathType) < 0 ||
-        PyModule_AddObjectRef(m, "Multivector", (PyObject *)&gpy_MVType) < 0 ||
+        PyModule_AddObjectRef(m, "Multivector", (PyObject *)&gpy_MVType) < 0 || gpy_objects_init(m) < 0 ||
         PyModule_AddStringConstant(m, "__version__", GAROTOR_VERSION_STRING) < 0)
         goto fail;
     for (int i = 1; i < 32; i++) {

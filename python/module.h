@@ -9,6 +9,8 @@
  *   functions.c    the element-wise functions: exp, log, compose, ..., up, down
  *   path.c         the Path type
  *   multivector.c  the Multivector type
+ *   objects.c      Multivector's object methods (meet, join, read-back,
+ *                  versors, projections, powers), garotor.Object, the fits
  */
 #ifndef GAROTOR_PYTHON_MODULE_H
 #define GAROTOR_PYTHON_MODULE_H
@@ -168,9 +170,56 @@ extern PyTypeObject gpy_PathType;
 
 /* ---- Multivector (multivector.c) -------------------------------------------- */
 
+typedef struct {
+    PyObject_HEAD ga_mv mv;
+} gpy_MVObject;
+
 extern PyTypeObject gpy_MVType;
 
 /* A new Multivector holding m; NULL with an exception. */
 PyObject *gpy_mv_new(ga_mv m);
+/* m as a new Multivector from the operation `what`; NULL with garotor.Error
+ * (GA_ERR_DOMAIN) if a coefficient is not finite. */
+PyObject *gpy_mv_result(const char *what, ga_mv m);
+/* x, a Multivector or a real number (a scalar multivector), into out: 1; 0
+ * if x is neither; -1 with garotor.Error for a number that is NaN or
+ * infinite. */
+int gpy_mv_operand(const char *what, PyObject *x, ga_mv *out);
+/* 1 if s is finite; -1 with garotor.Error (GA_ERR_NOTFINITE) naming it. */
+int gpy_finite_number(const char *what, double s);
+/* obj, a 1-d array-like of count finite numbers, into v; what (the call)
+ * and name (the argument) for messages, shape_msg for a wrong shape
+ * (ValueError). 0, or -1 with an exception. */
+int gpy_read_numbers(const char *what, const char *name, PyObject *obj, npy_intp count, const char *shape_msg,
+                     double *v);
+
+/* ---- objects (objects.c) ---------------------------------------------------- */
+
+/* garotor.Object (a struct sequence) added to module m; 0, or -1 */
+int gpy_objects_init(PyObject *m);
+/* Multivector's methods of objects.c (their docs in its method table) */
+PyObject *gpy_MV_meet(PyObject *self, PyObject *o);
+PyObject *gpy_MV_join(PyObject *self, PyObject *o);
+PyObject *gpy_MV_meet_rel(PyObject *self, PyObject *o);
+PyObject *gpy_MV_object(PyObject *self, PyObject *args, PyObject *kw);
+PyObject *gpy_MV_commutator(PyObject *self, PyObject *o);
+PyObject *gpy_MV_project(PyObject *self, PyObject *o);
+PyObject *gpy_MV_reject(PyObject *self, PyObject *o);
+PyObject *gpy_MV_pow(PyObject *self, PyObject *t);
+PyObject *gpy_MV_sqrt(PyObject *self, PyObject *u);
+PyObject *gpy_MV_apply(PyObject *self, PyObject *o);
+PyObject *gpy_MV_reflection(PyObject *cls, PyObject *args);
+PyObject *gpy_MV_inversion(PyObject *cls, PyObject *args);
+PyObject *gpy_MV_dilation(PyObject *cls, PyObject *args);
+PyObject *gpy_MV_transversion(PyObject *cls, PyObject *arg);
+PyObject *gpy_MV_rotation(PyObject *cls, PyObject *args);
+PyObject *gpy_MV_translation(PyObject *cls, PyObject *arg);
+/* a ** k for an integer k (nb_power) */
+PyObject *gpy_MV_power(PyObject *x, PyObject *y, PyObject *z);
+/* the fits: module functions fit_sphere(points), ... */
+PyObject *gpy_fit_sphere(PyObject *self, PyObject *pts);
+PyObject *gpy_fit_plane(PyObject *self, PyObject *pts);
+PyObject *gpy_fit_circle(PyObject *self, PyObject *pts);
+PyObject *gpy_fit_line(PyObject *self, PyObject *pts);
 
 #endif

@@ -7,9 +7,7 @@
 
 #include <math.h>
 
-typedef struct {
-    PyObject_HEAD ga_mv mv;
-} MVObject;
+typedef gpy_MVObject MVObject;
 
 PyObject *gpy_mv_new(ga_mv m)
 {
@@ -26,7 +24,7 @@ PyObject *gpy_mv_new(ga_mv m)
 
 /* m as a new Multivector from the operation `what`; NULL with garotor.Error
  * if a coefficient is not finite. */
-static PyObject *mv_result(const char *what, ga_mv m)
+PyObject *gpy_mv_result(const char *what, ga_mv m)
 {
     if (!ga_mv_isfinite(m)) {
         gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_DOMAIN, "the result would not be finite");
@@ -65,7 +63,7 @@ static int mv_coerce(PyObject *x, ga_mv *out)
 }
 
 /* 1 if s is finite; -1 with garotor.Error naming it if not. */
-static int finite_number(const char *what, double s)
+int gpy_finite_number(const char *what, double s)
 {
     if (isfinite(s))
         return 1;
@@ -77,17 +75,17 @@ static int finite_number(const char *what, double s)
 
 /* mv_coerce for an operand of `what`: 1, 0 if x is neither (NotImplemented),
  * -1 with garotor.Error for a number that is NaN or infinite. */
-static int mv_operand(const char *what, PyObject *x, ga_mv *out)
+int gpy_mv_operand(const char *what, PyObject *x, ga_mv *out)
 {
     if (!mv_coerce(x, out))
         return 0;
-    return PyObject_TypeCheck(x, &gpy_MVType) ? 1 : finite_number(what, out->c[0]);
+    return PyObject_TypeCheck(x, &gpy_MVType) ? 1 : gpy_finite_number(what, out->c[0]);
 }
 
 /* obj, a 1-d array-like of count finite numbers, into v; what (the call)
  * and name (the argument) for messages. 0, or -1 with an exception. */
-static int read_numbers(const char *what, const char *name, PyObject *obj, npy_intp count,
-                        const char *shape_msg, double *v)
+int gpy_read_numbers(const char *what, const char *name, PyObject *obj, npy_intp count, const char *shape_msg,
+                     double *v)
 {
     PyArrayObject *a = gpy_as_doubles(obj);
     if (!a)
@@ -120,8 +118,8 @@ static PyObject *MV_new(PyTypeObject *type, PyObject *args, PyObject *kw)
     ga_mv m = ga_mv_zero();
     if (c && PyObject_TypeCheck(c, &gpy_MVType))
         return gpy_mv_new(((MVObject *)c)->mv);
-    if (c &&
-        read_numbers("Multivector", "c", c, 32, "Multivector: needs 32 coefficients in canonical order", m.c))
+    if (c && gpy_read_numbers("Multivector", "c", c, 32,
+                              "Multivector: needs 32 coefficients in canonical order", m.c))
         return NULL;
     return gpy_mv_new(m);
 }
@@ -169,34 +167,51 @@ static PyObject *MV_repr(MVObject *self)
     static PyObject *MV_##name(PyObject *x, PyObject *y)                                                     \
     {                                                                                                        \
         ga_mv a, b;                                                                                          \
-        int ra = mv_operand("Multivector " op, x, &a),                                                       \
-            rb = ra > 0 ? mv_operand("Multivector " op, y, &b) : 0;                                          \
+        int ra = gpy_mv_operand("Multivector " op, x, &a),                                                   \
+            rb = ra > 0 ? gpy_mv_operand("Multivector " op, y, &b) : 0;                                      \
         if (ra < 0 || rb < 0)                                                                                \
             return NULL;                                                                                     \
         if (!ra || !rb)                                                                                      \
             Py_RETURN_NOTIMPLEMENTED;                                                                        \
-        return mv_result("Multivector " op, expr);                                                           \
+        return gpy_mv_result("Multivector " op, expr);                                                       \
     }
 MV_BINOP(add, "+", ga_mv_add(a, b))
 MV_BINOP(sub, "-", ga_mv_sub(a, b))
 MV_BINOP(mul, "*", ga_mv_gp(a, b))
 MV_BINOP(xor, "^", ga_mv_op(a, b))
 MV_BINOP(or, "|", ga_mv_lc(a, b))
+MV_BINOP(and, "&", ga_mv_regressive(a, b))
 
+/* a / s for a number s: every coefficient divided by s (ZeroDivisionError
+ * for 0, as floats); a / b for a Multivector b (a a Multivector or a
+ * number): a * b.inverse(), ga_mv_gp(a, ga_mv_inverse(b)) bit for bit */
 static PyObject *MV_truediv(PyObject *x, PyObject *y)
 {
     ga_mv a, sv;
+    if (PyObject_TypeCheck(y, &gpy_MVType)) {
+        int r = gpy_mv_operand("Multivector /", x, &a);
+        if (r <= 0) {
+            if (r == 0)
+                Py_RETURN_NOTIMPLEMENTED;
+            return NULL;
+        }
+        ga_mv inv;
+        int st = ga_mv_inverse(((MVObject *)y)->mv, &inv);
+        if (st != GA_OK)
+            return gpy_status_error("Multivector /", st);
+        return gpy_mv_result("Multivector /", ga_mv_gp(a, inv));
+    }
     if (!PyObject_TypeCheck(x, &gpy_MVType) ||
         !(PyFloat_Check(y) || PyLong_Check(y) || PyArray_IsScalar(y, Number)))
         Py_RETURN_NOTIMPLEMENTED;
     a = ((MVObject *)x)->mv;
-    int r = mv_operand("Multivector /", y, &sv);
+    int r = gpy_mv_operand("Multivector /", y, &sv);
     if (r < 0)
         return NULL;
     double s = sv.c[0];
     if (r == 0) { /* another numpy number (a complex one): as float() reads it */
         s = PyFloat_AsDouble(y);
-        if ((s == -1.0 && PyErr_Occurred()) || finite_number("Multivector /", s) < 0)
+        if ((s == -1.0 && PyErr_Occurred()) || gpy_finite_number("Multivector /", s) < 0)
             return NULL;
     }
     if (s == 0.0) { /* as Python's float division */
@@ -204,7 +219,7 @@ static PyObject *MV_truediv(PyObject *x, PyObject *y)
         return NULL;
     }
     for (int i = 0; i < 32; i++) a.c[i] /= s;
-    return mv_result("Multivector /", a);
+    return gpy_mv_result("Multivector /", a);
 }
 
 static PyObject *MV_neg(MVObject *x) { return gpy_mv_new(ga_mv_scale(x->mv, -1.0)); }
@@ -226,6 +241,8 @@ static PyNumberMethods MV_as_number = {
     .nb_multiply = MV_mul,
     .nb_xor = MV_xor,
     .nb_or = MV_or,
+    .nb_and = MV_and,
+    .nb_power = gpy_MV_power,
     .nb_true_divide = MV_truediv,
     .nb_negative = (unaryfunc)MV_neg,
     .nb_positive = (unaryfunc)MV_pos,
@@ -381,12 +398,12 @@ static PyObject *MV_exp(MVObject *self, PyObject *u)
     ga_generator b;
     int st = mv_to_generator(self->mv, &b);
     if (st == GA_OK)
-        return mv_result("Multivector.exp", ga_rotor_to_mv(ga_rotor_exp(b)));
+        return gpy_mv_result("Multivector.exp", ga_rotor_to_mv(ga_rotor_exp(b)));
     if (st == GA_ERR_NOTBLADE) {
         ga_mv m = self->mv;
         double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
         if (ga_mv_maxabs(ga_mv_sub(m, ga_mv_grade(m, 2))) <= tol)
-            return mv_result("Multivector.exp", ga_mv_exp(ga_mv_grade(m, 2)));
+            return gpy_mv_result("Multivector.exp", ga_mv_exp(ga_mv_grade(m, 2)));
     }
     return gpy_status_error("Multivector.exp", st);
 }
@@ -415,19 +432,19 @@ static PyObject *MV_log(MVObject *self, PyObject *u)
 static PyObject *MV_dot(MVObject *self, PyObject *o)
 {
     ga_mv b;
-    int r = mv_operand("Multivector.dot", o, &b);
+    int r = gpy_mv_operand("Multivector.dot", o, &b);
     if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.dot: a Multivector or a number");
-    return r > 0 ? mv_result("Multivector.dot", ga_mv_dot(self->mv, b)) : NULL;
+    return r > 0 ? gpy_mv_result("Multivector.dot", ga_mv_dot(self->mv, b)) : NULL;
 }
 
 static PyObject *MV_ip(MVObject *self, PyObject *o)
 {
     ga_mv b;
-    int r = mv_operand("Multivector.ip", o, &b);
+    int r = gpy_mv_operand("Multivector.ip", o, &b);
     if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.ip: a Multivector or a number");
-    return r > 0 ? mv_result("Multivector.ip", ga_mv_ip(self->mv, b)) : NULL;
+    return r > 0 ? gpy_mv_result("Multivector.ip", ga_mv_ip(self->mv, b)) : NULL;
 }
 
 static PyObject *MV_down(MVObject *self, PyObject *u)
@@ -450,9 +467,9 @@ static PyObject *MV_up(PyObject *cls, PyObject *arg)
 {
     (void)cls;
     double x[3];
-    if (read_numbers("Multivector.up", "x", arg, 3, "Multivector.up: x must have shape (3,)", x))
+    if (gpy_read_numbers("Multivector.up", "x", arg, 3, "Multivector.up: x must have shape (3,)", x))
         return NULL;
-    return mv_result("Multivector.up", ga_point_up((ga_vec3){x[0], x[1], x[2]}));
+    return gpy_mv_result("Multivector.up", ga_point_up((ga_vec3){x[0], x[1], x[2]}));
 }
 
 /* pickling and copying: Multivector(c), c the 32 coefficients as floats */
@@ -498,6 +515,30 @@ static PyMethodDef MV_methods[] = {
     {"down", (PyCFunction)MV_down, METH_NOARGS, "the point x of a conformal point X = w F(x)"},
     {"up", (PyCFunction)MV_up, METH_O | METH_CLASS, "Multivector.up(x): the conformal point F(x)"},
     {"blade", (PyCFunction)MV_blade, METH_O | METH_CLASS, "Multivector.blade(i or name): a basis blade"},
+    {"meet", gpy_MV_meet, METH_O, "meet(B): the meet of two objects, A* ^ B* undualised (ga_mv_meet)"},
+    {"join", gpy_MV_join, METH_O, "join(B): the smallest blade holding both objects (ga_mv_join)"},
+    {"meet_rel", gpy_MV_meet_rel, METH_O, "meet_rel(B): the meet relative to the join (ga_mv_meet_rel)"},
+    {"object", (PyCFunction)(void (*)(void))gpy_MV_object, METH_VARARGS | METH_KEYWORDS,
+     "object(origin=None, scale=1.0): the object read back, a garotor.Object (ga_object_from_mv; "
+     "ga_object_from_mv_about with an origin or a scale)"},
+    {"commutator", gpy_MV_commutator, METH_O, "commutator(b): (a b - b a) / 2 (ga_mv_commutator)"},
+    {"project", gpy_MV_project, METH_O, "project(B): the projection onto the blade B (ga_mv_project)"},
+    {"reject", gpy_MV_reject, METH_O, "reject(B): the rejection from the blade B (ga_mv_reject)"},
+    {"pow", gpy_MV_pow, METH_O, "pow(t): R^t = exp(t log R) of a rotor, t real (ga_mv_pow)"},
+    {"sqrt", gpy_MV_sqrt, METH_NOARGS, "the principal square root of a rotor (ga_mv_sqrt)"},
+    {"apply", gpy_MV_apply, METH_O, "apply(X): the versor's sandwich V X^ V^-1 (ga_versor_apply)"},
+    {"reflection", gpy_MV_reflection, METH_VARARGS | METH_CLASS,
+     "Multivector.reflection(normal, distance): the dual plane n + d e_inf (ga_versor_reflection)"},
+    {"inversion", gpy_MV_inversion, METH_VARARGS | METH_CLASS,
+     "Multivector.inversion(centre, radius): the dual sphere F(c) - r^2/2 n (ga_versor_inversion)"},
+    {"dilation", gpy_MV_dilation, METH_VARARGS | METH_CLASS,
+     "Multivector.dilation(centre, s): x -> c + s (x - c), s > 0 (ga_versor_dilation)"},
+    {"transversion", gpy_MV_transversion, METH_O | METH_CLASS,
+     "Multivector.transversion(b): 1 + nbar b / 2 (ga_versor_transversion)"},
+    {"rotation", gpy_MV_rotation, METH_VARARGS | METH_CLASS,
+     "Multivector.rotation(axis, angle): about the axis through the origin (ga_versor_rotation)"},
+    {"translation", gpy_MV_translation, METH_O | METH_CLASS,
+     "Multivector.translation(a): 1 + n a / 2 (ga_versor_translation)"},
     {"__reduce__", (PyCFunction)MV_reduce, METH_NOARGS, "pickling and copying: Multivector(c)"},
     {NULL, NULL, 0, NULL}};
 
@@ -511,7 +552,9 @@ PyTypeObject gpy_MVType = {
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc = "Multivector(c): a multivector of G(4,1) from its 32 coefficients in canonical order\n"
               "(1; e1..e5; e12..e45; e123..e345; e1234..e2345; e12345).\n"
-              "* geometric, ^ outer, | left contraction, ~ reverse; numpy.asarray(m) gives the coefficients.",
+              "* geometric, ^ outer, | left contraction, & regressive, ~ reverse, / by the inverse, ** "
+              "integer powers;\n"
+              "numpy.asarray(m) gives the coefficients.",
     .tp_richcompare = MV_richcompare,
     .tp_methods = MV_methods,
     .tp_new = MV_new,

@@ -95,9 +95,12 @@ def test_nan_named_by_index_in_every_array_call(rng):
     """A NaN (and an infinity) at a chosen element of any argument: garotor.Error
     naming the element's index, and the argument and position of the number."""
     calls = array_calls(rng)
-    # every function of the module that takes arrays is in the table
+    # every function of the module that takes arrays is in the table; the
+    # fits take one set of points, not elements (test_objects.py spoils each
+    # number of it), and Object is a type
     public = {n for n in dir(garotor) if not n.startswith("_") and callable(getattr(garotor, n))
-              and n not in ("Error", "Path", "Multivector")}
+              and n not in ("Error", "Path", "Multivector", "Object")
+              and not n.startswith("fit_")}
     covered = {label.split("/")[0].split(":")[0] for label, *_ in calls}
     assert public <= covered, public - covered
     for label, name, clean, call in calls:
