@@ -327,17 +327,29 @@ ga_status ga_fit_sphere(const ga_vec3 *pts, size_t n, ga_vec3 *centre, double *r
     return GA_OK;
 }
 
+/* The checks of at least `least` points, the frame about their centroid and
+   the principal directions e with their spreads sv (largest first): what the
+   plane's and the line's fits share. */
+static ga_status principal_frame(const ga_vec3 *pts, size_t n, size_t least, frame *f, ga_vec3 e[3],
+                                 double sv[3])
+{
+    ga_status st = check_points(pts, n, least);
+    if (st != GA_OK || (st = make_frame(pts, n, f)) != GA_OK)
+        return st;
+    principal(pts, n, f, e, sv);
+    return GA_OK;
+}
+
 ga_status ga_fit_plane(const ga_vec3 *pts, size_t n, ga_vec3 *normal, double *distance)
 {
     if (!pts || !normal || !distance)
         return GA_ERR_ARG;
-    ga_status st = check_points(pts, n, 3);
     frame f;
-    if (st != GA_OK || (st = make_frame(pts, n, &f)) != GA_OK)
-        return st;
     ga_vec3 e[3];
     double sv[3];
-    principal(pts, n, &f, e, sv);
+    ga_status st = principal_frame(pts, n, 3, &f, e, sv);
+    if (st != GA_OK)
+        return st;
     if (!(sv[1] > 64 * U * sv[0]))
         return GA_ERR_DOMAIN; /* collinear: every plane through the line fits */
     ga_vec3 m = signed_unit(e[2]);
@@ -350,13 +362,12 @@ ga_status ga_fit_line(const ga_vec3 *pts, size_t n, ga_vec3 *direction, ga_vec3 
 {
     if (!pts || !direction || !point)
         return GA_ERR_ARG;
-    ga_status st = check_points(pts, n, 2);
     frame f;
-    if (st != GA_OK || (st = make_frame(pts, n, &f)) != GA_OK)
-        return st;
     ga_vec3 e[3];
     double sv[3];
-    principal(pts, n, &f, e, sv);
+    ga_status st = principal_frame(pts, n, 2, &f, e, sv);
+    if (st != GA_OK)
+        return st;
     if (!(sv[0] > sv[1] * (1 + 64 * U)))
         return GA_ERR_DOMAIN; /* no direction of largest spread */
     ga_vec3 u = signed_unit(e[0]);
