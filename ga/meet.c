@@ -14,22 +14,6 @@
 
 static int finite3(ga_vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
-/* The parts A e4, A e5 (A without e4, e5) of X with coefficients p, q are
-   A ^ ((p + q)/2 n + (p - q)/2 nbar): each pair is rewritten as
-   A ^ (kn (p + q)/2 n + kb (p - q)/2 nbar). */
-static ga_mv scale_n_nbar(ga_mv X, double kn, double kb)
-{
-    for (int i = 0; i < 32; i++) {
-        if ((ga_blade_mask(i) & 0x18u) != 0x8u)
-            continue;
-        int j = i + 1; /* A e5 follows A e4 in canonical order */
-        double hn = 0.5 * (X.c[i] + X.c[j]) * kn, hb = kb == 0.0 ? 0.0 : 0.5 * (X.c[i] - X.c[j]) * kb;
-        X.c[i] = hn + hb;
-        X.c[j] = hn - hb;
-    }
-    return X;
-}
-
 /* ga_mv_localize; strict = 0 (the join's moves) takes a round's move as it
    comes, whatever it has lost */
 static int localize(ga_mv X, ga_vec3 origin, double lambda, int strict, ga_mv *out)
@@ -55,10 +39,10 @@ static int localize(ga_mv X, ga_vec3 origin, double lambda, int strict, ga_mv *o
            (n t X + X t n)/2 exactly, t = -origin (the term n t X t n / 4
            vanishes: n t n = 0), which has no t^2 terms to cancel; the full
            sandwich loses u |t|^2 of X's size where the flat comes near. */
-        X = scale_n_nbar(X, 1.0, 0.0);
+        X = gao_scale_n_nbar(X, 1.0, 0.0);
         ga_mv nt = ga_mv_gp(ga_mv_n(), ga_vec3_to_mv(ga__v3_scale(origin, -1.0)));
         Y = ga_mv_add(X, ga_mv_scale(ga_mv_add(ga_mv_gp(nt, X), ga_mv_gp(X, ga_mv_reverse(nt))), 0.5));
-        Y = scale_n_nbar(Y, 1.0 / lambda, 0.0);
+        Y = gao_scale_n_nbar(Y, 1.0 / lambda, 0.0);
         if (kind.kind == GA_OBJECT_LINE) {
             /* w (u e45 + (p ^ u) ^ n): the moment p x u = (b23, -b13, b12),
                b_ij the e_ij4 (= e_ij5) coefficients, is known to u |origin|
@@ -89,7 +73,7 @@ static int localize(ga_mv X, ga_vec3 origin, double lambda, int strict, ga_mv *o
             if (ga_mv_maxabs(eY) > GAO_LOCALIZE_LOSS * U * ga_mv_maxabs(Yt))
                 return GA_ERR_PRECISION;
         }
-        Y = scale_n_nbar(Yt, 1.0 / lambda, lambda);
+        Y = gao_scale_n_nbar(Yt, 1.0 / lambda, lambda);
     }
     if (one_grade)
         Y = ga_mv_grade(Y, k);
@@ -451,7 +435,7 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
             /* a flat (n in its subspace, as for coplanar circles) has no
                part A ^ nbar: what rounding left there is dropped */
             if (holds_n(sp.qa, ka, sp.c, r, tol))
-                jl = scale_n_nbar(jl, 1.0, 0.0);
+                jl = gao_scale_n_nbar(jl, 1.0, 0.0);
             if ((st = localize(jl, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, 0, &j)) != GA_OK)
                 return st;
         }
@@ -464,7 +448,7 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
             for (int i = 0; i < 32; i++) jj += jl.c[i] * jl.c[i];
             ga_mv ml = lc_euclid(lc_euclid(bl, ga_mv_scale(ga_mv_reverse(jl), 1.0 / jj)), au);
             if (holds_n(sp.qa, ka, sp.c, 0, tol) && holds_n(sp.qb, kb, sp.c, 0, tol))
-                ml = scale_n_nbar(ml, 1.0, 0.0); /* both flats: so is the meet */
+                ml = gao_scale_n_nbar(ml, 1.0, 0.0); /* both flats: so is the meet */
             if (m == 0)
                 mt = ml; /* a scalar: no common point */
             else if ((st = localize(ml, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, 0, &mt)) != GA_OK)

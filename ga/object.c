@@ -207,15 +207,8 @@ static int read_round_local(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int stri
     ga_mv eN = gao_abs_translate_null(gao_unc_to_null(ga_mv_add(e, ga_mv_scale(gao_abs(X), 4.0 * U * U))),
                                       mc0);
     eN = ga_mv_add(eN, gao_unc_to_null(ga_mv_scale(gao_abs(Y), U)));
-    for (int i = 0; i < 32; i++) {
-        unsigned m = ga_blade_mask(i) & 0x18u;
-        if (m == 0x8u) { /* Y's pair A e4, A e5 as A ^ (hn n / lambda + hb lambda nbar) */
-            double hn = 0.5 * (Y.c[i] + Y.c[i + 1]) / lam, hb = 0.5 * (Y.c[i] - Y.c[i + 1]) * lam;
-            Y.c[i] = hn + hb;
-            Y.c[i + 1] = hn - hb;
-        }
-    }
-    /* to lambda's units, and the rounding of that (hn, hb above) */
+    Y = gao_scale_n_nbar(Y, 1.0 / lam, lam);
+    /* to lambda's units, and the rounding of that */
     ga_mv eY = ga_mv_add(gao_unc_from_null(eN, 1.0 / lam, lam), ga_mv_scale(gao_abs(Y), 2.0 * U));
     /* scale both by a power of two (exactly), Y's largest coefficient ~ 1 */
     int ex;

@@ -134,13 +134,25 @@ ga_mv gao_abs_translate(ga_mv X, ga_vec3 a)
 /* The pairs of blades A e4, A e5 (A without e4, e5): e4 at i, e5 at i + 1
    in the canonical order; in null coordinates A ^ n and A ^ nbar, with
    coefficients (p + q) / 2 and (p - q) / 2 (n = e4 + e5, nbar = e4 - e5). */
-static int pair_e4(int i) { return (gabl_mask[i] & 0x18u) == 0x8u; }
-static int pair_e5(int i) { return i > 0 && pair_e4(i - 1); }
+static int pair_e5(int i) { return i > 0 && gabl_pair_e4(i - 1); }
+
+ga_mv gao_scale_n_nbar(ga_mv X, double kn, double kb)
+{
+    for (int i = 0; i < 32; i++) {
+        if (!gabl_pair_e4(i))
+            continue;
+        int j = i + 1;
+        double hn = 0.5 * (X.c[i] + X.c[j]) * kn, hb = kb == 0.0 ? 0.0 : 0.5 * (X.c[i] - X.c[j]) * kb;
+        X.c[i] = hn + hb;
+        X.c[j] = hn - hb;
+    }
+    return X;
+}
 
 ga_mv gao_unc_to_null(ga_mv e)
 {
     for (int i = 0; i < 32; i++)
-        if (pair_e4(i)) {
+        if (gabl_pair_e4(i)) {
             double h = 0.5 * (e.c[i] + e.c[i + 1]);
             e.c[i] = e.c[i + 1] = h;
         }
@@ -150,7 +162,7 @@ ga_mv gao_unc_to_null(ga_mv e)
 ga_mv gao_unc_from_null(ga_mv e, double kn, double kb)
 {
     for (int i = 0; i < 32; i++)
-        if (pair_e4(i)) {
+        if (gabl_pair_e4(i)) {
             double h = e.c[i] * kn + e.c[i + 1] * kb;
             e.c[i] = e.c[i + 1] = h;
         }
@@ -166,15 +178,15 @@ ga_mv gao_abs_translate_null(ga_mv e, ga_vec3 a)
         /* the null blade of slot j in e4/e5 coefficients, moved exactly */
         ga_mv B = ga_mv_zero();
         B.c[j] = 1.0;
-        if (pair_e4(j))
+        if (gabl_pair_e4(j))
             B.c[j + 1] = 1.0; /* A ^ n */
         else if (pair_e5(j))
             B.c[j - 1] = 1.0, B.c[j] = -1.0; /* A ^ nbar */
         ga_mv Y = gao_translate(B, a);
         for (int i = 0; i < 32; i++) {
-            double y = pair_e4(i) ? 0.5 * (Y.c[i] + Y.c[i + 1])
-                     : pair_e5(i) ? 0.5 * (Y.c[i - 1] - Y.c[i])
-                                  : Y.c[i];
+            double y = gabl_pair_e4(i) ? 0.5 * (Y.c[i] + Y.c[i + 1])
+                     : pair_e5(i)      ? 0.5 * (Y.c[i - 1] - Y.c[i])
+                                       : Y.c[i];
             r.c[i] += e.c[j] * fabs(y);
         }
     }

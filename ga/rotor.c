@@ -204,17 +204,16 @@ ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
 {
     /* R = T_t q: the rotation q X ~q by the generated sandwich (it mixes the
        coefficients of one class of blades only, nothing cancels), then the
-       translation exactly, rounded once (gao_translate). The whole sandwich
-       at once cancelled terms of the size of t^2 X: a point moved by 3e4 came
-       back to 1e-11, by 1e6 no longer a point. t = R(0), over |q|^2 as the
-       sandwich scales the rotated part by it. */
+       translation exactly, rounded once (gao_translate): the whole sandwich
+       at once cancelled terms of the size of t^2 X. t = R(0), over |q|^2 as
+       the sandwich scales the rotated part by it. */
     ga_rotor q = {r.s, r.e12, r.e13, r.e23, 0.0, 0.0, 0.0, 0.0};
     ga_mv Y;
     rotor_sandwich_dense(q, X.c, Y.c);
     double qq = r.s * r.s + r.e12 * r.e12 + r.e13 * r.e13 + r.e23 * r.e23;
+    if ((r.e1n == 0.0 && r.e2n == 0.0 && r.e3n == 0.0 && r.e123n == 0.0) || !(qq > 0.0))
+        return Y; /* a rotation (or no motion at all: q = 0 makes R X ~R 0) */
     ga_vec3 t = ga_rotor_apply(r, ga__v3(0.0, 0.0, 0.0));
-    if (r.e1n == 0.0 && r.e2n == 0.0 && r.e3n == 0.0 && r.e123n == 0.0)
-        return Y;
     return gao_translate(Y, ga__v3_scale(t, 1.0 / qq));
 }
 

@@ -230,7 +230,43 @@ static void section_rel(void)
                      GA_OK);
 }
 
+/* ga_rotor_apply_mv: a point moved far, against the point action; a rotor
+   scaled by 2 scales R X ~R by 4 (the translation found over |q|^2); a
+   rotation alone and a translation alone against their closed forms. */
+static void section_apply(void)
+{
+    tk_rng t = {2929};
+    tk_check far = tk_begin("apply_mv of a point, translations up to 1e6, against apply (rel)",
+                            8 * DBL_EPSILON),
+             sc = tk_begin("apply_mv(2 R, X) = 4 apply_mv(R, X) (rel to max)", 8 * DBL_EPSILON),
+             rot = tk_begin("apply_mv of a rotation: F(q x ~q) (rel to max)", 8 * DBL_EPSILON),
+             tr = tk_begin("apply_mv of a translation: F(x + a) (rel to max)", 8 * DBL_EPSILON);
+    for (int i = 0; i < 300; i++) {
+        ga_vec3 x = tk_scale(tk_unit(&t), tk_range(&t, 0, 3)),
+                a = tk_scale(tk_unit(&t), tk_loguni(&t, 1, 1e6));
+        ga_rotor q = ga_rotor_rotation(tk_unit(&t), tk_range(&t, -3, 3));
+        ga_rotor R = ga_rotor_mul(ga_rotor_translation(a), q);
+        ga_vec3 y, want = ga_rotor_apply(R, x);
+        if (ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x)), &y) == GA_OK)
+            tk_add(&far, tk_norm((ga_vec3){y.x - want.x, y.y - want.y, y.z - want.z}) / tk_norm(want));
+        ga_mv X = ga_pointpair_from_points(x, add(x, tk_unit(&t)));
+        ga_rotor R2 = {2 * R.s,   2 * R.e12, 2 * R.e13, 2 * R.e23,
+                       2 * R.e1n, 2 * R.e2n, 2 * R.e3n, 2 * R.e123n};
+        ga_mv A = ga_rotor_apply_mv(R, X), B = ga_rotor_apply_mv(R2, X);
+        tk_add(&sc, tk_mv_maxabs(ga_mv_sub(B, ga_mv_scale(A, 4))) / tk_mv_maxabs(B));
+        ga_mv P = ga_point_up(x), Pq = ga_rotor_apply_mv(q, P), Pw = ga_point_up(ga_rotor_apply(q, x));
+        tk_add(&rot, tk_mv_maxabs(ga_mv_sub(Pq, Pw)) / tk_mv_maxabs(Pw));
+        ga_mv Pt = ga_rotor_apply_mv(ga_rotor_translation(a), P), Pa = ga_point_up(add(x, a));
+        tk_add(&tr, tk_mv_maxabs(ga_mv_sub(Pt, Pa)) / tk_mv_maxabs(Pa));
+    }
+    tk_end(&far);
+    tk_end(&sc);
+    tk_end(&rot);
+    tk_end(&tr);
+}
+
 static const tk_section sections[] = {
+    {"apply", section_apply, 0},
     {"special", section_special, 0},
     {"rel", section_rel, 0},
     {"general", section_general, 0},

@@ -17,6 +17,10 @@ static const unsigned char gabl_index_of[32] = {0, 1, 2,  6,  3,  7,  10, 16, 4,
 
 static inline int gabl_popcount5(unsigned m) { return __builtin_popcount(m); }
 
+/* Whether blade i is A e4 for a blade A without e4, e5: then A e5 is blade
+   i + 1 in the canonical order (the pair A ^ n, A ^ nbar) */
+static inline int gabl_pair_e4(int i) { return (gabl_mask[i] & 0x18u) == 0x8u; }
+
 /* The sign of the product of blades a and b (as masks): the parity of the
    transpositions that sort the vectors of a before those of b, times
    e5 e5 = -1 (e1..e4 square to +1). */

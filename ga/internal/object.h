@@ -34,9 +34,8 @@ ga_mv gao_unit_scaled(ga_mv X);
 /* T_a X ~T_a, T_a = 1 + n a / 2 (Wareham-Lasenby §2.2): the exact sandwich,
    carried in double-double and rounded once per coefficient (up to a
    relative 2^-100 or so of the largest term), each grade that X has none
-   of exactly 0. A flat (no part A ^ nbar)
-   stays one exactly: the e4 and e5 coefficients that must be equal are the
-   roundings of one value. */
+   of exactly 0. A flat (no part A ^ nbar) stays one exactly: the e4 and e5
+   coefficients that must be equal are the roundings of one value. */
 ga_mv gao_translate(ga_mv X, ga_vec3 a);
 /* a ^ b, each product exact and the sums double-double, rounded once: the
    exact outer product to a relative u of each coefficient (and ~u^2 of its
@@ -45,6 +44,11 @@ ga_mv gao_op_exact(ga_mv a, ga_mv b);
 /* The magnitudes of T_a X ~T_a: the sandwich of |X| by |T_a| with every sign
    positive (a bound of what a perturbation of X becomes). */
 ga_mv gao_abs_translate(ga_mv X, ga_vec3 a);
+/* The parts A e4, A e5 (A without e4, e5) of X with coefficients p, q are
+   A ^ ((p + q)/2 n + (p - q)/2 nbar): each pair rewritten as
+   A ^ (kn (p + q)/2 n + kb (p - q)/2 nbar) (kb = 0 drops the nbar part, as
+   a flat has none; kn = 1 / lambda, kb = lambda is x -> x / lambda). */
+ga_mv gao_scale_n_nbar(ga_mv X, double kn, double kb);
 /* Uncertainties in null coordinates: the slot of A e4 holds that of the
    coefficient of A ^ n, the slot of A e5 that of A ^ nbar (n = e4 + e5,
    nbar = e4 - e5). A translation is triangular there (n fixed, E -> E + n,
