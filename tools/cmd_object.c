@@ -18,7 +18,7 @@
 #include <garotor/garotor.h>
 
 enum { OP_BUILD, OP_READ, OP_MEET, OP_JOIN, OP_MEET_REL, OP_MOVE, OP_BETWEEN, OP_INTERP, OP_COUNT };
-static const char *const op_name[OP_COUNT] = {"build", "read",  "meet",    "join",
+static const char *const op_name[OP_COUNT] = {"build",    "read", "meet",    "join",
                                               "meet-rel", "move", "between", "interp"};
 /* fields a line holds, and what they are, for messages */
 static const int op_fields[OP_COUNT] = {1, 1, 2, 2, 2, 2, 2, 3};
@@ -90,8 +90,8 @@ static int operand(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
         return -1;
     if (n != ctor[c].n1 && n != ctor[c].n2) {
         if (ctor[c].n2)
-            return tio_text_error(t, i, f.at + k, "expected %d or %d numbers after '%s' (%s), found %d", ctor[c].n1,
-                                  ctor[c].n2, ctor[c].name, ctor[c].what, n);
+            return tio_text_error(t, i, f.at + k, "expected %d or %d numbers after '%s' (%s), found %d",
+                                  ctor[c].n1, ctor[c].n2, ctor[c].name, ctor[c].what, n);
         return tio_text_error(t, i, f.at + k, "expected %d numbers after '%s' (%s), found %d", ctor[c].n1,
                               ctor[c].name, ctor[c].what, n);
     }
@@ -106,7 +106,7 @@ static int operand(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
             double len = sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
             if (!(len > 0.0))
                 return tio_text_error(t, i, f.at + k, "plane: the normal is 0");
-            *out = ga_mv_dual(ga_plane_dual((ga_vec3){a.x / len, a.y / len, a.z / len}, v[3]));
+            *out = ga_mv_dual(ga_plane_dual((ga_vec3){a.x / len, a.y / len, a.z / len}, v[3] / len));
         } else
             *out = ga_plane_from_points(a, b, p);
         break;
@@ -137,8 +137,17 @@ static const char *const reality_word[] = {"real", "tangent", "imaginary"};
    e_i4 = e_i5, nothing else), on the group to 1e-9: 0 and *R; else -1. */
 static int rigid(ga_mv V, ga_rotor *R)
 {
-    static const int in[] = {0, GA_BLADE_E12, GA_BLADE_E13, GA_BLADE_E23, GA_BLADE_E14, GA_BLADE_E15,
-                             GA_BLADE_E24, GA_BLADE_E25, GA_BLADE_E34, GA_BLADE_E35, GA_BLADE_E1234,
+    static const int in[] = {0,
+                             GA_BLADE_E12,
+                             GA_BLADE_E13,
+                             GA_BLADE_E23,
+                             GA_BLADE_E14,
+                             GA_BLADE_E15,
+                             GA_BLADE_E24,
+                             GA_BLADE_E25,
+                             GA_BLADE_E34,
+                             GA_BLADE_E35,
+                             GA_BLADE_E1234,
                              GA_BLADE_E1235};
     ga_mv rest = V;
     for (size_t k = 0; k < sizeof in / sizeof in[0]; k++) rest.c[in[k]] = 0.0;
@@ -220,12 +229,13 @@ static int one(int op, const tio_texts *t, size_t i, ga_mv *r, ga_object *ob)
         if (st == GA_ERR_ARG) {
             ga_object a, b;
             if (ga_object_from_mv(A, &a) == GA_OK && ga_object_from_mv(B, &b) == GA_OK)
-                return tio_text_error(t, i, at, "no rotor takes a %s to a %s: the kinds differ", kind_word[a.kind],
-                                      kind_word[b.kind]);
+                return tio_text_error(t, i, at, "no rotor takes a %s to a %s: the kinds differ",
+                                      kind_word[a.kind], kind_word[b.kind]);
         }
         if (st == GA_ERR_DOMAIN)
-            return tio_text_error(t, i, at, "no rotor takes a point (radius 0) to a round of radius > 0, or "
-                                            "the other way (or it overflows)");
+            return tio_text_error(t, i, at,
+                                  "no rotor takes a point (radius 0) to a round of radius > 0, or "
+                                  "the other way (or it overflows)");
         if (st != GA_OK)
             return tio_text_error(t, i, at, "no rotor from A to B: %s", ga_status_string(st));
         return 0;
@@ -240,10 +250,12 @@ static int one(int op, const tio_texts *t, size_t i, ga_mv *r, ga_object *ob)
 static void write_object(tio_out *out, const ga_object *o)
 {
     char line[512];
-    size_t k = (size_t)snprintf(line, sizeof line, "%s %s centre", kind_word[o->kind], reality_word[o->reality]);
+    size_t k = (size_t)snprintf(line, sizeof line, "%s %s centre", kind_word[o->kind],
+                                reality_word[o->reality]);
     const double v[] = {o->centre.x,    o->centre.y, o->centre.z, o->direction.x, o->direction.y,
                         o->direction.z, o->r2,       o->err,      o->r2_err,      o->angle_err};
-    static const char *const label[] = {"", "", "", " direction", "", "", " r2", " err", " r2_err", " angle_err"};
+    static const char *const label[] = {"", "",    "",     " direction", "",
+                                        "", " r2", " err", " r2_err",    " angle_err"};
     for (int j = 0; j < 10; j++) {
         k += (size_t)snprintf(line + k, sizeof line - k, "%s ", label[j]);
         k += ga_double_format(v[j] == 0.0 ? 0.0 : v[j], line + k);

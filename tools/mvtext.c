@@ -15,7 +15,11 @@ int mvt_fields(const tio_texts *t, size_t i, mvt_field *f, int max)
         size_t len = strcspn(s + at, ";");
         if (n == max)
             return tio_text_error(t, i, at - 1, "too many fields: at most %d, separated by ';'", max);
-        f[n++] = (mvt_field){at, len};
+        /* without the blanks around it */
+        size_t a = at, l = len;
+        while (l && (s[a] == ' ' || s[a] == '\t')) a++, l--;
+        while (l && (s[a + l - 1] == ' ' || s[a + l - 1] == '\t')) l--;
+        f[n++] = (mvt_field){a, l};
         if (s[at + len] == '\0')
             return n;
         at += len + 1;
@@ -42,6 +46,9 @@ int mvt_parse(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
     int st = ga_mv_parse(buf, &x);
     if (st == GA_OK) {
         free(buf);
+        if (!ga_mv_isfinite(x)) /* terms of one blade whose sum overflows */
+            return tio_text_error(t, i, f.at,
+                                  "not a multivector: its terms add up beyond the range of a double");
         *out = x;
         return 0;
     }
@@ -55,7 +62,8 @@ int mvt_parse(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
     }
     for (;;) {
         size_t start = k, end = k + 1;
-        while (end < f.len && !((buf[end] == '+' || buf[end] == '-') && !exponent_sign(buf, end, start))) end++;
+        while (end < f.len && !((buf[end] == '+' || buf[end] == '-') && !exponent_sign(buf, end, start)))
+            end++;
         char save = buf[end];
         buf[end] = '\0';
         int ts = ga_mv_parse(buf + start, &x);
@@ -78,11 +86,12 @@ int mvt_parse(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
                 tio_text_error(t, i, f.at + at, "'%.*s%s': a number beyond the range of a double", shown,
                                buf + start, tl > 40 ? "..." : "");
             else
-                tio_text_error(t, i, f.at + at,
-                               "'%.*s%s' is not a term of a multivector (a number, a blade name e1 .. e12345 "
-                               "in canonical order, or both: 2e12, 2 e12, 2*e12; 'e' then a digit is a blade, "
-                               "an exponent is 1e+12 or 1E12)",
-                               shown, buf + start, tl > 40 ? "..." : "");
+                tio_text_error(
+                    t, i, f.at + at,
+                    "'%.*s%s' is not a term of a multivector (a number, a blade name e1 .. e12345 "
+                    "in canonical order, or both: 2e12, 2 e12, 2*e12; 'e' then a digit is a blade, "
+                    "an exponent is 1e+12 or 1E12)",
+                    shown, buf + start, tl > 40 ? "..." : "");
             free(buf);
             return -1;
         }
@@ -112,7 +121,8 @@ int mvt_numbers(const tio_texts *t, size_t i, mvt_field f, size_t from, double *
             return n;
         }
         if (s[k] == ',')
-            return tio_text_error(t, i, f.at + k, "empty field %s number %d", n ? "after" : "before", n ? n : 1);
+            return tio_text_error(t, i, f.at + k, "empty field %s number %d", n ? "after" : "before",
+                                  n ? n : 1);
         comma = 0;
         /* strtod on a copy of the word */
         size_t wl = 0;
@@ -126,8 +136,9 @@ int mvt_numbers(const tio_texts *t, size_t i, mvt_field f, size_t from, double *
         errno = 0;
         double x = strtod(word, &end);
         size_t bad = (size_t)(end - word);
-        int rc = end == word ? tio_text_error(t, i, f.at + k, "'%.*s' is not a number", wl > 40 ? 40 : (int)wl, word)
-               : *end        ? tio_text_error(t, i, f.at + k + bad, "junk after number %d", n + 1)
+        int rc = end == word
+                   ? tio_text_error(t, i, f.at + k, "'%.*s' is not a number", wl > 40 ? 40 : (int)wl, word)
+               : *end         ? tio_text_error(t, i, f.at + k + bad, "junk after number %d", n + 1)
                : !isfinite(x) ? tio_text_error(t, i, f.at + k, "number %d is not finite", n + 1)
                               : 0;
         free(word);
