@@ -22,7 +22,8 @@ static void show(const char *what, ga_mv X)
 
 static void object(const char *what, ga_mv X)
 {
-    static const char *const kind[] = {"empty", "flat point", "line", "plane", "point pair", "circle", "sphere"};
+    static const char *const kind[] = {"empty",      "flat point", "line",  "plane",
+                                       "point pair", "circle",     "sphere"};
     ga_object o;
     int st = ga_object_from_mv(X, &o);
     if (st != GA_OK) {
@@ -32,7 +33,8 @@ static void object(const char *what, ga_mv X)
     printf("%-22s %s: centre (%.6g, %.6g, %.6g), radius %.6g", what, kind[o.kind], clean(o.centre.x),
            clean(o.centre.y), clean(o.centre.z), sqrt(o.r2));
     if (o.kind != GA_OBJECT_SPHERE)
-        printf(", direction (%.6g, %.6g, %.6g)", clean(o.direction.x), clean(o.direction.y), clean(o.direction.z));
+        printf(", direction (%.6g, %.6g, %.6g)", clean(o.direction.x), clean(o.direction.y),
+               clean(o.direction.z));
     printf("\n");
 }
 
@@ -58,8 +60,10 @@ int main(void)
             object(what, X);
     }
     /* spheres of radii 1 and 3: a dilation by 3 about their common point */
-    ga_mv S1 = ga_mv_dual(ga_sphere_dual((ga_vec3){0, 0, 0}, 1)), S3 = ga_mv_dual(ga_sphere_dual((ga_vec3){2, 0, 0}, 3));
-    if (ga_versor_between(S1, S3, &V) == GA_OK && ga_versor_apply(V, ga_point_up((ga_vec3){-1, 0, 0}), &X) == GA_OK) {
+    ga_mv S1 = ga_mv_dual(ga_sphere_dual((ga_vec3){0, 0, 0}, 1)),
+          S3 = ga_mv_dual(ga_sphere_dual((ga_vec3){2, 0, 0}, 3));
+    if (ga_versor_between(S1, S3, &V) == GA_OK &&
+        ga_versor_apply(V, ga_point_up((ga_vec3){-1, 0, 0}), &X) == GA_OK) {
         ga_vec3 p;
         if (ga_point_down(X, &p) == GA_OK)
             printf("%-22s (%.6g, %.6g, %.6g)\n", "(-1, 0, 0) moved to", clean(p.x), clean(p.y), clean(p.z));
@@ -67,8 +71,7 @@ int main(void)
     ga_mv P = ga_mv_dual(ga_sphere_dual((ga_vec3){5, 0, 0}, 0));
     printf("%-22s %s\n", "sphere to a point", ga_status_string(ga_versor_between(S1, P, &V)));
     printf("%-22s %s\n", "sphere to a plane",
-           ga_status_string(ga_versor_between(S1, ga_plane_from_points((ga_vec3){0, 0, 0}, (ga_vec3){1, 0, 0},
-                                                                        (ga_vec3){0, 1, 0}),
-                                              &V)));
+           ga_status_string(ga_versor_between(
+               S1, ga_plane_from_points((ga_vec3){0, 0, 0}, (ga_vec3){1, 0, 0}, (ga_vec3){0, 1, 0}), &V)));
     return 0;
 }
