@@ -105,6 +105,8 @@ static int c_point_reject(void) { return ga_point_reject(vd, P, OUT(0)); }
 static int c_point_distance(void) { return ga_point_distance(vd, P, OUT(0)); }
 static int c_object_angle(void) { return ga_object_angle(P, P2, OUT(0)); }
 static int c_rotor_between(void) { return ga_rotor_between(P, P2, OUT(0)); }
+static int c_versor_between(void) { return ga_versor_between(S, S, OUT(0)); }
+static int c_object_interp(void) { return ga_object_interp(C, C, 0.5, OUT(0)); }
 static int c_quat_normalize(void) { return ga_quat_normalize(ga_rotor_to_quat(R), 1e-9, OUT(0)); }
 static int c_rotor_from_mv(void) { return ga_rotor_from_mv(Rmv, 1e-9, OUT(0)); }
 static int c_rotor_normalize(void) { return ga_rotor_normalize(R, OUT(0)); }
@@ -233,6 +235,8 @@ static const api_case cases[] = {
     CASE(point_distance, 1, 1),
     CASE(object_angle, 1, 1),
     CASE(rotor_between, 1, 1),
+    CASE(versor_between, 1, 1),
+    CASE(object_interp, 1, 1),
     CASE(quat_normalize, 1, 1),
     CASE(rotor_from_mv, 1, 1),
     CASE(rotor_normalize, 1, 1),

@@ -269,7 +269,7 @@ expect_error "--fromat" "garotor interp: unknown option: --fromat=pose: did you 
     "$G" interp --fromat=pose --samples 3 --in "$K3"
 expect_error "--ot: two as near" "unknown option: --ot: did you mean --out or --at?" "$G" interp --ot x
 expect_error "--norm: the start of one" "unknown option: --norm: did you mean --normalize?" "$G" interp --norm
-expect_error "--in to the demo" "garotor: unknown option: --in: an option of garotor exp, log, interp and versor: name the command first" \
+expect_error "--in to the demo" "garotor: unknown option: --in: an option of garotor exp, log, interp, versor and object: name the command first" \
     "$G" --in "$d/tw"
 expect_error "--samples to exp" "garotor exp: unknown option: --samples: an option of garotor interp, not of exp" \
     "$G" exp --samples 3

@@ -774,8 +774,165 @@ expect_error "versor: no operation" "garotor versor: which one: exp, log or appl
 expect_error "versor: unknown operation" "garotor versor: unknown operation 'sqrt' (exp, log or apply)" \
     "$G" versor sqrt
 
+# ---- versor --text and object: multivectors with blade names -------------------
+# to_text: a line of 10 (a bivector) or 32 numbers into a multivector written
+# with blade names, every term kept (0 coefficients too: they add nothing);
+# to_numbers: what the tool writes back into 32 numbers
+names='1 e1 e2 e3 e4 e5 e12 e13 e14 e15 e23 e24 e25 e34 e35 e45 e123 e124 e125 e134 e135 e145 e234 e235 e245 e345 e1234 e1235 e1245 e1345 e2345 e12345'
+to_text() {
+    awk -v names="$names" 'BEGIN { split(names, nm, " ") }
+        { off = NF == 10 ? 6 : 0; s = ""
+          for (i = 1; i <= NF; i++) { b = nm[i + off]; x = $i; sg = "+"
+              if (substr(x, 1, 1) == "-") { sg = "-"; x = substr(x, 2) }
+              s = s (i > 1 ? " " sg " " : (sg == "-" ? "-" : "")) x (b == "1" ? "" : " " b) }
+          print s }'
+}
+to_numbers() {
+    awk -v names="$names" 'BEGIN { n = split(names, nm, " "); for (i = 1; i <= n; i++) ix[nm[i]] = i }
+        { for (i = 1; i <= 32; i++) c[i] = 0
+          line = $0; gsub(/ \+ /, " +", line); gsub(/ - /, " -", line)
+          k = split(line, t, " ")
+          for (j = 1; j <= k; j++) { w = t[j]; sg = 1
+            if (substr(w, 1, 1) == "+") w = substr(w, 2); else if (substr(w, 1, 1) == "-") { sg = -1; w = substr(w, 2) }
+            b = "1"; if (match(w, /e[1-5]+$/)) { b = substr(w, RSTART); w = substr(w, 1, RSTART - 1) }
+            if (w == "") w = 1
+            c[ix[b]] = (sg < 0 ? "-" : "") w }
+          s = ""; for (i = 1; i <= 32; i++) s = s (i > 1 ? " " : "") c[i]; print s }'
+}
+# the same numbers, in text and as numbers, bit for bit: exp and log
+to_text <"$d/biv" >"$d/biv.txt"
+"$G" versor exp --text --in "$d/biv.txt" --out "$d/rot.txt" || fail "versor exp --text"
+to_numbers <"$d/rot.txt" | sed 's/-0\( \|$\)/0\1/g' >"$d/rot.back"
+cmp -s "$d/rot.back" "$d/rot" || fail "versor exp --text: not the numbers of versor exp: $(diff "$d/rot" "$d/rot.back" | head -4)"
+"$G" versor log --text --in "$d/rot.txt" | to_numbers | cut -d ' ' -f 7-16 >"$d/biv2.back"
+cmp -s "$d/biv2.back" "$d/biv2" || fail "versor log --text: not the numbers of versor log: $(diff "$d/biv2" "$d/biv2.back" | head -4)"
+[ "$(echo '0.5e45' | "$G" versor exp --text)" = "1.1276259652063807 + 0.5210953054937474e45" ] ||
+    fail "versor exp --text of 0.5e45"
+[ "$(echo 'e4; 2 0 0' | "$G" versor apply --text)" = "0.5 0 0" ] || fail "versor apply --text: the inversion e4"
+# written text reads back as the same multivector (ga_mv_format, ga_mv_parse)
+"$G" object build --in "$d/rot.txt" | cmp -s - "$d/rot.txt" || fail "object build: text read back is the same text"
+# objects: built, read back against Euclid (to 1e-14)
+near() { # near NAME WANT: the numbers of standard input against WANT's, to 1e-14
+    awk -v want="$2" -v name="$1" '{ n = split(want, w, " ")
+        if (NF != n) { printf "%s: %s\n", name, $0; exit 1 }
+        for (i = 1; i <= n; i++) { if (w[i] ~ /^[a-z_]+$/) { if ($i != w[i]) { printf "%s: %s\n", name, $0; exit 1 } continue }
+            e = $i - w[i]; if (e < 0) e = -e; if (e > 1e-14 * (1 + (w[i] < 0 ? -w[i] : w[i]))) { printf "%s: %s\n", name, $0; exit 1 } } }' ||
+        fail "object: $1"
+}
+cut3() { awk '{ print $1, $2, $4, $5, $6, $8, $9, $10, $12 }'; } # kind reality centre direction r2
+echo 'sphere 1 2 3 0.5' | "$G" object read | cut3 | near "sphere C R" "sphere real 1 2 3 0 0 0 0.25"
+echo 'sphere 1 0 0 -1 0 0 0 1 0 0 0 1' | "$G" object read | cut3 | near "sphere through 4 points" "sphere real 0 0 0 0 0 0 1"
+echo 'plane 0 0 2 1' | "$G" object read | cut3 | near "plane M D" "plane real 0 0 0.5 0 0 1 0"
+echo 'circle 1 0 0 0 1 0 -1 0 0' | "$G" object read | cut3 | near "circle" "circle real 0 0 0 0 0 1 1"
+echo 'line 1 2 3 2 2 3' | "$G" object read | cut3 | near "line" "line real 0 2 3 1 0 0 0"
+echo 'pair 0 0 0 2 0 0' | "$G" object read | cut3 | near "pair" "pair real 1 0 0 1 0 0 1"
+echo 'point 1 2 3' | "$G" object read | cut3 | near "point" "sphere tangent 1 2 3 0 0 0 0"
+echo 'sphere 0 0 0 1; sphere 1.5 0 0 1' | "$G" object meet | "$G" object read | cut3 |
+    near "meet of two spheres" "circle real 0.75 0 0 -1 0 0 0.4375"
+echo 'line 0 0 0 1 0 0; line 0 0 0 0 1 0' | "$G" object meet-rel | "$G" object read | cut3 |
+    near "meet-rel of two lines through the origin" "flatpoint real 0 0 0 0 0 0 0"
+echo 'line 0 0 0 1 0 0; line 0 0 0 0 1 0' | "$G" object join | "$G" object read | cut3 |
+    near "join of two lines through the origin" "plane real 0 0 0 0 0 -1 0"
+[ "$(echo 'line 0 0 0 1 0 0; line 0 0 0 0 1 0' | "$G" object meet)" = 0 ] || fail "object meet: 0 in special position"
+echo 'translation 100 0 0; sphere 1 2 3 0.5' | "$G" object move | "$G" object read | cut3 |
+    near "move by a translation" "sphere real 101 2 3 0 0 0 0.25"
+echo 'translation 1e6 0 0; plane 1 2 3 0.5' | "$G" object move | "$G" object read | cut3 |
+    near "move a plane by a translation" "plane real 71428.607142857143 142857.21428571429 214285.82142857143 0.2672612419124244 0.5345224838248488 0.8017837257372732 0"
+echo 'rotation 0 0 1 1.5707963267948966; line 1 0 0 1 0 1' | "$G" object move | "$G" object read | cut3 |
+    awk '{ printf "%s %s %.15f %.15f %.15f %s %s %s %s\n", $1, $2, $3, $4, $5, $6, $7, $8, $9 }' |
+    near "move by a rotation" "line real 0.000000000000000 1.000000000000000 0.000000000000000 0 0 1 0"
+# the rotor between circles of radii 1 and 2: it moves A onto B
+echo 'circle 1 0 0 0 1 0 -1 0 0; circle 3 2 1 3 4 3 3 2 5' >"$d/ab"
+"$G" object between --in "$d/ab" --out "$d/V" || fail "object between"
+printf '%s; circle 1 0 0 0 1 0 -1 0 0\n' "$(cat "$d/V")" | "$G" object move | "$G" object read | cut3 |
+    near "between two circles, then move" "circle real 3 2 3 1 0 0 4"
+echo 'sphere 0 0 0 1; sphere 0 0 0 4; 0.5' | "$G" object interp | "$G" object read | cut3 |
+    near "interp of spheres: the radius geometric" "sphere real 0 0 0 0 0 0 4"
+echo 'plane 0 0 1 0; plane 0 0 1 2; 0.25' | "$G" object interp | "$G" object read | cut3 |
+    near "interp of planes" "plane real 0 0 0.5 0 0 1 0"
+# errors, with the line and the column
+printf 'e1\n1 + 2e21\n' >"$d/t21"
+expect_error "text: a name not canonical" "t21:2:5: '2e21' is not a term of a multivector" "$G" object build --in "$d/t21" --out "$d/out"
+printf '1 +\n' >"$d/tsign"
+expect_error "text: a sign alone" "tsign:1:3: '+' with no term after it" "$G" object build --in "$d/tsign" --out "$d/out"
+printf 'e1 + 1e+400e2\n' >"$d/tbig"
+expect_error "text: beyond a double" "tbig:1:6: '1e+400e2': a number beyond the range of a double" "$G" object build --in "$d/tbig" --out "$d/out"
+printf '1e+308 + 1e+308\n' >"$d/tsum"
+expect_error "text: a sum beyond a double" "tsum:1:1: not a multivector: its terms add up beyond the range of a double" "$G" object build --in "$d/tsum" --out "$d/out"
+printf ' ; e1\n' >"$d/tnone"
+expect_error "text: an empty field" "tnone:1:2: no multivector here" "$G" object meet --in "$d/tnone" --out "$d/out"
+printf 'e1; e2\n' >"$d/tfields"
+expect_error "object: too many fields" "tfields:1:3: too many fields: at most 1, separated by ';'" "$G" object read --in "$d/tfields" --out "$d/out"
+printf 'e1\n' >"$d/tone"
+expect_error "object: too few fields" "tone:1:1: expected 2 fields separated by ';' (A; B), found 1" "$G" object join --in "$d/tone" --out "$d/out"
+printf '  spere 0 0 0 1\n' >"$d/tword"
+expect_error "object: unknown constructor" "tword:1:3: unknown object 'spere'" "$G" object build --in "$d/tword" --out "$d/out"
+printf 'sphere 0 0 1\n' >"$d/tcount"
+expect_error "object: numbers of a sphere" "tcount:1:1: expected 12 or 4 numbers after 'sphere' (four points, or a centre and a radius), found 3" \
+    "$G" object build --in "$d/tcount" --out "$d/out"
+printf 'point 0 0\n' >"$d/tcount1"
+expect_error "object: numbers of a point" "tcount1:1:1: expected 3 numbers after 'point' (x y z), found 2" \
+    "$G" object build --in "$d/tcount1" --out "$d/out"
+printf 'point 0 x 0\n' >"$d/tnan"
+expect_error "object: not a number" "tnan:1:9: 'x' is not a number" "$G" object build --in "$d/tnan" --out "$d/out"
+printf 'point 0 2x 0\n' >"$d/tjunk"
+expect_error "object: junk" "tjunk:1:10: junk after number 2" "$G" object build --in "$d/tjunk" --out "$d/out"
+printf 'point 0 inf 0\n' >"$d/tinf"
+expect_error "object: inf" "tinf:1:9: number 2 is not finite" "$G" object build --in "$d/tinf" --out "$d/out"
+printf 'point 0,,0 0\n' >"$d/tcomma"
+expect_error "object: empty field" "tcomma:1:9: empty field after number 1" "$G" object build --in "$d/tcomma" --out "$d/out"
+printf 'point ,0 0 0\n' >"$d/tcomma0"
+expect_error "object: empty field first" "tcomma0:1:7: empty field before number 1" "$G" object build --in "$d/tcomma0" --out "$d/out"
+printf 'sphere 0 0 0 -1\n' >"$d/tneg"
+expect_error "object: a negative radius" "tneg:1:1: sphere: the radius must be >= 0, not -1" "$G" object build --in "$d/tneg" --out "$d/out"
+printf 'plane 0 0 0 1\n' >"$d/tnorm"
+expect_error "object: a plane's zero normal" "tnorm:1:1: plane: the normal is 0" "$G" object build --in "$d/tnorm" --out "$d/out"
+printf 'dilation 0 0 0 0; e1\n' >"$d/tdil"
+expect_error "object: a dilation by 0" "tdil:1:1: dilation: the factor must be > 0, not 0" "$G" object move --in "$d/tdil" --out "$d/out"
+printf 'point 1e200 0 0\n' >"$d/tover"
+expect_error "object: a point that overflows" "tover:1:1: point: outside the domain" "$G" object build --in "$d/tover" --out "$d/out"
+printf 'sphere 0 0 0 1; plane 0 0 1 0\n' >"$d/tmeet"
+"$G" object meet --in "$d/tmeet" | "$G" object read >/dev/null || fail "object: a sphere's meet with a plane reads back"
+printf 'line 0 0 0 1 0 0; line 0 0 0 0 1 0\n' >"$d/tzero"
+"$G" object meet --in "$d/tzero" --out "$d/tzero.mv" || fail "object meet in special position"
+expect_error "object read: 0" "tzero.mv:1:1: 0 is no object" "$G" object read --in "$d/tzero.mv" --out "$d/out"
+printf '1 + e1\n' >"$d/tmixed"
+expect_error "object read: mixed grades" "tmixed:1:1: not an object: not an object of the expected kind" "$G" object read --in "$d/tmixed" --out "$d/out"
+printf '2; e1\n' >"$d/tjoin"
+expect_error "object join: a scalar" "tjoin:1:1: join: outside the domain" "$G" object join --in "$d/tjoin" --out "$d/out"
+printf 'e1 + e12; e1\n' >"$d/tmove"
+expect_error "object move: even and odd" "tmove:1:1: not a versor: it has both even and odd parts" "$G" object move --in "$d/tmove" --out "$d/out"
+printf '0; e1\n' >"$d/tmove0"
+expect_error "object move: V = 0" "tmove0:1:1: not a versor: not invertible" "$G" object move --in "$d/tmove0" --out "$d/out"
+printf 'sphere 0 0 0 1; plane 0 0 1 0\n' >"$d/tkinds"
+expect_error "object between: kinds" "tkinds:1:1: no rotor takes a sphere to a plane: the kinds differ" "$G" object between --in "$d/tkinds" --out "$d/out"
+printf 'sphere 0 0 0 1; point 1 1 1\n' >"$d/tpoint"
+expect_error "object between: a point and a sphere" "tpoint:1:1: no rotor takes a point (radius 0) to a round of radius > 0" \
+    "$G" object between --in "$d/tpoint" --out "$d/out"
+echo 'sphere 0 0 0 1; sphere 3 0 0 1' | "$G" object meet >"$d/imag"
+printf '%s; circle 1 0 0 0 1 0 -1 0 0\n' "$(cat "$d/imag")" >"$d/timag"
+expect_error "object between: imaginary" "timag:1:1: no rotor from A to B: an imaginary object" "$G" object between --in "$d/timag" --out "$d/out"
+printf 'sphere 0 0 0 1; sphere 0 0 0 2; x\n' >"$d/tt"
+expect_error "object interp: t" "tt:1:33: 'x' is not a number" "$G" object interp --in "$d/tt" --out "$d/out"
+printf 'sphere 0 0 0 1; sphere 0 0 0 2; 1 2\n' >"$d/tt2"
+expect_error "object interp: two t" "tt2:1:33: expected 1 number (t: 0 is A, 1 is B), found 2" "$G" object interp --in "$d/tt2" --out "$d/out"
+expect_error "object: no operation" "garotor object: which one: build, read, meet, join, meet-rel, move, between or interp?" "$G" object
+expect_error "object: unknown operation" "garotor object: unknown operation 'cut' (build, read, meet, join, meet-rel, move, between or interp)" \
+    "$G" object cut
+printf 'e4\n' >"$d/tapply"
+expect_error "versor apply --text: no point" "tapply:1:3: expected a versor, ';', then a point (x y z): 'e4; 2 0 0'" \
+    "$G" versor apply --text --in "$d/tapply" --out "$d/out"
+printf 'e4; 2 0\n' >"$d/tapply2"
+expect_error "versor apply --text: two numbers" "tapply2:1:5: expected 3 numbers (a point x y z) after ';', found 2" \
+    "$G" versor apply --text --in "$d/tapply2" --out "$d/out"
+printf '0.5e45 + e1\n' >"$d/texp"
+expect_error "versor exp --text: no bivector" "texp:1:1: not a bivector: it has a part of grade 1" "$G" versor exp --text --in "$d/texp" --out "$d/out"
+printf '2\n' >"$d/tlog"
+expect_error "versor log --text: no rotor" "tlog:1:1: no real logarithm: not a rotor" "$G" versor log --text --in "$d/tlog" --out "$d/out"
+expect_error "--text with exp" "garotor exp: unknown option: --text: an option of garotor versor, not of exp" "$G" exp --text
+
 # --help of every command exits 0 and names it
-for c in demo exp log interp versor; do
+for c in demo exp log interp versor object; do
     "$G" "$c" --help | grep -q "usage: garotor" || fail "$c --help"
 done
 

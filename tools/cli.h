@@ -27,7 +27,8 @@ enum {
     OPT_HTML = 1 << 20,
     OPT_VERB = 1 << 21, /* not an option: the command takes an operation word first */
     OPT_TIME_UNIT = 1 << 22,
-    OPT_MAX_LINE = 1 << 23
+    OPT_MAX_LINE = 1 << 23,
+    OPT_TEXT = 1 << 24
 };
 
 #include <stddef.h>
@@ -39,7 +40,7 @@ typedef struct {
     const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
     const char *verb;                  /* `versor exp`: the operation word */
     double rate;
-    int header, normalize;
+    int header, normalize, text; /* --text: multivectors with blade names */
     long samples;
     size_t max_line; /* --max-line, 0 when not given (textio.h: TIO_MAX_LINE) */
     double step;
@@ -75,5 +76,6 @@ int cmd_exp(const cli_opts *o);
 int cmd_log(const cli_opts *o);
 int cmd_interp(const cli_opts *o);
 int cmd_versor(const cli_opts *o);
+int cmd_object(const cli_opts *o);
 
 #endif

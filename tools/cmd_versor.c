@@ -5,9 +5,12 @@
  *   log     a rotor (32 numbers) -> its principal log (10 numbers)
  *   apply   a versor (32 numbers) then a point x (3 numbers) -> the point
  *           whose embedding is V F(x)^ V^-1 (3 numbers)
+ * With --text each multivector is written with blade names, in and out
+ * (`0.5e45`, docs/conventions.md), and apply reads "V; x y z".
  * Everything is computed before anything is written: an error on any line
  * leaves no output. */
 #include "cli.h"
+#include "mvtext.h"
 #include "textio.h"
 
 #include <stdio.h>
@@ -58,6 +61,97 @@ static int one(int verb, const double *v, double *r, const tio_items *in, size_t
     }
 }
 
+/* --text: one line of t, in the verb's form, into r (32 coefficients, or
+   the point in r[0..3) for apply) */
+static int one_text(int verb, const tio_texts *t, size_t i, double *r)
+{
+    mvt_field f[2];
+    int nf = mvt_fields(t, i, f, verb == VERB_APPLY ? 2 : 1);
+    if (nf < 0)
+        return -1;
+    if (verb == VERB_APPLY && nf != 2)
+        return tio_text_error(t, i, f[0].len, "expected a versor, ';', then a point (x y z): 'e4; 2 0 0'");
+    ga_mv X;
+    if (mvt_parse(t, i, f[0], &X))
+        return -1;
+    if (verb == VERB_EXP) {
+        for (int k = 0; k < 32; k++)
+            if (X.c[k] != 0.0 && !(k >= GA_BLADE_E12 && k <= GA_BLADE_E45))
+                return tio_text_error(t, i, f[0].at, "not a bivector: it has a part of grade %d",
+                                      k == 0              ? 0
+                                      : k < GA_BLADE_E12  ? 1
+                                      : k < GA_BLADE_E123 ? 3
+                                      : k < 31            ? 4
+                                                          : 5);
+        X = ga_mv_exp(X);
+        if (!ga_mv_isfinite(X))
+            return tio_text_error(t, i, f[0].at, "%s", ga_status_string(GA_ERR_DOMAIN));
+        memcpy(r, X.c, 32 * sizeof *r);
+        return 0;
+    }
+    if (verb == VERB_LOG) {
+        ga_mv B;
+        int st = ga_mv_log(X, &B);
+        if (st == GA_ERR_DOMAIN)
+            return tio_text_error(t, i, f[0].at,
+                                  "no real logarithm: not a rotor (an even versor with R ~R = 1) to 1e-9");
+        if (st != GA_OK)
+            return tio_text_error(t, i, f[0].at, "%s", ga_status_string(st));
+        memcpy(r, B.c, 32 * sizeof *r);
+        return 0;
+    }
+    double p[3];
+    int m = mvt_numbers(t, i, f[1], 0, p, 3);
+    if (m < 0)
+        return -1;
+    if (m != 3)
+        return tio_text_error(t, i, f[1].at, "expected 3 numbers (a point x y z) after ';', found %d", m);
+    ga_mv Y;
+    ga_vec3 x = {p[0], p[1], p[2]};
+    int st = ga_versor_apply(X, ga_point_up(x), &Y);
+    if (st == GA_ERR_ARG)
+        return tio_text_error(t, i, f[0].at, "not a versor: it has both even and odd parts");
+    if (st != GA_OK)
+        return tio_text_error(t, i, f[0].at, "not a versor: %s", ga_status_string(st));
+    if ((st = ga_point_down(Y, &x)) != GA_OK)
+        return tio_text_error(t, i, f[0].at, "the point goes to infinity (or V is not a versor): %s",
+                              ga_status_string(st));
+    r[0] = x.x, r[1] = x.y, r[2] = x.z;
+    return 0;
+}
+
+/* versor --text: every line read and computed, then written */
+static int versor_text(int verb, const cli_opts *o)
+{
+    tio_texts t;
+    tio_read_opts ro = cli_input(o);
+    if (tio_read_text(o->in, &ro, &t))
+        return 2;
+    double *res = malloc((t.n ? t.n : 1) * 32 * sizeof *res);
+    int ok = res != NULL;
+    if (!ok)
+        fprintf(stderr, "garotor versor: out of memory\n");
+    for (size_t i = 0; i < t.n && ok; i++) ok = !one_text(verb, &t, i, res + 32 * i);
+    tio_out out;
+    if (ok && tio_out_open(&out, o->out) == 0) {
+        char buf[GA_MV_TEXT_MAX];
+        for (size_t i = 0; i < t.n; i++) {
+            if (verb == VERB_APPLY) {
+                tio_out_line(&out, res + 32 * i, 3);
+                continue;
+            }
+            ga_mv X;
+            memcpy(X.c, res + 32 * i, sizeof X.c);
+            tio_out_text(&out, buf, mvt_format(X, buf));
+        }
+        ok = tio_out_close(&out, 1) == 0;
+    } else
+        ok = 0;
+    free(res);
+    tio_texts_free(&t);
+    return ok ? 0 : 2;
+}
+
 int cmd_versor(const cli_opts *o)
 {
     static const char *const verbs[] = {"exp", "log", "apply"};
@@ -80,6 +174,8 @@ int cmd_versor(const cli_opts *o)
             o->verb);
         return 2;
     }
+    if (o->text)
+        return versor_text(verb, o);
     tio_items in;
     tio_read_opts ro = cli_input(o);
     if (tio_read(o->in, &ro, &in))

@@ -103,8 +103,8 @@ static const command commands[] = {
      "  --html FILE         also write a web page that draws the path in 3D (drag to turn)\n"
      "  --in FILE, --out FILE, --header, --max-line N   as for exp (--max-line also\n"
      "                      for --times and --velocities)\n"},
-    {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER | OPT_MAX_LINE,
-     "usage: garotor versor exp|log|apply [--in FILE] [--out FILE] [--header]\n"
+    {"versor", cmd_versor, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER | OPT_MAX_LINE | OPT_TEXT,
+     "usage: garotor versor exp|log|apply [--text] [--in FILE] [--out FILE] [--header]\n"
      "                      [--max-line N]\n"
      "The general algebra of G(4,1), one item a line (docs/versors.md).\n"
      "  exp      a bivector, 10 numbers: the coefficients of\n"
@@ -118,6 +118,31 @@ static const command commands[] = {
      "  apply    a versor V (32 numbers) then a point x (3 numbers); writes the\n"
      "           point whose embedding is V F(x) V^-1 (with the grade involution\n"
      "           of F(x) for odd V); an error where it goes to infinity\n"
+     "  --text   multivectors in and out with blade names, 1 + 2e12 - 0.5e45, in\n"
+     "           place of the numbers (docs/conventions.md); apply reads V; x y z\n"
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
+    {"object", cmd_object, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER | OPT_MAX_LINE,
+     "usage: garotor object OP [--in FILE] [--out FILE] [--header] [--max-line N]\n"
+     "Conformal objects, one item a line, fields separated by ';'. An object is a\n"
+     "multivector with blade names (2e1235, 1 + 2e12 - 0.5e45) or one of\n"
+     "  point P, pair P Q, line P Q, circle P Q S, plane P Q S, sphere P Q S U\n"
+     "  (through points: three numbers each), sphere C R (centre, radius),\n"
+     "  plane N D (the plane n.x = D)\n"
+     "built in direct form (a vector is a point). A versor V is a multivector or\n"
+     "  translation T, rotation AXIS ANGLE, dilation C F, reflection N D,\n"
+     "  inversion C R, transversion T (T, AXIS, C, N: three numbers each)\n"
+     "OP is one of\n"
+     "  build     an object: writes it as a multivector\n"
+     "  read      an object: writes its kind, reality, centre, direction, r2 and\n"
+     "            the bounds err, r2_err, angle_err of ga_object_from_mv (a vector\n"
+     "            is read as a dual sphere or plane: a point as a sphere of r2 0)\n"
+     "  meet      A; B: the meet in the whole space (0 in special position)\n"
+     "  join      A; B: the smallest object holding both\n"
+     "  meet-rel  A; B: the meet relative to their join (any position)\n"
+     "  move      V; X: X moved by V, V X V^-1 (exact translation for a rigid V)\n"
+     "  between   A; B: a rotor taking A to B, two objects of one kind, with a\n"
+     "            dilation where their sizes differ\n"
+     "  interp    A; B; T: the object at T along that rotor (A at 0, B at 1)\n"
      "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
 };
 
@@ -130,6 +155,7 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  log      rigid motions to their principal twists\n"
                             "  interp   sample a path through key poses\n"
                             "  versor   exp, log and action of general rotors and versors\n"
+                            "  object   build, read back, meet, join and move conformal objects\n"
                             "\n"
                             "garotor COMMAND --help shows a command's options;\n"
                             "garotor --version prints the version.\n"
@@ -163,6 +189,7 @@ static const struct {
     {"--html", OPT_HTML, 1},
     {"--time-unit", OPT_TIME_UNIT, 1},
     {"--max-line", OPT_MAX_LINE, 1},
+    {"--text", OPT_TEXT, 0},
 };
 
 /* A usage error of command cmd (NULL: the demo, no command named), with a
@@ -346,6 +373,7 @@ static int parse_options(const command *c, const char *cmd, int argc, char **arg
         case OPT_HTML: o->html = v; break;
         case OPT_VIEW: o->view = v; break;
         case OPT_NORMALIZE: o->normalize = 1; break;
+        case OPT_TEXT: o->text = 1; break;
         case OPT_WITH: o->with = v; break;
         case OPT_FRAME: o->frame = v; break;
         case OPT_TIMES: o->times = v; break;

@@ -270,6 +270,87 @@ static int read_items(const char *path, const tio_read_opts *ro, int keep_first,
     return 0;
 }
 
+void tio_texts_free(tio_texts *t)
+{
+    for (size_t i = 0; i < t->n; i++) free(t->text[i]);
+    free(t->text);
+    free(t->line);
+    free(t->col);
+    memset(t, 0, sizeof *t);
+}
+
+int tio_text_error(const tio_texts *t, size_t i, size_t at, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "garotor: %s:%ld:%zu: ", t->name, t->line[i], t->col[i] + at);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return -1;
+}
+
+int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out)
+{
+    int from_stdin = !path || strcmp(path, "-") == 0;
+    tio_texts t = {from_stdin ? "<stdin>" : path, NULL, NULL, NULL, 0};
+    tio_lines r = {.fd = from_stdin ? 0 : open(path, O_RDONLY),
+                   .name = t.name,
+                   .max = ro->max_line ? ro->max_line : TIO_MAX_LINE,
+                   .blksz = tio_read_block ? tio_read_block : 1};
+    if (r.fd < 0) {
+        fprintf(stderr, "garotor: %s: cannot open: %s\n", path, strerror(errno));
+        return -1;
+    }
+    size_t cap[3] = {0, 0, 0};
+    int status = 0, got;
+    if (!(r.blk = malloc(r.blksz))) {
+        fprintf(stderr, "garotor: %s:1: out of memory\n", t.name);
+        status = -1;
+    }
+    while (status == 0 && (got = next_line(&r)) != 0) {
+        if (got < 0) {
+            status = -1;
+            break;
+        }
+        if (r.lineno == 1 && ro->header)
+            continue;
+        char *s = r.line;
+        if (r.lineno == 1 && strncmp(s, "\xEF\xBB\xBF", 3) == 0)
+            s += 3;
+        while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n') s++;
+        if (*s == '\0' || *s == '#')
+            continue;
+        size_t len = strlen(s);
+        while (len && strchr(" \t\r\n", s[len - 1])) len--;
+        char *copy = malloc(len + 1);
+        if (!copy || grow((void **)&t.text, &cap[0], t.n + 1, sizeof *t.text) ||
+            grow((void **)&t.line, &cap[1], t.n + 1, sizeof *t.line) ||
+            grow((void **)&t.col, &cap[2], t.n + 1, sizeof *t.col)) {
+            free(copy);
+            fprintf(stderr, "garotor: %s:%ld: out of memory\n", t.name, r.lineno);
+            status = -1;
+            break;
+        }
+        memcpy(copy, s, len);
+        copy[len] = '\0';
+        t.text[t.n] = copy;
+        t.line[t.n] = r.lineno;
+        t.col[t.n] = (size_t)(s - r.line) + 1;
+        t.n++;
+    }
+    free(r.line);
+    free(r.blk);
+    if (!from_stdin)
+        close(r.fd);
+    if (status) {
+        tio_texts_free(&t);
+        return -1;
+    }
+    *out = t;
+    return 0;
+}
+
 int tio_read(const char *path, const tio_read_opts *ro, tio_items *out)
 {
     return read_items(path, ro, 0, out);
@@ -481,6 +562,12 @@ void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n)
 }
 
 void tio_out_line(tio_out *o, const double *v, int n) { put_numbers(o, "", 0, v, n); }
+
+void tio_out_text(tio_out *o, const char *text, size_t len)
+{
+    fwrite(text, 1, len, o->fp);
+    fputc('\n', o->fp);
+}
 
 int tio_out_finish(tio_out *o)
 {

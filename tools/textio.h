@@ -71,6 +71,31 @@ int tio_read(const char *path, const tio_read_opts *ro, tio_items *out);
 int tio_read_first(const char *path, const tio_read_opts *ro, tio_items *out);
 void tio_free(tio_items *items);
 
+/** The lines of one input as text (multivectors written with blade names,
+ *  mvtext.h): every line the reader keeps (not blank, not a '#' line, not the
+ *  first with --header), from its first non-blank byte, without its newline
+ *  and trailing blanks (a '\r' included), a UTF-8 byte-order mark dropped. */
+typedef struct {
+    const char *name; /* file name for messages ("<stdin>" for standard input) */
+    char **text;
+    long *line;
+    size_t *col; /* the byte column (from 1) of text[i][0] in its line */
+    size_t n;
+} tio_texts;
+
+/** Read every kept line of `path` (NULL or "-": standard input) as text,
+ *  with the checks of tio_read (NUL bytes, --max-line, read errors). 0, or
+ *  -1 after a message. */
+int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out);
+void tio_texts_free(tio_texts *t);
+/** Print "garotor: FILE:LINE:COLUMN: message" for line i, at byte `at` of
+ *  its text, to stderr; returns -1. */
+int tio_text_error(const tio_texts *t, size_t i, size_t at, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
 /** Print "garotor: FILE:LINE: message" for item i to stderr; returns -1. */
 int tio_error(const tio_items *items, size_t i, const char *fmt, ...)
 #if defined(__GNUC__)
@@ -99,6 +124,8 @@ int tio_out_open(tio_out *o, const char *path);
 /** Write n numbers as one line, each the shortest decimal that reads back
  *  as it (numtext.h), a negative zero as 0. */
 void tio_out_line(tio_out *o, const double *v, int n);
+/** Write len bytes of text and a newline. */
+void tio_out_text(tio_out *o, const char *text, size_t len);
 /** Write a time stamp (as text) and n numbers as one line, as above. */
 void tio_out_stamped(tio_out *o, const char *stamp, const double *v, int n);
 /** Finish: flush, and rename the temporary file onto the target when ok;

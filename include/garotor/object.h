@@ -290,6 +290,39 @@ GA_API GA_NODISCARD ga_status ga_object_angle(ga_mv A, ga_mv B, double *out);
  *  GA_ERR_IMAGINARY, GA_ERR_NOTBLADE for empty objects. */
 GA_API GA_NODISCARD ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
 
+/** A rotor of G(4,1) (an even versor, V ~V = 1) taking A to B, two objects
+ *  of the same kind that may differ in size, where one exists (clifford's
+ *  rotor_between_objects, Lasenby-Hadfield, makes such rotors too):
+ *  V = T(cB) R D(s) T(-cA), cA and cB the centres of ga_object_from_mv, R the
+ *  rotation of ga_rotor_between, and D(s) = exp(-ln(s)/2 e45) the dilation
+ *  about the origin by s = sqrt(r2B / r2A) (s = 1 for flats, for two
+ *  tangent rounds and where r2A and r2B agree to the sum of their r2_err:
+ *  then V is ga_rotor_between's motion, bit for bit). V A V^-1 is a
+ *  multiple of B, positive with the orientation where the kind has one (lines,
+ *  planes, circles, point pairs): computed with ga_versor_apply, its centre
+ *  and r^2 are B's to 1e-12 of the scene (L = max(1, |c| + |r|) of both, L^2
+ *  for r^2) and its direction to 1e-12 rad, for scenes up to 1e2 from the
+ *  origin and sizes 1e-2 to 1e2 (beyond, the sandwich's rounding grows like
+ *  u |c|^2, as for every round held about the origin: object.h, "Accuracy").
+ *  Statuses of ga_rotor_between's read-back (GA_ERR_IMAGINARY,
+ *  GA_ERR_NOTBLADE for empty objects, GA_ERR_PRECISION beyond
+ *  GA_OBJECT_TOL, ...), GA_ERR_ARG for different kinds, GA_ERR_DOMAIN where
+ *  no such rotor exists (a tangent round, radius 0, and a real one) or it
+ *  overflows. */
+GA_API GA_NODISCARD ga_status ga_versor_between(ga_mv A, ga_mv B, ga_mv *out);
+
+/** The object at t along the rotor V = ga_versor_between(A, B):
+ *  V^t A V^-t (ga_mv_pow, ga_versor_apply), A at t = 0 and B at t = 1 (to the
+ *  accuracy of ga_mv_pow, 1e-13 of |V|). Between them a round's radius goes
+ *  geometrically, rA (rB/rA)^t, and its centre and direction along the screw
+ *  motion (with the dilation about the same fixed point) that V is the end of.
+ *  Where V is rigid (s = 1 above) the power is the screw exp(t log V) of
+ *  ga_rotor_log and ga_rotor_exp, applied with ga_rotor_apply_mv, so that a
+ *  flat stays a flat to the bit; otherwise ga_mv_pow and ga_versor_apply.
+ *  Statuses of ga_versor_between and ga_mv_pow; GA_ERR_NOTFINITE for a NaN
+ *  or infinite t, GA_ERR_DOMAIN where the result overflows. */
+GA_API GA_NODISCARD ga_status ga_object_interp(ga_mv A, ga_mv B, double t, ga_mv *out);
+
 #ifdef __cplusplus
 }
 #endif
