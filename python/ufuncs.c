@@ -4,7 +4,7 @@
  * compose, inverse, apply on each group, the quaternion, pose and dual
  * quaternion conversions, up and down, and the multivector products and
  * functions (32),(32)->(32), ... numpy's machinery gives them broadcasting,
- * out=, where=, any memory layout, dtype casting (a float64 loop, inputs cast
+ * out=, any memory layout, dtype casting (a float64 loop, inputs cast
  * with numpy's casting rules), the GIL released around the loop, and the
  * protocols of other array libraries (__array_ufunc__).
  *
