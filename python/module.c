@@ -9,14 +9,16 @@
 
 /* ---- the benchmark's reference: the same work as a plain C loop ----------- */
 
-static double now_seconds(void)
+/* wall time, or with cpu the calling thread's CPU time (python/bench.py
+   --clock cpu: time.thread_time, on a machine shared with other work) */
+static double now_seconds(int cpu)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(cpu ? CLOCK_THREAD_CPUTIME_ID : CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* _c_loop(kind, x, path=None): seconds for the library calls that exp, log,
+/* _c_loop(kind, x, path=None, cpu=False): seconds for the library calls that exp, log,
  * Path.sample or MultivectorArray's * make per element, in a plain C loop
  * over a C-contiguous float64 x ((n, 6) twists, (n, 4, 4) motions, (n,)
  * times, (n, 32) multivectors, the second factors y (n, 32) in place of the
@@ -29,7 +31,8 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     (void)self;
     const char *kind;
     PyObject *xo, *po = Py_None;
-    if (!PyArg_ParseTuple(args, "sO|O:_c_loop", &kind, &xo, &po))
+    int cpu = 0;
+    if (!PyArg_ParseTuple(args, "sO|Op:_c_loop", &kind, &xo, &po, &cpu))
         return NULL;
     PyArrayObject *x = gpy_as_doubles(xo);
     if (!x)
@@ -70,7 +73,7 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     int st = GA_OK;
     npy_intp bad = -1;
     memset(buf, 0, (size_t)(n ? n : 1) * (size_t)owidth * sizeof *buf); /* the pages, before the clock starts */
-    double t0 = now_seconds();
+    double t0 = now_seconds(cpu);
     Py_BEGIN_ALLOW_THREADS;
     if (lock)
         PyThread_acquire_lock(lock, WAIT_LOCK);
@@ -101,7 +104,7 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     if (lock)
         PyThread_release_lock(lock);
     Py_END_ALLOW_THREADS;
-    double dt = now_seconds() - t0;
+    double dt = now_seconds(cpu) - t0;
     PyMem_Free(buf);
     Py_DECREF(x);
     Py_XDECREF(y);
@@ -154,7 +157,7 @@ static PyMethodDef module_methods[] = {
     {"fit_line", gpy_fit_line, METH_O,
      "fit_line(points): the least-squares line through (n, 3) points, n >= 2: (direction, point)."},
     {"_c_loop", c_loop, METH_VARARGS,
-     "_c_loop(kind, x, path=None): the benchmark's plain C loop (python/bench.py)."},
+     "_c_loop(kind, x, path=None, cpu=False): the benchmark's plain C loop (python/bench.py)."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef garotor_module = {PyModuleDef_HEAD_INIT,

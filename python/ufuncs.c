@@ -129,14 +129,19 @@ static npy_intp core_count(const gpy_core *c)
     return s;
 }
 
+/* 1 if an element of core shape c with core strides cs lies in C order */
+static int plain(const gpy_core *c, const npy_intp *cs)
+{
+    const npy_intp w = (npy_intp)sizeof(double);
+    return c->ncore == 0 || (c->ncore == 1 && cs[0] == w) ||
+           (c->ncore == 2 && cs[1] == w && cs[0] == c->core[1] * w);
+}
+
 /* One operand's element at p, core shape c and core strides cs: a pointer to
  * its numbers in C order, p itself where they lie so, else buf filled. */
 static const double *gather(const char *p, const gpy_core *c, const npy_intp *cs, double *buf)
 {
-    const npy_intp w = (npy_intp)sizeof(double);
-    int plain = c->ncore == 0 || (c->ncore == 1 && cs[0] == w) ||
-                (c->ncore == 2 && cs[1] == w && cs[0] == c->core[1] * w);
-    if (plain && (uintptr_t)p % sizeof(double) == 0)
+    if (plain(c, cs) && (uintptr_t)p % sizeof(double) == 0)
         return (const double *)p;
     npy_intp n0 = c->ncore > 0 ? c->core[0] : 1, n1 = c->ncore > 1 ? c->core[1] : 1;
     npy_intp s0 = c->ncore > 0 ? cs[0] : 0, s1 = c->ncore > 1 ? cs[1] : 0;
@@ -177,15 +182,21 @@ static void loop(char **args, npy_intp const *dims, npy_intp const *steps, void 
     }
     cs[d->nin] = next;
     npy_intp osize = core_count(&d->out);
+    /* results straight to their place where it is C order and aligned */
+    int direct = plain(&d->out, cs[d->nin]) && (uintptr_t)args[d->nin] % sizeof(double) == 0 &&
+                 steps[d->nin] % (npy_intp)sizeof(double) == 0;
     fexcept_t saved;
     fegetexceptflag(&saved, FE_ALL_EXCEPT);
     int failed = 0;
     for (npy_intp i = 0; i < dims[0]; i++) {
-        double buf[GPY_MAX_IN][GPY_MAX_OUT], o[GPY_MAX_OUT];
+        double buf[GPY_MAX_IN][GPY_MAX_OUT], obuf[GPY_MAX_OUT];
         const double *in[GPY_MAX_IN];
+        char *op = args[d->nin] + i * steps[d->nin];
+        double *o = direct ? (double *)op : obuf;
         for (int j = 0; j < d->nin; j++) in[j] = gather(args[j] + i * steps[j], &d->in[j], cs[j], buf[j]);
         failed |= element(d, (void *)d->ctx, in, o, osize, 0);
-        scatter(args[d->nin] + i * steps[d->nin], &d->out, cs[d->nin], o);
+        if (!direct)
+            scatter(op, &d->out, cs[d->nin], o);
     }
     fesetexceptflag(&saved, FE_ALL_EXCEPT);
     if (failed)
