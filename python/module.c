@@ -72,7 +72,8 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     const ga_group *g = &ga_group_cga;
     int st = GA_OK;
     npy_intp bad = -1;
-    memset(buf, 0, (size_t)(n ? n : 1) * (size_t)owidth * sizeof *buf); /* the pages, before the clock starts */
+    memset(buf, 0,
+           (size_t)(n ? n : 1) * (size_t)owidth * sizeof *buf); /* the pages, before the clock starts */
     double t0 = now_seconds(cpu);
     Py_BEGIN_ALLOW_THREADS;
     if (lock)
@@ -194,8 +195,8 @@ PyMODINIT_FUNC PyInit_garotor(void)
     if (!gpy_error || PyModule_AddObjectRef(m, "Error", gpy_error) < 0 ||
         PyModule_AddObjectRef(m, "Path", (PyObject *)&gpy_PathType) < 0 ||
         PyModule_AddObjectRef(m, "Multivector", (PyObject *)&gpy_MVType) < 0 ||
-        PyModule_AddObjectRef(m, "MultivectorArray", (PyObject *)&gpy_MVAType) < 0 || gpy_objects_init(m) < 0 ||
-        gpy_ufuncs_init(m) < 0 ||
+        PyModule_AddObjectRef(m, "MultivectorArray", (PyObject *)&gpy_MVAType) < 0 ||
+        gpy_objects_init(m) < 0 || gpy_ufuncs_init(m) < 0 ||
         PyModule_AddStringConstant(m, "__version__", GAROTOR_VERSION_STRING) < 0)
         goto fail;
     for (int i = 1; i < 32; i++) {

@@ -127,9 +127,9 @@ int gpy_k_object(void *ctx, const double *const *in, double *out, npy_intp k)
     int st = ga_object_from_mv(mv_at(in[0]), &ob);
     if (st != GA_OK)
         return st;
-    double v[OBJECT_NUMBERS] = {ob.kind,        ob.reality,     ob.centre.x,    ob.centre.y,
-                                ob.centre.z,    ob.direction.x, ob.direction.y, ob.direction.z,
-                                ob.r2,          ob.err,         ob.r2_err,      ob.angle_err};
+    double v[OBJECT_NUMBERS] = {ob.kind,     ob.reality,     ob.centre.x,    ob.centre.y,
+                                ob.centre.z, ob.direction.x, ob.direction.y, ob.direction.z,
+                                ob.r2,       ob.err,         ob.r2_err,      ob.angle_err};
     memcpy(out, v, sizeof v);
     return GA_OK;
 }
@@ -277,7 +277,10 @@ METHOD1(exp, gpy_k_mv_exp)
 METHOD1(log, gpy_k_mv_log)
 METHOD1(sqrt, gpy_k_mv_sqrt)
 
-static PyObject *MVA_neg(PyObject *self) { return unary("MultivectorArray -", k_neg, NULL, self, core_self[0]); }
+static PyObject *MVA_neg(PyObject *self)
+{
+    return unary("MultivectorArray -", k_neg, NULL, self, core_self[0]);
+}
 static PyObject *MVA_invert(PyObject *self)
 {
     return unary("MultivectorArray ~", gpy_k_reverse, NULL, self, core_self[0]);
@@ -573,8 +576,14 @@ static PyGetSetDef MVA_getset[] = {
     {"ndim", MVA_ndim, NULL, "the number of leading dimensions", NULL},
     {NULL, NULL, NULL, NULL, NULL}};
 
-#define M1(name, doc) {#name, (PyCFunction)MVA_##name, METH_NOARGS, doc}
-#define M2(name, doc) {#name, (PyCFunction)MVA_##name, METH_O, doc}
+#define M1(name, doc)                                                                                        \
+    {                                                                                                        \
+#name, (PyCFunction)MVA_##name, METH_NOARGS, doc                                                     \
+    }
+#define M2(name, doc)                                                                                        \
+    {                                                                                                        \
+#name, (PyCFunction)MVA_##name, METH_O, doc                                                          \
+    }
 
 static PyMethodDef MVA_methods[] = {
     {"__array__", (PyCFunction)(void (*)(void))MVA_array, METH_VARARGS | METH_KEYWORDS,

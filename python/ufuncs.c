@@ -39,58 +39,146 @@ typedef struct {
 
 #define C1(n) GPY_CORE1(n, NULL)
 #define C2(n, m) GPY_CORE2(n, m, NULL)
-#define C0 {0, {0, 0}, NULL}
+#define C0                                                                                                   \
+    {                                                                                                        \
+        0, {0, 0}, NULL                                                                                      \
+    }
 #define MAT C2(4, 4)
 #define MV C1(32)
 
 #define GROUP_UFUNCS(sfx, g, docg)                                                                           \
-    {"exp" sfx, "(6)->(4,4)", "exp" sfx "(xi): twists (..., 6) -> rigid motions (..., 4, 4)" docg, gpy_k_exp,  \
-     g, 1, {C1(6)}, MAT},                                                                                    \
-        {"log" sfx, "(4,4)->(6)", "log" sfx "(T): rigid motions (..., 4, 4) -> principal twists (..., 6)" docg, \
-         gpy_k_log, g, 1, {MAT}, C1(6)},                                                                      \
-        {"compose" sfx, "(4,4),(4,4)->(4,4)", "compose" sfx "(A, B): A B (B first)" docg, gpy_k_compose, g, 2, \
-         {MAT, MAT}, MAT},                                                                                    \
-        {"inverse" sfx, "(4,4)->(4,4)", "inverse" sfx "(T): T^-1" docg, gpy_k_inverse, g, 1, {MAT}, MAT},     \
-        {"apply" sfx, "(4,4),(3)->(3)", "apply" sfx "(T, points): T moves points (..., 3)" docg, gpy_k_apply, \
-         g, 2, {MAT, C1(3)}, C1(3)}
+    {"exp" sfx,                                                                                              \
+     "(6)->(4,4)",                                                                                           \
+     "exp" sfx "(xi): twists (..., 6) -> rigid motions (..., 4, 4)" docg,                                    \
+     gpy_k_exp,                                                                                              \
+     g,                                                                                                      \
+     1,                                                                                                      \
+     {C1(6)},                                                                                                \
+     MAT},                                                                                                   \
+        {"log" sfx,                                                                                          \
+         "(4,4)->(6)",                                                                                       \
+         "log" sfx "(T): rigid motions (..., 4, 4) -> principal twists (..., 6)" docg,                       \
+         gpy_k_log,                                                                                          \
+         g,                                                                                                  \
+         1,                                                                                                  \
+         {MAT},                                                                                              \
+         C1(6)},                                                                                             \
+        {"compose" sfx,                                                                                      \
+         "(4,4),(4,4)->(4,4)",                                                                               \
+         "compose" sfx "(A, B): A B (B first)" docg,                                                         \
+         gpy_k_compose,                                                                                      \
+         g,                                                                                                  \
+         2,                                                                                                  \
+         {MAT, MAT},                                                                                         \
+         MAT},                                                                                               \
+        {"inverse" sfx, "(4,4)->(4,4)", "inverse" sfx "(T): T^-1" docg, gpy_k_inverse, g, 1, {MAT}, MAT},    \
+    {                                                                                                        \
+        "apply" sfx, "(4,4),(3)->(3)", "apply" sfx "(T, points): T moves points (..., 3)" docg, gpy_k_apply, \
+            g, 2, {MAT, C1(3)}, C1(3)                                                                        \
+    }
 
 #define MV2(name, kern, what)                                                                                \
     {                                                                                                        \
-        name, "(32),(32)->(32)", name "(a, b): " what ", element by element", gpy_k_##kern, NULL, 2, {MV, MV}, \
-            MV                                                                                               \
+        name, "(32),(32)->(32)", name "(a, b): " what ", element by element", gpy_k_##kern, NULL, 2,         \
+            {MV, MV}, MV                                                                                     \
     }
 #define MV1(name, kern, what)                                                                                \
     {                                                                                                        \
-        name, "(32)->(32)", name "(a): " what ", element by element", gpy_k_##kern, NULL, 1, {MV}, MV         \
+        name, "(32)->(32)", name "(a): " what ", element by element", gpy_k_##kern, NULL, 1, {MV}, MV        \
     }
 
 static ufdef defs[] = {
     GROUP_UFUNCS("", &ga_group_cga, " (garotor.exp ... with group='cga')"),
     GROUP_UFUNCS("_matrix", &ga_group_se3, " (group='matrix')"),
-    {"exp_affine", "(4,4)->(4,4)", "exp_affine(A): generators (last row zero) -> motions (group='affine')",
-     gpy_k_exp, &ga_group_affine, 1, {MAT}, MAT},
-    {"log_affine", "(4,4)->(4,4)", "log_affine(T): the principal log as (..., 4, 4) (group='affine')",
-     gpy_k_log, &ga_group_affine, 1, {MAT}, MAT},
-    {"compose_affine", "(4,4),(4,4)->(4,4)", "compose_affine(A, B): A B (group='affine')", gpy_k_compose,
-     &ga_group_affine, 2, {MAT, MAT}, MAT},
-    {"inverse_affine", "(4,4)->(4,4)", "inverse_affine(T): T^-1 (group='affine')", gpy_k_inverse,
-     &ga_group_affine, 1, {MAT}, MAT},
-    {"apply_affine", "(4,4),(3)->(3)", "apply_affine(T, points) (group='affine')", gpy_k_apply,
-     &ga_group_affine, 2, {MAT, C1(3)}, C1(3)},
-    {"from_quat", "(4),(3)->(4,4)", "from_quat(q, t): unit quaternions x y z w and translations -> (..., 4, 4)",
-     gpy_k_from_quat, NULL, 2, {C1(4), C1(3)}, MAT},
-    {"to_quat", "(4,4)->(4)", "to_quat(T): the rotation of T as a quaternion x y z w, w >= 0", gpy_k_to_quat,
-     NULL, 1, {MAT}, C1(4)},
-    {"from_pose", "(7)->(4,4)", "from_pose(P): rows x y z qx qy qz qw -> (..., 4, 4)", gpy_k_from_pose, NULL,
-     1, {C1(7)}, MAT},
-    {"to_pose", "(n,4,4)->(n,7)",
+    {"exp_affine",
+     "(4,4)->(4,4)",
+     "exp_affine(A): generators (last row zero) -> motions (group='affine')",
+     gpy_k_exp,
+     &ga_group_affine,
+     1,
+     {MAT},
+     MAT},
+    {"log_affine",
+     "(4,4)->(4,4)",
+     "log_affine(T): the principal log as (..., 4, 4) (group='affine')",
+     gpy_k_log,
+     &ga_group_affine,
+     1,
+     {MAT},
+     MAT},
+    {"compose_affine",
+     "(4,4),(4,4)->(4,4)",
+     "compose_affine(A, B): A B (group='affine')",
+     gpy_k_compose,
+     &ga_group_affine,
+     2,
+     {MAT, MAT},
+     MAT},
+    {"inverse_affine",
+     "(4,4)->(4,4)",
+     "inverse_affine(T): T^-1 (group='affine')",
+     gpy_k_inverse,
+     &ga_group_affine,
+     1,
+     {MAT},
+     MAT},
+    {"apply_affine",
+     "(4,4),(3)->(3)",
+     "apply_affine(T, points) (group='affine')",
+     gpy_k_apply,
+     &ga_group_affine,
+     2,
+     {MAT, C1(3)},
+     C1(3)},
+    {"from_quat",
+     "(4),(3)->(4,4)",
+     "from_quat(q, t): unit quaternions x y z w and translations -> (..., 4, 4)",
+     gpy_k_from_quat,
+     NULL,
+     2,
+     {C1(4), C1(3)},
+     MAT},
+    {"to_quat",
+     "(4,4)->(4)",
+     "to_quat(T): the rotation of T as a quaternion x y z w, w >= 0",
+     gpy_k_to_quat,
+     NULL,
+     1,
+     {MAT},
+     C1(4)},
+    {"from_pose",
+     "(7)->(4,4)",
+     "from_pose(P): rows x y z qx qy qz qw -> (..., 4, 4)",
+     gpy_k_from_pose,
+     NULL,
+     1,
+     {C1(7)},
+     MAT},
+    {"to_pose",
+     "(n,4,4)->(n,7)",
      "to_pose(T): (..., n, 4, 4) -> rows x y z qx qy qz qw, the quaternion's sign following the previous "
      "pose along n (garotor.to_pose(T, continuous=True))",
-     gpy_k_to_pose, NULL, 1, {MAT}, C1(7)},
-    {"to_dualquat", "(4,4)->(8)", "to_dualquat(T): real x y z w, then dual x y z w", gpy_k_to_dualquat, NULL,
-     1, {MAT}, C1(8)},
-    {"from_dualquat", "(8)->(4,4)", "from_dualquat(d): unit dual quaternions -> (..., 4, 4)",
-     gpy_k_from_dualquat, NULL, 1, {C1(8)}, MAT},
+     gpy_k_to_pose,
+     NULL,
+     1,
+     {MAT},
+     C1(7)},
+    {"to_dualquat",
+     "(4,4)->(8)",
+     "to_dualquat(T): real x y z w, then dual x y z w",
+     gpy_k_to_dualquat,
+     NULL,
+     1,
+     {MAT},
+     C1(8)},
+    {"from_dualquat",
+     "(8)->(4,4)",
+     "from_dualquat(d): unit dual quaternions -> (..., 4, 4)",
+     gpy_k_from_dualquat,
+     NULL,
+     1,
+     {C1(8)},
+     MAT},
     {"up", "(3)->(32)", "up(x): points -> conformal points", gpy_k_up, NULL, 1, {C1(3)}, MV},
     {"down", "(32)->(3)", "down(X): conformal points -> points", gpy_k_down, NULL, 1, {MV}, C1(3)},
     MV2("gp", gp, "the geometric product (ga_mv_gp)"),
@@ -115,8 +203,14 @@ static ufdef defs[] = {
     MV1("mv_exp", mv_exp, "exp of a bivector (Multivector.exp)"),
     MV1("mv_log", mv_log, "the principal log of a rotor (Multivector.log)"),
     MV1("mv_sqrt", mv_sqrt, "the principal square root of a rotor (ga_mv_sqrt)"),
-    {"mv_pow", "(32),()->(32)", "mv_pow(R, t): R^t of a rotor (ga_mv_pow), element by element", gpy_k_mv_pow,
-     NULL, 2, {MV, C0}, MV},
+    {"mv_pow",
+     "(32),()->(32)",
+     "mv_pow(R, t): R^t of a rotor (ga_mv_pow), element by element",
+     gpy_k_mv_pow,
+     NULL,
+     2,
+     {MV, C0},
+     MV},
     {"norm2", "(32)->()", "norm2(a): <a ~a>_0, element by element", gpy_k_norm2, NULL, 1, {MV}, C0},
 };
 
