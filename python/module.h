@@ -226,6 +226,11 @@ int gpy_mv_log(ga_mv m, ga_mv *out);
 
 extern PyTypeObject gpy_MVAType;
 
+/* kernel over x and y (MultivectorArrays, Multivectors or numbers, one of
+ * them a MultivectorArray): the MultivectorArray of the results, as its
+ * operators give them (what names the call in messages) */
+PyObject *gpy_mva_binary(const char *what, gpy_kernel_fn kernel, PyObject *x, PyObject *y);
+
 /* gpy_kernel_fn's of one multivector (32 numbers) or two, ctx unused: the
  * C function of the name (ga_mv_*; versor_apply ga_versor_apply, mv_exp and
  * mv_log gpy_mv_exp and gpy_mv_log; norm2 gives one number, object the 12

@@ -447,6 +447,8 @@ static PyObject *MV_log(MVObject *self, PyObject *u)
 static PyObject *MV_dot(MVObject *self, PyObject *o)
 {
     ga_mv b;
+    if (PyObject_TypeCheck(o, &gpy_MVAType))
+        return gpy_mva_binary("Multivector.dot", gpy_k_dot, (PyObject *)self, o);
     int r = gpy_mv_operand("Multivector.dot", o, &b);
     if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.dot: a Multivector or a number");
@@ -456,6 +458,8 @@ static PyObject *MV_dot(MVObject *self, PyObject *o)
 static PyObject *MV_ip(MVObject *self, PyObject *o)
 {
     ga_mv b;
+    if (PyObject_TypeCheck(o, &gpy_MVAType))
+        return gpy_mva_binary("Multivector.ip", gpy_k_ip, (PyObject *)self, o);
     int r = gpy_mv_operand("Multivector.ip", o, &b);
     if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.ip: a Multivector or a number");

@@ -216,6 +216,11 @@ static PyObject *binary(const char *what, gpy_kernel_fn kernel, PyObject *x, PyO
     return r;
 }
 
+PyObject *gpy_mva_binary(const char *what, gpy_kernel_fn kernel, PyObject *x, PyObject *y)
+{
+    return binary(what, kernel, x, y);
+}
+
 /* a method self.name(other): TypeError for another kind of other */
 static PyObject *method2(const char *what, gpy_kernel_fn kernel, PyObject *self, PyObject *o)
 {

@@ -241,6 +241,12 @@ def test_exp_log_apply_points_objects(rng, C):
     assert same(Xp.down(), garotor.down(garotor.up(x)))
     y = MA(R).apply(Xp).down()
     assert all(same(y[i], M(R[i]).apply(M.up(x[i])).down()) for i in range(n))
+    # a Multivector's methods take a MultivectorArray: one versor, many points
+    V = M(R[0])
+    for name in ("apply", "meet", "dot", "ip", "commutator"):
+        got = getattr(V, name)(Xp)
+        assert isinstance(got, MA) and same(np.asarray(got), np.asarray(getattr(MA(V), name)(Xp))), name
+        assert all(same(np.asarray(got[i]), np.asarray(getattr(V, name)(M.up(x[i])))) for i in range(n)), name
     # the read-back: a structured array with garotor.Object's fields
     ob = MA(Ob).object()
     fields = ("kind", "reality", "centre", "direction", "r2", "err", "r2_err", "angle_err")

@@ -261,3 +261,26 @@ def test_pickle_and_import():
     for name in ("exp", "gp", "to_pose", "mv_apply"):
         f = getattr(U, name)
         assert pickle.loads(pickle.dumps(f)) is f
+
+
+def test_axes_and_threads(rng):
+    """axes= puts the core dimensions elsewhere; four threads on slices of one
+    array (the GIL released around numpy's loop) give the serial result."""
+    import threading
+
+    xi = rng.normal(size=(5, 6))
+    assert same(U.exp(xi.T, axes=[(0,), (1, 2)]), garotor.exp(xi))
+    assert same(np.moveaxis(U.exp(xi.T, axes=[(0,), (0, 1)]), 2, 0), garotor.exp(xi))
+    X, Y = rng.normal(size=(4000, 32)), rng.normal(size=(4000, 32))
+    want = U.gp(X, Y)
+    out = np.zeros_like(want)
+    parts = np.array_split(np.arange(4000), 4)
+    threads = [threading.Thread(target=lambda p=p: U.gp(X[p[0]:p[-1] + 1], Y[p[0]:p[-1] + 1],
+                                                        out=out[p[0]:p[-1] + 1])) for p in parts]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert same(out, want)
+    A, B = garotor.MultivectorArray(X), garotor.MultivectorArray(Y)
+    assert same(np.asarray(A * B), want)
