@@ -284,3 +284,15 @@ def test_axes_and_threads(rng):
     assert same(out, want)
     A, B = garotor.MultivectorArray(X), garotor.MultivectorArray(Y)
     assert same(np.asarray(A * B), want)
+
+
+def test_dask_recipe(rng):
+    """docs/python.md's recipe: apply_gufunc with named core dimensions, their
+    sizes and the output's dtype runs a ufunc chunk by chunk, bit for bit."""
+    da = pytest.importorskip("dask.array")
+    from dask.array.gufunc import apply_gufunc
+
+    xi = rng.normal(size=(100, 6))
+    x = da.from_array(xi, chunks=(25, 6))
+    T = apply_gufunc(U.exp, "(i)->(j,k)", x, output_dtypes=float, output_sizes={"j": 4, "k": 4})
+    assert same(T.compute(scheduler="synchronous"), garotor.exp(xi))
