@@ -1,8 +1,9 @@
 /* python/functions.c: the module's element-wise functions (docs/python.md,
  * "Calls"): exp, log, compose, inverse, apply on a group; quaternions, poses
  * and dual quaternions (cga, through the rotor); conformal points up and
- * down. Each is a kernel for one element and a function that parses its
- * arguments and hands both to gpy_run_kernel (kernel.c).
+ * down. Each is a kernel for one element (gpy_k_*, which ufuncs.c's
+ * generalized ufuncs run too) and a function that parses its arguments and
+ * hands both to gpy_run_kernel (kernel.c).
  */
 #include "module.h"
 
@@ -11,7 +12,7 @@
 /* ---- on a group: exp, log, compose, inverse, apply ------------------------- */
 
 /* exp: a twist (rigid groups) or a 4x4 with last row zero (affine) */
-static int k_exp(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_exp(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
     const ga_group *g = ctx;
@@ -26,7 +27,7 @@ static int k_exp(void *ctx, const double *const *in, double *out, npy_intp k)
     return st;
 }
 
-static int k_log(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_log(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
     const ga_group *g = ctx;
@@ -43,7 +44,7 @@ static int k_log(void *ctx, const double *const *in, double *out, npy_intp k)
     return GA_OK;
 }
 
-static int k_compose(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_compose(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
     const ga_group *g = ctx;
@@ -58,7 +59,7 @@ static int k_compose(void *ctx, const double *const *in, double *out, npy_intp k
     return GA_OK;
 }
 
-static int k_inverse(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_inverse(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
     const ga_group *g = ctx;
@@ -71,7 +72,7 @@ static int k_inverse(void *ctx, const double *const *in, double *out, npy_intp k
     return st;
 }
 
-static int k_apply(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_apply(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
     const ga_group *g = ctx;
@@ -115,7 +116,7 @@ int gpy_pose_to_mat(const double *v, ga_mat4 *m)
     return st;
 }
 
-static int k_from_quat(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_from_quat(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     const double *q = in[0], *t = in[1];
@@ -127,7 +128,7 @@ static int k_from_quat(void *ctx, const double *const *in, double *out, npy_intp
     return st;
 }
 
-static int k_from_pose(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_from_pose(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     ga_mat4 m;
@@ -137,7 +138,7 @@ static int k_from_pose(void *ctx, const double *const *in, double *out, npy_intp
     return st;
 }
 
-static int k_to_quat(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_to_quat(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     ga_rotor r;
@@ -150,15 +151,12 @@ static int k_to_quat(void *ctx, const double *const *in, double *out, npy_intp k
 }
 
 /* to_pose: the quaternion's sign follows the previous element along the last
- * leading axis (as the tool keeps it continuous), starting from w >= 0 */
-typedef struct {
-    npy_intp run; /* elements in one run (the last leading dimension), 0: no continuity */
-    ga_quat prev;
-} pose_ctx;
+ * leading axis (as the tool keeps it continuous), starting from w >= 0
+ * (gpy_pose_ctx, module.h) */
 
-static int k_to_pose(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_to_pose(void *ctx, const double *const *in, double *out, npy_intp k)
 {
-    pose_ctx *c = ctx;
+    gpy_pose_ctx *c = ctx;
     ga_mat4 m = gpy_mat_get(in[0]);
     ga_rotor r;
     int st = ga_rotor_from_mat4(m, &r);
@@ -176,7 +174,7 @@ static int k_to_pose(void *ctx, const double *const *in, double *out, npy_intp k
 }
 
 /* dual quaternions as 8 numbers: real (x y z w), then dual (x y z w) */
-static int k_to_dualquat(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_to_dualquat(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     ga_rotor r;
@@ -189,7 +187,7 @@ static int k_to_dualquat(void *ctx, const double *const *in, double *out, npy_in
     return GA_OK;
 }
 
-static int k_from_dualquat(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_from_dualquat(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     const double *v = in[0];
@@ -203,7 +201,7 @@ static int k_from_dualquat(void *ctx, const double *const *in, double *out, npy_
 
 /* ---- points ---------------------------------------------------------------- */
 
-static int k_up(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_up(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     const double *x = in[0];
@@ -212,7 +210,7 @@ static int k_up(void *ctx, const double *const *in, double *out, npy_intp k)
     return GA_OK;
 }
 
-static int k_down(void *ctx, const double *const *in, double *out, npy_intp k)
+int gpy_k_down(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)ctx, (void)k;
     ga_mv X;
@@ -241,7 +239,7 @@ PyObject *gpy_exp(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 1,
                           .in = {g->rigid ? (gpy_core)GPY_CORE1(6, "xi") : (gpy_core)GPY_CORE2(4, 4, "xi")},
                           .out = GPY_CORE2(4, 4, NULL),
-                          .kernel = k_exp,
+                          .kernel = gpy_k_exp,
                           .ctx = (void *)g};
     return gpy_run_kernel(&kc, &xi, out);
 }
@@ -261,7 +259,7 @@ PyObject *gpy_log(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 1,
                           .in = {GPY_CORE2(4, 4, "T")},
                           .out = g->rigid ? (gpy_core)GPY_CORE1(6, NULL) : (gpy_core)GPY_CORE2(4, 4, NULL),
-                          .kernel = k_log,
+                          .kernel = gpy_k_log,
                           .ctx = (void *)g};
     return gpy_run_kernel(&kc, &T, out);
 }
@@ -281,7 +279,7 @@ PyObject *gpy_compose(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 2,
                           .in = {GPY_CORE2(4, 4, "A"), GPY_CORE2(4, 4, "B")},
                           .out = GPY_CORE2(4, 4, NULL),
-                          .kernel = k_compose,
+                          .kernel = gpy_k_compose,
                           .ctx = (void *)g};
     return gpy_run_kernel(&kc, in, out);
 }
@@ -301,7 +299,7 @@ PyObject *gpy_inverse(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 1,
                           .in = {GPY_CORE2(4, 4, "T")},
                           .out = GPY_CORE2(4, 4, NULL),
-                          .kernel = k_inverse,
+                          .kernel = gpy_k_inverse,
                           .ctx = (void *)g};
     return gpy_run_kernel(&kc, &T, out);
 }
@@ -321,7 +319,7 @@ PyObject *gpy_apply(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 2,
                           .in = {GPY_CORE2(4, 4, "T"), GPY_CORE1(3, "points")},
                           .out = GPY_CORE1(3, NULL),
-                          .kernel = k_apply,
+                          .kernel = gpy_k_apply,
                           .ctx = (void *)g};
     return gpy_run_kernel(&kc, in, out);
 }
@@ -343,7 +341,7 @@ PyObject *gpy_from_quat(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 2,
                           .in = {GPY_CORE1(4, "q"), GPY_CORE1(3, "t")},
                           .out = GPY_CORE2(4, 4, NULL),
-                          .kernel = k_from_quat};
+                          .kernel = gpy_k_from_quat};
     PyObject *r = gpy_run_kernel(&kc, in, out);
     Py_XDECREF(zero);
     return r;
@@ -361,12 +359,12 @@ PyObject *gpy_from_quat(PyObject *self, PyObject *args, PyObject *kw)
         return gpy_run_kernel(&kc, &x, out);                                                                 \
     }
 
-ONE_INPUT_FN(to_quat, "T", GPY_CORE2(4, 4, "T"), GPY_CORE1(4, NULL), k_to_quat)
-ONE_INPUT_FN(from_pose, "poses", GPY_CORE1(7, "poses"), GPY_CORE2(4, 4, NULL), k_from_pose)
-ONE_INPUT_FN(to_dualquat, "T", GPY_CORE2(4, 4, "T"), GPY_CORE1(8, NULL), k_to_dualquat)
-ONE_INPUT_FN(from_dualquat, "d", GPY_CORE1(8, "d"), GPY_CORE2(4, 4, NULL), k_from_dualquat)
-ONE_INPUT_FN(up, "x", GPY_CORE1(3, "x"), GPY_CORE1(32, NULL), k_up)
-ONE_INPUT_FN(down, "X", GPY_CORE1(32, "X"), GPY_CORE1(3, NULL), k_down)
+ONE_INPUT_FN(to_quat, "T", GPY_CORE2(4, 4, "T"), GPY_CORE1(4, NULL), gpy_k_to_quat)
+ONE_INPUT_FN(from_pose, "poses", GPY_CORE1(7, "poses"), GPY_CORE2(4, 4, NULL), gpy_k_from_pose)
+ONE_INPUT_FN(to_dualquat, "T", GPY_CORE2(4, 4, "T"), GPY_CORE1(8, NULL), gpy_k_to_dualquat)
+ONE_INPUT_FN(from_dualquat, "d", GPY_CORE1(8, "d"), GPY_CORE2(4, 4, NULL), gpy_k_from_dualquat)
+ONE_INPUT_FN(up, "x", GPY_CORE1(3, "x"), GPY_CORE1(32, NULL), gpy_k_up)
+ONE_INPUT_FN(down, "X", GPY_CORE1(32, "X"), GPY_CORE1(3, NULL), gpy_k_down)
 
 PyObject *gpy_to_pose(PyObject *self, PyObject *args, PyObject *kw)
 {
@@ -378,7 +376,7 @@ PyObject *gpy_to_pose(PyObject *self, PyObject *args, PyObject *kw)
         return NULL;
     /* the run length is T's last leading dimension (one input: no
      * broadcast); the kernel reads it through the context */
-    pose_ctx c = {0, {1, 0, 0, 0}};
+    gpy_pose_ctx c = {0, {1, 0, 0, 0}};
     PyArrayObject *a = gpy_as_doubles(T);
     if (!a)
         return NULL;
@@ -388,7 +386,7 @@ PyObject *gpy_to_pose(PyObject *self, PyObject *args, PyObject *kw)
                           .nin = 1,
                           .in = {GPY_CORE2(4, 4, "T")},
                           .out = GPY_CORE1(7, NULL),
-                          .kernel = k_to_pose,
+                          .kernel = gpy_k_to_pose,
                           .ctx = &c};
     PyObject *r = gpy_run_kernel(&kc, (PyObject **)&a, out);
     Py_DECREF(a);

@@ -9,16 +9,20 @@
 
 /* ---- the benchmark's reference: the same work as a plain C loop ----------- */
 
-static double now_seconds(void)
+/* wall time, or with cpu the calling thread's CPU time (python/bench.py
+   --clock cpu: time.thread_time, on a machine shared with other work) */
+static double now_seconds(int cpu)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(cpu ? CLOCK_THREAD_CPUTIME_ID : CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* _c_loop(kind, x, path=None): seconds for the library calls that exp, log or
- * Path.sample make per element, in a plain C loop over a C-contiguous float64
- * x ((n, 6) twists, (n, 4, 4) motions, (n,) times) into a scratch buffer: no
+/* _c_loop(kind, x, path=None, cpu=False): seconds for the library calls that exp, log,
+ * Path.sample or MultivectorArray's * make per element, in a plain C loop
+ * over a C-contiguous float64 x ((n, 6) twists, (n, 4, 4) motions, (n,)
+ * times, (n, 32) multivectors, the second factors y (n, 32) in place of the
+ * path) into a scratch buffer: no
  * numpy, no broadcasting, no kernel pointer, no check of the numbers beyond
  * the library's own (python/bench.py). A bad element stops it with
  * garotor.Error naming its index, as the module's calls do. */
@@ -27,7 +31,8 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     (void)self;
     const char *kind;
     PyObject *xo, *po = Py_None;
-    if (!PyArg_ParseTuple(args, "sO|O:_c_loop", &kind, &xo, &po))
+    int cpu = 0;
+    if (!PyArg_ParseTuple(args, "sO|Op:_c_loop", &kind, &xo, &po, &cpu))
         return NULL;
     PyArrayObject *x = gpy_as_doubles(xo);
     if (!x)
@@ -35,30 +40,41 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     int k = strcmp(kind, "exp") == 0    ? 0
           : strcmp(kind, "log") == 0    ? 1
           : strcmp(kind, "sample") == 0 ? 2
+          : strcmp(kind, "gp") == 0     ? 3
                                         : -1;
     npy_intp n = PyArray_NDIM(x) ? PyArray_DIM(x, 0) : 0;
-    npy_intp width = k == 0 ? 6 : k == 1 ? 16 : 1;
+    npy_intp width = k == 0 ? 6 : k == 1 ? 16 : k == 3 ? 32 : 1, owidth = k == 3 ? 32 : 16;
+    PyArrayObject *y = k == 3 ? gpy_as_doubles(po) : NULL;
+    if (k == 3 && !y) {
+        Py_DECREF(x);
+        return NULL;
+    }
     /* an uninitialised Path has no group to sample with */
-    if (k < 0 || PyArray_SIZE(x) != n * width ||
+    if (k < 0 || PyArray_SIZE(x) != n * width || (k == 3 && PyArray_SIZE(y) != n * width) ||
         (k == 2 && !(PyObject_TypeCheck(po, &gpy_PathType) && ((gpy_PathObject *)po)->work))) {
         Py_DECREF(x);
+        Py_XDECREF(y);
         PyErr_SetString(PyExc_ValueError,
-                        "_c_loop: kind exp (n, 6), log (n, 4, 4) or sample (n,) with a Path");
+                        "_c_loop: kind exp (n, 6), log (n, 4, 4), sample (n,) with a Path or gp (n, 32) "
+                        "with (n, 32)");
         return NULL;
     }
     const ga_path *p = k == 2 ? &((gpy_PathObject *)po)->path : NULL;
     PyThread_type_lock lock = k == 2 ? ((gpy_PathObject *)po)->lock : NULL; /* as Path.sample takes it */
-    double *buf = PyMem_Malloc((size_t)(n ? n : 1) * 16 * sizeof *buf);
+    double *buf = PyMem_Malloc((size_t)(n ? n : 1) * (size_t)owidth * sizeof *buf);
     if (!buf) {
         Py_DECREF(x);
+        Py_XDECREF(y);
         return PyErr_NoMemory();
     }
+    const double *in2 = y ? PyArray_DATA(y) : NULL;
     const double *in = PyArray_DATA(x);
     const ga_group *g = &ga_group_cga;
     int st = GA_OK;
     npy_intp bad = -1;
-    memset(buf, 0, (size_t)(n ? n : 1) * 16 * sizeof *buf); /* the pages, before the clock starts */
-    double t0 = now_seconds();
+    memset(buf, 0,
+           (size_t)(n ? n : 1) * (size_t)owidth * sizeof *buf); /* the pages, before the clock starts */
+    double t0 = now_seconds(cpu);
     Py_BEGIN_ALLOW_THREADS;
     if (lock)
         PyThread_acquire_lock(lock, WAIT_LOCK);
@@ -73,6 +89,12 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
             st = g->from_mat4(gpy_mat_get(in + 16 * i), e);
             if (st == GA_OK)
                 st = g->log(e, buf + 16 * i);
+        } else if (k == 3) {
+            ga_mv a, b;
+            memcpy(a.c, in + 32 * i, sizeof a.c);
+            memcpy(b.c, in2 + 32 * i, sizeof b.c);
+            ga_mv r = ga_mv_gp(a, b);
+            memcpy(buf + 32 * i, r.c, sizeof r.c);
         } else if ((st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in + i, e)) == GA_OK)
             gpy_mat_put(p->group->to_mat4(e), buf + 16 * i);
         if (st != GA_OK) {
@@ -83,9 +105,10 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     if (lock)
         PyThread_release_lock(lock);
     Py_END_ALLOW_THREADS;
-    double dt = now_seconds() - t0;
+    double dt = now_seconds(cpu) - t0;
     PyMem_Free(buf);
     Py_DECREF(x);
+    Py_XDECREF(y);
     if (bad >= 0) { /* as the module's calls name the element */
         gpy_raise_status("_c_loop", 1, &n, bad, st);
         return NULL;
@@ -135,7 +158,7 @@ static PyMethodDef module_methods[] = {
     {"fit_line", gpy_fit_line, METH_O,
      "fit_line(points): the least-squares line through (n, 3) points, n >= 2: (direction, point)."},
     {"_c_loop", c_loop, METH_VARARGS,
-     "_c_loop(kind, x, path=None): the benchmark's plain C loop (python/bench.py)."},
+     "_c_loop(kind, x, path=None, cpu=False): the benchmark's plain C loop (python/bench.py)."},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef garotor_module = {PyModuleDef_HEAD_INIT,
@@ -152,12 +175,15 @@ static struct PyModuleDef garotor_module = {PyModuleDef_HEAD_INIT,
 PyMODINIT_FUNC PyInit_garotor(void)
 {
     import_array();
-    if (PyType_Ready(&gpy_PathType) < 0 || PyType_Ready(&gpy_MVType) < 0)
+    if (PyType_Ready(&gpy_PathType) < 0 || PyType_Ready(&gpy_MVType) < 0 || PyType_Ready(&gpy_MVAType) < 0)
         return NULL;
-    /* numpy defers to Multivector's own operators (2.0 * m, m * numpy.float64(2)) */
-    if (PyDict_SetItemString(gpy_MVType.tp_dict, "__array_ufunc__", Py_None) < 0)
+    /* numpy defers to Multivector's and MultivectorArray's own operators
+       (2.0 * m, m * numpy.float64(2)) */
+    if (PyDict_SetItemString(gpy_MVType.tp_dict, "__array_ufunc__", Py_None) < 0 ||
+        PyDict_SetItemString(gpy_MVAType.tp_dict, "__array_ufunc__", Py_None) < 0)
         return NULL;
     PyType_Modified(&gpy_MVType);
+    PyType_Modified(&gpy_MVAType);
     PyObject *m = PyModule_Create(&garotor_module);
     if (!m)
         return NULL;
@@ -168,7 +194,9 @@ PyMODINIT_FUNC PyInit_garotor(void)
                                           PyExc_ValueError, NULL);
     if (!gpy_error || PyModule_AddObjectRef(m, "Error", gpy_error) < 0 ||
         PyModule_AddObjectRef(m, "Path", (PyObject *)&gpy_PathType) < 0 ||
-        PyModule_AddObjectRef(m, "Multivector", (PyObject *)&gpy_MVType) < 0 || gpy_objects_init(m) < 0 ||
+        PyModule_AddObjectRef(m, "Multivector", (PyObject *)&gpy_MVType) < 0 ||
+        PyModule_AddObjectRef(m, "MultivectorArray", (PyObject *)&gpy_MVAType) < 0 ||
+        gpy_objects_init(m) < 0 || gpy_ufuncs_init(m) < 0 ||
         PyModule_AddStringConstant(m, "__version__", GAROTOR_VERSION_STRING) < 0)
         goto fail;
     for (int i = 1; i < 32; i++) {

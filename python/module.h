@@ -11,6 +11,8 @@
  *   multivector.c  the Multivector type
  *   objects.c      Multivector's object methods (meet, join, read-back,
  *                  versors, projections, powers), garotor.Object, the fits
+ *   mvarray.c      the MultivectorArray type and the multivector kernels
+ *   ufuncs.c       garotor.ufunc: numpy generalized ufuncs of the kernels
  */
 #ifndef GAROTOR_PYTHON_MODULE_H
 #define GAROTOR_PYTHON_MODULE_H
@@ -135,6 +137,28 @@ static inline ga_mat4 gpy_mat_get(const double *v)
 /* (x y z qx qy qz qw) -> 4x4, exactly as `garotor interp --format pose` reads a key */
 int gpy_pose_to_mat(const double *v, ga_mat4 *m);
 
+/* Their kernels (gpy_kernel_fn), which the generalized ufuncs (ufuncs.c) run
+ * too: ctx is the group (exp ... apply) or unused, but for to_pose's */
+int gpy_k_exp(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_log(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_compose(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_inverse(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_apply(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_from_quat(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_from_pose(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_to_quat(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_to_dualquat(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_from_dualquat(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_up(void *ctx, const double *const *in, double *out, npy_intp k);
+int gpy_k_down(void *ctx, const double *const *in, double *out, npy_intp k);
+/* to_pose's context: the quaternion's sign follows the previous element's
+ * within a run of `run` elements (k % run == 0 starts one, with w >= 0) */
+typedef struct {
+    npy_intp run; /* elements in one run (the last leading dimension), 0: no continuity */
+    ga_quat prev;
+} gpy_pose_ctx;
+int gpy_k_to_pose(void *ctx, const double *const *in, double *out, npy_intp k);
+
 PyObject *gpy_exp(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_log(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_compose(PyObject *self, PyObject *args, PyObject *kw);
@@ -192,6 +216,59 @@ int gpy_finite_number(const char *what, double s);
  * (ValueError). 0, or -1 with an exception. */
 int gpy_read_numbers(const char *what, const char *name, PyObject *obj, npy_intp count, const char *shape_msg,
                      double *v);
+
+/* exp and log of Multivector (its methods' rules: the compact rotor for a
+ * rigid motion's, ga_mv_exp and ga_mv_log for any other): a status */
+int gpy_mv_exp(ga_mv m, ga_mv *out);
+int gpy_mv_log(ga_mv m, ga_mv *out);
+
+/* ---- MultivectorArray and the multivector kernels (mvarray.c) --------------- */
+
+extern PyTypeObject gpy_MVAType;
+
+/* kernel over x and y (MultivectorArrays, Multivectors or numbers, one of
+ * them a MultivectorArray): the MultivectorArray of the results, as its
+ * operators give them (what names the call in messages) */
+PyObject *gpy_mva_binary(const char *what, gpy_kernel_fn kernel, PyObject *x, PyObject *y);
+
+/* gpy_kernel_fn's of one multivector (32 numbers) or two, ctx unused: the
+ * C function of the name (ga_mv_*; versor_apply ga_versor_apply, mv_exp and
+ * mv_log gpy_mv_exp and gpy_mv_log; norm2 gives one number, object the 12
+ * numbers of a ga_object in its fields' order, mv_pow takes the number t as
+ * its second input) */
+#define GPY_MV_KERNEL(name) int gpy_k_##name(void *ctx, const double *const *in, double *out, npy_intp k)
+GPY_MV_KERNEL(gp);
+GPY_MV_KERNEL(op);
+GPY_MV_KERNEL(lc);
+GPY_MV_KERNEL(dot);
+GPY_MV_KERNEL(ip);
+GPY_MV_KERNEL(regressive);
+GPY_MV_KERNEL(commutator);
+GPY_MV_KERNEL(meet);
+GPY_MV_KERNEL(add);
+GPY_MV_KERNEL(sub);
+GPY_MV_KERNEL(join);
+GPY_MV_KERNEL(meet_rel);
+GPY_MV_KERNEL(project);
+GPY_MV_KERNEL(reject);
+GPY_MV_KERNEL(versor_apply);
+GPY_MV_KERNEL(reverse);
+GPY_MV_KERNEL(involute);
+GPY_MV_KERNEL(conjugate);
+GPY_MV_KERNEL(dual);
+GPY_MV_KERNEL(undual);
+GPY_MV_KERNEL(mv_inverse);
+GPY_MV_KERNEL(mv_exp);
+GPY_MV_KERNEL(mv_log);
+GPY_MV_KERNEL(mv_sqrt);
+GPY_MV_KERNEL(mv_pow);
+GPY_MV_KERNEL(norm2);
+GPY_MV_KERNEL(object);
+
+/* ---- generalized ufuncs (ufuncs.c) ------------------------------------------ */
+
+/* the module garotor.ufunc (also in sys.modules) added to m; 0, or -1 */
+int gpy_ufuncs_init(PyObject *m);
 
 /* ---- objects (objects.c) ---------------------------------------------------- */
 

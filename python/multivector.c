@@ -392,46 +392,63 @@ static int mv_to_generator(ga_mv m, ga_generator *b)
 /* exp: a rigid-motion generator through the compact rotor (the tool's exp,
    bit for bit), any other bivector through ga_mv_exp; anything with other
    grades is refused (to 1e-9 of max(1, max|m|), as mv_to_generator) */
+int gpy_mv_exp(ga_mv m, ga_mv *out)
+{
+    ga_generator b;
+    int st = mv_to_generator(m, &b);
+    if (st == GA_OK) {
+        *out = ga_rotor_to_mv(ga_rotor_exp(b));
+        return GA_OK;
+    }
+    if (st == GA_ERR_NOTBLADE) {
+        double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
+        if (ga_mv_maxabs(ga_mv_sub(m, ga_mv_grade(m, 2))) <= tol) {
+            *out = ga_mv_exp(ga_mv_grade(m, 2));
+            return GA_OK;
+        }
+    }
+    return st;
+}
+
 static PyObject *MV_exp(MVObject *self, PyObject *u)
 {
     (void)u;
-    ga_generator b;
-    int st = mv_to_generator(self->mv, &b);
-    if (st == GA_OK)
-        return gpy_mv_result("Multivector.exp", ga_rotor_to_mv(ga_rotor_exp(b)));
-    if (st == GA_ERR_NOTBLADE) {
-        ga_mv m = self->mv;
-        double tol = 1e-9 * fmax(1.0, ga_mv_maxabs(m));
-        if (ga_mv_maxabs(ga_mv_sub(m, ga_mv_grade(m, 2))) <= tol)
-            return gpy_mv_result("Multivector.exp", ga_mv_exp(ga_mv_grade(m, 2)));
-    }
-    return gpy_status_error("Multivector.exp", st);
+    ga_mv r;
+    int st = gpy_mv_exp(self->mv, &r);
+    return st == GA_OK ? gpy_mv_result("Multivector.exp", r) : gpy_status_error("Multivector.exp", st);
 }
 
 /* log: a rigid-motion rotor through the compact rotor (the tool's log), any
    other rotor through ga_mv_log (GA_ERR_DOMAIN where it has no real log) */
+int gpy_mv_log(ga_mv m, ga_mv *out)
+{
+    ga_rotor r;
+    ga_generator b;
+    int st = ga_rotor_from_mv(m, GA_ROTOR_DRIFT_MAX, &r);
+    if (st == GA_OK)
+        st = ga_rotor_log(r, &b);
+    if (st == GA_OK) {
+        *out = ga_generator_to_mv(b);
+        return GA_OK;
+    }
+    if (st == GA_ERR_NOTRIGID)
+        st = ga_mv_log(m, out);
+    return st;
+}
+
 static PyObject *MV_log(MVObject *self, PyObject *u)
 {
     (void)u;
-    ga_rotor r;
-    ga_generator b;
-    int st = ga_rotor_from_mv(self->mv, GA_ROTOR_DRIFT_MAX, &r);
-    if (st == GA_OK)
-        st = ga_rotor_log(r, &b);
-    if (st == GA_OK)
-        return gpy_mv_new(ga_generator_to_mv(b));
-    if (st == GA_ERR_NOTRIGID) {
-        ga_mv L;
-        st = ga_mv_log(self->mv, &L);
-        if (st == GA_OK)
-            return gpy_mv_new(L);
-    }
-    return gpy_status_error("Multivector.log", st);
+    ga_mv L;
+    int st = gpy_mv_log(self->mv, &L);
+    return st == GA_OK ? gpy_mv_new(L) : gpy_status_error("Multivector.log", st);
 }
 
 static PyObject *MV_dot(MVObject *self, PyObject *o)
 {
     ga_mv b;
+    if (PyObject_TypeCheck(o, &gpy_MVAType))
+        return gpy_mva_binary("Multivector.dot", gpy_k_dot, (PyObject *)self, o);
     int r = gpy_mv_operand("Multivector.dot", o, &b);
     if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.dot: a Multivector or a number");
@@ -441,6 +458,8 @@ static PyObject *MV_dot(MVObject *self, PyObject *o)
 static PyObject *MV_ip(MVObject *self, PyObject *o)
 {
     ga_mv b;
+    if (PyObject_TypeCheck(o, &gpy_MVAType))
+        return gpy_mva_binary("Multivector.ip", gpy_k_ip, (PyObject *)self, o);
     int r = gpy_mv_operand("Multivector.ip", o, &b);
     if (r == 0)
         PyErr_SetString(PyExc_TypeError, "Multivector.ip: a Multivector or a number");

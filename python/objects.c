@@ -130,33 +130,38 @@ static int other_operand(const char *what, PyObject *o, ga_mv *b)
     return r > 0 ? 1 : -1;
 }
 
-/* a method whose C function has no status */
-#define MV_PLAIN(name, what, fn)                                                                             \
+/* a method whose C function has no status; with a MultivectorArray o, the
+   MultivectorArray of the method over o's elements (kern, mvarray.c) */
+#define MV_PLAIN(name, what, fn, kern)                                                                       \
     PyObject *gpy_MV_##name(PyObject *self, PyObject *o)                                                     \
     {                                                                                                        \
         ga_mv b;                                                                                             \
+        if (PyObject_TypeCheck(o, &gpy_MVAType))                                                             \
+            return gpy_mva_binary(what, kern, self, o);                                                      \
         if (other_operand(what, o, &b) < 0)                                                                  \
             return NULL;                                                                                     \
         return gpy_mv_result(what, fn(MV(self), b));                                                         \
     }
 /* a method whose C function returns a status */
-#define MV_STATUS(name, what, fn)                                                                            \
+#define MV_STATUS(name, what, fn, kern)                                                                      \
     PyObject *gpy_MV_##name(PyObject *self, PyObject *o)                                                     \
     {                                                                                                        \
         ga_mv b, r;                                                                                          \
+        if (PyObject_TypeCheck(o, &gpy_MVAType))                                                             \
+            return gpy_mva_binary(what, kern, self, o);                                                      \
         if (other_operand(what, o, &b) < 0)                                                                  \
             return NULL;                                                                                     \
         int st = fn(MV(self), b, &r);                                                                        \
         return st == GA_OK ? gpy_mv_result(what, r) : gpy_status_error(what, st);                            \
     }
 
-MV_PLAIN(meet, "Multivector.meet", ga_mv_meet)
-MV_PLAIN(commutator, "Multivector.commutator", ga_mv_commutator)
-MV_STATUS(join, "Multivector.join", ga_mv_join)
-MV_STATUS(meet_rel, "Multivector.meet_rel", ga_mv_meet_rel)
-MV_STATUS(project, "Multivector.project", ga_mv_project)
-MV_STATUS(reject, "Multivector.reject", ga_mv_reject)
-MV_STATUS(apply, "Multivector.apply", ga_versor_apply)
+MV_PLAIN(meet, "Multivector.meet", ga_mv_meet, gpy_k_meet)
+MV_PLAIN(commutator, "Multivector.commutator", ga_mv_commutator, gpy_k_commutator)
+MV_STATUS(join, "Multivector.join", ga_mv_join, gpy_k_join)
+MV_STATUS(meet_rel, "Multivector.meet_rel", ga_mv_meet_rel, gpy_k_meet_rel)
+MV_STATUS(project, "Multivector.project", ga_mv_project, gpy_k_project)
+MV_STATUS(reject, "Multivector.reject", ga_mv_reject, gpy_k_reject)
+MV_STATUS(apply, "Multivector.apply", ga_versor_apply, gpy_k_versor_apply)
 
 /* ---- powers ------------------------------------------------------------------------ */
 

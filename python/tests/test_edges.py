@@ -84,6 +84,7 @@ def array_calls(rng):
         ("from_dualquat", "d", D, garotor.from_dualquat),
         ("up", "x", x, garotor.up),
         ("down", "X", X, garotor.down),
+        ("MultivectorArray", "c", X, lambda a: np.asarray(garotor.MultivectorArray(a))),
         ("Path.sample", "t", t, path.sample),
         ("Path.velocity", "t", t, path.velocity),
         ("Path.acceleration", "t", t, path.acceleration),
