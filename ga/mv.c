@@ -169,40 +169,7 @@ ga_mv ga_mv_lc(ga_mv a, ga_mv b)
     return r;
 }
 
-/* The terms <A_r B_s>_|r-s| of the geometric product, with (hestenes) or
-   without the terms where r or s is 0. Blade by blade, the 32 x 32 pairs: a
-   product of basis blades is one basis blade, of grade |r - s| exactly when
-   one blade's vectors are all in the other (the blade table is small; this is
-   not a hot path). */
-static ga_mv dot_product(ga_mv a, ga_mv b, int hestenes)
-{
-    ga_mv r = {{0}};
-    for (int i = 0; i < 32; i++) {
-        unsigned ma = gabl_mask[i];
-        int ga = gabl_popcount5(ma);
-        if (hestenes && ga == 0)
-            continue;
-        for (int j = 0; j < 32; j++) {
-            unsigned mb = gabl_mask[j];
-            int gb = gabl_popcount5(mb);
-            if ((hestenes && gb == 0) || ((ma & mb) != ma && (ma & mb) != mb))
-                continue;
-            r.c[gabl_index_of[ma ^ mb]] += gabl_sign(ma, mb) * a.c[i] * b.c[j];
-        }
-    }
-    return r;
-}
-
-ga_mv ga_mv_dot(ga_mv a, ga_mv b) { return dot_product(a, b, 0); }
-ga_mv ga_mv_ip(ga_mv a, ga_mv b) { return dot_product(a, b, 1); }
-
-double ga_mv_sp(ga_mv a, ga_mv b)
-{
-    /* <ab>_0 pairs each blade with itself */
-    double s = 0.0;
-    for (int i = 0; i < 32; i++) s += gabl_sign(gabl_mask[i], gabl_mask[i]) * a.c[i] * b.c[i];
-    return s;
-}
+/* ga_mv_sp, ga_mv_dot and ga_mv_ip: ga/mv_kernels.c (generated, as the products above). */
 
 /* Multiply the grade-k part by sign[k]. */
 static ga_mv grade_signs(ga_mv a, const double sign[6])

@@ -1,6 +1,6 @@
 /* garotor/mv_algebra.c: the inverse of any invertible multivector of G(4,1),
- * the regressive and commutator products, and the projection and rejection
- * of a blade onto a blade.
+ * and the projection and rejection of a blade onto a blade (the regressive
+ * and commutator products: ga/mv_kernels.c).
  *
  * The general inverse is the closed form of Hitzer and Sangwine for algebras
  * of five dimensions ("Multivector and multivector matrix inverses in real
@@ -24,6 +24,7 @@
  */
 #include <garotor/mv.h>
 
+#include "internal/mv_kernels.h"
 #include "internal/object.h"
 #include <float.h>
 #include <math.h>
@@ -171,7 +172,8 @@ ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
        sbar = sum a_i^2 (Cauchy-Schwarz), so its rounding, and what a few
        ulps of noise in a make of it, are a small multiple of u sbar. */
     ga_mv rev = ga_mv_reverse(a);
-    ga_mv aa = ga_mv_gp(a, rev);
+    ga_mv aa; /* ga_mv_gp(a, rev), by the sparse kernels where a has one parity */
+    gak_gp(a.c, rev.c, aa.c);
     double s = aa.c[GA_BLADE_SCALAR], sbar = 0.0;
     for (int i = 0; i < 32; i++) sbar += a.c[i] * a.c[i];
     aa.c[GA_BLADE_SCALAR] = 0.0;
@@ -189,20 +191,6 @@ ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
         return GA_ERR_SINGULAR; /* the inverse overflows, as ga_mat4_inverse */
     *out = r;
     return GA_OK;
-}
-
-/* ---- the regressive and commutator products ---------------------------------- */
-
-ga_mv ga_mv_regressive(ga_mv a, ga_mv b)
-{
-    /* the dual and the undual move and negate coefficients (I is a basis
-       blade): the result has the outer product's rounding */
-    return ga_mv_undual(ga_mv_op(ga_mv_dual(a), ga_mv_dual(b)));
-}
-
-ga_mv ga_mv_commutator(ga_mv a, ga_mv b)
-{
-    return ga_mv_scale(ga_mv_sub(ga_mv_gp(a, b), ga_mv_gp(b, a)), 0.5);
 }
 
 /* ---- projection and rejection ------------------------------------------------- */

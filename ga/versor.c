@@ -1,5 +1,6 @@
 /* ga/versor.c: the versors of G(4,1) (products of vectors, even or odd) and
- * their sandwich V X^ V^-1 (ga_versor_apply), and the conformal
+ * their sandwich V X^ V^-1 (ga_versor_apply, on the sparse kernels of
+ * ga/mv_kernels.c, and over arrays: ga_versor_apply_many), and the conformal
  * transformations as versors: reflection, inversion, dilation,
  * transversion, rotation, translation. docs/versors.md has their table.
  * exp, log and split of bivectors and rotors: ga/mv_exp.c, ga/mv_log.c,
@@ -11,11 +12,17 @@
 #include <garotor/rotor.h>
 #include <math.h>
 
-ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
+#include "internal/mv_kernels.h"
+
+/* What the sandwich of V needs, computed once: V^-1 and V's parity. */
+typedef struct {
+    ga_mv V, Vi;
+    int odd;
+} versor_prep;
+
+static ga_status versor_prepare(ga_mv V, versor_prep *p)
 {
-    if (!out)
-        return GA_ERR_ARG;
-    if (!ga_mv_isfinite(V) || !ga_mv_isfinite(X))
+    if (!ga_mv_isfinite(V))
         return GA_ERR_NOTFINITE;
     double ev = 0.0, od = 0.0;
     for (int i = 0; i < 32; i++) {
@@ -26,13 +33,54 @@ ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
     }
     if (ev > 0.0 && od > 0.0)
         return GA_ERR_ARG;
-    ga_mv Vi;
-    int st = ga_mv_inverse(V, &Vi);
+    int st = ga_mv_inverse(V, &p->Vi);
     if (st != GA_OK)
         return st;
-    if (od > 0.0)
-        X = ga_mv_involute(X);
-    *out = ga_mv_gp(ga_mv_gp(V, X), Vi);
+    p->V = V;
+    p->odd = od > 0.0;
+    return GA_OK;
+}
+
+/* (V X^) V^-1: V and V^-1 have one parity, so each product runs on the
+   kernels of X's grades (gak_gp: V times one grade of X, or one parity; then
+   that parity times V^-1), the numbers of the two dense products. */
+static void versor_sandwich(const versor_prep *p, const ga_mv *X, ga_mv *out)
+{
+    ga_mv Y = p->odd ? ga_mv_involute(*X) : *X, T;
+    gak_gp(p->V.c, Y.c, T.c);
+    gak_gp(T.c, p->Vi.c, out->c);
+}
+
+ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
+{
+    if (!out)
+        return GA_ERR_ARG;
+    if (!ga_mv_isfinite(V) || !ga_mv_isfinite(X))
+        return GA_ERR_NOTFINITE;
+    versor_prep p;
+    ga_status st = versor_prepare(V, &p);
+    if (st != GA_OK)
+        return st;
+    versor_sandwich(&p, &X, out);
+    return GA_OK;
+}
+
+ga_status ga_versor_apply_many(ga_mv V, const ga_mv *in, size_t n, ga_mv *out)
+{
+    if (!in || !out)
+        return GA_ERR_ARG;
+    for (size_t i = 0; i < n; i++)
+        if (!ga_mv_isfinite(in[i]))
+            return GA_ERR_NOTFINITE;
+    versor_prep p;
+    ga_status st = versor_prepare(V, &p);
+    if (st != GA_OK)
+        return st;
+    for (size_t i = 0; i < n; i++) {
+        ga_mv y;
+        versor_sandwich(&p, &in[i], &y);
+        out[i] = y;
+    }
     return GA_OK;
 }
 
