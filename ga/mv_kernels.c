@@ -24,6 +24,8 @@
 
 #include "internal/mv_kernels.h"
 
+#include <string.h>
+
 #include "mv_kernels.inc"
 
 /* the grade of each blade index (canonical order) */
@@ -42,11 +44,25 @@ static const kernel_fn gp_pg[2][6] = {
 };
 static const kernel_fn gp_pp[2][2] = {{mv_gp_ee, mv_gp_eo}, {mv_gp_oe, mv_gp_oo}};
 
+/* the bits of x[i] but the sign: 0 exactly for +-0 (a NaN is not 0) */
+static inline unsigned long long magnitude_bits(const double *x, int i)
+{
+    unsigned long long b;
+    memcpy(&b, x + i, sizeof b);
+    return b << 1;
+}
+
 unsigned gak_grades(const double *x)
 {
-    unsigned g = 0;
-    for (int i = 0; i < 32; i++) g |= (unsigned)(x[i] != 0.0) << grade_of[i];
-    return g;
+    /* the blades of each grade are consecutive in the canonical order:
+       0 | 1..5 | 6..15 | 16..25 | 26..30 | 31 */
+    unsigned long long o1 = 0, o2 = 0, o3 = 0, o4 = 0;
+    for (int i = 1; i < 6; i++) o1 |= magnitude_bits(x, i);
+    for (int i = 6; i < 16; i++) o2 |= magnitude_bits(x, i);
+    for (int i = 16; i < 26; i++) o3 |= magnitude_bits(x, i);
+    for (int i = 26; i < 31; i++) o4 |= magnitude_bits(x, i);
+    return (unsigned)(magnitude_bits(x, 0) != 0) | (unsigned)(o1 != 0) << 1 | (unsigned)(o2 != 0) << 2 |
+           (unsigned)(o3 != 0) << 3 | (unsigned)(o4 != 0) << 4 | (unsigned)(magnitude_bits(x, 31) != 0) << 5;
 }
 
 /* 0 even (or zero), 1 odd, -1 both */
@@ -63,22 +79,21 @@ static void merge(const double *t0, const double *t1, int p, double *r)
     for (int i = 0; i < 32; i++) r[i] = (grade_of[i] & 1u) == (unsigned)p ? t0[i] : t1[i];
 }
 
-void gak_gp(const double *a, const double *b, double *r)
+void gak_gp(const double *a, const double *b, double *r) { gak_gp_g(a, gak_grades(a), b, gak_grades(b), r); }
+
+void gak_gp_g(const double *a, unsigned ga, const double *b, unsigned gb, double *r)
 {
-    unsigned ga = gak_grades(a), gb = gak_grades(b);
     int pa = parity(ga), pb = parity(gb);
     double t0[32], t1[32];
     if (pa >= 0) {
-        if (gb && !(gb & (gb - 1))) { /* one grade */
+        /* b of one small grade (0, 1, 4, 5: at most 80 terms): its kernel;
+           else the half of ga_mv_gp's vectors that a's parity has */
+        if ((gb == 1u || gb == 2u || gb == 16u || gb == 32u))
             gp_pg[pa][__builtin_ctz(gb)](a, b, r);
-        } else if (pb >= 0) {
-            gp_pp[pa][pb](a, b, r);
-        } else {
-            /* b's even blades give a b's blades of a's parity, its odd ones the others */
-            gp_pp[pa][0](a, b, t0);
-            gp_pp[pa][1](a, b, t1);
-            merge(t0, t1, pa, r);
-        }
+        else if (pa == 0)
+            gak_gp_even(a, b, r);
+        else
+            gak_gp_odd(a, b, r);
     } else if (pb >= 0) {
         /* a's even blades give the blades of b's parity, its odd ones the others */
         gp_pp[0][pb](a, b, t0);
@@ -104,10 +119,13 @@ double ga_mv_sp(ga_mv a, ga_mv b) { return mv_sp_dense(a.c, b.c); }
         return r;                                                                                            \
     }
 
-PRODUCT(ga_mv_dot, mv_dot_dense)
+PRODUCT(ga_mv_dot, gak_dot_blocks)
 PRODUCT(ga_mv_ip, mv_ip_dense)
 PRODUCT(ga_mv_regressive, mv_regressive_dense)
 PRODUCT(ga_mv_commutator, mv_commutator_dense)
 PRODUCT(ga_mv_gp_even_vector, mv_gp_eg1)
 PRODUCT(ga_mv_gp_vector_vector, mv_gp_g1g1)
 PRODUCT(ga_mv_gp_even_even, mv_gp_ee)
+
+void gak_dot_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { gak_dot_blocks(a->c, b->c, r->c); }
+void gak_dot_dense(const double *a, const double *b, double *r) { mv_dot_dense(a, b, r); }
