@@ -7,7 +7,7 @@
  */
 #include "floors.h"
 
-/* The library's pointer forms of four products (not exported; the bench
+/* The library's pointer forms of five products (not exported; the bench
    links the library's objects): only for the by-value/by-pointer keys. */
 #include "../ga/internal/mv_kernels.h"
 
@@ -108,6 +108,8 @@ RING_LOOP(run_gp_full_ptr, gak_gp_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last
 RING_LOOP(run_lc_ptr, gak_lc_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
 RING_LOOP(run_op_ptr, gak_op_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
 RING_LOOP(run_dot_ptr, gak_dot_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
+RING_LOOP(run_gp_rotor_vector_ptr, gak_gp_even_vector_p(&mv_rot[j], &mv_pt[j], &out_mv[j]),
+          out_mv[last].c[31])
 /* sparse pairs: a rotor times a point, both as full multivectors */
 RING_LOOP(run_gp_rotor_vector, out_mv[j] = ga_mv_gp_even_vector(mv_rot[j], mv_pt[j]), out_mv[last].c[31])
 /* the sandwich of a point: ga_versor_apply, and by hand (two ga_mv_gp, the
@@ -306,6 +308,8 @@ bench benches[] = {
     {"lc_ptr", "ga_mv_lc's code by pointer (gak_lc_p)", run_lc_ptr, NULL, 0, NULL, 0, 0, 0},
     {"op_ptr", "ga_mv_op's code by pointer (gak_op_p)", run_op_ptr, NULL, 0, NULL, 0, 0, 0},
     {"dot_ptr", "ga_mv_dot's code by pointer (gak_dot_p)", run_dot_ptr, NULL, 0, NULL, 0, 0, 0},
+    {"gp_rotor_vector_ptr", "ga_mv_gp_even_vector's code by pointer (gak_gp_even_vector_p)",
+     run_gp_rotor_vector_ptr, NULL, 0, NULL, 0, 0, 0},
     {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
     {"motor_mul_call", "ga_rotor_mul: the same product through the library's symbol", run_motor_mul_call,
      NULL, 0, NULL, 0, 0, 0},

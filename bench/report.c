@@ -125,6 +125,8 @@ static const ratio_def ratios[] = {
     {"lc/lc_ptr", "lc", "lc_ptr", NAN, 0, "left contraction: by value against by pointer"},
     {"op/op_ptr", "op", "op_ptr", NAN, 0, "outer product: by value against by pointer"},
     {"dot/dot_ptr", "dot", "dot_ptr", NAN, 0, "fat dot: by value against by pointer"},
+    {"gp_rotor_vector/gp_rotor_vector_ptr", "gp_rotor_vector", "gp_rotor_vector_ptr", NAN, 0,
+     "rotor times vector: by value against by pointer"},
     {"motor_mul_call/motor_mul", "motor_mul_call", "motor_mul", NAN, 0,
      "the product through the library's symbol against inline"},
     {"motor_mul_chain/dualquat_mul_chain", "motor_mul_chain", "dualquat_mul_chain", NAN, 0,

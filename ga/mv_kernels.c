@@ -129,3 +129,4 @@ PRODUCT(ga_mv_gp_even_even, mv_gp_ee)
 
 void gak_dot_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { gak_dot_blocks(a->c, b->c, r->c); }
 void gak_dot_dense(const double *a, const double *b, double *r) { mv_dot_dense(a, b, r); }
+void gak_gp_even_vector_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_eg1(a->c, b->c, r->c); }

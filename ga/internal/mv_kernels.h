@@ -41,12 +41,14 @@ void gak_gp_odd(const double *a, const double *b, double *r);
 void gak_dot_dense(const double *a, const double *b, double *r);
 
 /* The products by pointer, r = a b (r not a or b): ga_mv_gp, ga_mv_op,
-   ga_mv_lc (ga/mv.c) and ga_mv_dot (ga/mv_kernels.c), the same numbers.
+   ga_mv_lc (ga/mv.c), ga_mv_dot and ga_mv_gp_even_vector (ga/mv_kernels.c),
+   the same numbers.
    Not exported: garotor-bench links them to time the by-value ABI against
    pointers (docs/benchmarks.md, "By value or by pointer"). */
 void gak_gp_p(const ga_mv *a, const ga_mv *b, ga_mv *r);
 void gak_op_p(const ga_mv *a, const ga_mv *b, ga_mv *r);
 void gak_lc_p(const ga_mv *a, const ga_mv *b, ga_mv *r);
 void gak_dot_p(const ga_mv *a, const ga_mv *b, ga_mv *r);
+void gak_gp_even_vector_p(const ga_mv *a, const ga_mv *b, ga_mv *r);
 
 #endif
