@@ -16,6 +16,7 @@
 #include <garotor/path.h>
 #include <garotor/rotor.h>
 #include <garotor/rotor_inline.h>
+#include <garotor/versor.h>
 
 #ifdef GAROTOR_BENCH_EIGEN
 #include "eigen_peer.h"
@@ -38,6 +39,7 @@
 #define N_SAMPLES ((N_KEYS - 1) * SAMPLES_PER_SEG + 1)
 #define EULER_STEP (1.0 / SAMPLES_PER_SEG)
 #define BATCH_POSES 1000000
+#define APPLY_POINTS 1000 /* points under one motion in apply_many and its floors */
 
 /* Many short batches: on a busy machine a short batch is more often
  * uninterrupted, and the median then ignores the interrupted ones. */
@@ -47,6 +49,8 @@
 /* ---- the rings and paths (cases.c defines them, inputs.c fills them) ------- */
 
 extern ga_mv mv_a[RING], mv_b[RING];
+extern ga_mv mv_rot[RING], mv_rot_rev[RING]; /* rot_a as multivectors, and their reverses */
+extern ga_mv mv_pt[RING];                    /* F(x) of pts */
 extern ga_rotor rot_a[RING], rot_b[RING];
 extern ga_dualquat dq_a[RING], dq_b[RING];
 extern ga_vec3 pts[RING];

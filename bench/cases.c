@@ -7,9 +7,14 @@
  */
 #include "floors.h"
 
+/* The library's pointer forms of five products (not exported; the bench
+   links the library's objects): only for the by-value/by-pointer keys. */
+#include "../ga/internal/mv_kernels.h"
+
 /* ---- inputs and outputs --------------------------------------------------- */
 
 ga_mv mv_a[RING], mv_b[RING];
+ga_mv mv_rot[RING], mv_rot_rev[RING], mv_pt[RING];
 ga_rotor rot_a[RING], rot_b[RING];
 ga_dualquat dq_a[RING], dq_b[RING];
 ga_vec3 pts[RING];
@@ -91,6 +96,53 @@ RING_LOOP(run_motor_apply_call, out_v3[j] = ga_rotor_apply(rot_a[j], pts[j]), ou
 RING_LOOP(run_apply_sandwich,
           st |= ga_point_down(ga_rotor_apply_mv(rot_a[j], ga_point_up(pts[j])), &out_v3[j]), out_v3[last].z)
 RING_LOOP(run_mat4_apply, out_v3[j] = mat4_apply(&rigid_a[j], pts[j]), out_v3[last].z)
+/* the other products of two dense multivectors, and their pointer forms */
+RING_LOOP(run_lc, out_mv[j] = ga_mv_lc(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_op, out_mv[j] = ga_mv_op(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_dot, out_mv[j] = ga_mv_dot(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_ip, out_mv[j] = ga_mv_ip(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_sp, out_v3[j].x = ga_mv_sp(mv_a[j], mv_b[j]), out_v3[last].x)
+RING_LOOP(run_regressive, out_mv[j] = ga_mv_regressive(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_commutator, out_mv[j] = ga_mv_commutator(mv_a[j], mv_b[j]), out_mv[last].c[31])
+RING_LOOP(run_gp_full_ptr, gak_gp_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
+RING_LOOP(run_lc_ptr, gak_lc_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
+RING_LOOP(run_op_ptr, gak_op_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
+RING_LOOP(run_dot_ptr, gak_dot_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
+RING_LOOP(run_gp_rotor_vector_ptr, gak_gp_even_vector_p(&mv_rot[j], &mv_pt[j], &out_mv[j]),
+          out_mv[last].c[31])
+/* sparse pairs: a rotor times a point, both as full multivectors */
+RING_LOOP(run_gp_rotor_vector, out_mv[j] = ga_mv_gp_even_vector(mv_rot[j], mv_pt[j]), out_mv[last].c[31])
+/* the sandwich of a point: ga_versor_apply, and by hand (two ga_mv_gp, the
+   reverse taken beforehand) */
+RING_LOOP(run_versor_apply, st |= ga_versor_apply(mv_rot[j], mv_pt[j], &out_mv[j]), out_mv[last].c[5])
+RING_LOOP(run_sandwich_hand, out_mv[j] = ga_mv_gp(ga_mv_gp(mv_rot[j], mv_pt[j]), mv_rot_rev[j]),
+          out_mv[last].c[5])
+
+/* APPLY_POINTS points under one motion a call (the ring's next), per point:
+   the library's batch, and the loop a user writes around an inline 4x4 */
+static ga_vec3 out_pts[APPLY_POINTS];
+#define POINTS_LOOP(name, BODY)                                                                              \
+    static size_t name(const void *ctx, size_t n)                                                            \
+    {                                                                                                        \
+        (void)ctx;                                                                                           \
+        size_t done = 0, k = cursor;                                                                         \
+        int st = 0;                                                                                          \
+        while (done < n) {                                                                                   \
+            size_t j = k++ & MASK;                                                                           \
+            BODY;                                                                                            \
+            done += APPLY_POINTS;                                                                            \
+        }                                                                                                    \
+        cursor = k;                                                                                          \
+        status_or |= st;                                                                                     \
+        sink = out_pts[APPLY_POINTS - 1].z;                                                                  \
+        return done;                                                                                         \
+    }
+POINTS_LOOP(run_apply_many, st |= ga_rotor_apply_many(rot_a[j], pts, APPLY_POINTS, out_pts))
+POINTS_LOOP(run_mat4_apply_many, st |= ga_mat4_apply_many(rigid_a[j], pts, APPLY_POINTS, out_pts))
+POINTS_LOOP(run_mat4_loop, const ga_mat4 *m = &rigid_a[j];
+            for (size_t i = 0; i < APPLY_POINTS; i++) out_pts[i] = mat4_apply(m, pts[i]))
+POINTS_LOOP(run_motor_apply_loop, ga_rotor r = rot_a[j];
+            for (size_t i = 0; i < APPLY_POINTS; i++) out_pts[i] = ga_rotor_apply(r, pts[i]))
 RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
 RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
 RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
@@ -229,7 +281,35 @@ bench benches[] = {
      &ctx_cga_screw_exact, 0, NULL, 0, 0, 0},
     {"sample_euler", "screw path on rotors, per pose: Li-Hao Euler, 1 step", run_sample, &ctx_cga_screw_euler,
      0, NULL, 0, 0, 0},
+    {"apply_many", "ga_rotor_apply_many: 1000 points under one rotor, per point", run_apply_many, NULL, 0,
+     NULL, 0, 0, 0},
+    {"lc", "ga_mv_lc: left contraction, two dense multivectors", run_lc, NULL, 0, NULL, 0, 0, 0},
+    {"dot", "ga_mv_dot: fat dot, two dense multivectors", run_dot, NULL, 0, NULL, 0, 0, 0},
+    {"versor_apply", "ga_versor_apply: a rotor (as ga_mv) on a point F(x)", run_versor_apply, NULL, 0, NULL,
+     0, 0, 0},
+    {"sandwich_hand", "ga_mv_gp(ga_mv_gp(R, F(x)), ~R), ~R given: the sandwich by hand", run_sandwich_hand,
+     NULL, 0, NULL, 0, 0, 0},
+    {"gp_rotor_vector", "ga_mv_gp_even_vector: a rotor times a point, as ga_mv", run_gp_rotor_vector, NULL, 0,
+     NULL, 0, 0, 0},
     /* extras */
+    {"mat4_apply_many", "ga_mat4_apply_many: 1000 points under one 4x4, per point", run_mat4_apply_many, NULL,
+     0, NULL, 0, 0, 0},
+    {"mat4_loop", "1000 points under one 4x4, inline loop (in the bench), per point", run_mat4_loop, NULL, 0,
+     NULL, 0, 0, 0},
+    {"motor_apply_loop", "1000 points under one rotor, ga_rotor_apply per point", run_motor_apply_loop, NULL,
+     0, NULL, 0, 0, 0},
+    {"op", "ga_mv_op: outer product, two dense multivectors", run_op, NULL, 0, NULL, 0, 0, 0},
+    {"ip", "ga_mv_ip: Hestenes' inner product, two dense multivectors", run_ip, NULL, 0, NULL, 0, 0, 0},
+    {"sp", "ga_mv_sp: scalar product, two dense multivectors", run_sp, NULL, 0, NULL, 0, 0, 0},
+    {"regressive", "ga_mv_regressive, two dense multivectors", run_regressive, NULL, 0, NULL, 0, 0, 0},
+    {"commutator", "ga_mv_commutator, two dense multivectors", run_commutator, NULL, 0, NULL, 0, 0, 0},
+    {"gp_full_ptr", "ga_mv_gp's code by pointer (the library's gak_gp_p, not exported)", run_gp_full_ptr,
+     NULL, 0, NULL, 0, 0, 0},
+    {"lc_ptr", "ga_mv_lc's code by pointer (gak_lc_p)", run_lc_ptr, NULL, 0, NULL, 0, 0, 0},
+    {"op_ptr", "ga_mv_op's code by pointer (gak_op_p)", run_op_ptr, NULL, 0, NULL, 0, 0, 0},
+    {"dot_ptr", "ga_mv_dot's code by pointer (gak_dot_p)", run_dot_ptr, NULL, 0, NULL, 0, 0, 0},
+    {"gp_rotor_vector_ptr", "ga_mv_gp_even_vector's code by pointer (gak_gp_even_vector_p)",
+     run_gp_rotor_vector_ptr, NULL, 0, NULL, 0, 0, 0},
     {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
     {"motor_mul_call", "ga_rotor_mul: the same product through the library's symbol", run_motor_mul_call,
      NULL, 0, NULL, 0, 0, 0},

@@ -157,6 +157,13 @@ int setup_inputs(void)
             break;
         }
     }
+    /* the same motions and points as full multivectors (no new draws: the
+       rings above stay those of earlier runs) */
+    for (int j = 0; j < RING; j++) {
+        mv_rot[j] = ga_rotor_to_mv(rot_a[j]);
+        mv_rot_rev[j] = ga_mv_reverse(mv_rot[j]);
+        mv_pt[j] = ga_point_up(pts[j]);
+    }
     gp_tables();
     return build_paths();
 }

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "internal/blade.h"
+#include "internal/mv_kernels.h"
 
 static const char *const blade_names[32] = {
     "1",    "e1",   "e2",   "e3",   "e4",    "e5",    "e12",   "e13",   "e14",   "e15",   "e23",
@@ -76,19 +77,29 @@ ga_mv ga_mv_scale(ga_mv a, double s)
     return a;
 }
 
+/* x - x is +0 for every finite x and NaN for NaN and +-Inf: the sum is 0
+   exactly when all 32 are finite (one test, in partial sums that share vector
+   lanes, as ga__mat4_isfinite) */
 int ga_mv_isfinite(ga_mv a)
 {
-    for (int i = 0; i < 32; i++)
-        if (!isfinite(a.c[i]))
-            return 0;
-    return 1;
+    double z[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 32; i += 4)
+        for (int j = 0; j < 4; j++) z[j] += a.c[i + j] - a.c[i + j];
+    return (z[0] + z[1]) + (z[2] + z[3]) == 0.0;
 }
 
 double ga_mv_maxabs(ga_mv a)
 {
-    double m = 0.0;
-    for (int i = 0; i < 32; i++) m = fmax(m, fabs(a.c[i]));
-    return m;
+    /* v > m ? v : m is fmax(m, v) for m never NaN: a NaN v is passed over;
+       four running maxima (in vectors, no chain of 32), then theirs */
+    double m[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 32; i += 4)
+        for (int j = 0; j < 4; j++) {
+            double v = fabs(a.c[i + j]);
+            m[j] = v > m[j] ? v : m[j];
+        }
+    double x = m[0] > m[1] ? m[0] : m[1], y = m[2] > m[3] ? m[2] : m[3];
+    return x > y ? x : y;
 }
 
 /* The products, every term written out by gen/generate.py from the blade rule
@@ -155,6 +166,73 @@ ga_mv ga_mv_gp(ga_mv a, ga_mv b)
 }
 #endif
 
+/* The pointer forms of gp, op and lc (ga/internal/mv_kernels.h): not
+   exported; garotor-bench links them to measure what passing 256-byte values
+   costs (docs/benchmarks.md, "By value or by pointer"). */
+#ifdef GA_GP_IFUNC
+__attribute__((target("avx512f"))) static void gp_p_avx512f(const ga_mv *a, const ga_mv *b, ga_mv *r)
+{
+    mv_gp_blocks8(a->c, b->c, r->c);
+}
+__attribute__((target("avx2"))) static void gp_p_avx2(const ga_mv *a, const ga_mv *b, ga_mv *r)
+{
+    mv_gp_blocks4(a->c, b->c, r->c);
+}
+static void gp_p_sse2(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_blocks2(a->c, b->c, r->c); }
+typedef void (*gp_p_fn)(const ga_mv *, const ga_mv *, ga_mv *);
+static gp_p_fn gp_p_resolve(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") ? gp_p_avx512f
+         : __builtin_cpu_supports("avx2")    ? gp_p_avx2
+                                             : gp_p_sse2;
+}
+void gak_gp_p(const ga_mv *a, const ga_mv *b, ga_mv *r) __attribute__((ifunc("gp_p_resolve")));
+#elif defined(GA_DENSE_BLOCKS)
+void gak_gp_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_blocks2(a->c, b->c, r->c); }
+#else
+void gak_gp_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_dense(a->c, b->c, r->c); }
+#endif
+void gak_op_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_op_dense(a->c, b->c, r->c); }
+
+/* The fat dot and the products with a of one parity in vectors
+   (mv_dot_blocks, mv_gpe_blocks, mv_gpo_blocks of ga/mv_products.inc), the
+   width picked as ga_mv_gp's: gak_dot_blocks is ga_mv_dot (ga/mv_kernels.c),
+   gak_gp_even and gak_gp_odd serve gak_gp. Without the vector forms, the
+   straight-line dot and the dense product. */
+#ifdef GA_GP_IFUNC
+#define GA_BLOCKS_IFUNC(fn, kernel)                                                                          \
+    __attribute__((target("avx512f"))) static void fn##_avx512f(const double *a, const double *b, double *r) \
+    {                                                                                                        \
+        kernel##8(a, b, r);                                                                                  \
+    }                                                                                                        \
+    __attribute__((target("avx2"))) static void fn##_avx2(const double *a, const double *b, double *r)       \
+    {                                                                                                        \
+        kernel##4(a, b, r);                                                                                  \
+    }                                                                                                        \
+    static void fn##_sse2(const double *a, const double *b, double *r) { kernel##2(a, b, r); }               \
+    static gak_kernel_fn fn##_resolve(void)                                                                  \
+    {                                                                                                        \
+        __builtin_cpu_init();                                                                                \
+        return __builtin_cpu_supports("avx512f") ? fn##_avx512f                                              \
+             : __builtin_cpu_supports("avx2")    ? fn##_avx2                                                 \
+                                                 : fn##_sse2;                                                   \
+    }                                                                                                        \
+    void fn(const double *a, const double *b, double *r) __attribute__((ifunc(#fn "_resolve")));
+GA_BLOCKS_IFUNC(gak_dot_blocks, mv_dot_blocks)
+GA_BLOCKS_IFUNC(gak_gp_even, mv_gpe_blocks)
+GA_BLOCKS_IFUNC(gak_gp_odd, mv_gpo_blocks)
+#elif defined(GA_DENSE_BLOCKS)
+void gak_dot_blocks(const double *a, const double *b, double *r) { mv_dot_blocks2(a, b, r); }
+void gak_gp_even(const double *a, const double *b, double *r) { mv_gpe_blocks2(a, b, r); }
+void gak_gp_odd(const double *a, const double *b, double *r) { mv_gpo_blocks2(a, b, r); }
+#else
+void gak_dot_blocks(const double *a, const double *b, double *r) { gak_dot_dense(a, b, r); }
+void gak_gp_even(const double *a, const double *b, double *r) { mv_gp_dense(a, b, r); }
+void gak_gp_odd(const double *a, const double *b, double *r) { mv_gp_dense(a, b, r); }
+#endif
+void gak_lc_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_lc_dense(a->c, b->c, r->c); }
+
 ga_mv ga_mv_op(ga_mv a, ga_mv b)
 {
     ga_mv r;
@@ -169,45 +247,19 @@ ga_mv ga_mv_lc(ga_mv a, ga_mv b)
     return r;
 }
 
-/* The terms <A_r B_s>_|r-s| of the geometric product, with (hestenes) or
-   without the terms where r or s is 0. Blade by blade, the 32 x 32 pairs: a
-   product of basis blades is one basis blade, of grade |r - s| exactly when
-   one blade's vectors are all in the other (the blade table is small; this is
-   not a hot path). */
-static ga_mv dot_product(ga_mv a, ga_mv b, int hestenes)
-{
-    ga_mv r = {{0}};
-    for (int i = 0; i < 32; i++) {
-        unsigned ma = gabl_mask[i];
-        int ga = gabl_popcount5(ma);
-        if (hestenes && ga == 0)
-            continue;
-        for (int j = 0; j < 32; j++) {
-            unsigned mb = gabl_mask[j];
-            int gb = gabl_popcount5(mb);
-            if ((hestenes && gb == 0) || ((ma & mb) != ma && (ma & mb) != mb))
-                continue;
-            r.c[gabl_index_of[ma ^ mb]] += gabl_sign(ma, mb) * a.c[i] * b.c[j];
-        }
-    }
-    return r;
-}
-
-ga_mv ga_mv_dot(ga_mv a, ga_mv b) { return dot_product(a, b, 0); }
-ga_mv ga_mv_ip(ga_mv a, ga_mv b) { return dot_product(a, b, 1); }
-
-double ga_mv_sp(ga_mv a, ga_mv b)
-{
-    /* <ab>_0 pairs each blade with itself */
-    double s = 0.0;
-    for (int i = 0; i < 32; i++) s += gabl_sign(gabl_mask[i], gabl_mask[i]) * a.c[i] * b.c[i];
-    return s;
-}
+/* ga_mv_sp, ga_mv_dot and ga_mv_ip: ga/mv_kernels.c (generated, as the products above). */
 
 /* Multiply the grade-k part by sign[k]. */
 static ga_mv grade_signs(ga_mv a, const double sign[6])
 {
-    for (int i = 0; i < 32; i++) a.c[i] *= sign[gabl_popcount5(gabl_mask[i])];
+    /* the grades are consecutive in the canonical order: 0 | 1..5 | 6..15 |
+       16..25 | 26..30 | 31 (loops of fixed length, in vectors) */
+    a.c[0] *= sign[0];
+    for (int i = 1; i < 6; i++) a.c[i] *= sign[1];
+    for (int i = 6; i < 16; i++) a.c[i] *= sign[2];
+    for (int i = 16; i < 26; i++) a.c[i] *= sign[3];
+    for (int i = 26; i < 31; i++) a.c[i] *= sign[4];
+    a.c[31] *= sign[5];
     return a;
 }
 

@@ -1,6 +1,6 @@
 /* garotor/mv_algebra.c: the inverse of any invertible multivector of G(4,1),
- * the regressive and commutator products, and the projection and rejection
- * of a blade onto a blade.
+ * and the projection and rejection of a blade onto a blade (the regressive
+ * and commutator products: ga/mv_kernels.c).
  *
  * The general inverse is the closed form of Hitzer and Sangwine for algebras
  * of five dimensions ("Multivector and multivector matrix inverses in real
@@ -24,6 +24,7 @@
  */
 #include <garotor/mv.h>
 
+#include "internal/mv_kernels.h"
 #include "internal/object.h"
 #include <float.h>
 #include <math.h>
@@ -37,9 +38,16 @@ static ga_mv grade_signs(ga_mv a, const double sign[6])
     return a;
 }
 
-/* a 2^k, coefficient by coefficient (exact unless it under- or overflows) */
+/* a 2^k, coefficient by coefficient (exact unless it under- or overflows).
+   Where 2^k is a normal double, the product a_i 2^k is the correctly rounded
+   a_i 2^k, which is what ldexp gives: the same bits, without 32 calls. */
 static ga_mv mv_ldexp(ga_mv a, int k)
 {
+    if (k >= -1022 && k <= 1023) {
+        double p = ldexp(1.0, k);
+        for (int i = 0; i < 32; i++) a.c[i] *= p;
+        return a;
+    }
     for (int i = 0; i < 32; i++) a.c[i] = ldexp(a.c[i], k);
     return a;
 }
@@ -152,6 +160,45 @@ static ga_status general_inverse(ga_mv a, ga_mv *out)
     return GA_ERR_SINGULAR; /* the inverse is not found to the rounding of a */
 }
 
+/* ga_mv_inverse of a finite a of one parity (its grades within the mask g),
+   its steps on arrays, fused: the same operations on each coefficient, in
+   the same order (so the same bits), without copying 256-byte values from
+   call to call. Where a ~a is not a scalar to its rounding, or 2^-e is not a
+   normal double, ga_mv_inverse itself. */
+ga_status gak_inverse_one_parity(const ga_mv *a, unsigned g, ga_mv *out)
+{
+    double amax = ga_mv_maxabs(*a);
+    int e = 0;
+    if (amax > 0.0)
+        frexp(amax, &e);
+    if (e < -1023 || e > 1022)
+        return ga_mv_inverse(*a, out);
+    double p = ldexp(1.0, -e), sbar = 0.0;
+    /* ga_mv_reverse's sign of each blade: grades 0, 1 +, 2, 3 -, 4, 5 + */
+    static const double rev_sign[32] = {1,  1,  1,  1,  1,  1,  -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+                                        -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1,  1,  1,  1,  1,  1};
+    ga_mv as, rev, aa;
+    for (int i = 0; i < 32; i++) {
+        as.c[i] = a->c[i] * p;
+        sbar += as.c[i] * as.c[i];
+        rev.c[i] = as.c[i] * rev_sign[i];
+    }
+    gak_gp_g(as.c, g, rev.c, g, aa.c);
+    double s = aa.c[GA_BLADE_SCALAR];
+    aa.c[GA_BLADE_SCALAR] = 0.0;
+    if (!(ga_mv_maxabs(aa) <= GA_MV_INVERSE_TOL * U * sbar))
+        return ga_mv_inverse(*a, out);
+    if (!(fabs(s) > GA_MV_INVERSE_TOL * U * sbar))
+        return GA_ERR_SINGULAR;
+    double k = 1.0 / s;
+    ga_mv r;
+    for (int i = 0; i < 32; i++) r.c[i] = rev.c[i] * k * p;
+    if (!ga_mv_isfinite(r))
+        return GA_ERR_SINGULAR;
+    *out = r;
+    return GA_OK;
+}
+
 ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
 {
     if (!out)
@@ -163,17 +210,21 @@ ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
        (found by fuzz/fuzz_numeric; fuzz/regress/numeric/mv-inverse-underflow
        replays it). (a 2^-e)^-1 = a^-1 2^e. */
     int e = 0;
-    if (ga_mv_maxabs(a) > 0.0)
-        frexp(ga_mv_maxabs(a), &e);
+    double amax = ga_mv_maxabs(a);
+    if (amax > 0.0)
+        frexp(amax, &e);
     a = mv_ldexp(a, -e);
     /* a versor or a blade: a ~a is a scalar s, and a^-1 = ~a / s. Every
        coefficient of a ~a sums 32 products whose sizes add up to at most
        sbar = sum a_i^2 (Cauchy-Schwarz), so its rounding, and what a few
-       ulps of noise in a make of it, are a small multiple of u sbar. */
-    ga_mv rev = ga_mv_reverse(a);
-    ga_mv aa = ga_mv_gp(a, rev);
-    double s = aa.c[GA_BLADE_SCALAR], sbar = 0.0;
+       ulps of noise in a make of it, are a small multiple of u sbar. (sbar,
+       a chain of 32 additions, first: it runs beside the product.) */
+    double sbar = 0.0;
     for (int i = 0; i < 32; i++) sbar += a.c[i] * a.c[i];
+    ga_mv rev = ga_mv_reverse(a);
+    ga_mv aa; /* ga_mv_gp(a, rev), by the sparse kernels where a has one parity */
+    gak_gp(a.c, rev.c, aa.c);
+    double s = aa.c[GA_BLADE_SCALAR];
     aa.c[GA_BLADE_SCALAR] = 0.0;
     ga_mv r;
     ga_status st;
@@ -189,20 +240,6 @@ ga_status ga_mv_inverse(ga_mv a, ga_mv *out)
         return GA_ERR_SINGULAR; /* the inverse overflows, as ga_mat4_inverse */
     *out = r;
     return GA_OK;
-}
-
-/* ---- the regressive and commutator products ---------------------------------- */
-
-ga_mv ga_mv_regressive(ga_mv a, ga_mv b)
-{
-    /* the dual and the undual move and negate coefficients (I is a basis
-       blade): the result has the outer product's rounding */
-    return ga_mv_undual(ga_mv_op(ga_mv_dual(a), ga_mv_dual(b)));
-}
-
-ga_mv ga_mv_commutator(ga_mv a, ga_mv b)
-{
-    return ga_mv_scale(ga_mv_sub(ga_mv_gp(a, b), ga_mv_gp(b, a)), 0.5);
 }
 
 /* ---- projection and rejection ------------------------------------------------- */

@@ -200,6 +200,12 @@ ga_status ga_rotor_from_mv(ga_mv m, double tol, ga_rotor *out)
 
 ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x) { return ga_rotor_apply_inline(r, x); }
 
+ga_status ga_rotor_apply_many(ga_rotor r, const ga_vec3 *in, size_t n, ga_vec3 *out)
+{
+    /* 9 multiplications and 9 additions a point against ga_rotor_apply's 24 and 25 */
+    return ga_mat4_apply_many(ga_rotor_to_mat4_inline(r), in, n, out);
+}
+
 ga_mv ga_rotor_apply_mv(ga_rotor r, ga_mv X)
 {
     /* R = T_t q: the rotation q X ~q by the generated sandwich (it mixes the

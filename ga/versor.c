@@ -1,5 +1,6 @@
 /* ga/versor.c: the versors of G(4,1) (products of vectors, even or odd) and
- * their sandwich V X^ V^-1 (ga_versor_apply), and the conformal
+ * their sandwich V X^ V^-1 (ga_versor_apply, on the sparse kernels of
+ * ga/mv_kernels.c, and over arrays: ga_versor_apply_many), and the conformal
  * transformations as versors: reflection, inversion, dilation,
  * transversion, rotation, translation. docs/versors.md has their table.
  * exp, log and split of bivectors and rotors: ga/mv_exp.c, ga/mv_log.c,
@@ -11,28 +12,88 @@
 #include <garotor/rotor.h>
 #include <math.h>
 
+#include "internal/mv_kernels.h"
+
+/* What the sandwich of V needs, computed once: V^-1 and V's parity. */
+typedef struct {
+    ga_mv V, Vi;
+    int odd;
+    unsigned grades; /* V's parity: grades 0, 2, 4 or 1, 3, 5 */
+} versor_prep;
+
+/* p->V finite, its grades g */
+static ga_status versor_prepare(unsigned g, versor_prep *p)
+{
+    int ev = (g & 0x15u) != 0, od = (g & 0x2au) != 0; /* grades 0, 2, 4 and 1, 3, 5 */
+    if (ev && od)
+        return GA_ERR_ARG;
+    p->odd = od;
+    p->grades = od ? 0x2au : 0x15u;
+    return gak_inverse_one_parity(&p->V, p->grades, &p->Vi);
+}
+
+/* (V X^) V^-1: V and V^-1 have one parity, so each product runs on the
+   kernels of X's grades (gak_gp: V times one grade of X, or one parity; then
+   that parity times V^-1), the numbers of the two dense products. */
+static unsigned versor_first(const versor_prep *p, const ga_mv *X, ga_mv *T)
+{
+    ga_mv Xh;
+    if (p->odd)
+        Xh = ga_mv_involute(*X);
+    const ga_mv *Y = p->odd ? &Xh : X;
+    unsigned gx = gak_grades(Y->c);
+    gak_gp_g(p->V.c, p->grades, Y->c, gx, T->c);
+    /* T has V's parity times each of X's: one parity where X has one */
+    return (gx & 0x15u ? p->grades : 0u) | (gx & 0x2au ? p->grades ^ 0x3fu : 0u);
+}
+
+static void versor_sandwich(const versor_prep *p, const ga_mv *X, ga_mv *out)
+{
+    ga_mv T;
+    unsigned gt = versor_first(p, X, &T);
+    gak_gp_g(T.c, gt, p->Vi.c, p->grades, out->c);
+}
+
 ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
 {
     if (!out)
         return GA_ERR_ARG;
     if (!ga_mv_isfinite(V) || !ga_mv_isfinite(X))
         return GA_ERR_NOTFINITE;
-    double ev = 0.0, od = 0.0;
-    for (int i = 0; i < 32; i++) {
-        if (ga_blade_grade(i) % 2)
-            od = fmax(od, fabs(V.c[i]));
-        else
-            ev = fmax(ev, fabs(V.c[i]));
-    }
-    if (ev > 0.0 && od > 0.0)
-        return GA_ERR_ARG;
-    ga_mv Vi;
-    int st = ga_mv_inverse(V, &Vi);
+    /* V X^ before V^-1: it does not need it, and runs beside it */
+    versor_prep p;
+    p.V = V;
+    unsigned g = gak_grades(V.c);
+    p.odd = (g & 0x2au) != 0;
+    p.grades = p.odd ? 0x2au : 0x15u;
+    ga_mv T;
+    unsigned gt = versor_first(&p, &X, &T);
+    ga_status st = versor_prepare(g, &p);
     if (st != GA_OK)
         return st;
-    if (od > 0.0)
-        X = ga_mv_involute(X);
-    *out = ga_mv_gp(ga_mv_gp(V, X), Vi);
+    gak_gp_g(T.c, gt, p.Vi.c, p.grades, out->c);
+    return GA_OK;
+}
+
+ga_status ga_versor_apply_many(ga_mv V, const ga_mv *in, size_t n, ga_mv *out)
+{
+    if (!in || !out)
+        return GA_ERR_ARG;
+    if (!ga_mv_isfinite(V))
+        return GA_ERR_NOTFINITE;
+    for (size_t i = 0; i < n; i++)
+        if (!ga_mv_isfinite(in[i]))
+            return GA_ERR_NOTFINITE;
+    versor_prep p;
+    p.V = V;
+    ga_status st = versor_prepare(gak_grades(V.c), &p);
+    if (st != GA_OK)
+        return st;
+    for (size_t i = 0; i < n; i++) {
+        ga_mv y;
+        versor_sandwich(&p, &in[i], &y);
+        out[i] = y;
+    }
     return GA_OK;
 }
 

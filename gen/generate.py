@@ -32,6 +32,9 @@ One module per generated file, all built on gen/common.py:
                          of se3_dexp, interp/group.c)
   gen/series.py          section 12: ga/internal/series_coef.inc (the
                          coefficients of the sinc family, ga/internal/series.h)
+  gen/mv_kernels.py      section 13: ga/mv_kernels.inc (sp, dot, ip,
+                         regressive and commutator of ga/mv_kernels.c, and
+                         the sparse kernels of the geometric product)
 
 The sections are numbered across the modules ("the script" in the generated
 files' comments is this driver with its modules; they cite sections 1, 4
@@ -50,6 +53,7 @@ sys.dont_write_bytecode = True  # no gen/__pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import common  # noqa: E402
+import mv_kernels  # noqa: E402
 import mv_products  # noqa: E402
 import numtext_table  # noqa: E402
 import rotor_mul  # noqa: E402
@@ -58,7 +62,7 @@ import se3_dexp  # noqa: E402
 import series  # noqa: E402
 
 # in this order: the op counts print in it
-GENERATED = [rotor_mul, se3_dexp, mv_products, rotor_sandwich, numtext_table, series]
+GENERATED = [rotor_mul, se3_dexp, mv_products, rotor_sandwich, numtext_table, series, mv_kernels]
 
 
 def main():

@@ -7,7 +7,8 @@ and, for gcc, the geometric product again in vectors of 2, 4 or 8 doubles
 (gen_gp_blocks), the same operations in the same order.
 """
 
-from common import ALG, Algebra, HEADER, Poly, Vars, a_major, comment_block, dense_vars, emit_sum
+from common import (ALG, Algebra, HEADER, Poly, Vars, a_major, comment_block, dense_vars, emit_sum,
+                    popcount)
 
 PATH = 'ga/mv_products.inc'
 
@@ -45,6 +46,7 @@ def generate():
                 '                             double *restrict r)', '{']
         out += lines + ['}']
     out += gen_gp_blocks()
+    out += gen_more_blocks()
     head = [HEADER, '',
             'The dense products of ga/mv.c (ga_mv_gp, ga_mv_op, ga_mv_lc), every term',
             'written out from the blade products of G(4,1) (section 1 of the script).',
@@ -114,5 +116,87 @@ def gen_gp_blocks():
         out += ['    __builtin_memcpy(rf, acc, sizeof rf);']
         out += ['    r[%d] = rf[%d];' % (i, m) for i, m in enumerate(masks)]
         out += ['}']
+    out += ['#endif']
+    return out
+
+
+# More products in the vectors of gen_gp_blocks, for ga/mv.c and
+# ga/mv_kernels.c (section 8, continued):
+#   - mv_gpe_blocksW, mv_gpo_blocksW: the geometric product for a of one
+#     parity, the terms of a's even (odd) blades only, with the sign bits of
+#     gen_gp_blocks; where a's other blades are 0 the terms left out are
+#     zeros, so for finite b the result is mv_gp_dense's but the sign of a
+#     zero;
+#   - mv_dot_blocksW: the fat dot, each (m, block) a product with a factor
+#     table, sign(m, i ^ m) for the pairs the dot keeps and 0 for the others
+#     (x * +-1 is exact, x * 0 a zero), the (m, block) with no pair kept left
+#     out: the terms of mv_dot_dense in its order, plus zeros. For finite a and
+#     b its numbers, but the sign of a zero (an Inf in b beside a pair not
+#     kept gives a NaN where the loop left the pair out).
+# Each block's sum starts at its first term, as the straight-line code's.
+def _dot_keeps(ma, mb):
+    return (ma & mb) == ma or (ma & mb) == mb
+
+
+def gen_more_blocks():
+    masks = ALG.masks
+    out = ['', '#ifdef GA_DENSE_BLOCKS',
+           '/* the factor of each pair of the fat dot: sign(m, i ^ m) where one blade is in',
+           '   the other, else 0; row k for a\'s blade k, column i the result\'s mask */',
+           'static const double mv_dot_factor[32][32] = {']
+    rows = []
+    for ma in masks:
+        f = []
+        for i in range(32):
+            mb = i ^ ma
+            f.append(('%d' % ALG.blade_product(ma, mb)[0]) if _dot_keeps(ma, mb) else '0')
+        rows.append('    {' + ', '.join(f) + '}')
+    out += [',\n'.join(rows), '};']
+    for W in (2, 4, 8):
+        nb = 32 // W
+        vd, vi = 'mv_v%dd' % W, 'mv_v%di' % W
+        for name, ks, dot in (('gpe', [k for k, m in enumerate(masks) if popcount(m) % 2 == 0], False),
+                              ('gpo', [k for k, m in enumerate(masks) if popcount(m) % 2 == 1], False),
+                              ('dot', list(range(32)), True)):
+            what = {'gpe': 'the geometric product a b for a even (its odd blades not read)',
+                    'gpo': 'the geometric product a b for a odd (its even blades not read)',
+                    'dot': 'the fat dot a . b'}[name]
+            out += ['', '/* r = %s in %d vectors of %d doubles. */' % (what, nb, W),
+                    'GA_DENSE_FN void mv_%s_blocks%d(const double *restrict a, const double *restrict b,'
+                    % (name, W),
+                    '                               double *restrict r)', '{',
+                    '    double bf[32], rf[32];',
+                    '    %s bm[%d], acc[%d], t, f;' % (vd, nb, nb),
+                    '    %s sg;' % vi,
+                    '    (void)sg;',
+                    '    (void)f;']
+            out += ['    bf[%d] = b[%d];' % (m, i) for i, m in enumerate(masks)]
+            out += ['    __builtin_memcpy(bm, bf, sizeof bm);']
+            started = [False] * nb
+            for k in ks:
+                ma = masks[k]
+                x, hi = ma % W, ma // W
+                for q in range(nb):
+                    lanes = [W * q + l for l in range(W)]
+                    if dot and not any(_dot_keeps(ma, i ^ ma) for i in lanes):
+                        continue
+                    src = 'bm[%d]' % (q ^ hi)
+                    if x:
+                        out += ['    t = __builtin_shuffle(%s, (%s){%s});' % (
+                            src, vi, ', '.join(str(lane ^ x) for lane in range(W)))]
+                        src = 't'
+                    op = '+=' if started[q] else '='
+                    started[q] = True
+                    if dot:
+                        out += ['    __builtin_memcpy(&f, &mv_dot_factor[%d][%d], sizeof f);' % (k, W * q),
+                                '    acc[%d] %s a[%d] * (%s * f);' % (q, op, k, src)]
+                    else:
+                        out += ['    __builtin_memcpy(&sg, &mv_gp_sign_bits[%d][%d], sizeof sg);'
+                                % (k, W * q),
+                                '    acc[%d] %s a[%d] * (%s)((%s)%s ^ sg);' % (q, op, k, vd, vi, src)]
+            assert all(started)
+            out += ['    __builtin_memcpy(rf, acc, sizeof rf);']
+            out += ['    r[%d] = rf[%d];' % (i, m) for i, m in enumerate(masks)]
+            out += ['}']
     out += ['#endif']
     return out

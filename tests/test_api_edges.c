@@ -121,6 +121,14 @@ static int c_rotor_mean(void)
     return ga_rotor_mean(IN(0, two), IN(1, w), 2, OUT(2));
 }
 static int c_versor_apply(void) { return ga_versor_apply(ga_versor_translation(va), X, OUT(0)); }
+static ga_vec3 pts_in[2] = {{0.3, -0.2, 0.7}, {1.1, 0.4, -0.5}};
+static ga_mv mvs_in[2];
+static int c_rotor_apply_many(void) { return ga_rotor_apply_many(R, IN(0, pts_in), 2, OUT(1)); }
+static int c_mat4_apply_many(void) { return ga_mat4_apply_many(M, IN(0, pts_in), 2, OUT(1)); }
+static int c_versor_apply_many(void)
+{
+    return ga_versor_apply_many(ga_versor_translation(va), IN(0, mvs_in), 2, OUT(1));
+}
 static int c_versor_dilation(void) { return ga_versor_dilation(va, 2.0, OUT(0)); }
 static int c_scheme_by_name(void) { return ga_scheme_by_name(IN(0, "lihao2"), OUT(1)); }
 static int c_eval_by_name(void) { return ga_eval_by_name(IN(0, "euler"), OUT(1)); }
@@ -246,6 +254,9 @@ static const api_case cases[] = {
     CASE(rotor_from_mat4, 1, 1),
     CASE(rotor_mean, 3, 4),
     CASE(versor_apply, 1, 1),
+    CASE(versor_apply_many, 2, 2),
+    CASE(rotor_apply_many, 2, 2),
+    CASE(mat4_apply_many, 2, 2),
     CASE(versor_dilation, 1, 1),
     CASE(scheme_by_name, 2, 2),
     CASE(eval_by_name, 2, 2),
@@ -278,6 +289,8 @@ static void setup_inputs(void)
     M = ga_rotor_to_mat4(R);
     Rmv = ga_rotor_to_mv(R);
     X = ga_point_up(va);
+    mvs_in[0] = X;
+    mvs_in[1] = ga_point_up(vb);
     S = ga_sphere_from_points(va, vb, vc, vd);
     P = ga_plane_from_points(va, vb, vc);
     P2 = ga_plane_from_points(va, vb, vd);

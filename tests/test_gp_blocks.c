@@ -81,8 +81,102 @@ static void section_blocks(void)
 #endif
 }
 
+#ifdef GA_DENSE_BLOCKS
+/* the other vector forms (mv_dot_blocks, mv_gpe_blocks, mv_gpo_blocks) at
+   each width: kind 0 dot, 1 gp with a even, 2 gp with a odd */
+#define FORMS(W, tgt)                                                                                        \
+    tgt static void forms##W(int kind, const double *a, const double *b, double *r)                          \
+    {                                                                                                        \
+        if (kind == 0)                                                                                       \
+            mv_dot_blocks##W(a, b, r);                                                                       \
+        else if (kind == 1)                                                                                  \
+            mv_gpe_blocks##W(a, b, r);                                                                       \
+        else                                                                                                 \
+            mv_gpo_blocks##W(a, b, r);                                                                       \
+    }
+FORMS(8, __attribute__((target("avx512f"))))
+FORMS(4, __attribute__((target("avx2"))))
+FORMS(2, )
+
+/* the sign of the product of blades with masks a and b (e5 e5 = -1) */
+static double blade_sign(unsigned a, unsigned b)
+{
+    int swaps = 0;
+    for (unsigned x = a >> 1; x; x >>= 1) swaps += __builtin_popcount(x & b);
+    if (a & b & 0x10u)
+        swaps++;
+    return swaps & 1 ? -1.0 : 1.0;
+}
+
+/* the fat dot as ga/mv.c's loop computed it */
+static void dot_loop(const double *a, const double *b, double *r)
+{
+    int index[32];
+    for (int i = 0; i < 32; i++) index[ga_blade_mask(i)] = i;
+    for (int i = 0; i < 32; i++) r[i] = 0.0;
+    for (int i = 0; i < 32; i++)
+        for (int j = 0; j < 32; j++) {
+            unsigned ma = ga_blade_mask(i), mb = ga_blade_mask(j);
+            if ((ma & mb) == ma || (ma & mb) == mb)
+                r[index[ma ^ mb]] += blade_sign(ma, mb) * a[i] * b[j];
+        }
+}
+
+/* equal numbers (+0 = -0), or both NaN */
+static int same_numbers(const double *x, const double *y)
+{
+    for (int i = 0; i < 32; i++)
+        if (!(x[i] == y[i] || (isnan(x[i]) && isnan(y[i]))))
+            return 0;
+    return 1;
+}
+
+/* each against the loop or the dense product it stands for: the same
+   numbers (the sign of a zero may differ: the terms left out are zeros) */
+static void section_forms(void)
+{
+    __builtin_cpu_init();
+    int has[3] = {1, __builtin_cpu_supports("avx2"), __builtin_cpu_supports("avx512f")};
+    static const char *const kinds[3] = {"mv_dot_blocks = the dot's loop",
+                                         "mv_gpe_blocks = mv_gp_dense, a even",
+                                         "mv_gpo_blocks = mv_gp_dense, a odd"};
+    static const int widths[3] = {2, 4, 8};
+    tk_rng r = {17};
+    for (int kind = 0; kind < 3; kind++)
+        for (int w = 0; w < 3; w++) {
+            tk_check c = has[w]
+                           ? tk_beginf(0, "%s, width %d (10^4 pairs)", kinds[kind], widths[w])
+                           : tk_beginf(0, "%s, width %d: not on this CPU, not run", kinds[kind], widths[w]);
+            for (int n = 0; has[w] && n < 10000; n++) {
+                double a[32], b[32], want[32], got[32];
+                for (int i = 0; i < 32; i++) {
+                    a[i] = coef(&r);
+                    b[i] = coef(&r);
+                    if (kind > 0 && ga_blade_grade(i) % 2 != kind - 1)
+                        a[i] = 0.0; /* a of the parity the form reads */
+                }
+                if (kind == 0)
+                    dot_loop(a, b, want);
+                else
+                    mv_gp_dense(a, b, want);
+                if (w == 0)
+                    forms2(kind, a, b, got);
+                else if (w == 1)
+                    forms4(kind, a, b, got);
+                else
+                    forms8(kind, a, b, got);
+                tk_add_bool(&c, same_numbers(got, want));
+            }
+            tk_end(&c);
+        }
+}
+#endif
+
 static const tk_section sections[] = {
     {"blocks", section_blocks, 0},
+#ifdef GA_DENSE_BLOCKS
+    {"forms", section_forms, 0},
+#endif
 };
 
 int main(int argc, char **argv)

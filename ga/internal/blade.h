@@ -15,7 +15,11 @@ static const unsigned char gabl_mask[32] = {0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 
 static const unsigned char gabl_index_of[32] = {0, 1, 2,  6,  3,  7,  10, 16, 4,  8,  11, 17, 13, 19, 22, 26,
                                                 5, 9, 12, 18, 14, 20, 23, 27, 15, 21, 24, 28, 25, 29, 30, 31};
 
-static inline int gabl_popcount5(unsigned m) { return __builtin_popcount(m); }
+/* the number of vectors of a blade (mask < 32): a table, since without
+   -mpopcnt __builtin_popcount is a call into libgcc */
+static const unsigned char gabl_bits[32] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4,
+                                            1, 2, 2, 3, 2, 3, 3, 4, 2, 3, 3, 4, 3, 4, 4, 5};
+static inline int gabl_popcount5(unsigned m) { return gabl_bits[m & 31u]; }
 
 /* Whether blade i is A e4 for a blade A without e4, e5: then A e5 is blade
    i + 1 in the canonical order (the pair A ^ n, A ^ nbar) */

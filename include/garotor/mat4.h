@@ -37,6 +37,13 @@ extern "C" {
 
 /** The identity I. */
 GA_API ga_mat4 ga_mat4_identity(void);
+/** The points in[0], ..., in[n - 1] moved by the affine map of m (its last
+ *  row is not read) into out[0..n - 1]: for x = in[i],
+ *  out[i].x = ((m0 x.x + m1 x.y) + m2 x.z) + m3, and rows 1 and 2 alike, in
+ *  that order. out may be in (the same array); other overlaps are not
+ *  allowed. GA_ERR_ARG where in or out is NULL (nothing written); no other
+ *  status: NaN and Inf propagate. */
+GA_API GA_NODISCARD ga_status ga_mat4_apply_many(ga_mat4 m, const ga_vec3 *in, size_t n, ga_vec3 *out);
 
 /** The product a*b (b acts first, then a). */
 GA_API ga_mat4 ga_mat4_mul(ga_mat4 a, ga_mat4 b);

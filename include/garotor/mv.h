@@ -98,6 +98,21 @@ GA_API ga_mv ga_mv_dot(ga_mv a, ga_mv b);
  *  (a scalar's inner product with anything is 0); clifford's (Python) `|`. */
 GA_API ga_mv ga_mv_ip(ga_mv a, ga_mv b);
 
+/* ---- sparse geometric products -------------------------------------------
+ * The geometric product of the parts of a and b of the grades named (their
+ * other coefficients are not read), computing only the terms those grades
+ * have, each coefficient summed in ga_mv_gp's order: for finite inputs the
+ * numbers of ga_mv_gp of those parts, bit for bit, but the sign of a zero
+ * coefficient. No status. */
+/** <a>_even <b>_1: a rotor (or any even multivector) times a vector (grades
+ *  1, 3 and 5 of the result; the others are 0). */
+GA_API ga_mv ga_mv_gp_even_vector(ga_mv a, ga_mv b);
+/** <a>_1 <b>_1: a vector times a vector (grades 0 and 2). */
+GA_API ga_mv ga_mv_gp_vector_vector(ga_mv a, ga_mv b);
+/** <a>_even <b>_even: the product of two rotors of G(4,1) as full
+ *  multivectors (grades 0, 2 and 4). */
+GA_API ga_mv ga_mv_gp_even_even(ga_mv a, ga_mv b);
+
 /* ---- involutions and grades ------------------------------------------- */
 /** Reverse ~a: a grade-k part is multiplied by (-1)^(k(k-1)/2). */
 GA_API ga_mv ga_mv_reverse(ga_mv a);
@@ -282,7 +297,10 @@ GA_API GA_NODISCARD ga_status ga_mv_sqrt(ga_mv R, ga_mv *out);
  *  docs/conventions.md states the convention. No status. */
 GA_API ga_mv ga_mv_regressive(ga_mv a, ga_mv b);
 /** The commutator product a x b = (a b - b a) / 2 (for bivectors
- *  the Lie bracket of the rotors' algebra, a bivector again). No status. */
+ *  the Lie bracket of the rotors' algebra, a bivector again), summed over
+ *  the pairs of blades that anticommute (the others cancel exactly), each
+ *  term once: one rounding per term, not the numbers of the difference
+ *  (a b - b a) / 2 computed as written. No status. */
 GA_API ga_mv ga_mv_commutator(ga_mv a, ga_mv b);
 /** The projection of a blade A onto an invertible blade B, (A _| B) _| B^-1
  *  (DFM §3.6; for blades equal to (A _| B) B^-1): the part of A in B's

@@ -144,6 +144,17 @@ GA_API GA_NODISCARD ga_status ga_rotor_normalize(ga_rotor r, ga_rotor *out);
  *  |q|^2. */
 GA_API ga_vec3 ga_rotor_apply(ga_rotor r, ga_vec3 x);
 
+/** The points in[0], ..., in[n - 1] moved by r into out[0..n - 1]: r's
+ *  matrix once, then the 3 x 4 product per point, so out is, bit for bit,
+ *  what ga_mat4_apply_many(ga_rotor_to_mat4(r), in, n, out) writes. Against
+ *  ga_rotor_apply (another order of the same arithmetic), for r on the group
+ *  (ga_rotor_check) each coordinate of out[i] is within
+ *  32 u (|x|_1 + |t|_inf) of ga_rotor_apply(r, in[i]), u = DBL_EPSILON,
+ *  x = in[i], t = ga_rotor_to_translation(r). out may be in (the same
+ *  array); other overlaps are not allowed. GA_ERR_ARG where in or out is
+ *  NULL (nothing written); no other status: NaN and Inf propagate. */
+GA_API GA_NODISCARD ga_status ga_rotor_apply_many(ga_rotor r, const ga_vec3 *in, size_t n, ga_vec3 *out);
+
 /** R X ~R for any conformal object X: the rotation q X ~q of R = T_t q
  *  through the geometric product, then the translation by t carried exactly
  *  and rounded once (no cancellation of t^2 terms however far R reaches). */

@@ -27,6 +27,13 @@ extern "C" {
  *  not). GA_ERR_NOTFINITE on NaN/Inf; GA_ERR_ARG when V has both even and
  *  odd parts; GA_ERR_SINGULAR when V has no inverse (ga_mv_inverse). */
 GA_API GA_NODISCARD ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out);
+/** ga_versor_apply of V on each of in[0], ..., in[n - 1] into out[0..n - 1]:
+ *  V's checks and inverse once, then each sandwich; out[i] is, bit for bit,
+ *  what ga_versor_apply(V, in[i], &out[i]) writes. out may be in (the same
+ *  array); other overlaps are not allowed. GA_ERR_ARG where in or out is
+ *  NULL, GA_ERR_NOTFINITE where V or any in[i] has a NaN or Inf, and V's
+ *  statuses of ga_versor_apply; nothing is written on any error. */
+GA_API GA_NODISCARD ga_status ga_versor_apply_many(ga_mv V, const ga_mv *in, size_t n, ga_mv *out);
 
 /** Reflection in the plane n.x = d (n need not be unit): the dual plane
  *  vector n + d e_inf (odd). */

@@ -329,10 +329,16 @@ def test_products_through_the_module():
     ai = a.inverse()
     assert a ** -2 == ai * ai and a / b == a * b.inverse()
     assert np.max(np.abs(np.asarray(a * ai - 1))) < 1e-12
-    # the regressive product is the dual's outer product undualised, the
-    # commutator (a b - b a) / 2: both bit for bit
+    # the regressive product is the dual's outer product undualised, bit for
+    # bit; the commutator is (a b - b a) / 2 summed over the anticommuting
+    # blade pairs, each once (include/garotor/mv.h): within 64 u |a|_1 |b|_1
+    # of the difference as written (every term of a blade is at most
+    # |a_i| |b_j|), and antisymmetric bit for bit
     assert a & b == (a.dual() ^ b.dual()).undual()
-    assert a.commutator(b) == (a * b - b * a) / 2
+    diff = np.asarray(a.commutator(b) - (a * b - b * a) / 2)
+    bound = 64 * np.finfo(float).eps * np.sum(np.abs(np.asarray(a))) * np.sum(np.abs(np.asarray(b)))
+    assert np.max(np.abs(diff)) <= bound
+    assert a.commutator(b) == -b.commutator(a)
     # e1 projected onto the e1 e2 plane; e1 + e3 rejected from it
     B = garotor.e1 ^ garotor.e2
     assert (garotor.e1 + garotor.e3).project(B) == garotor.e1
