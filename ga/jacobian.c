@@ -49,8 +49,7 @@ static m3 m3_comb(double id, int n, const double *c, const m3 *a)
 {
     m3 s = {{id, 0, 0, 0, id, 0, 0, 0, id}};
     for (int k = 0; k < n; k++)
-        for (int i = 0; i < 9; i++)
-            s.m[i] += c[k] * a[k].m[i];
+        for (int i = 0; i < 9; i++) s.m[i] += c[k] * a[k].m[i];
     return s;
 }
 
@@ -58,8 +57,7 @@ static m3 m3_transpose(m3 a)
 {
     m3 t;
     for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            t.m[3 * i + j] = a.m[3 * j + i];
+        for (int j = 0; j < 3; j++) t.m[3 * i + j] = a.m[3 * j + i];
     return t;
 }
 
@@ -81,15 +79,13 @@ static ga_mat6 m6_identity(void)
 {
     ga_mat6 o;
     memset(&o, 0, sizeof o);
-    for (int i = 0; i < 6; i++)
-        o.m[7 * i] = 1.0;
+    for (int i = 0; i < 6; i++) o.m[7 * i] = 1.0;
     return o;
 }
 
 static ga_mat6 m6_neg(ga_mat6 a)
 {
-    for (int i = 0; i < 36; i++)
-        a.m[i] = -a.m[i];
+    for (int i = 0; i < 36; i++) a.m[i] = -a.m[i];
     return a;
 }
 
@@ -180,8 +176,7 @@ static ga_status jac_inverse(ga_twist xi, double sgn, ga_mat6 *out)
     const m3 mw[2] = {W, m3_mul(W, W)};
     m3 ji = m3_comb(1.0, 2, c, mw);
     m3 lower = m3_mul(m3_mul(ji, q), ji);
-    for (int i = 0; i < 9; i++)
-        lower.m[i] = -lower.m[i];
+    for (int i = 0; i < 9; i++) lower.m[i] = -lower.m[i];
     ga_mat6 r = m6_blocks(ji, lower, ji);
     if (!m6_finite(&r))
         return GA_ERR_DOMAIN;
@@ -212,8 +207,7 @@ ga_mat6 ga_rotor_adjoint_matrix(ga_rotor r) { return ga_se3_adjoint_matrix(ga_ro
 static ga_mat6 adjoint_inv(ga_mat4 m)
 {
     m3 Rt = m3_transpose(rot_of(m)), c = m3_mul(Rt, m3_skew(m.m[3], m.m[7], m.m[11]));
-    for (int i = 0; i < 9; i++)
-        c.m[i] = -c.m[i];
+    for (int i = 0; i < 9; i++) c.m[i] = -c.m[i];
     return m6_blocks(Rt, c, Rt);
 }
 

@@ -169,7 +169,8 @@ PyMODINIT_FUNC PyInit_garotor(void)
     if (!gpy_error || PyModule_AddObjectRef(m, "Error", gpy_error) < 0 ||
         PyModule_AddObjectRef(m, "Path", (PyObject *)&gpy_PathType) < 0 ||
         PyModule_AddObjectRef(m, "Multivector", (PyObject *)&gpy_MVType) < 0 || gpy_objects_init(m) < 0 ||
-        PyModule_AddStringConstant(m, "__version__", GAROTOR_VERSION_STRING) < 0)
+        PyModule_AddStringConstant(m, "__version__", GAROTOR_VERSION_STRING) < 0 ||
+        PyModule_AddFunctions(m, gpy_jacobian_methods) < 0)
         goto fail;
     for (int i = 1; i < 32; i++) {
         PyObject *b = gpy_mv_new(ga_mv_blade(i));

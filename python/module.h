@@ -11,6 +11,7 @@
  *   multivector.c  the Multivector type
  *   objects.c      Multivector's object methods (meet, join, read-back,
  *                  versors, projections, powers), garotor.Object, the fits
+ *   jacobian.c     the Lie-group Jacobians (gpy_jacobian_methods)
  */
 #ifndef GAROTOR_PYTHON_MODULE_H
 #define GAROTOR_PYTHON_MODULE_H
@@ -68,7 +69,7 @@ void gpy_nonfinite_why(const char *name, PyArrayObject *a, npy_intp flat, char *
 /* ---- the vectorised loop (kernel.c) --------------------------------------- */
 
 #define GPY_MAX_IN 3
-#define GPY_MAX_OUT 32 /* numbers in one element of a result (up: a multivector) */
+#define GPY_MAX_OUT 36 /* numbers in one element of a result (a 6x6 Jacobian) */
 
 typedef struct {
     int ncore;        /* trailing dimensions of one element */
@@ -148,6 +149,10 @@ PyObject *gpy_to_dualquat(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_from_dualquat(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_up(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_down(PyObject *self, PyObject *args, PyObject *kw);
+
+/* ---- Jacobians (jacobian.c): added to the module by PyInit_garotor ---------- */
+
+extern PyMethodDef gpy_jacobian_methods[];
 
 /* ---- Path (path.c) --------------------------------------------------------- */
 

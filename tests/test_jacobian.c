@@ -27,8 +27,7 @@ static ga_mat6 m6_mul(ga_mat6 a, ga_mat6 b)
     for (int i = 0; i < 6; i++)
         for (int j = 0; j < 6; j++) {
             double s = 0;
-            for (int k = 0; k < 6; k++)
-                s += a.m[6 * i + k] * b.m[6 * k + j];
+            for (int k = 0; k < 6; k++) s += a.m[6 * i + k] * b.m[6 * k + j];
             c.m[6 * i + j] = s;
         }
     return c;
@@ -37,16 +36,14 @@ static ga_mat6 m6_mul(ga_mat6 a, ga_mat6 b)
 static double m6_maxabs(ga_mat6 a)
 {
     double m = 0;
-    for (int i = 0; i < 36; i++)
-        m = tk_max(m, fabs(a.m[i]));
+    for (int i = 0; i < 36; i++) m = tk_max(m, fabs(a.m[i]));
     return m;
 }
 
 static double m6_diff(ga_mat6 a, ga_mat6 b)
 {
     double m = 0;
-    for (int i = 0; i < 36; i++)
-        m = tk_max(m, fabs(a.m[i] - b.m[i]));
+    for (int i = 0; i < 36; i++) m = tk_max(m, fabs(a.m[i] - b.m[i]));
     return m;
 }
 
@@ -54,8 +51,7 @@ static ga_mat6 m6_eye(void)
 {
     ga_mat6 e;
     memset(&e, 0, sizeof e);
-    for (int i = 0; i < 6; i++)
-        e.m[7 * i] = 1;
+    for (int i = 0; i < 6; i++) e.m[7 * i] = 1;
     return e;
 }
 
@@ -131,20 +127,18 @@ static void section_exp(void)
         if (tk_norm(xi.w) + tk_norm(xi.v) <= 5.0) {
             /* the definition, summed: term_k = (-ad)^k / (k+1)! */
             ga_mat6 a = ga_twist_ad(xi), term = m6_eye(), sum = m6_eye();
-            for (int i2 = 0; i2 < 36; i2++)
-                a.m[i2] = -a.m[i2];
+            for (int i2 = 0; i2 < 36; i2++) a.m[i2] = -a.m[i2];
             for (int k = 1; k < 80; k++) {
                 term = m6_mul(term, a);
-                for (int i2 = 0; i2 < 36; i2++)
-                    term.m[i2] /= (double)(k + 1);
-                for (int i2 = 0; i2 < 36; i2++)
-                    sum.m[i2] += term.m[i2];
+                for (int i2 = 0; i2 < 36; i2++) term.m[i2] /= (double)(k + 1);
+                for (int i2 = 0; i2 < 36; i2++) sum.m[i2] += term.m[i2];
             }
             tk_add(&ser, m6_diff(sum, jr) / scale);
         }
         ga_twist mx = {{-xi.w.x, -xi.w.y, -xi.w.z}, {-xi.v.x, -xi.v.y, -xi.v.z}};
         tk_add(&sym, m6_diff(ga_twist_jr(mx), jl));
-        tk_add(&ad, m6_diff(m6_mul(ga_se3_adjoint_matrix(e0), jr), jl) / (scale * tk_max(1.0, tk_norm(xi.v))));
+        tk_add(&ad,
+               m6_diff(m6_mul(ga_se3_adjoint_matrix(e0), jr), jl) / (scale * tk_max(1.0, tk_norm(xi.v))));
         ga_mat6 jri, jli;
         int s1 = ga_twist_jr_inverse(xi, &jri), s2 = ga_twist_jl_inverse(xi, &jli);
         tk_add_status(&sta, s1, GA_OK);
@@ -271,10 +265,8 @@ static void section_group(void)
                     jacobian(op, arg, 1, a, b, p, side, Jr);
                     int cols = op == OP_ACT && arg == 1 ? 3 : 6;
                     double scale = 1.0;
-                    for (int i2 = 0; i2 < rows * cols; i2++)
-                        scale = tk_max(scale, fabs(Jm[i2]));
-                    for (int i2 = 0; i2 < rows * cols; i2++)
-                        tk_add(&agree, fabs(Jm[i2] - Jr[i2]) / scale);
+                    for (int i2 = 0; i2 < rows * cols; i2++) scale = tk_max(scale, fabs(Jm[i2]));
+                    for (int i2 = 0; i2 < rows * cols; i2++) tk_add(&agree, fabs(Jm[i2] - Jr[i2]) / scale);
                     for (int k = 0; k < cols; k++) {
                         double dp[6], dm[6];
                         for (int sg = 0; sg < 2; sg++) {
@@ -293,8 +285,7 @@ static void section_group(void)
                             }
                             double v[6];
                             if (value(op, a2, b2, p2, &f, v))
-                                for (int i2 = 0; i2 < rows; i2++)
-                                    out[i2] = v[i2] - v0[i2];
+                                for (int i2 = 0; i2 < rows; i2++) out[i2] = v[i2] - v0[i2];
                             else
                                 minus(f0, f, side, out);
                         }
@@ -326,7 +317,8 @@ static void section_statuses(void)
     ga_rotor rr = ga_rotor_exp(ga_twist_to_generator(below)), rbad = rr;
     bad.m[0] += 1e-6;
     rbad.s += 1e-5;
-    tk_expect_status("a side that is neither: GA_ERR_ARG", ga_se3_jac_inverse(m, (ga_jac_side)7, &j), GA_ERR_ARG);
+    tk_expect_status("a side that is neither: GA_ERR_ARG", ga_se3_jac_inverse(m, (ga_jac_side)7, &j),
+                     GA_ERR_ARG);
     tk_expect_status("rotor side 2: GA_ERR_ARG", ga_rotor_jac_log(rr, (ga_jac_side)2, &j), GA_ERR_ARG);
     tk_expect_status("matrix off SE(3) by 1e-6: GA_ERR_NOTRIGID",
                      ga_se3_jac_compose(m, bad, GA_JAC_RIGHT, &j, &j2), GA_ERR_NOTRIGID);
@@ -335,7 +327,8 @@ static void section_statuses(void)
     tk_expect_status("act on a NaN point: GA_ERR_NOTFINITE",
                      ga_se3_jac_act(m, (ga_vec3){NAN, 0, 0}, GA_JAC_RIGHT, &ja, &jp), GA_ERR_NOTFINITE);
     tk_expect_status("rotor act on an infinite point: GA_ERR_NOTFINITE",
-                     ga_rotor_jac_act(rr, (ga_vec3){0, INFINITY, 0}, GA_JAC_LEFT, &ja, &jp), GA_ERR_NOTFINITE);
+                     ga_rotor_jac_act(rr, (ga_vec3){0, INFINITY, 0}, GA_JAC_LEFT, &ja, &jp),
+                     GA_ERR_NOTFINITE);
     bad = m;
     bad.m[5] = NAN;
     tk_expect_status("log of a NaN matrix: GA_ERR_NOTFINITE", ga_se3_jac_log(bad, GA_JAC_RIGHT, &j),
