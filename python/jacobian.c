@@ -60,8 +60,14 @@ static PyObject *twist_call(const char *what, int kind, PyObject *args, PyObject
     return gpy_run_kernel(&kc, &xi, out);
 }
 
-static PyObject *py_jr(PyObject *s, PyObject *a, PyObject *k) { return (void)s, twist_call("jr", T_JR, a, k); }
-static PyObject *py_jl(PyObject *s, PyObject *a, PyObject *k) { return (void)s, twist_call("jl", T_JL, a, k); }
+static PyObject *py_jr(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, twist_call("jr", T_JR, a, k);
+}
+static PyObject *py_jl(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, twist_call("jl", T_JL, a, k);
+}
 static PyObject *py_jr_inverse(PyObject *s, PyObject *a, PyObject *k)
 {
     return (void)s, twist_call("jr_inverse", T_JR_INV, a, k);
@@ -70,7 +76,10 @@ static PyObject *py_jl_inverse(PyObject *s, PyObject *a, PyObject *k)
 {
     return (void)s, twist_call("jl_inverse", T_JL_INV, a, k);
 }
-static PyObject *py_ad(PyObject *s, PyObject *a, PyObject *k) { return (void)s, twist_call("ad", T_AD, a, k); }
+static PyObject *py_ad(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, twist_call("ad", T_AD, a, k);
+}
 
 /* ---- rigid motions ----------------------------------------------------------- */
 
@@ -113,7 +122,9 @@ static int k_group(void *ctx, const double *const *in, double *out, npy_intp k)
         st = c->rotor ? ga_rotor_jac_compose(ra, rb, c->side, &j1, &j2)
                       : ga_se3_jac_compose(a, b, c->side, &j1, &j2);
         break;
-    case G_INVERSE: st = c->rotor ? ga_rotor_jac_inverse(ra, c->side, &j1) : ga_se3_jac_inverse(a, c->side, &j1); break;
+    case G_INVERSE:
+        st = c->rotor ? ga_rotor_jac_inverse(ra, c->side, &j1) : ga_se3_jac_inverse(a, c->side, &j1);
+        break;
     case G_BETWEEN:
         st = c->rotor ? ga_rotor_jac_between(ra, rb, c->side, &j1, &j2)
                       : ga_se3_jac_between(a, b, c->side, &j1, &j2);

@@ -1,6 +1,7 @@
 /* tools/main.c: the garotor command line: dispatch, options, help.
  * The reference for every command and option is docs/tool.md. */
 #include "cli.h"
+#include "eval.h"
 
 #include <garotor/version.h>
 
@@ -130,6 +131,7 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  log      rigid motions to their principal twists\n"
                             "  interp   sample a path through key poses\n"
                             "  versor   exp, log and action of general rotors and versors\n"
+                            "  eval     APE and RPE of an estimated trajectory against a reference\n"
                             "\n"
                             "garotor COMMAND --help shows a command's options;\n"
                             "garotor --version prints the version.\n"
@@ -430,6 +432,8 @@ int main(int argc, char **argv)
         printf("garotor %s\n", GAROTOR_VERSION_STRING);
         return flushed(0);
     }
+    if (argc > 1 && strcmp(argv[1], "eval") == 0) /* its own options: tools/cmd_eval.c */
+        return flushed(cmd_eval_main(argc - 2, argv + 2));
     if (argc > 1 && argv[1][0] != '-') {
         size_t k = 0;
         while (k < NCMD && strcmp(argv[1], commands[k].name) != 0) k++;
