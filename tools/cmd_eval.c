@@ -51,18 +51,19 @@ typedef struct {
 
 static int usage(const char *what, const char *arg)
 {
-    fprintf(stderr, "garotor eval: %s%s%s%s\n(garotor eval --help shows the options)\n", what, arg ? " '" : "",
-            arg ? arg : "", arg ? "'" : "");
+    fprintf(stderr, "garotor eval: %s%s%s%s\n(garotor eval --help shows the options)\n", what,
+            arg ? " '" : "", arg ? arg : "", arg ? "'" : "");
     return 2;
 }
 
 static int parse(int argc, char **argv, ev_opts *o)
 {
-    static const char *const names[] = {"--ref",   "--est",       "--out",       "--max-diff", "--offset",
-                                        "--align", "--delta",     "--angle",     "--max-line", "--all-pairs",
-                                        "--header", "--normalize"};
-    const char **slot[9] = {&o->ref,   &o->est,        &o->out,        &o->max_diff_text, &o->offset_text,
-                            &o->align_name, &o->delta_text, &o->angle_name, &o->max_line_text};
+    static const char *const names[] = {"--ref",      "--est",       "--out",    "--max-diff",
+                                        "--offset",   "--align",     "--delta",  "--angle",
+                                        "--max-line", "--all-pairs", "--header", "--normalize"};
+    const char **slot[9] = {&o->ref,           &o->est,         &o->out,
+                            &o->max_diff_text, &o->offset_text, &o->align_name,
+                            &o->delta_text,    &o->angle_name,  &o->max_line_text};
     int *flag[3] = {&o->all_pairs, &o->header, &o->normalize};
     unsigned seen = 0;
     for (int i = 0; i < argc; i++) {
@@ -137,25 +138,15 @@ static int parse(int argc, char **argv, ev_opts *o)
 
 /* ---- reading ------------------------------------------------------------------ */
 
-typedef struct {
-    tio_items in;
-    double *t; /* times relative to the reference's first stamp (+ --offset) */
-    ga_mat4 *m;
-    size_t n;
-} traj;
-
-static void traj_free(traj *tr)
+void ev_traj_free(ev_traj *tr)
 {
     tio_free(&tr->in);
     free(tr->t);
     free(tr->m);
 }
 
-/* Read a TUM file: 8 numbers a line, times increasing, unit quaternions.
- * t0 (the reference's first stamp) is set from this file when it is NULL's
- * target is unset (*have0 == 0); shift is added to every time. */
-static int traj_read(const char *path, const ev_opts *o, tt_dec *t0, int *have0, const tt_dec *shift,
-                     traj *tr)
+int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0, const tt_dec *shift,
+                 ev_traj *tr)
 {
     tio_read_opts ro = {o->header, 1, o->max_line};
     if (tio_read_first(path, &ro, &tr->in))
@@ -163,13 +154,13 @@ static int traj_read(const char *path, const ev_opts *o, tt_dec *t0, int *have0,
     const tio_items *f = &tr->in;
     tr->n = f->n;
     if (f->n == 0) {
-        fprintf(stderr, "garotor eval: %s: no poses\n", f->name);
+        fprintf(stderr, "garotor: %s: no poses\n", f->name);
         return -1;
     }
     tr->t = malloc(f->n * sizeof *tr->t);
     tr->m = malloc(f->n * sizeof *tr->m);
     if (!tr->t || !tr->m) {
-        fprintf(stderr, "garotor eval: out of memory\n");
+        fprintf(stderr, "garotor: out of memory\n");
         return -1;
     }
     static tt_dec a, b, d;
@@ -177,7 +168,9 @@ static int traj_read(const char *path, const ev_opts *o, tt_dec *t0, int *have0,
         int c = f->item[i].count;
         if (c != 8)
             return tio_error(f, i, "expected 8 numbers (t x y z qx qy qz qw), found %d%s", c,
-                             c == 7 ? ": is t missing?" : c == 17 ? ": a 4x4 matrix? eval reads TUM poses" : "");
+                             c == 7    ? ": is t missing?"
+                             : c == 17 ? ": a 4x4 matrix? eval reads TUM poses"
+                                       : "");
         const double *v = f->value + f->item[i].first;
         tt_parse(f->first[i], &a);
         if (!*have0) {
@@ -238,17 +231,19 @@ static void put_stats(FILE *fp, const char *title, const char *align, double *er
     }
 }
 
-static int run(const ev_opts *o, traj *ref, traj *est)
+static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
 {
+    ev_read_opts ro = {o->header, o->normalize, o->max_line};
     static tt_dec t0, zero, off;
     int have0 = 0;
     tt_parse("0", &zero);
     tt_parse(o->offset_text ? o->offset_text : "0", &off);
-    if (traj_read(o->ref, o, &t0, &have0, &zero, ref) || traj_read(o->est, o, &t0, &have0, &off, est))
+    if (ev_traj_read(o->ref, &ro, &t0, &have0, &zero, ref) ||
+        ev_traj_read(o->est, &ro, &t0, &have0, &off, est))
         return 2;
     /* evo: the estimate is the long one only when it has strictly more poses */
     int est_long = est->n > ref->n;
-    const traj *sh = est_long ? ref : est, *lg = est_long ? est : ref;
+    const ev_traj *sh = est_long ? ref : est, *lg = est_long ? est : ref;
     size_t n = 0, *is = malloc(sh->n * sizeof *is), *il = malloc(sh->n * sizeof *il);
     ga_mat4 *R = malloc(sh->n * sizeof *R), *E = malloc(sh->n * sizeof *E);
     double *err = malloc(sh->n * sizeof *err);
@@ -314,7 +309,8 @@ static int run(const ev_opts *o, traj *ref, traj *est)
     /* APE: E_i = est_i^-1 ref_i (evo: relative_se3(x_t, x_t*)) */
     for (size_t i = 0; i < n; i++) {
         double d2 = 0;
-        for (int a = 0; a < 3; a++) d2 += (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]) * (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]);
+        for (int a = 0; a < 3; a++)
+            d2 += (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]) * (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]);
         err[i] = sqrt(d2);
     }
     put_stats(fp, "APE w.r.t. translation part (m)", align, err, n);
@@ -368,11 +364,11 @@ int cmd_eval_main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     if (parse(argc, argv, &o))
         return 2;
-    traj ref, est;
+    ev_traj ref, est;
     memset(&ref, 0, sizeof ref);
     memset(&est, 0, sizeof est);
     int rc = run(&o, &ref, &est);
-    traj_free(&ref);
-    traj_free(&est);
+    ev_traj_free(&ref);
+    ev_traj_free(&est);
     return rc;
 }

@@ -2,7 +2,8 @@
  * trajectories associated by time, aligned (Horn's closed form of the
  * Umeyama problem, SE(3) or Sim(3)), and their absolute and relative pose
  * errors in evo's definitions. cmd_eval.c holds the command (options,
- * reading, association, report), eval_metrics.c the numbers. Prefix ev_.
+ * reading, association, report) and the TUM reader `garotor fit` shares,
+ * eval_metrics.c the numbers. Prefix ev_.
  */
 #ifndef GAROTOR_TOOLS_EVAL_H
 #define GAROTOR_TOOLS_EVAL_H
@@ -11,9 +12,38 @@
 
 #include <garotor/garotor.h>
 
+#include "textio.h"
+#include "timetext.h"
+
+/** A TUM trajectory as read (ev_traj_read). */
+typedef struct {
+    tio_items in;
+    double *t; /* times relative to the first stamp given (t0), plus a shift */
+    ga_mat4 *m;
+    size_t n;
+} ev_traj;
+
+/** How a TUM file is read: --header, --normalize, --max-line (0: default). */
+typedef struct {
+    int header, normalize;
+    size_t max_line;
+} ev_read_opts;
+
+/** Read a TUM file (t x y z qx qy qz qw a line, times strictly increasing,
+ *  quaternions unit to 1e-9, or to 1e-3 with normalize, then normalised).
+ *  The times are taken relative to *t0, which is set to this file's first
+ *  stamp when *have0 is 0; shift is added to each (exactly: timetext.h).
+ *  0, or -1 after a message naming the file, the line and the columns. */
+int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0, const tt_dec *shift,
+                 ev_traj *tr);
+void ev_traj_free(ev_traj *tr);
+
 /** The command: argv holds its arguments after the word `eval`; returns the
  *  exit status (0, or 2 after a message). */
 int cmd_eval_main(int argc, char **argv);
+
+/** `garotor fit` (cmd_fit.c), argv after the word `fit`: the exit status. */
+int cmd_fit_main(int argc, char **argv);
 
 /** The statistics evo prints for an error array. */
 typedef struct {

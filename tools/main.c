@@ -132,6 +132,7 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  interp   sample a path through key poses\n"
                             "  versor   exp, log and action of general rotors and versors\n"
                             "  eval     APE and RPE of an estimated trajectory against a reference\n"
+                            "  fit      least-squares B-spline through noisy poses\n"
                             "\n"
                             "garotor COMMAND --help shows a command's options;\n"
                             "garotor --version prints the version.\n"
@@ -434,6 +435,8 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && strcmp(argv[1], "eval") == 0) /* its own options: tools/cmd_eval.c */
         return flushed(cmd_eval_main(argc - 2, argv + 2));
+    if (argc > 1 && strcmp(argv[1], "fit") == 0) /* its own options: tools/cmd_fit.c */
+        return flushed(cmd_fit_main(argc - 2, argv + 2));
     if (argc > 1 && argv[1][0] != '-') {
         size_t k = 0;
         while (k < NCMD && strcmp(argv[1], commands[k].name) != 0) k++;
