@@ -147,14 +147,16 @@ static int band_solve(const double *H, const double *g, size_t n, double mu, dou
     /* L[i*BW + (i - j)] = L(i, j) */
     for (size_t j = 0; j < n; j++) {
         double s = H[j * BW] * (1 + mu) + 1e-12;
-        for (size_t k = j >= BW - 1 ? j - (BW - 1) : 0; k < j; k++) s -= L[j * BW + (j - k)] * L[j * BW + (j - k)];
+        for (size_t k = j >= BW - 1 ? j - (BW - 1) : 0; k < j; k++)
+            s -= L[j * BW + (j - k)] * L[j * BW + (j - k)];
         if (!(s > 0))
             return -1;
         double ljj = sqrt(s);
         L[j * BW] = ljj;
         for (size_t i = j + 1; i < n && i < j + BW; i++) {
             double t = H[j * BW + (i - j)];
-            for (size_t k = i >= BW - 1 ? i - (BW - 1) : 0; k < j; k++) t -= L[i * BW + (i - k)] * L[j * BW + (j - k)];
+            for (size_t k = i >= BW - 1 ? i - (BW - 1) : 0; k < j; k++)
+                t -= L[i * BW + (i - k)] * L[j * BW + (j - k)];
             L[i * BW + (i - j)] = t / ljj;
         }
     }
@@ -285,8 +287,8 @@ int cmd_fit_main(int argc, char **argv)
             fputs(fit_help, stdout);
             return 0;
         }
-    static const char *const names[] = {"--in", "--out", "--spacing", "--smooth", "--controls", "--normalize",
-                                        "--header"};
+    static const char *const names[] = {"--in",       "--out",       "--spacing", "--smooth",
+                                        "--controls", "--normalize", "--header"};
     const char *val[5] = {NULL, NULL, NULL, NULL, NULL};
     int flag[2] = {0, 0};
     unsigned seen = 0;

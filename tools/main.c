@@ -406,11 +406,12 @@ static int flushed(int rc)
 /* argv[1], no command: the command meant, or the input named without one. */
 static int unknown_command(const char *word)
 {
-    const char *name[NCMD];
+    const char *name[NCMD + 2];
     char hint[160];
     struct stat st;
     for (size_t k = 0; k < NCMD; k++) name[k] = commands[k].name;
-    did_you_mean(word, strlen(word), name, (int)NCMD, hint, sizeof hint);
+    name[NCMD] = "eval", name[NCMD + 1] = "fit"; /* dispatched before the table */
+    did_you_mean(word, strlen(word), name, (int)NCMD + 2, hint, sizeof hint);
     if (!hint[0] && stat(word, &st) == 0)
         fprintf(stderr,
                 "garotor: unknown command '%s': a file to read? name the command first: garotor "
