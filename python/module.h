@@ -13,6 +13,7 @@
  *                  versors, projections, powers), garotor.Object, the fits
  *   mvarray.c      the MultivectorArray type and the multivector kernels
  *   ufuncs.c       garotor.ufunc: numpy generalized ufuncs of the kernels
+ *   jacobian.c     the Lie-group Jacobians (gpy_jacobian_methods)
  */
 #ifndef GAROTOR_PYTHON_MODULE_H
 #define GAROTOR_PYTHON_MODULE_H
@@ -70,7 +71,7 @@ void gpy_nonfinite_why(const char *name, PyArrayObject *a, npy_intp flat, char *
 /* ---- the vectorised loop (kernel.c) --------------------------------------- */
 
 #define GPY_MAX_IN 3
-#define GPY_MAX_OUT 32 /* numbers in one element of a result (up: a multivector) */
+#define GPY_MAX_OUT 36 /* numbers in one element of a result (a 6x6 Jacobian) */
 
 typedef struct {
     int ncore;        /* trailing dimensions of one element */
@@ -172,6 +173,10 @@ PyObject *gpy_to_dualquat(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_from_dualquat(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_up(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_down(PyObject *self, PyObject *args, PyObject *kw);
+
+/* ---- Jacobians (jacobian.c): added to the module by PyInit_garotor ---------- */
+
+extern PyMethodDef gpy_jacobian_methods[];
 
 /* ---- Path (path.c) --------------------------------------------------------- */
 

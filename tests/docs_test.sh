@@ -34,7 +34,7 @@ export LC_ALL=C
 # ---- 1. the help texts -------------------------------------------------------
 doc=$src/docs/tool.md
 [ -f "$doc" ] || { echo "FAIL: $doc is missing"; exit 1; }
-for c in "" demo exp log interp versor object; do
+for c in "" demo exp log interp versor object eval fit; do
     cmd="garotor${c:+ $c} --help"
     awk -v want="\$ $cmd" '$0 == want { on = 1; next } on && /^```/ { exit } on' "$doc" >"$d/doc"
     [ -s "$d/doc" ] || { fail "docs/tool.md has no block for '$cmd'"; continue; }

@@ -114,6 +114,24 @@ static int c_rotor_log(void) { return ga_rotor_log(R, OUT(0)); }
 static int c_rotor_log_literal(void) { return ga_rotor_log_literal(R, OUT(0)); }
 static int c_rotor_to_screw(void) { return ga_rotor_to_screw(R, OUT(0)); }
 static int c_rotor_from_mat4(void) { return ga_rotor_from_mat4(M, OUT(0)); }
+static int c_twist_jr_inverse(void)
+{
+    return ga_twist_jr_inverse((ga_twist){{0.1, 0.2, 0.3}, {1, 2, 3}}, OUT(0));
+}
+static int c_twist_jl_inverse(void)
+{
+    return ga_twist_jl_inverse((ga_twist){{0.1, 0.2, 0.3}, {1, 2, 3}}, OUT(0));
+}
+static int c_rotor_jac_compose(void) { return ga_rotor_jac_compose(R, R, GA_JAC_RIGHT, OUT(0), OUT(1)); }
+static int c_rotor_jac_inverse(void) { return ga_rotor_jac_inverse(R, GA_JAC_LEFT, OUT(0)); }
+static int c_rotor_jac_between(void) { return ga_rotor_jac_between(R, R, GA_JAC_LEFT, OUT(0), OUT(1)); }
+static int c_rotor_jac_act(void) { return ga_rotor_jac_act(R, va, GA_JAC_RIGHT, OUT(0), OUT(1)); }
+static int c_rotor_jac_log(void) { return ga_rotor_jac_log(R, GA_JAC_RIGHT, OUT(0)); }
+static int c_se3_jac_compose(void) { return ga_se3_jac_compose(M, M, GA_JAC_LEFT, OUT(0), OUT(1)); }
+static int c_se3_jac_inverse(void) { return ga_se3_jac_inverse(M, GA_JAC_RIGHT, OUT(0)); }
+static int c_se3_jac_between(void) { return ga_se3_jac_between(M, M, GA_JAC_RIGHT, OUT(0), OUT(1)); }
+static int c_se3_jac_act(void) { return ga_se3_jac_act(M, va, GA_JAC_LEFT, OUT(0), OUT(1)); }
+static int c_se3_jac_log(void) { return ga_se3_jac_log(M, GA_JAC_LEFT, OUT(0)); }
 static int c_rotor_mean(void)
 {
     static const double w[2] = {1.0, 0.5};
@@ -253,6 +271,18 @@ static const api_case cases[] = {
     CASE(rotor_to_screw, 1, 1),
     CASE(rotor_from_mat4, 1, 1),
     CASE(rotor_mean, 3, 4),
+    CASE(twist_jr_inverse, 1, 1),
+    CASE(twist_jl_inverse, 1, 1),
+    CASE(rotor_jac_compose, 2, 3),
+    CASE(rotor_jac_inverse, 1, 1),
+    CASE(rotor_jac_between, 2, 3),
+    CASE(rotor_jac_act, 2, 3),
+    CASE(rotor_jac_log, 1, 1),
+    CASE(se3_jac_compose, 2, 3),
+    CASE(se3_jac_inverse, 1, 1),
+    CASE(se3_jac_between, 2, 3),
+    CASE(se3_jac_act, 2, 3),
+    CASE(se3_jac_log, 1, 1),
     CASE(versor_apply, 1, 1),
     CASE(versor_apply_many, 2, 2),
     CASE(rotor_apply_many, 2, 2),

@@ -1,6 +1,7 @@
 /* tools/main.c: the garotor command line: dispatch, options, help.
  * The reference for every command and option is docs/tool.md. */
 #include "cli.h"
+#include "eval.h"
 
 #include <garotor/version.h>
 
@@ -156,6 +157,8 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
                             "  interp   sample a path through key poses\n"
                             "  versor   exp, log and action of general rotors and versors\n"
                             "  object   build, read back, meet, join and move conformal objects\n"
+                            "  eval     APE and RPE of an estimated trajectory against a reference\n"
+                            "  fit      least-squares B-spline through noisy poses\n"
                             "\n"
                             "garotor COMMAND --help shows a command's options;\n"
                             "garotor --version prints the version.\n"
@@ -431,11 +434,12 @@ static int flushed(int rc)
 /* argv[1], no command: the command meant, or the input named without one. */
 static int unknown_command(const char *word)
 {
-    const char *name[NCMD];
+    const char *name[NCMD + 2];
     char hint[160];
     struct stat st;
     for (size_t k = 0; k < NCMD; k++) name[k] = commands[k].name;
-    did_you_mean(word, strlen(word), name, (int)NCMD, hint, sizeof hint);
+    name[NCMD] = "eval", name[NCMD + 1] = "fit"; /* dispatched before the table */
+    did_you_mean(word, strlen(word), name, (int)NCMD + 2, hint, sizeof hint);
     if (!hint[0] && stat(word, &st) == 0)
         fprintf(stderr,
                 "garotor: unknown command '%s': a file to read? name the command first: garotor "
@@ -458,6 +462,10 @@ int main(int argc, char **argv)
         printf("garotor %s\n", GAROTOR_VERSION_STRING);
         return flushed(0);
     }
+    if (argc > 1 && strcmp(argv[1], "eval") == 0) /* its own options: tools/cmd_eval.c */
+        return flushed(cmd_eval_main(argc - 2, argv + 2));
+    if (argc > 1 && strcmp(argv[1], "fit") == 0) /* its own options: tools/cmd_fit.c */
+        return flushed(cmd_fit_main(argc - 2, argv + 2));
     if (argc > 1 && argv[1][0] != '-') {
         size_t k = 0;
         while (k < NCMD && strcmp(argv[1], commands[k].name) != 0) k++;

@@ -22,6 +22,7 @@
  *   group.h      the Lie-group interface the schemes are written against
  *   path.h       interpolation schemes through key poses, and their evaluators
  *   fit.h        least-squares spheres, circles, planes and lines through points
+ *   jacobian.h   Lie-group Jacobians of rigid motions (manif, gtsam, Sophus)
  */
 #ifndef GAROTOR_H
 #define GAROTOR_H
@@ -39,5 +40,6 @@
 #include "group.h"
 #include "path.h"
 #include "fit.h"
+#include "jacobian.h"
 
 #endif

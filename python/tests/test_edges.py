@@ -73,6 +73,24 @@ def array_calls(rng):
             (f"apply/{g}:T", "T", T, lambda a, g=g: garotor.apply(a, x, g)),
             (f"apply/{g}:points", "points", x, lambda a, g=g: garotor.apply(T, a, g)),
         ]
+    # the Jacobians (python/jacobian.c): twists, and rigid motions on cga and
+    # matrix; a pair of Jacobians as one array of both's numbers
+    def both(r):
+        return np.concatenate([np.ravel(j) for j in r])
+
+    calls += [(f, "xi", xi, getattr(garotor, f)) for f in ("jr", "jl", "jr_inverse", "jl_inverse", "ad")]
+    for g in ("cga", "matrix"):
+        calls += [
+            (f"adjoint/{g}", "T", T, lambda a, g=g: garotor.adjoint(a, g)),
+            (f"jac_compose/{g}:A", "A", T, lambda a, g=g: both(garotor.jac_compose(a, T, g))),
+            (f"jac_compose/{g}:B", "B", T, lambda a, g=g: both(garotor.jac_compose(T, a, g, "left"))),
+            (f"jac_inverse/{g}", "T", T, lambda a, g=g: garotor.jac_inverse(a, g)),
+            (f"jac_between/{g}:A", "A", T, lambda a, g=g: both(garotor.jac_between(a, T, g, "left"))),
+            (f"jac_between/{g}:B", "B", T, lambda a, g=g: both(garotor.jac_between(T, a, g))),
+            (f"jac_act/{g}:T", "T", T, lambda a, g=g: both(garotor.jac_act(a, x, g))),
+            (f"jac_act/{g}:points", "points", x, lambda a, g=g: both(garotor.jac_act(T, a, g, "left"))),
+            (f"jac_log/{g}", "T", T, lambda a, g=g: garotor.jac_log(a, g)),
+        ]
     calls += [
         ("from_quat:q", "q", q, lambda a: garotor.from_quat(a, x)),
         ("from_quat:t", "t", x, lambda a: garotor.from_quat(q, a)),

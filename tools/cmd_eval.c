@@ -1,0 +1,374 @@
+/* tools/cmd_eval.c: `garotor eval` (docs/tool.md, "garotor eval"): read a
+ * reference and an estimated trajectory (TUM: t x y z qx qy qz qw a line, as
+ * `interp --format pose` reads keys), associate them by time as evo does
+ * (evo.core.sync: each stamp of the shorter one to the nearest of the
+ * other, kept within --max-diff), align (Umeyama: SE(3) or Sim(3)), and
+ * report the absolute and relative pose errors, translation and rotation
+ * parts, with evo's statistics (evo.core.metrics). Everything is read and
+ * computed before the report is written; an error names the file and the
+ * line and leaves nothing behind (exit status 2).
+ */
+#include "eval.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "textio.h"
+#include "timetext.h"
+
+static const char eval_help[] =
+    "usage: garotor eval --ref FILE --est FILE [OPTIONS]\n"
+    "Compare an estimated trajectory with a reference, as evo_ape and evo_rpe do:\n"
+    "each file has one pose a line, t x y z qx qy qz qw (TUM), t increasing.\n"
+    "The poses are associated by time (each stamp of the file with fewer poses to\n"
+    "the nearest of the other), optionally aligned, and the absolute (APE) and\n"
+    "relative (RPE) pose errors reported: translation part (m) and rotation angle,\n"
+    "each as max, mean, median, min, rmse, sse and std.\n"
+    "  --ref FILE, --est FILE   the reference and the estimate\n"
+    "  --max-diff S        largest time difference of an associated pair (default 0.01)\n"
+    "  --offset S          added to the estimate's times before associating (default 0)\n"
+    "  --align none|se3|sim3    Umeyama alignment of the estimate onto the reference:\n"
+    "                      none (default), rotation and translation, or with scale\n"
+    "  --delta N           RPE between pairs N poses apart (default 1)\n"
+    "  --all-pairs         RPE over every pair (i, i+N), not consecutive ones\n"
+    "  --angle deg|rad     the unit of rotation angles (default deg)\n"
+    "  --normalize         accept quaternions up to 1e-3 from unit norm, normalised\n"
+    "  --out FILE          the report (default standard output)\n"
+    "  --header            skip the first line of each file (a CSV header)\n"
+    "  --max-line N        a line of more than N bytes is an error (default 1048576)\n";
+
+typedef struct {
+    const char *ref, *est, *out, *align_name, *angle_name, *max_line_text;
+    const char *max_diff_text, *offset_text, *delta_text;
+    double max_diff;
+    long delta;
+    int all_pairs, header, normalize, align, scale, degrees;
+    size_t max_line;
+} ev_opts;
+
+static int usage(const char *what, const char *arg)
+{
+    fprintf(stderr, "garotor eval: %s%s%s%s\n(garotor eval --help shows the options)\n", what,
+            arg ? " '" : "", arg ? arg : "", arg ? "'" : "");
+    return 2;
+}
+
+static int parse(int argc, char **argv, ev_opts *o)
+{
+    static const char *const names[] = {"--ref",      "--est",       "--out",    "--max-diff",
+                                        "--offset",   "--align",     "--delta",  "--angle",
+                                        "--max-line", "--all-pairs", "--header", "--normalize"};
+    const char **slot[9] = {&o->ref,           &o->est,         &o->out,
+                            &o->max_diff_text, &o->offset_text, &o->align_name,
+                            &o->delta_text,    &o->angle_name,  &o->max_line_text};
+    int *flag[3] = {&o->all_pairs, &o->header, &o->normalize};
+    unsigned seen = 0;
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i], *eq = strchr(a, '=');
+        size_t len = eq ? (size_t)(eq - a) : strlen(a);
+        int k = 0;
+        while (k < 12 && !(strlen(names[k]) == len && strncmp(a, names[k], len) == 0)) k++;
+        if (k == 12)
+            return usage("unknown option", a);
+        if (seen >> k & 1)
+            return usage("option given twice", names[k]);
+        seen |= 1u << k;
+        if (k >= 9) {
+            if (eq)
+                return usage("takes no value:", a);
+            *flag[k - 9] = 1;
+            continue;
+        }
+        if (eq)
+            *slot[k] = eq + 1;
+        else if (i + 1 < argc)
+            *slot[k] = argv[++i];
+        else
+            return usage("missing value for", a);
+    }
+    if (!o->ref || !o->est)
+        return usage(!o->ref ? "--ref FILE is required (the reference trajectory)"
+                             : "--est FILE is required (the estimated trajectory)",
+                     NULL);
+    char *end;
+    o->max_diff = 0.01;
+    if (o->max_diff_text) {
+        o->max_diff = strtod(o->max_diff_text, &end);
+        if (end == o->max_diff_text || *end || !(o->max_diff >= 0) || !isfinite(o->max_diff))
+            return usage("--max-diff needs a number of seconds >= 0, not", o->max_diff_text);
+    }
+    if (o->offset_text) {
+        double x = strtod(o->offset_text, &end);
+        if (end == o->offset_text || *end || !isfinite(x))
+            return usage("--offset needs a finite number of seconds, not", o->offset_text);
+    }
+    o->delta = 1;
+    if (o->delta_text) {
+        errno = 0;
+        o->delta = strtol(o->delta_text, &end, 10);
+        if (end == o->delta_text || *end || errno || o->delta < 1)
+            return usage("--delta needs a whole number of poses >= 1, not", o->delta_text);
+    }
+    if (o->max_line_text) {
+        errno = 0;
+        unsigned long long m = strtoull(o->max_line_text, &end, 10);
+        if (end == o->max_line_text || *end || errno || m < 1 || m > TIO_MAX_LINE_MAX ||
+            o->max_line_text[0] == '-')
+            return usage("--max-line needs a whole number of bytes >= 1, not", o->max_line_text);
+        o->max_line = (size_t)m;
+    }
+    const char *al = o->align_name ? o->align_name : "none";
+    if (strcmp(al, "none") == 0)
+        o->align = 0;
+    else if (strcmp(al, "se3") == 0)
+        o->align = 1;
+    else if (strcmp(al, "sim3") == 0)
+        o->align = 1, o->scale = 1;
+    else
+        return usage("--align must be none, se3 or sim3, not", al);
+    const char *an = o->angle_name ? o->angle_name : "deg";
+    if (strcmp(an, "deg") != 0 && strcmp(an, "rad") != 0)
+        return usage("--angle must be deg or rad, not", an);
+    o->degrees = strcmp(an, "deg") == 0;
+    return 0;
+}
+
+/* ---- reading ------------------------------------------------------------------ */
+
+void ev_traj_free(ev_traj *tr)
+{
+    tio_free(&tr->in);
+    free(tr->t);
+    free(tr->m);
+}
+
+int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0, const tt_dec *shift,
+                 ev_traj *tr)
+{
+    tio_read_opts ro = {o->header, 1, o->max_line};
+    if (tio_read_first(path, &ro, &tr->in))
+        return -1;
+    const tio_items *f = &tr->in;
+    tr->n = f->n;
+    if (f->n == 0) {
+        fprintf(stderr, "garotor: %s: no poses\n", f->name);
+        return -1;
+    }
+    tr->t = malloc(f->n * sizeof *tr->t);
+    tr->m = malloc(f->n * sizeof *tr->m);
+    if (!tr->t || !tr->m) {
+        fprintf(stderr, "garotor: out of memory\n");
+        return -1;
+    }
+    static tt_dec a, b, d;
+    for (size_t i = 0; i < f->n; i++) {
+        int c = f->item[i].count;
+        if (c != 8)
+            return tio_error(f, i, "expected 8 numbers (t x y z qx qy qz qw), found %d%s", c,
+                             c == 7    ? ": is t missing?"
+                             : c == 17 ? ": a 4x4 matrix? eval reads TUM poses"
+                                       : "");
+        const double *v = f->value + f->item[i].first;
+        tt_parse(f->first[i], &a);
+        if (!*have0) {
+            *t0 = a;
+            *have0 = 1;
+        }
+        tt_add(&a, shift, 0, &b);
+        tt_add(&b, t0, 1, &d);
+        tr->t[i] = tt_to_double(&d, 0);
+        if (i > 0 && !(tr->t[i] > tr->t[i - 1]))
+            return tio_error(f, i, "column 1: times must increase strictly: %s after %s", f->first[i],
+                             f->first[i - 1]);
+        ga_quat q = {v[7], v[4], v[5], v[6]};
+        double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+        if (o->normalize ? ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &q) != GA_OK : fabs(norm - 1.0) > 1e-9)
+            return tio_error(f, i,
+                             "columns 5-8 (qx qy qz qw): the quaternion has norm %.17g, not 1 (to 1e-9; "
+                             "--normalize accepts up to 1e-3)",
+                             norm);
+        tr->m[i] = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[1], v[2], v[3]}));
+    }
+    return 0;
+}
+
+/* ---- association (evo.core.sync.associate_trajectories) ------------------------- */
+
+/* The index of the time in t[0..n-1] (increasing) nearest x, the lower on a tie. */
+static size_t nearest(const double *t, size_t n, double x)
+{
+    size_t lo = 0, hi = n; /* first index with t >= x */
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (t[mid] < x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo == n)
+        return n - 1;
+    if (lo > 0 && fabs(t[lo - 1] - x) <= fabs(t[lo] - x))
+        return lo - 1;
+    return lo;
+}
+
+/* ---- the report --------------------------------------------------------------- */
+
+static void put_stats(FILE *fp, const char *title, const char *align, double *err, size_t n)
+{
+    ev_stats s;
+    ev_statistics(err, n, &s);
+    const char *name[7] = {"max", "mean", "median", "min", "rmse", "sse", "std"};
+    double v[7] = {s.max, s.mean, s.median, s.min, s.rmse, s.sse, s.std};
+    fprintf(fp, "\n%s\n%s\n\n", title, align);
+    for (int k = 0; k < 7; k++) {
+        char buf[GA_DOUBLE_TEXT_MAX];
+        ga_double_format(v[k] == 0 ? 0.0 : v[k], buf);
+        fprintf(fp, "%10s  %s\n", name[k], buf);
+    }
+}
+
+static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
+{
+    ev_read_opts ro = {o->header, o->normalize, o->max_line};
+    static tt_dec t0, zero, off;
+    int have0 = 0;
+    tt_parse("0", &zero);
+    tt_parse(o->offset_text ? o->offset_text : "0", &off);
+    if (ev_traj_read(o->ref, &ro, &t0, &have0, &zero, ref) ||
+        ev_traj_read(o->est, &ro, &t0, &have0, &off, est))
+        return 2;
+    /* evo: the estimate is the long one only when it has strictly more poses */
+    int est_long = est->n > ref->n;
+    const ev_traj *sh = est_long ? ref : est, *lg = est_long ? est : ref;
+    size_t n = 0, *is = malloc(sh->n * sizeof *is), *il = malloc(sh->n * sizeof *il);
+    ga_mat4 *R = malloc(sh->n * sizeof *R), *E = malloc(sh->n * sizeof *E);
+    double *err = malloc(sh->n * sizeof *err);
+    int rc = 2;
+    if (!is || !il || !R || !E || !err) {
+        fprintf(stderr, "garotor eval: out of memory\n");
+        goto done;
+    }
+    for (size_t i = 0; i < sh->n; i++) {
+        size_t j = nearest(lg->t, lg->n, sh->t[i]);
+        if (fabs(lg->t[j] - sh->t[i]) <= o->max_diff)
+            is[n] = i, il[n] = j, n++;
+    }
+    if (n == 0) {
+        fprintf(stderr,
+                "garotor eval: no pose of %s is within --max-diff %s s of a pose of %s (--offset %s)\n",
+                sh->in.name, o->max_diff_text ? o->max_diff_text : "0.01", lg->in.name,
+                o->offset_text ? o->offset_text : "0");
+        goto done;
+    }
+    for (size_t k = 0; k < n; k++) {
+        R[k] = est_long ? sh->m[is[k]] : lg->m[il[k]];
+        E[k] = est_long ? lg->m[il[k]] : sh->m[is[k]];
+    }
+    double scale = 1.0;
+    const char *align = "(not aligned)";
+    if (o->align) {
+        ga_mat4 T;
+        if (n < 3 || ev_align(R, E, n, o->scale, &T, &scale) != 0) {
+            fprintf(stderr,
+                    "garotor eval: --align %s: the %zu associated positions do not fix an alignment "
+                    "(fewer than 3, or on one line)\n",
+                    o->align_name, n);
+            goto done;
+        }
+        for (size_t k = 0; k < n; k++) {
+            for (int a = 0; a < 3; a++) E[k].m[4 * a + 3] *= scale;
+            E[k] = ga_mat4_mul(T, E[k]);
+        }
+        align = o->scale ? "(with Sim(3) Umeyama alignment)" : "(with SE(3) Umeyama alignment)";
+    }
+    size_t npairs = 0;
+    for (size_t i = 0; i + (size_t)o->delta < n; i += o->all_pairs ? 1 : (size_t)o->delta) npairs++;
+    if (npairs == 0) {
+        fprintf(stderr, "garotor eval: --delta %ld leaves no pair among the %zu associated poses\n", o->delta,
+                n);
+        goto done;
+    }
+    tio_out out = TIO_OUT_NONE;
+    if (tio_out_open(&out, o->out))
+        goto done;
+    FILE *fp = out.fp;
+    fprintf(fp, "compared %zu pose pairs (reference %zu poses, estimate %zu; max time difference %s s)\n", n,
+            ref->n, est->n, o->max_diff_text ? o->max_diff_text : "0.01");
+    if (o->scale) {
+        char buf[GA_DOUBLE_TEXT_MAX];
+        ga_double_format(scale, buf);
+        fprintf(fp, "Sim(3) scale correction %s\n", buf);
+    }
+    const char *unit = o->degrees ? "deg" : "rad";
+    double k = o->degrees ? 180.0 / 3.14159265358979323846 : 1.0;
+    char title[160], rpe_for[96];
+    /* APE: E_i = est_i^-1 ref_i (evo: relative_se3(x_t, x_t*)) */
+    for (size_t i = 0; i < n; i++) {
+        double d2 = 0;
+        for (int a = 0; a < 3; a++)
+            d2 += (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]) * (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]);
+        err[i] = sqrt(d2);
+    }
+    put_stats(fp, "APE w.r.t. translation part (m)", align, err, n);
+    for (size_t i = 0; i < n; i++) {
+        ga_mat4 e = ga_mat4_mul(ga_se3_inverse(E[i]), R[i]);
+        err[i] = k * ev_angle(&e);
+    }
+    snprintf(title, sizeof title, "APE w.r.t. rotation angle (%s)", unit);
+    put_stats(fp, title, align, err, n);
+    /* RPE: E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), Q the reference, P the estimate */
+    ga_mat4 *Ee = malloc(npairs * sizeof *Ee);
+    if (!Ee) {
+        tio_out_discard(&out);
+        fprintf(stderr, "garotor eval: out of memory\n");
+        goto done;
+    }
+    size_t m = 0;
+    for (size_t i = 0; i + (size_t)o->delta < n; i += o->all_pairs ? 1 : (size_t)o->delta) {
+        size_t j = i + (size_t)o->delta;
+        ga_mat4 q = ga_mat4_mul(ga_se3_inverse(R[i]), R[j]), p = ga_mat4_mul(ga_se3_inverse(E[i]), E[j]);
+        Ee[m++] = ga_mat4_mul(ga_se3_inverse(q), p);
+    }
+    snprintf(rpe_for, sizeof rpe_for, "for delta = %ld (frames) using %s pairs", o->delta,
+             o->all_pairs ? "all" : "consecutive");
+    for (size_t i = 0; i < m; i++)
+        err[i] = sqrt(Ee[i].m[3] * Ee[i].m[3] + Ee[i].m[7] * Ee[i].m[7] + Ee[i].m[11] * Ee[i].m[11]);
+    snprintf(title, sizeof title, "RPE w.r.t. translation part (m)\n%s", rpe_for);
+    put_stats(fp, title, align, err, m);
+    for (size_t i = 0; i < m; i++) err[i] = k * ev_angle(&Ee[i]);
+    snprintf(title, sizeof title, "RPE w.r.t. rotation angle (%s)\n%s", unit, rpe_for);
+    put_stats(fp, title, align, err, m);
+    free(Ee);
+    rc = tio_out_close(&out, 1) ? 2 : 0;
+done:
+    free(is);
+    free(il);
+    free(R);
+    free(E);
+    free(err);
+    return rc;
+}
+
+int cmd_eval_main(int argc, char **argv)
+{
+    for (int i = 0; i < argc; i++)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(eval_help, stdout);
+            return 0;
+        }
+    ev_opts o;
+    memset(&o, 0, sizeof o);
+    if (parse(argc, argv, &o))
+        return 2;
+    ev_traj ref, est;
+    memset(&ref, 0, sizeof ref);
+    memset(&est, 0, sizeof est);
+    int rc = run(&o, &ref, &est);
+    ev_traj_free(&ref);
+    ev_traj_free(&est);
+    return rc;
+}
