@@ -70,6 +70,14 @@ def _gufunc(fn: Callable[..., Any], ins: Sequence[tuple[Any, tuple[int, ...], st
         sigs.append(s)
         sizes.update(d)
         arrays.append(_prepare(x, core))
+    if len(arrays) > 1:  # the leading dimensions chunked alike, for apply_gufunc
+        nloop = max(a.ndim - len(c[1]) for a, c in zip(arrays, ins))
+        loop = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[:nloop]
+        pairs: list[Any] = []
+        for j, (a, c) in enumerate(zip(arrays, ins)):
+            k = a.ndim - len(c[1])
+            pairs += [a, loop[nloop - k:] + "".join(chr(ord("a") + 8 * j + i) for i in range(len(c[1])))]
+        arrays = list(da.core.unify_chunks(*pairs)[1])
     osig, osizes = _core(out[1], out[0])
     sizes.update(osizes)
     return da.apply_gufunc(functools.partial(fn, **kw), ",".join(sigs) + "->" + osig, *arrays,
@@ -119,7 +127,7 @@ def _path_call(path: _g.Path, method: str, t: Any, core: tuple[int, ...]) -> da.
     # each worker that samples a block, not once per block
     p = dask.delayed(path, pure=True)
     new = list(range(t.ndim, t.ndim + len(core)))
-    return da.map_blocks(_call_method, t, p, method, dtype=np.float64,
+    return da.map_blocks(_call_method, t, p, method, dtype=np.float64, name=method,
                          chunks=t.chunks + tuple((c,) for c in core), new_axis=new,
                          meta=np.empty((0,) * (t.ndim + len(core)), dtype=np.float64))
 
