@@ -113,12 +113,12 @@ def test_path_at_dask_times(client, rng):
     sampled at shuffled times in chunks: the single-process answer."""
     times = np.cumsum(rng.uniform(0.5, 1.5, size=200))
     K = garotor.exp(rng.normal(size=(200, 6)))
-    for scheme in ("screw", "lihao3", "c2"):
+    for scheme in ("screw", "c2"):
         p = garotor.Path(times, K, scheme=scheme)
-        t = rng.uniform(times[0], times[-1], size=(40, 100))
-        td = da.from_array(t, chunks=(10, 50))
+        t = rng.uniform(times[0], times[-1], size=(20, 100))
+        td = da.from_array(t, chunks=(5, 50))
         got = both_workers(client, lambda: gd.sample(p, td).compute())
-        assert got.shape == (40, 100, 4, 4) and got.tobytes() == p.sample(t).tobytes()
+        assert got.shape == (20, 100, 4, 4) and got.tobytes() == p.sample(t).tobytes()
         assert gd.velocity(p, td).compute().tobytes() == p.velocity(t).tobytes()
         assert gd.acceleration(p, td).compute().tobytes() == p.acceleration(t).tobytes()
 
