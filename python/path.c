@@ -112,8 +112,13 @@ static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme,
         return -1;
     }
     ga_path path;
-    int st = mat4 ? ga_path_init_mat4(g, scheme, n, t, keys, *vel, work, wbytes, &path)
-                  : ga_path_init(g, scheme, n, t, keys, *vel, work, wbytes, &path);
+    int st;
+    /* the build is C only on memory no other thread sees yet (a c2 path of
+       many keys takes a while): without the GIL */
+    Py_BEGIN_ALLOW_THREADS;
+    st = mat4 ? ga_path_init_mat4(g, scheme, n, t, keys, *vel, work, wbytes, &path)
+              : ga_path_init(g, scheme, n, t, keys, *vel, work, wbytes, &path);
+    Py_END_ALLOW_THREADS;
     if (st != GA_OK) {
         PyErr_Format(gpy_error, "Path: cannot build the %s path: %s", ga_scheme_name(scheme),
                      ga_status_string(st));
@@ -383,8 +388,187 @@ static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, c
     return gpy_run_kernel(&kc, &t, out);
 }
 
+/* ---- samples at times in any order ------------------------------------------ */
+
+/* Samples at times that do not increase are taken block by block (SORT_BLOCK
+ * consecutive elements in C order), each block in increasing order of its
+ * times (an index sorted once per block) and each sample written to its own
+ * place in the block: consecutive samples then read the same or neighbouring
+ * segments and the binary search for the segment takes the same branches,
+ * while the block's results (256 kB) stay in the cache (one argsort of the
+ * whole array scatters its writes over the whole result, measured slower than
+ * C order). Each sample is the same call on the same time as in C order
+ * (k_sample), so the results are the same bit for bit. Taken only where every
+ * time is finite and in the path's range (read under the lock, with the
+ * loop), so that no element fails; otherwise, and for an `out` that is not a
+ * C-contiguous aligned native float64 array apart from t, the C-order loop of
+ * gpy_run_kernel runs, with its errors and its `out` as before. */
+#define SORT_BLOCK 2048
+
+typedef struct {
+    double t;
+    npy_intp i;
+} time_index;
+
+/* a[0..n-1] in increasing order of t: quicksort (median of three) down to
+ * 16, then insertion sort; in place, no allocation */
+static void sort_times(time_index *a, npy_intp n)
+{
+    while (n > 16) {
+        npy_intp m = n / 2;
+        time_index tmp;
+#define TI_SWAP(x, y) (tmp = a[x], a[x] = a[y], a[y] = tmp)
+        if (a[m].t < a[0].t)
+            TI_SWAP(m, 0);
+        if (a[n - 1].t < a[m].t) {
+            TI_SWAP(n - 1, m);
+            if (a[m].t < a[0].t)
+                TI_SWAP(m, 0);
+        }
+        double pivot = a[m].t;
+        npy_intp i = 0, j = n - 1;
+        for (;;) {
+            while (a[i].t < pivot)
+                i++;
+            while (pivot < a[j].t)
+                j--;
+            if (i >= j)
+                break;
+            TI_SWAP(i, j);
+            i++;
+            j--;
+        }
+#undef TI_SWAP
+        /* the smaller part first, by recursion; the larger by the loop */
+        npy_intp left = j + 1;
+        if (left < n - left) {
+            sort_times(a, left);
+            a += left;
+            n -= left;
+        } else {
+            sort_times(a + left, n - left);
+            n = left;
+        }
+    }
+    for (npy_intp i = 1; i < n; i++) {
+        time_index x = a[i];
+        npy_intp j = i;
+        for (; j > 0 && x.t < a[j - 1].t; j--) a[j] = a[j - 1];
+        a[j] = x;
+    }
+}
+
+typedef struct {
+    const double *t;
+    npy_intp n;
+    double *res;
+    time_index *block;
+    int ok;
+} sorted_op;
+
+static void sample_in_order(gpy_PathObject *self, sorted_op *op)
+{
+    const ga_path *p = &self->path;
+    double t0, t1;
+    op->ok = ga_path_range(p, &t0, &t1) == GA_OK;
+    for (npy_intp i = 0; op->ok && i < op->n; i++)
+        op->ok = op->t[i] >= t0 && op->t[i] <= t1; /* false for a NaN */
+    for (npy_intp b = 0; op->ok && b < op->n; b += SORT_BLOCK) {
+        npy_intp m = op->n - b < SORT_BLOCK ? op->n - b : SORT_BLOCK;
+        for (npy_intp j = 0; j < m; j++) op->block[j] = (time_index){op->t[b + j], b + j};
+        sort_times(op->block, m);
+        for (npy_intp j = 0; op->ok && j < m; j++) {
+            npy_intp i = op->block[j].i;
+            double e[GA_GROUP_MAX_ELEM];
+            op->ok = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, op->t + i, e) == GA_OK;
+            if (op->ok) {
+                gpy_mat_put(p->group->to_mat4(e), op->res + 16 * i);
+                op->ok = gpy_all_finite(op->res + 16 * i, 16);
+            }
+        }
+    }
+}
+
+/* 1 if o (or NULL) can take the samples of the C-contiguous float64 t
+ * directly: a C-contiguous aligned writeable native float64 array of shape
+ * t.shape + (4, 4) that does not share memory with t */
+static int plain_out(PyObject *o, PyArrayObject *t)
+{
+    if (!o)
+        return 1;
+    if (!PyArray_Check(o))
+        return 0;
+    PyArrayObject *a = (PyArrayObject *)o;
+    int nd = PyArray_NDIM(t);
+    if (PyArray_TYPE(a) != NPY_DOUBLE || !PyArray_ISNBO(PyArray_DESCR(a)->byteorder) ||
+        !PyArray_IS_C_CONTIGUOUS(a) || !PyArray_ISALIGNED(a) || !PyArray_ISWRITEABLE(a) ||
+        PyArray_NDIM(a) != nd + 2 || PyArray_DIM(a, nd) != 4 || PyArray_DIM(a, nd + 1) != 4)
+        return 0;
+    for (int d = 0; d < nd; d++)
+        if (PyArray_DIM(a, d) != PyArray_DIM(t, d))
+            return 0;
+    const char *alo = PyArray_BYTES(a), *ahi = alo + PyArray_NBYTES(a);
+    const char *tlo = PyArray_BYTES(t), *thi = tlo + PyArray_NBYTES(t);
+    return ahi <= tlo || thi <= alo;
+}
+
+/* The samples at t, block by block in increasing order of t, into `out` or a
+ * new array; NULL without an exception where the C-order loop is to run
+ * instead (t in order already, a time it refuses, an `out` it must handle),
+ * NULL with one on an error of Python's (no memory). */
+static PyObject *sample_sorted(gpy_PathObject *self, PyObject *tobj, PyObject *out)
+{
+    PyArrayObject *t = gpy_as_doubles(tobj);
+    if (!t)
+        return NULL;
+    PyObject *ret = NULL;
+    PyArrayObject *res = NULL;
+    time_index *block = NULL;
+    npy_intp n = PyArray_SIZE(t);
+    const double *tv = PyArray_DATA(t);
+    npy_intp i = 1;
+    while (i < n && tv[i] >= tv[i - 1]) /* increasing (a NaN stops it) */
+        i++;
+    if (n < 2 || i == n || !plain_out(out, t))
+        goto done;
+    if (!(block = PyMem_Malloc(SORT_BLOCK * sizeof *block))) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (!out) {
+        npy_intp dims[NPY_MAXDIMS];
+        int nd = PyArray_NDIM(t);
+        memcpy(dims, PyArray_DIMS(t), (size_t)nd * sizeof *dims);
+        dims[nd] = dims[nd + 1] = 4;
+        if (!(res = (PyArrayObject *)PyArray_SimpleNew(nd + 2, dims, NPY_DOUBLE)))
+            goto done;
+    }
+    sorted_op op = {tv, n, PyArray_DATA(out ? (PyArrayObject *)out : res), block, 0};
+    Py_BEGIN_ALLOW_THREADS;
+    PyThread_acquire_lock(self->lock, WAIT_LOCK);
+    sample_in_order(self, &op);
+    PyThread_release_lock(self->lock);
+    Py_END_ALLOW_THREADS;
+    if (op.ok) {
+        ret = out ? out : (PyObject *)res;
+        Py_INCREF(ret);
+    }
+done:
+    PyMem_Free(block);
+    Py_XDECREF(res);
+    Py_DECREF(t);
+    return ret;
+}
+
 static PyObject *Path_sample(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
+    static char *kwlist[] = {"t", "out", NULL};
+    PyObject *t, *out = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !path_ready(self))
+        return NULL;
+    PyObject *r = sample_sorted(self, t, out);
+    if (r || PyErr_Occurred())
+        return r;
     return path_call(self, args, kw, "Path.sample", k_sample, (gpy_core)GPY_CORE2(4, 4, NULL));
 }
 
