@@ -40,7 +40,10 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     PyObject *xo, *to = Py_None, *ko = Py_None;
     if (!PyArg_ParseTuple(args, "sO|OO:c_loop", &kind, &xo, &to, &ko))
         return NULL;
-    int k = strcmp(kind, "exp") == 0 ? 0 : strcmp(kind, "log") == 0 ? 1 : strcmp(kind, "sample") == 0 ? 2 : -1;
+    int k = strcmp(kind, "exp") == 0    ? 0
+          : strcmp(kind, "log") == 0    ? 1
+          : strcmp(kind, "sample") == 0 ? 2
+                                        : -1;
     PyArrayObject *x = doubles(xo), *kt = NULL, *kk = NULL;
     PyObject *ret = NULL;
     double *buf = NULL;
@@ -129,9 +132,15 @@ static PyMethodDef methods[] = {
      "c_loop(kind, x, keytimes=None, keys=None): seconds of the plain C loop (python/bench.py)."},
     {NULL, NULL, 0, NULL}};
 
-static struct PyModuleDef bench_module = {
-    PyModuleDef_HEAD_INIT, "_garotor_bench", "python/bench.py's plain C loop; not part of garotor.", -1, methods,
-    NULL,                  NULL,             NULL,                                                   NULL};
+static struct PyModuleDef bench_module = {PyModuleDef_HEAD_INIT,
+                                          "_garotor_bench",
+                                          "python/bench.py's plain C loop; not part of garotor.",
+                                          -1,
+                                          methods,
+                                          NULL,
+                                          NULL,
+                                          NULL,
+                                          NULL};
 
 PyMODINIT_FUNC PyInit__garotor_bench(void)
 {

@@ -428,10 +428,8 @@ static void sort_times(time_index *a, npy_intp n)
         double pivot = a[m].t;
         npy_intp i = 0, j = n - 1;
         for (;;) {
-            while (a[i].t < pivot)
-                i++;
-            while (pivot < a[j].t)
-                j--;
+            while (a[i].t < pivot) i++;
+            while (pivot < a[j].t) j--;
             if (i >= j)
                 break;
             TI_SWAP(i, j);
