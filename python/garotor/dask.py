@@ -22,6 +22,7 @@ import os
 from typing import Any, Callable, Iterable, Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 import dask
 import dask.array as da
@@ -132,8 +133,8 @@ def _path_call(path: _g.Path, method: str, t: Any, core: tuple[int, ...]) -> da.
                          meta=np.empty((0,) * (t.ndim + len(core)), dtype=np.float64))
 
 
-def _call_method(t: np.ndarray, path: _g.Path, method: str) -> np.ndarray:
-    result: np.ndarray = getattr(path, method)(t)
+def _call_method(t: NDArray[np.float64], path: _g.Path, method: str) -> NDArray[np.float64]:
+    result: NDArray[np.float64] = getattr(path, method)(t)
     return result
 
 
@@ -154,7 +155,7 @@ def acceleration(path: _g.Path, t: Any) -> da.Array:
 
 # ---- pose files: one Path per file ------------------------------------------------
 
-def read_tum(file: str | os.PathLike[str], normalize: bool = True) -> tuple[list[str], np.ndarray]:
+def read_tum(file: str | os.PathLike[str], normalize: bool = True) -> tuple[list[str], NDArray[np.float64]]:
     """A TUM pose file: lines `t tx ty tz qx qy qz qw` ('#' lines and blank
     lines skipped). Returns (stamps, poses): the stamps as written (text) and
     the (n, 7) poses, each quaternion divided by its norm with normalize
@@ -176,7 +177,7 @@ def read_tum(file: str | os.PathLike[str], normalize: bool = True) -> tuple[list
     return stamps, poses
 
 
-def _relative(stamps: Sequence[str]) -> np.ndarray:
+def _relative(stamps: Sequence[str]) -> NDArray[np.float64]:
     """Each stamp minus the first, exactly in decimal, then rounded once to
     a double (as the tool reads times)."""
     with decimal.localcontext() as c:
