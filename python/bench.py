@@ -23,7 +23,7 @@ Tasks: exp and log of --n twists / motions; interpolation of --n samples
 through --keys key poses (garotor: Path(scheme='screw').sample).
 
 Then Path.sample at the same --n times sorted and shuffled (--keys and 100
-times as many keys), and with --dask N: N poses sampled through --keys keys
+times as many keys; CPU time), and with --dask N: N poses sampled through --keys keys
 and summed (only a 4 x 4 comes back) on a distributed.LocalCluster of 2
 worker processes (1 thread each) against the same work in this one process,
 in chunks of 10^6 (the wall time of each, --repeat runs, and the speed-up).
@@ -141,7 +141,7 @@ def main():
         sc = r.get("scipy")
         print(f"{task:8} {r['garotor']:9.1f} {r['c_loop']:9.1f} {r['c_loop'] / r['garotor']:10.2f} "
               + (f"{sc:9.1f} {sc / r['garotor']:14.2f}" if sc else ""))
-    print(f"Path.sample, ns per sample: {'keys':>7} {'sorted':>8} {'shuffled':>9} {'ratio':>6}")
+    print(f"Path.sample, CPU ns/sample:  {'keys':>7} {'sorted':>8} {'shuffled':>9} {'ratio':>6}")
     for keys, r in res["sample_order"].items():
         print(f"{'':28}{keys:7} {r['sorted']:8.1f} {r['shuffled']:9.1f} {r['shuffled'] / r['sorted']:6.2f}")
     if "dask" in res:
@@ -154,7 +154,9 @@ def main():
 def sample_order(a, rng):
     """ns per sample of Path.sample at --n times sorted and shuffled, with
     --keys and 100 times as many keys, into one `out` (first touched before),
-    the runs of the two interleaved, median of --repeat."""
+    the runs of the two interleaved, median of --repeat; CPU time of this
+    process (time.process_time: the call runs in this thread), which other
+    jobs on a shared machine change less than the wall time."""
     res = {}
     out = np.zeros((a.n, 4, 4))
     for keys in (a.keys, 100 * a.keys):
@@ -164,8 +166,10 @@ def sample_order(a, rng):
         ts = rng.permutation(t)
         sorted_s, shuffled_s = [], []
         for _ in range(a.repeat):
-            sorted_s.append(median_time(lambda: path.sample(t, out=out), 1))
-            shuffled_s.append(median_time(lambda: path.sample(ts, out=out), 1))
+            for x, acc in ((t, sorted_s), (ts, shuffled_s)):
+                c0 = time.process_time()
+                path.sample(x, out=out)
+                acc.append(time.process_time() - c0)
         res[keys] = {"sorted": 1e9 * float(np.median(sorted_s)) / a.n,
                      "shuffled": 1e9 * float(np.median(shuffled_s)) / a.n}
     return res

@@ -1,6 +1,6 @@
-"""Issue 30 (docs/python.md): Path.sample at times in any order (sorted block
-by block inside, the results those of C order bit for bit), four threads on
-one Path, the module's version and what it ships (no benchmark helper), and
+"""Issue 30 (docs/python.md): Path.sample at times in any order (the results
+those of one call per time, bit for bit, the errors and `out` of C order),
+four threads on one Path, the module's version and what it ships (no benchmark helper), and
 the benchmark's C loop (_garotor_bench, built beside the module only)."""
 import concurrent.futures
 import pathlib
@@ -25,7 +25,7 @@ def test_sample_any_order_bit_for_bit(rng, scheme):
     times = np.arange(40.0) * 0.5
     p = garotor.Path(times, garotor.exp(rng.normal(size=(40, 6))), scheme=scheme)
     t0, t1 = p.range
-    # more than a block (2048) of shuffled times, a 2-d shape, repeats, the ends
+    # shuffled times, a 2-d shape, repeats, the ends
     t = rng.uniform(t0, t1, size=(3, 1500))
     t[0, :5] = [t1, t0, t1, t0, t1]
     want = one_by_one(p, t)
@@ -34,7 +34,7 @@ def test_sample_any_order_bit_for_bit(rng, scheme):
         want.reshape(-1, 4, 4)[np.argsort(t, axis=None, kind="stable")].reshape(want.shape).tobytes()
     out = np.full(t.shape + (4, 4), 7.0)
     assert p.sample(t, out=out) is out and out.tobytes() == want.tobytes()
-    # an out the sorted loop does not take (Fortran order): C order, the same numbers
+    # an out in Fortran order: the same numbers
     outf = np.asfortranarray(np.full(t.shape + (4, 4), 7.0))
     assert np.array_equal(p.sample(t, out=outf), want)
 
