@@ -1,10 +1,10 @@
-/* python/module.h: what the files of the CPython extension module `garotor`
+/* python/module.h: what the files of the CPython extension module garotor._garotor
  * (docs/python.md) share: the vectorised loop's types (kernel.c), the error
  * helpers, the Path and Multivector types, and the module functions that
  * module.c's table lists. Internal to the module, prefix gpy_; every file of
  * the module includes this header first, for Python.h and numpy's API.
  *
- *   module.c       the module: its function table, PyInit_garotor, _c_loop
+ *   module.c       the module: its function table, PyInit__garotor
  *   kernel.c       errors, array conversion, the broadcasting kernel runner
  *   functions.c    the element-wise functions: exp, log, compose, ..., up, down
  *   path.c         the Path type
@@ -22,7 +22,7 @@
 #include <Python.h>
 #include <pythread.h>
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
-/* numpy's API is a table that import_array fills in PyInit_garotor
+/* numpy's API is a table that import_array fills in PyInit__garotor
  * (module.c defines GPY_IMPORT_ARRAY); the other files share the table */
 #define PY_ARRAY_UNIQUE_SYMBOL gpy_ARRAY_API
 #ifndef GPY_IMPORT_ARRAY

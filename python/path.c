@@ -112,8 +112,13 @@ static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme,
         return -1;
     }
     ga_path path;
-    int st = mat4 ? ga_path_init_mat4(g, scheme, n, t, keys, *vel, work, wbytes, &path)
-                  : ga_path_init(g, scheme, n, t, keys, *vel, work, wbytes, &path);
+    int st;
+    /* the build is C only on memory no other thread sees yet (a c2 path of
+       many keys takes a while): without the GIL */
+    Py_BEGIN_ALLOW_THREADS;
+    st = mat4 ? ga_path_init_mat4(g, scheme, n, t, keys, *vel, work, wbytes, &path)
+              : ga_path_init(g, scheme, n, t, keys, *vel, work, wbytes, &path);
+    Py_END_ALLOW_THREADS;
     if (st != GA_OK) {
         PyErr_Format(gpy_error, "Path: cannot build the %s path: %s", ga_scheme_name(scheme),
                      ga_status_string(st));
@@ -246,17 +251,23 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
         PyErr_NoMemory();
         goto done;
     }
-    for (npy_intp i = 0; i < n; i++) {
+    npy_intp badk = -1;
+    int kst = GA_OK;
+    Py_BEGIN_ALLOW_THREADS; /* C only, on this call's arrays */
+    for (npy_intp i = 0; i < n && badk < 0; i++) {
         double e[GA_GROUP_MAX_ELEM];
         int st = pose ? gpy_pose_to_mat(pv + 7 * i, &keys[i]) : GA_OK;
         if (!pose)
             keys[i] = gpy_mat_get(pv + 16 * i);
         if (st == GA_OK)
             st = g->from_mat4(keys[i], e);
-        if (st != GA_OK) {
-            gpy_raise_status("Path: poses", 1, &n, i, st);
-            goto done;
-        }
+        if (st != GA_OK)
+            badk = i, kst = st;
+    }
+    Py_END_ALLOW_THREADS;
+    if (badk >= 0) {
+        gpy_raise_status("Path: poses", 1, &n, badk, kst);
+        goto done;
     }
     if (vobj != Py_None) {
         if (scheme != GA_SCHEME_LIHAO2 && scheme != GA_SCHEME_LIHAO3) {

@@ -559,21 +559,3 @@ def test_out_on_error_holds_the_elements_before(rng):
         garotor.log(T, out=out)
     assert out[:6].tobytes() == garotor.log(T[:6]).tobytes()
     assert np.all(out[6:] == 7.0)
-
-
-# ---- the benchmark's C loop -----------------------------------------------------------
-
-def test_c_loop_names_the_bad_element(rng):
-    x = rng.normal(size=(5, 6))
-    assert garotor._c_loop("exp", x) >= 0
-    x[2, 1] = np.nan
-    with pytest.raises(garotor.Error, match=r"^_c_loop: index 2: not finite") as e:
-        garotor._c_loop("exp", x)
-    assert e.value.index == (2,)
-    T = rigid(rng, (4,))
-    T[3, 0, 0] = 2
-    with pytest.raises(garotor.Error, match=r"^_c_loop: index 3: not a rigid motion"):
-        garotor._c_loop("log", T)
-    p = garotor.Path(np.arange(3.0), rigid(rng, (3,)))
-    with pytest.raises(garotor.Error, match=r"^_c_loop: index 1: invalid argument"):
-        garotor._c_loop("sample", np.array([0.5, 9.0]), p)
