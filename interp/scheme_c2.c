@@ -37,28 +37,15 @@ static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
     memcpy(m, J, d * d * sizeof(double));
     return GA_OK;
 }
-/* N(theta, y) by the jet. The jet's squarings grow with log2 of theta's size,
- * and a translation near DBL_MAX would take a thousand per call. Scaling translations
- * by l is an automorphism of SE(3) (it commutes with exp, Ad and dexp), so
- * N(S x, S y) = S N(x, y) for S = diag(1, 1, 1, l, l, l): a translation of
- * theta beyond 2^20 is brought below 1 by a power of two l (exact, so the
- * scaling changes nothing but the jet's work). */
+/* N(theta, y) = (d/dt J_r(x)) x' at x = theta, x' = y: the body
+ * acceleration of exp(x(t)) with x'' = 0, in closed form (twist_deriv.c). */
 static int c2_nonlin(const ga_path *p, const double *th, const double *y, double *o)
 {
     const double zero[GIP_MAXD] = {0};
-    double big = fmax(fabs(th[3]), fmax(fabs(th[4]), fabs(th[5])));
-    if (!(big > 0x1p20) || !isfinite(big))
-        return gip_exp_curve_deriv(p->group, th, y, zero, NULL, o);
-    int e;
-    frexp(big, &e);
-    double x[6], ys[6];
-    for (int k = 0; k < 6; ++k) {
-        x[k] = k < 3 ? th[k] : ldexp(th[k], -e);
-        ys[k] = k < 3 ? y[k] : ldexp(y[k], -e);
-    }
-    int st = gip_exp_curve_deriv(p->group, x, ys, zero, NULL, o);
-    for (int k = 3; k < 6; ++k) o[k] = ldexp(o[k], e);
-    return st;
+    const double *xs[4] = {th, y, zero, zero};
+    (void)p;
+    gip_twist_exp_derivs(xs, 2, NULL, o, NULL);
+    return GA_OK;
 }
 
 /* the ends: the screw velocities theta/h of the end segments (each a body
@@ -115,8 +102,9 @@ int gip_build_c2(ga_path *p)
     return GA_OK;
 }
 
-/* x(tau), x'(tau), x''(tau) of C2 segment seg at u (tau = u h, per unit t). */
-void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd)
+/* x(tau), x'(tau), x''(tau), x'''(tau) of C2 segment seg at u (tau = u h,
+ * per unit t); xd, xdd, xddd may be NULL. */
+void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd, double *xddd)
 {
     size_t d = p->group->dim;
     const double *A = p->coef + 3 * seg * d, *B = A + d, *C = B + d;
@@ -127,5 +115,7 @@ void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd,
             xd[k] = (3.0 * C[k] * tau + 2.0 * B[k]) * tau + A[k];
         if (xdd)
             xdd[k] = 6.0 * C[k] * tau + 2.0 * B[k];
+        if (xddd)
+            xddd[k] = 6.0 * C[k];
     }
 }
