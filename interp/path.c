@@ -137,7 +137,7 @@ size_t gip_scheme_doubles(ga_scheme s, size_t N, size_t D)
     case GA_SCHEME_SMOOTH: return N * D + S * D + S;
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: return gip_dec_doubles(N);
-    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + D);
+    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + D) + S * D * D;
     }
     return 0;
 }

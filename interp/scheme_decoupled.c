@@ -343,7 +343,7 @@ int gip_build_decoupled(ga_path *p)
     /* angular rates: the chord rates to start (and for good at the ends) */
     dec_start(p);
     if (n > 2) {
-        gip_c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin, dec_start};
+        gip_c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin, dec_start, NULL, NULL};
         int st = gip_c2_solve(&sys);
         if (st != GA_OK)
             return st;

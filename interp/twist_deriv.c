@@ -130,8 +130,8 @@ static inline void vj_cross(int m, const double (*a)[3], const double (*b)[3], d
 }
 
 /* o = J_r(w) y = y - k0 (w x y) + k1 w x (w x y), as jets */
-static inline void vj_jr(int m, const double (*w)[3], const double *k0, const double *k1, const double (*y)[3],
-                  double (*o)[3])
+static inline void vj_jr(int m, const double (*w)[3], const double *k0, const double *k1,
+                         const double (*y)[3], double (*o)[3])
 {
     double c[4][3], cc[4][3];
     vj_cross(m, w, y, c);

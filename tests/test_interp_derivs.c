@@ -73,7 +73,8 @@ static void fd_deriv(const ga_path *p, int seg, double u, ga_frame f, int o, dou
 
 /* From the samples alone: order 2 and 3 by central differences of the
  * sampled velocities (fd_pose_vel, step e) at u and u +- H. */
-static void fd_pose_higher(const ga_path *p, int seg, double u, ga_frame f, int o, double e, double H, double *x)
+static void fd_pose_higher(const ga_path *p, int seg, double u, ga_frame f, int o, double e, double H,
+                           double *x)
 {
     double a[12], b[12], c[12], h = seg_len(p, seg);
     fd_pose_vel(p, seg, u + H / h, f, e, a);
@@ -99,10 +100,11 @@ static void test_frames(void)
         for (int f = 0; f < 3; ++f) {
             static const double tol_an[3] = {1e-7, 1e-5, 1e-5}, tol_pose[3] = {1e-5, 1e-3, 5e-2};
             static const char *const what[3] = {"velocity", "acceleration", "jerk"};
-            c_an[o][f] = o == 0 ? tk_beginf(tol_an[o], "%s %s = central FD of the samples (step 1e-5), relative",
-                                            frame_name[f], what[o])
-                                : tk_beginf(tol_an[o], "%s %s = central FD of the %s (step 1e-4), relative",
-                                            frame_name[f], what[o], what[o - 1]);
+            c_an[o][f] = o == 0
+                           ? tk_beginf(tol_an[o], "%s %s = central FD of the samples (step 1e-5), relative",
+                                       frame_name[f], what[o])
+                           : tk_beginf(tol_an[o], "%s %s = central FD of the %s (step 1e-4), relative",
+                                       frame_name[f], what[o], what[o - 1]);
             c_pose[o][f] = tk_beginf(tol_pose[o], "%s %s = FD of the samples alone, relative", frame_name[f],
                                      what[o]);
         }
@@ -126,8 +128,8 @@ static void test_frames(void)
                         for (int f = 0; f < 3; ++f) {
                             if (f == GA_FRAME_WORLD && !g->rigid) {
                                 tk_add_status(&c_arg,
-                                              ga_path_derivatives_segment(p, (size_t)seg, u, GA_FRAME_WORLD, x,
-                                                                          NULL, NULL),
+                                              ga_path_derivatives_segment(p, (size_t)seg, u, GA_FRAME_WORLD,
+                                                                          x, NULL, NULL),
                                               GA_ERR_ARG);
                                 continue;
                             }
@@ -177,7 +179,8 @@ static void test_closed_form(void)
             int n = sch[si] == GA_SCHEME_QUADRATIC ? 3 : sch[si] == GA_SCHEME_BSPLINE ? 6 : 5;
             k.n = n;
             for (int i = 0; i < n; ++i) {
-                k.t[i] = sch[si] == GA_SCHEME_BSPLINE ? 0.6 * i : (i ? k.t[i - 1] + tk_range(r, 0.3, 1.5) : 0.0);
+                k.t[i] = sch[si] == GA_SCHEME_BSPLINE ? 0.6 * i
+                                                      : (i ? k.t[i - 1] + tk_range(r, 0.3, 1.5) : 0.0);
                 k.m[i] = rigid(tk_unit(r), tk_range(r, 0.0, 0.45), rvec(r, 3));
             }
             set_scale(&k);
@@ -260,12 +263,14 @@ static void test_bits(void)
             for (int q = 0; q <= 4; ++q)
                 for (int f = 0; f < (g->rigid ? 3 : 2); ++f) {
                     double v[12], a[12], j[12], z = 0.0;
-                    int st = ga_path_derivatives(&b.p, q == 4 ? t1 : t0 + (t1 - t0) * q / 4.0, (ga_frame)f, v, a, j);
+                    int st = ga_path_derivatives(&b.p, q == 4 ? t1 : t0 + (t1 - t0) * q / 4.0, (ga_frame)f, v,
+                                                 a, j);
                     for (size_t i = 0; i < d; ++i) z = fmax(z, fabs(v[i]) + fabs(a[i]) + fabs(j[i]));
                     tk_add_bool(&c_z, st == GA_OK && z == 0.0);
                     if (st != GA_OK || z != 0.0)
-                        tk_note("     constant keys: %s on %s, %s frame: %g (%s)\n", ga_scheme_name((ga_scheme)s),
-                                g->name, frame_name[f], z, ga_status_string(st));
+                        tk_note("     constant keys: %s on %s, %s frame: %g (%s)\n",
+                                ga_scheme_name((ga_scheme)s), g->name, frame_name[f], z,
+                                ga_status_string(st));
                 }
         }
     }
@@ -529,4 +534,7 @@ static const tk_section sections[] = {
     {"c2-dense", test_c2_dense, 0},
 };
 
-int main(int argc, char **argv) { return tk_main(argc, argv, "test_interp_derivs", sections, TK_COUNT(sections)); }
+int main(int argc, char **argv)
+{
+    return tk_main(argc, argv, "test_interp_derivs", sections, TK_COUNT(sections));
+}

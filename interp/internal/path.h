@@ -157,6 +157,10 @@ typedef struct {
     int (*nonlin)(const ga_path *p, const double *th, const double *y, double *o);
     /* the interior rates set to where the sweeps start */
     void (*start)(ga_path *p);
+    /* NULL, or d*d doubles per segment: J_r(theta_i), filled once by
+       gip_c2_solve and read by every sweep, which inverts it by jinv */
+    double *(*jcache)(const ga_path *p, size_t seg);
+    int (*jinv)(size_t d, const double *J, double *o);
 } gip_c2_sys;
 
 int gip_c2_solve(const gip_c2_sys *s);
