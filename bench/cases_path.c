@@ -46,7 +46,8 @@ size_t run_c2_build(const void *ctx, size_t n)
     int st = c2_setup();
     ga_path p;
     for (size_t k = 0; k < n && st == GA_OK; k++)
-        st = ga_path_init(&ga_group_cga, GA_SCHEME_C2, keys, c2_times, c2_keys, NULL, c2_work, c2_work_bytes, &p);
+        st = ga_path_init(&ga_group_cga, GA_SCHEME_C2, keys, c2_times, c2_keys, NULL, c2_work, c2_work_bytes,
+                          &p);
     status_or |= st;
     sink = st == GA_OK ? p.vel[6] : 0.0;
     return n;
