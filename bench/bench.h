@@ -96,6 +96,19 @@ typedef struct {
 extern bench benches[];
 extern const size_t n_benches;
 
+/* ---- cases_path.c: the C2 build, a pose against an acceleration --------------- */
+
+/* ctx: &path_keys_2000 or &path_keys_1e5; a call is one build */
+size_t run_c2_build(const void *ctx, size_t n);
+/* ctx: &path_scheme[s]; a call is one ga_path_eval, one ga_path_acceleration */
+size_t run_eval(const void *ctx, size_t n);
+size_t run_accel(const void *ctx, size_t n);
+extern const size_t path_keys_2000, path_keys_1e5;
+/* the batches a case is timed in: 0 every batch, else at most this many (the
+   c2 builds: one call of 1e5 keys takes a second) */
+int bench_max_batches(const bench *b);
+extern const int path_scheme[GA_SCHEME_COUNT];
+
 /* ---- inputs.c ---------------------------------------------------------------- */
 
 /** Seed the input PRNG. */

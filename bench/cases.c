@@ -363,5 +363,35 @@ bench benches[] = {
      &ctx_se3_lihao3_exact, 0, NULL, 0, 0, 0},
     {"sample_euler_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: Euler, 1 step", run_sample,
      &ctx_se3_lihao3_euler, 0, NULL, 0, 0, 0},
+    /* paths (cases_path.c): the C2 build, a pose against an acceleration */
+    {"c2_build_2000", "ga_path_init: c2 through 2000 keys on rotors, per build", run_c2_build,
+     &path_keys_2000, 0, NULL, 0, 0, 0},
+    {"c2_build_1e5", "ga_path_init: c2 through 1e5 keys on rotors, per build", run_c2_build, &path_keys_1e5,
+     0, NULL, 0, 0, 0},
+#define EVAL_ACCEL(s, name)                                                                                  \
+    {"eval_" name,                                                                                           \
+     "ga_path_eval on a " name " path (8 keys, rotors), per pose",                                           \
+     run_eval,                                                                                               \
+     &path_scheme[s],                                                                                        \
+     0,                                                                                                      \
+     NULL,                                                                                                   \
+     0,                                                                                                      \
+     0,                                                                                                      \
+     0},                                                                                                     \
+    {                                                                                                        \
+        "accel_" name, "ga_path_acceleration, same path and times, per call", run_accel, &path_scheme[s], 0, \
+            NULL, 0, 0, 0                                                                                    \
+    }
+    EVAL_ACCEL(GA_SCHEME_SCREW, "screw"),
+    EVAL_ACCEL(GA_SCHEME_BIVECTOR, "bivector"),
+    EVAL_ACCEL(GA_SCHEME_QUADRATIC, "quadratic"),
+    EVAL_ACCEL(GA_SCHEME_SMOOTH, "smooth"),
+    EVAL_ACCEL(GA_SCHEME_LIHAO2, "lihao2"),
+    EVAL_ACCEL(GA_SCHEME_LIHAO3, "lihao3"),
+    EVAL_ACCEL(GA_SCHEME_DECOUPLED, "decoupled"),
+    EVAL_ACCEL(GA_SCHEME_DECOUPLED_C2, "decoupled_c2"),
+    EVAL_ACCEL(GA_SCHEME_BSPLINE, "bspline"),
+    EVAL_ACCEL(GA_SCHEME_C2, "c2"),
+#undef EVAL_ACCEL
 };
 const size_t n_benches = sizeof benches / sizeof benches[0];

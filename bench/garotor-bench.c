@@ -121,7 +121,7 @@ int main(int argc, char **argv)
     }
     for (int r = 0; r < n_batches; r++)
         for (size_t i = 0; i < n_benches; i++)
-            if (benches[i].ns)
+            if (benches[i].ns && (!bench_max_batches(&benches[i]) || r < bench_max_batches(&benches[i])))
                 benches[i].ns[r] = time_batch(&benches[i]);
     for (size_t i = 0; i < n_benches; i++) {
         bench *b = &benches[i];
@@ -129,10 +129,11 @@ int main(int argc, char **argv)
             b->median = b->p25 = b->p75 = NAN;
             continue;
         }
-        qsort(b->ns, (size_t)n_batches, sizeof(double), cmp_double);
-        b->median = quantile(b->ns, n_batches, 0.5);
-        b->p25 = quantile(b->ns, n_batches, 0.25);
-        b->p75 = quantile(b->ns, n_batches, 0.75);
+        int cap = bench_max_batches(b), nb = cap && cap < n_batches ? cap : n_batches;
+        qsort(b->ns, (size_t)nb, sizeof(double), cmp_double);
+        b->median = quantile(b->ns, nb, 0.5);
+        b->p25 = quantile(b->ns, nb, 0.25);
+        b->p75 = quantile(b->ns, nb, 0.75);
     }
 
     /* batch sampling throughput, N = 1e6 poses into a caller buffer */

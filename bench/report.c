@@ -108,6 +108,24 @@ static const ratio_def ratios[] = {
      "closed-form SE(3) exp against Eigen's general expm"},
     {"se3_log/eigen_logm", "se3_log", "eigen_logm", 1.0, 0,
      "closed-form SE(3) log against Eigen's general logm"},
+    {"c2_build_1e5/c2_build_2000", "c2_build_1e5", "c2_build_2000", 60.0, 0,
+     "c2 build linear in the keys: 50 times the keys"},
+#define ACCEL_RATIO(name)                                                                                    \
+    {                                                                                                        \
+        "accel_" name "/eval_" name, "accel_" name, "eval_" name, 3.0, 0,                                    \
+            "an acceleration against a pose, " name                                                          \
+    }
+    ACCEL_RATIO("screw"),
+    ACCEL_RATIO("bivector"),
+    ACCEL_RATIO("quadratic"),
+    ACCEL_RATIO("smooth"),
+    ACCEL_RATIO("lihao2"),
+    ACCEL_RATIO("lihao3"),
+    ACCEL_RATIO("decoupled"),
+    ACCEL_RATIO("decoupled_c2"),
+    ACCEL_RATIO("bspline"),
+    ACCEL_RATIO("c2"),
+#undef ACCEL_RATIO
     /* extras, no target */
     {"apply_many/mat4_loop", "apply_many", "mat4_loop", NAN, 0,
      "the rotor batch against an inline 4x4 loop over the same points"},

@@ -89,8 +89,13 @@ int gip_md_inv(size_t d, const double *a, double *o)
  * |J_r^-1| <= pi/2 on SO(3)); the full Newton step is taken (halving steps
  * that raise the largest residual failed more often: docs/schemes.md). At
  * most C2_SWEEPS; converged when no rate moves by more than 4 DBL_EPSILON of the
- * largest, or the change stops shrinking once it is below 1e-12 of it. Where
- * that fails, continuation (gip_c2_solve). */
+ * largest, or the change stops shrinking once it is below 1e-12 of it, or
+ * (quadratic convergence) it is below 1e-10 of it and 1e-3 of the change
+ * before. Each sweep is O(n), and the count of sweeps does not grow with n
+ * (docs/schemes.md, "The C2 solver"). The Jacobians J_r(theta_i) are formed
+ * once (jcache), their inverses by blocks each sweep (jinv). Where that
+ * fails, continuation
+ * (gip_c2_solve). */
 #define C2_SWEEPS 200
 #define C2_CONTINUATION_SWEEPS 1200 /* all the continuation's sweeps together */
 
@@ -114,7 +119,11 @@ static int c2_newton(const gip_c2_sys *s, double lam, int final, int *budget)
             double rhs[GIP_MAXD], rde[GIP_MAXD], nl[GIP_MAXD], t3[GIP_MAXD], jw[GIP_MAXD], sc = 0.0;
             double *C = s->scratch(p, k), *y = C + dd;
             const double *wk = s->rate(p, k);
-            if ((st = s->jr(p, tl, 0, L)) || (st = s->jr(p, tr, 1, U)) || (st = s->jr(p, tl, 1, Ji)))
+            if (s->jcache) {
+                memcpy(L, s->jcache(p, k - 1), dd * sizeof(double));
+                if ((st = s->jinv(d, L, Ji)) || (st = s->jinv(d, s->jcache(p, k), U)))
+                    return st;
+            } else if ((st = s->jr(p, tl, 0, L)) || (st = s->jr(p, tr, 1, U)) || (st = s->jr(p, tl, 1, Ji)))
                 return st;
 
             /* N(theta_{k-1}, J_r^-1(theta_{k-1}) w_k), linearised at the current
@@ -186,6 +195,13 @@ static int c2_newton(const gip_c2_sys *s, double lam, int final, int *budget)
             return GA_ERR_DOMAIN;
         if (delta <= 4 * DBL_EPSILON * big || (delta <= 1e-12 * big && delta >= prev))
             return GA_OK;
+        /* quadratic convergence: a step of at most 1e-10 of the largest rate and
+           1e-3 of the one before leaves an error of about its cube over the last
+           one's square, 1e-16 of the largest rate: done, without the sweep that
+           would only stir the rounding (whether that one lands under 4 eps was
+           a matter of rounding, which made the count of sweeps grow with n) */
+        if (final && delta <= 1e-10 * big && delta <= 1e-3 * prev)
+            return GA_OK;
         if (!final && delta <= 1e-9 * big)
             return GA_OK;
         prev = delta;
@@ -203,7 +219,13 @@ static int c2_newton(const gip_c2_sys *s, double lam, int final, int *budget)
  * capped at 30 sweeps failed more often (docs/schemes.md). */
 int gip_c2_solve(const gip_c2_sys *s)
 {
-    int budget = C2_SWEEPS, st = c2_newton(s, 1.0, 1, &budget);
+    int st;
+    for (size_t i = 0; s->jcache && i + 1 < s->p->n; ++i) { /* the Jacobians, once */
+        if ((st = s->jr(s->p, s->theta(s->p, i), 0, s->jcache(s->p, i))))
+            return st;
+    }
+    int budget = C2_SWEEPS;
+    st = c2_newton(s, 1.0, 1, &budget);
     budget = C2_CONTINUATION_SWEEPS;
     for (int m = 4; st == GA_ERR_DOMAIN && m <= 64 && budget > 0; m *= 4) {
         s->start(s->p);

@@ -1,5 +1,8 @@
 /* interp/growth.c: the growth rule of path.h (docs/schemes.md, "lihao2:
- * growth"): each key's velocity against the fastest chord of the path.
+ * growth"): each key's velocity against the fastest chord of the path, the
+ * chords taken over spans of at least 1/16 of the mean key spacing, so that a
+ * near-duplicate key (its chord the noise of the keys over a tiny gap) does
+ * not set the bound.
  */
 #include <math.h>
 #include <string.h>
@@ -7,6 +10,9 @@
 #include <garotor/path.h>
 
 #include "internal/path.h"
+
+/* A chord spans at least this fraction of the mean key spacing (path.h). */
+#define GIP_GROWTH_SPAN (1.0 / 16.0)
 
 /* The Euclidean norms of the parts of x: rotation and translation on the
  * rigid groups, the whole element on affine; returns the number of parts. */
@@ -30,11 +36,17 @@ ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
     ga_path_growth r = {0.0, 0, n};
     double chord[2] = {0.0, 0.0}, x[GIP_MAXD], rel[GIP_MAXE], nrm[2];
     int st;
-    for (size_t j = 0; j + 1 < n; ++j) {
-        if ((st = gip_rel_log(g, gip_key_of(p, j), gip_key_of(p, j + 1), x, rel)))
+    /* the chords over spans of at least GIP_GROWTH_SPAN of the mean spacing:
+       from key j to the first key e >= j + 1 that far on (or the last) */
+    double span = n > 1 ? GIP_GROWTH_SPAN * (p->t[n - 1] - p->t[0]) / (double)(n - 1) : 0.0;
+    for (size_t j = 0, e = 1; j + 1 < n; ++j) {
+        if (e < j + 1)
+            e = j + 1;
+        while (e + 1 < n && p->t[e] - p->t[j] < span) ++e;
+        if ((st = gip_rel_log(g, gip_key_of(p, j), gip_key_of(p, e), x, rel)))
             return st;
         parts = part_norms(g, x, nrm);
-        for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / gip_seg_len(p, j));
+        for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / (p->t[e] - p->t[j]));
     }
     for (size_t i = 0; n > 1 && i < n; ++i) {
         if ((st = ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x)))

@@ -90,13 +90,29 @@ int gip_plog(const ga_group *g, const void *a, double *x)
 }
 
 /* x = plog(a^-1 b) */
-int gip_rel_log(const ga_group *g, const void *a, const void *b, double *x, double *rel)
+int gip_rel(const ga_group *g, const void *a, const void *b, void *rel)
 {
     double ai[GIP_MAXE];
+    if (memcmp(a, b, g->elem_size) == 0) { /* a constant segment: exactly no motion */
+        g->identity(rel);
+        return GA_OK;
+    }
     int st = g->inverse(a, ai);
     if (st != GA_OK)
         return st;
     g->compose(ai, b, rel);
+    return GA_OK;
+}
+
+int gip_rel_log(const ga_group *g, const void *a, const void *b, double *x, double *rel)
+{
+    int st = gip_rel(g, a, b, rel);
+    if (st != GA_OK)
+        return st;
+    if (memcmp(a, b, g->elem_size) == 0) {
+        memset(x, 0, g->dim * sizeof(double));
+        return GA_OK;
+    }
     return gip_plog(g, rel, x);
 }
 
@@ -121,7 +137,7 @@ size_t gip_scheme_doubles(ga_scheme s, size_t N, size_t D)
     case GA_SCHEME_SMOOTH: return N * D + S * D + S;
     case GA_SCHEME_DECOUPLED:
     case GA_SCHEME_DECOUPLED_C2: return gip_dec_doubles(N);
-    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + D);
+    case GA_SCHEME_C2: return 3 * S * D + N * D + N * (D * D + D) + S * D * D;
     }
     return 0;
 }

@@ -21,6 +21,43 @@ static double *c2_scratch(const ga_path *p, size_t i)
     size_t d = p->group->dim;
     return p->vel + p->n * d + i * (d * d + d);
 }
+static double *c2_jcache(const ga_path *p, size_t i)
+{
+    size_t d = p->group->dim;
+    return p->vel + p->n * d + p->n * (d * d + d) + i * d * d;
+}
+/* The inverse of a twist group's J_r = [[A, 0], [Q, A]] (A = SO(3)'s J_r of
+ * the rotation, row-major 6 x 6): [[A^-1, 0], [-A^-1 Q A^-1, A^-1]], A^-1 by
+ * its adjugate; GA_ERR_DOMAIN where A is singular (a turn of 2 pi k). */
+static int c2_jinv(size_t d, const double *J, double *o)
+{
+    double A[9], Q[9], Ai[9], T[9], B[9];
+    (void)d;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            A[3 * i + j] = J[6 * i + j];
+            Q[3 * i + j] = J[6 * (i + 3) + j];
+        }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) { /* the cofactor of A[j][i] */
+            int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            Ai[3 * i + j] = A[3 * r0 + c0] * A[3 * r1 + c1] - A[3 * r0 + c1] * A[3 * r1 + c0];
+        }
+    double det = A[0] * Ai[0] + A[1] * Ai[3] + A[2] * Ai[6];
+    if (!(fabs(det) > 0) || !isfinite(det))
+        return GA_ERR_DOMAIN;
+    for (int k = 0; k < 9; ++k) Ai[k] /= det;
+    gip_md_mul(3, Q, Ai, T);
+    gip_md_mul(3, Ai, T, B);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            o[6 * i + j] = Ai[3 * i + j];
+            o[6 * i + j + 3] = 0.0;
+            o[6 * (i + 3) + j] = -B[3 * i + j];
+            o[6 * (i + 3) + j + 3] = Ai[3 * i + j];
+        }
+    return GA_OK;
+}
 static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
 {
     const ga_group *g = p->group;
@@ -33,32 +70,19 @@ static int c2_jr(const ga_path *p, const double *th, int inv, double *m)
         for (size_t i = 0; i < d; ++i) J[d * i + j] = c[i];
     }
     if (inv)
-        return gip_md_inv(d, J, m);
+        return c2_jinv(d, J, m);
     memcpy(m, J, d * d * sizeof(double));
     return GA_OK;
 }
-/* N(theta, y) by the jet. The jet's squarings grow with log2 of theta's size,
- * and a translation near DBL_MAX would take a thousand per call. Scaling translations
- * by l is an automorphism of SE(3) (it commutes with exp, Ad and dexp), so
- * N(S x, S y) = S N(x, y) for S = diag(1, 1, 1, l, l, l): a translation of
- * theta beyond 2^20 is brought below 1 by a power of two l (exact, so the
- * scaling changes nothing but the jet's work). */
+/* N(theta, y) = (d/dt J_r(x)) x' at x = theta, x' = y: the body
+ * acceleration of exp(x(t)) with x'' = 0, in closed form (twist_deriv.c). */
 static int c2_nonlin(const ga_path *p, const double *th, const double *y, double *o)
 {
     const double zero[GIP_MAXD] = {0};
-    double big = fmax(fabs(th[3]), fmax(fabs(th[4]), fabs(th[5])));
-    if (!(big > 0x1p20) || !isfinite(big))
-        return gip_exp_curve_deriv(p->group, th, y, zero, NULL, o);
-    int e;
-    frexp(big, &e);
-    double x[6], ys[6];
-    for (int k = 0; k < 6; ++k) {
-        x[k] = k < 3 ? th[k] : ldexp(th[k], -e);
-        ys[k] = k < 3 ? y[k] : ldexp(y[k], -e);
-    }
-    int st = gip_exp_curve_deriv(p->group, x, ys, zero, NULL, o);
-    for (int k = 3; k < 6; ++k) o[k] = ldexp(o[k], e);
-    return st;
+    const double *xs[4] = {th, y, zero, zero};
+    (void)p;
+    gip_twist_exp_derivs(xs, 2, NULL, o, NULL);
+    return GA_OK;
 }
 
 /* the ends: the screw velocities theta/h of the end segments (each a body
@@ -93,7 +117,8 @@ int gip_build_c2(ga_path *p)
     if (!gip_allfinite(p->vel, n * d))
         return GA_ERR_DOMAIN;
     if (n > 2) {
-        gip_c2_sys sys = {p, d, c2_theta, c2_rate, c2_scratch, c2_jr, c2_nonlin, c2_start};
+        gip_c2_sys sys = {p,     d,         c2_theta, c2_rate,   c2_scratch,
+                          c2_jr, c2_nonlin, c2_start, c2_jcache, c2_jinv};
         if ((st = gip_c2_solve(&sys)))
             return st;
     }
@@ -103,7 +128,7 @@ int gip_build_c2(ga_path *p)
         double *A = p->coef + 3 * i * d, *B = A + d, *C = B + d, th[GIP_MAXD], h = gip_seg_len(p, i);
         const double *w = c2_rate(p, i);
         memcpy(th, C, d * sizeof(double));
-        if ((st = c2_jr(p, th, 1, J)))
+        if ((st = n > 2 ? c2_jinv(d, c2_jcache(p, i), J) : c2_jr(p, th, 1, J)))
             return st;
         gip_md_vec(d, J, c2_rate(p, i + 1), e);
         for (size_t k = 0; k < d; ++k) {
@@ -115,8 +140,9 @@ int gip_build_c2(ga_path *p)
     return GA_OK;
 }
 
-/* x(tau), x'(tau), x''(tau) of C2 segment seg at u (tau = u h, per unit t). */
-void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd)
+/* x(tau), x'(tau), x''(tau), x'''(tau) of C2 segment seg at u (tau = u h,
+ * per unit t); xd, xdd, xddd may be NULL. */
+void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd, double *xddd)
 {
     size_t d = p->group->dim;
     const double *A = p->coef + 3 * seg * d, *B = A + d, *C = B + d;
@@ -127,5 +153,7 @@ void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd,
             xd[k] = (3.0 * C[k] * tau + 2.0 * B[k]) * tau + A[k];
         if (xdd)
             xdd[k] = 6.0 * C[k] * tau + 2.0 * B[k];
+        if (xddd)
+            xddd[k] = 6.0 * C[k];
     }
 }

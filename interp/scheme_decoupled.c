@@ -115,6 +115,19 @@ static void qmul(const double *a, const double *b, double *o)
     o[2] = y;
     o[3] = z;
 }
+/* conj(a) b, each component's terms paired so that a = +-b gives exactly
+   (+-1, 0, 0, 0): a constant segment turns by exactly 0 */
+static void qrel(const double *a, const double *b, double *o)
+{
+    double w = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+    double x = (a[0] * b[1] - a[1] * b[0]) + (a[3] * b[2] - a[2] * b[3]);
+    double y = (a[0] * b[2] - a[2] * b[0]) + (a[1] * b[3] - a[3] * b[1]);
+    double z = (a[0] * b[3] - a[3] * b[0]) + (a[2] * b[1] - a[1] * b[2]);
+    o[0] = w;
+    o[1] = x;
+    o[2] = y;
+    o[3] = z;
+}
 /* exp of the rotation vector r: (cos(th/2), sin(th/2) r/th) */
 static void qexp(const double *r, double *q)
 {
@@ -222,11 +235,8 @@ static void notaknot(const ga_path *p, const double *y, double *s, double *cp, d
    through the group's half-turn rule as a twist (theta, 0), parked in slot a. */
 static void dec_rel_rotation(ga_path *p, size_t i)
 {
-    double qc[4], qr[4], x[GIP_MAXD] = {0};
-    const double *q0 = dkey(p, i), *q1 = dkey(p, i + 1);
-    qc[0] = q0[0];
-    for (int k = 1; k < 4; ++k) qc[k] = -q0[k];
-    qmul(qc, q1, qr);
+    double qr[4], x[GIP_MAXD] = {0};
+    qrel(dkey(p, i), dkey(p, i + 1), qr);
     qlog(qr, x);
     if (p->group->half_turn)
         p->group->half_turn(x);
@@ -333,7 +343,7 @@ int gip_build_decoupled(ga_path *p)
     /* angular rates: the chord rates to start (and for good at the ends) */
     dec_start(p);
     if (n > 2) {
-        gip_c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin, dec_start};
+        gip_c2_sys sys = {p, 3, dec_theta, dec_rate, dec_scratch, dec_jr, dec_nonlin, dec_start, NULL, NULL};
         int st = gip_c2_solve(&sys);
         if (st != GA_OK)
             return st;
@@ -355,12 +365,14 @@ int gip_build_decoupled(ga_path *p)
     return GA_OK;
 }
 
-/* The pose on segment seg at u, and (either may be NULL) the body velocity and
- * acceleration per unit t. */
-int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a)
+/* The pose on segment seg at u, and (each may be NULL) the body velocity,
+ * acceleration and jerk per unit t, and pw: the position's derivatives p',
+ * p'', p''' in world axes (9 doubles). */
+int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a, double *j,
+                 double *pw)
 {
     const double *rc = dseg(p, seg), *pc = rc + 9, *q0 = dkey(p, seg);
-    double tau = u * gip_seg_len(p, seg), r[3], rd[3], rdd[3], pos[3], pd[3], pdd[3], qe[4], q[4];
+    double tau = u * gip_seg_len(p, seg), r[3], rd[3], rdd[3], pos[3], pd[3], pdd[3], pddd[3], qe[4], q[4];
     for (int k = 0; k < 3; ++k) {
         r[k] = ((rc[6 + k] * tau + rc[3 + k]) * tau + rc[k]) * tau;
         rd[k] = (3.0 * rc[6 + k] * tau + 2.0 * rc[3 + k]) * tau + rc[k];
@@ -368,6 +380,7 @@ int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, d
         pos[k] = ((pc[9 + k] * tau + pc[6 + k]) * tau + pc[3 + k]) * tau + pc[k];
         pd[k] = (3.0 * pc[9 + k] * tau + 2.0 * pc[6 + k]) * tau + pc[3 + k];
         pdd[k] = 6.0 * pc[9 + k] * tau + 2.0 * pc[6 + k];
+        pddd[k] = 6.0 * pc[9 + k];
     }
     qexp(r, qe);
     qmul(q0, qe, q);
@@ -377,24 +390,55 @@ int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, d
         if (st != GA_OK)
             return st;
     }
-    if (v || a) {
+    if (pw) {
+        memcpy(pw, pd, sizeof pd);
+        memcpy(pw + 3, pdd, sizeof pdd);
+        memcpy(pw + 6, pddd, sizeof pddd);
+    }
+    if (v || a || j) {
         /* w = J_r(r) r', v = R^T p'; w' = J_r(r) r'' + N(r, r'),
            d/dt (R^T p') = R^T p'' - w x R^T p' */
-        double w[3], lv[3], wd[3], nl[3], la[3], c[3];
+        double w[3], lv[3], wd[3], nl[3], la[3], c[3], al[3];
         jr_apply(r, rd, w);
         qrot_inv(q, pd, lv);
         if (v) {
             memcpy(v, w, sizeof w);
             memcpy(v + 3, lv, sizeof lv);
         }
+        jr_apply(r, rdd, wd);
+        jr_nonlin(r, rd, nl);
+        qrot_inv(q, pdd, la);
+        cross3(w, lv, c);
+        for (int k = 0; k < 3; ++k) {
+            wd[k] += nl[k];
+            al[k] = la[k] - c[k];
+        }
         if (a) {
-            jr_apply(r, rdd, wd);
-            jr_nonlin(r, rd, nl);
-            qrot_inv(q, pdd, la);
-            cross3(w, lv, c);
+            memcpy(a, wd, sizeof wd);
+            memcpy(a + 3, al, sizeof al);
+        }
+        if (j) {
+            /* the rotation's jerk from exp(r(t)) (twist_deriv.c, no translation);
+               d/dt (R^T p'' - w x v) = R^T p''' - w x R^T p'' - w' x v - w x (R^T p'' - w x v) */
+            double z[3] = {0, 0, 0}, x0[6], x1[6], x2[6], x3[6], jr[6], lj[3], t[3];
+            const double *xs[4] = {x0, x1, x2, x3};
             for (int k = 0; k < 3; ++k) {
-                a[k] = wd[k] + nl[k];
-                a[3 + k] = la[k] - c[k];
+                x0[k] = r[k];
+                x1[k] = rd[k];
+                x2[k] = rdd[k];
+                x3[k] = 6.0 * rc[6 + k];
+                x0[3 + k] = x1[3 + k] = x2[3 + k] = x3[3 + k] = z[k];
+            }
+            gip_twist_exp_derivs(xs, 3, NULL, NULL, jr);
+            qrot_inv(q, pddd, lj);
+            cross3(w, la, t);
+            for (int k = 0; k < 3; ++k) lj[k] -= t[k];
+            cross3(wd, lv, t);
+            for (int k = 0; k < 3; ++k) lj[k] -= t[k];
+            cross3(w, al, t);
+            for (int k = 0; k < 3; ++k) {
+                j[k] = jr[k];
+                j[3 + k] = lj[k] - t[k];
             }
         }
     }

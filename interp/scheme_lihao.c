@@ -18,7 +18,7 @@ int gip_lihao_segment(ga_path *p, size_t i)
 {
     const ga_group *g = p->group;
     size_t d = g->dim, nf = gip_nfac(p->scheme);
-    double rel[GIP_MAXE], reli[GIP_MAXE], e[GIP_MAXE], m[GIP_MAXE], x[GIP_MAXD], ad[GIP_MAXD], ai[GIP_MAXE];
+    double rel[GIP_MAXE], reli[GIP_MAXE], e[GIP_MAXE], m[GIP_MAXE], x[GIP_MAXD], ad[GIP_MAXD];
     int st;
     double h = gip_seg_len(p, i);
     double *B = p->coef + i * nf * d, *C = B + d, *D = C + d;
@@ -28,9 +28,8 @@ int gip_lihao_segment(ga_path *p, size_t i)
     if (!gip_allfinite(B, d))
         return GA_ERR_DOMAIN;
     /* eq. 16 (and 27 corrected): exp(B_i) exp(C_i) = A_i^-1 A_{i+1} */
-    if ((st = g->inverse(gip_key_of(p, i), ai)))
+    if ((st = gip_rel(g, gip_key_of(p, i), gip_key_of(p, i + 1), rel)))
         return st;
-    g->compose(ai, gip_key_of(p, i + 1), rel);
     gip_lin(d, x, -1.0, B, 0.0, B);
     if ((st = g->exp(x, e)))
         return st;
@@ -161,8 +160,9 @@ int gip_prod_velocity(const ga_path *p, size_t seg, double u, double *v)
     return GA_OK;
 }
 
-/* Body velocity and acceleration per unit u (u^2). */
-int gip_prod_accel(const ga_path *p, size_t seg, double u, double *v, double *a)
+/* Body velocity, acceleration and (m = 3) jerk per unit u (u^2, u^3); a and j
+ * may be NULL where m does not reach them. */
+int gip_prod_derivs(const ga_path *p, size_t seg, double u, int m, double *v, double *a, double *j)
 {
     const ga_group *g = p->group;
     size_t d = g->dim, nf = gip_nfac(p->scheme);
@@ -171,14 +171,21 @@ int gip_prod_accel(const ga_path *p, size_t seg, double u, double *v, double *a)
      * w_{j+1} = Ad_{F^-1} w_j + p' X, a_{j+1} = Ad_{F^-1} a_j + [Ad_{F^-1} w_j, p' X]
      * + p'' X (F = F_{j+1}, X = X_{j+1}): the product rule of gip_prod_velocity
      * differentiated once more, the recursion of Sommer et al. 2020 (eqs. for
-     * the cumulative B-spline's acceleration) */
+     * the cumulative B-spline's acceleration); once more for the jerk, with
+     * W = Ad_{F^-1} w_j, A = Ad_{F^-1} a_j and P_k = p^(k) X:
+     * j_{j+1} = Ad_{F^-1} j_j + 2 [A, P_1] + [[W, P_1], P_1] + [W, P_2] + P_3 */
     const double *X = gip_seg_coef(p, seg);
-    double w[GIP_MAXD], b[GIP_MAXD], c[GIP_MAXD], x[GIP_MAXD], fi[GIP_MAXE];
-    for (size_t k = 0; k < d; ++k) v[k] = a[k] = 0.0;
-    for (size_t j = 0; j < nf; ++j, X += d) {
-        const double *cp = gip_fac_poly(p->scheme, j);
-        double d1 = gip_poly_deriv(cp, u), d2 = gip_poly_deriv2(cp, u);
-        if (j > 0) {
+    double w[GIP_MAXD], b[GIP_MAXD], c[GIP_MAXD], x[GIP_MAXD], fi[GIP_MAXE], aa[GIP_MAXD], jj[GIP_MAXD],
+        jb[GIP_MAXD], t1[GIP_MAXD], t2[GIP_MAXD], x2[GIP_MAXD];
+    if (!a)
+        a = aa;
+    if (!j)
+        j = jj;
+    for (size_t k = 0; k < d; ++k) v[k] = a[k] = j[k] = 0.0;
+    for (size_t f = 0; f < nf; ++f, X += d) {
+        const double *cp = gip_fac_poly(p->scheme, f);
+        double d1 = gip_poly_deriv(cp, u), d2 = gip_poly_deriv2(cp, u), d3 = 6.0 * cp[3];
+        if (f > 0) {
             gip_lin(d, x, -gip_poly_diff(cp, 0, u, 0.0), X, 0.0, X);
             if ((st = g->exp(x, fi)))
                 return st;
@@ -187,11 +194,25 @@ int gip_prod_accel(const ga_path *p, size_t seg, double u, double *v, double *a)
             gip_lin(d, x, d1, X, 0.0, X);
             if ((st = gip_bracket(g, w, x, c)))
                 return st;
+            if (m >= 3) {
+                /* j <- Ad j + 2 [A, P_1] + [[W, P_1], P_1] + [W, P_2] */
+                gip_lin(d, x2, d2, X, 0.0, X);
+                g->adjoint(fi, j, jb);
+                if ((st = gip_bracket(g, b, x, t1)))
+                    return st;
+                gip_lin(d, jb, 1.0, jb, 2.0, t1);
+                if ((st = gip_bracket(g, c, x, t1)) || (st = gip_bracket(g, w, x2, t2)))
+                    return st;
+                gip_lin(d, jb, 1.0, jb, 1.0, t1);
+                gip_lin(d, j, 1.0, jb, 1.0, t2);
+            }
             gip_lin(d, a, 1.0, b, 1.0, c);
             memcpy(v, w, d * sizeof(double));
         }
         gip_lin(d, v, 1.0, v, d1, X);
         gip_lin(d, a, 1.0, a, d2, X);
+        if (m >= 3)
+            gip_lin(d, j, 1.0, j, d3, X);
     }
     return GA_OK;
 }

@@ -311,6 +311,7 @@ typedef struct {
     const ga_path *path;
     int range_status;
     double t0, t1;
+    ga_frame frame; /* velocity, acceleration, jerk: the frame= asked */
 } path_ctx;
 
 static int path_failed(path_ctx *c, int status)
@@ -331,34 +332,38 @@ static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
     return GA_OK;
 }
 
+/* The derivative of order o (1 velocity, 2 acceleration, 3 jerk) in the
+ * context's frame, computed alone (ga_path_derivatives: the tool's --with
+ * columns bit for bit; the body velocity is ga_path_velocity's). */
+static int k_derivative(void *ctx, const double *const *in, double *out, int o)
+{
+    const path_ctx *c = ctx;
+    const ga_path *p = c->path;
+    double x[GA_GROUP_MAX_DIM];
+    int st = ga_path_derivatives(p, in[0][0], c->frame, o == 1 ? x : NULL, o == 2 ? x : NULL,
+                                 o == 3 ? x : NULL);
+    if (st != GA_OK)
+        return path_failed(ctx, st);
+    if (p->group->rigid)
+        memcpy(out, x, 6 * sizeof *x);
+    else
+        gpy_mat_put(p->group->hat(x), out);
+    return GA_OK;
+}
 static int k_velocity(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
-    const ga_path *p = ((path_ctx *)ctx)->path;
-    double v[GA_GROUP_MAX_DIM];
-    int st = ga_path_velocity(p, in[0][0], v);
-    if (st != GA_OK)
-        return path_failed(ctx, st);
-    if (p->group->rigid)
-        memcpy(out, v, 6 * sizeof *v);
-    else
-        gpy_mat_put(p->group->hat(v), out);
-    return GA_OK;
+    return k_derivative(ctx, in, out, 1);
 }
-
 static int k_acceleration(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
-    const ga_path *p = ((path_ctx *)ctx)->path;
-    double a[GA_GROUP_MAX_DIM];
-    int st = ga_path_acceleration(p, in[0][0], a);
-    if (st != GA_OK)
-        return path_failed(ctx, st);
-    if (p->group->rigid)
-        memcpy(out, a, 6 * sizeof *a);
-    else
-        gpy_mat_put(p->group->hat(a), out);
-    return GA_OK;
+    return k_derivative(ctx, in, out, 2);
+}
+static int k_jerk(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    (void)k;
+    return k_derivative(ctx, in, out, 3);
 }
 
 /* A time the path is not defined at: outside its range (a NaN or an
@@ -375,14 +380,43 @@ static void explain_time(void *ctx, const double *const *in, int status, char *w
                  gpy_repr_text(t0, b), gpy_repr_text(t1, c));
 }
 
+/* frame= of velocity, acceleration, jerk: "body", "spatial" or "world" */
+static int parse_frame(const char *what, const ga_group *g, const char *name, ga_frame *f)
+{
+    if (!name || strcmp(name, "body") == 0)
+        *f = GA_FRAME_BODY;
+    else if (strcmp(name, "spatial") == 0)
+        *f = GA_FRAME_SPATIAL;
+    else if (strcmp(name, "world") == 0)
+        *f = GA_FRAME_WORLD;
+    else {
+        PyErr_Format(PyExc_ValueError, "%s: frame must be 'body', 'spatial' or 'world', not '%s'", what,
+                     name);
+        return -1;
+    }
+    if (*f == GA_FRAME_WORLD && g && !g->rigid) {
+        PyErr_Format(PyExc_ValueError, "%s: frame='world' needs a rigid group (cga or matrix), not '%s'",
+                     what, g->name);
+        return -1;
+    }
+    return 0;
+}
+
 static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, const char *what,
                            gpy_kernel_fn kernel, gpy_core outcore)
 {
     static char *kwlist[] = {"t", "out", NULL};
+    static char *kwlist_frame[] = {"t", "frame", "out", NULL};
     PyObject *t, *out = NULL;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !path_ready(self))
+    const char *frame = NULL;
+    int derivative = kernel != k_sample;
+    if (!(derivative ? PyArg_ParseTupleAndKeywords(args, kw, "O|$zO", kwlist_frame, &t, &frame, &out)
+                     : PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out)) ||
+        !path_ready(self))
         return NULL;
-    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0};
+    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY};
+    if (derivative && parse_frame(what, self->group, frame, &c.frame))
+        return NULL;
     gpy_kernel_call kc = {.what = what,
                           .nin = 1,
                           .in = {{.ncore = 0, .name = "t"}},
@@ -409,6 +443,13 @@ static PyObject *Path_velocity(gpy_PathObject *self, PyObject *args, PyObject *k
 static PyObject *Path_acceleration(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
     return path_call(self, args, kw, "Path.acceleration", k_acceleration,
+                     self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
+                                                        : (gpy_core)GPY_CORE1(6, NULL));
+}
+
+static PyObject *Path_jerk(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    return path_call(self, args, kw, "Path.jerk", k_jerk,
                      self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
                                                         : (gpy_core)GPY_CORE1(6, NULL));
 }
@@ -576,7 +617,7 @@ static PyObject *Path_get_range(gpy_PathObject *self, void *c)
     (void)c;
     if (!path_ready(self))
         return NULL;
-    path_ctx r = {&self->path, GA_OK, 0.0, 0.0};
+    path_ctx r = {&self->path, GA_OK, 0.0, 0.0, GA_FRAME_BODY};
     path_locked(self, read_range, &r);
     if (r.range_status != GA_OK) {
         PyErr_SetString(PyExc_ValueError, ga_status_string(r.range_status));
@@ -767,12 +808,16 @@ static PyMethodDef Path_methods[] = {
     {"sample", (PyCFunction)(void (*)(void))Path_sample, METH_VARARGS | METH_KEYWORDS,
      "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
     {"velocity", (PyCFunction)(void (*)(void))Path_velocity, METH_VARARGS | METH_KEYWORDS,
-     "velocity(t, *, out=None): the body velocity A(t)^-1 dA/dt per unit time at the times t: (..., 6) "
-     "twists "
-     "(affine: (..., 4, 4))."},
+     "velocity(t, *, frame='body', out=None): the velocity per unit time at the times t: (..., 6) twists "
+     "(affine: (..., 4, 4)); frame 'body' A(t)^-1 dA/dt, 'spatial' dA/dt A(t)^-1, 'world' (rigid groups) "
+     "the angular rate in world axes and dp/dt."},
     {"acceleration", (PyCFunction)(void (*)(void))Path_acceleration, METH_VARARGS | METH_KEYWORDS,
-     "acceleration(t, *, out=None): the body acceleration d/dt (A^-1 dA/dt) per unit time^2 at the times t: "
-     "(..., 6) (affine: (..., 4, 4))."},
+     "acceleration(t, *, frame='body', out=None): the derivative of the velocity in that frame per unit "
+     "time^2 at the times t: (..., 6) (affine: (..., 4, 4)); 'world': the angular acceleration in world axes "
+     "and d2p/dt2."},
+    {"jerk", (PyCFunction)(void (*)(void))Path_jerk, METH_VARARGS | METH_KEYWORDS,
+     "jerk(t, *, frame='body', out=None): the derivative of the acceleration in that frame per unit time^3 "
+     "at the times t: (..., 6) (affine: (..., 4, 4)); 'world': d3p/dt3 for the position."},
     {"append", (PyCFunction)(void (*)(void))Path_append, METH_VARARGS | METH_KEYWORDS,
      "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
      "building one "

@@ -54,11 +54,11 @@ def keys(n):
     return t, q, p
 
 
-def run(scheme, group, t, q, p, ts):
+def run(scheme, group, t, q, p, ts, extra=("--with", "velocity,acceleration")):
     text = "".join("%r %r %r %r %r %r %r %r\n" % (ti, *pi, *qi) for ti, pi, qi in zip(t, p, q))
     at = ",".join(repr(x) for x in ts)
     out = subprocess.run([TOOL, "interp", "--scheme", scheme, "--group", group, "--format", "pose",
-                          "--at", at, "--with", "velocity,acceleration"],
+                          "--at", at, *extra],
                          input=text, capture_output=True, text=True, check=True).stdout
     return np.array([[float(x) for x in line.split()] for line in out.splitlines()])
 
@@ -96,6 +96,30 @@ for trial in range(6):
         if n > 2:  # scipy's RotationSpline of 2 keys has no rate below order 0
             check("decoupled-c2 angular rate", w, rs(ts, 1))
             check("decoupled-c2 angular acceleration", wd, rs(ts, 2))
+        # --frame world: the angular rate and acceleration in world axes (R w,
+        # R w', as d/dt (R w) = R (w' + w x w)), the position's derivatives
+        # (CubicSpline's orders 1 to 3)
+        wo = run("decoupled-c2", group, t, q, p, ts, ("--with", "velocity,acceleration,jerk", "--frame", "world"))
+        check("decoupled-c2 world: pose as body's", wo[:, :8], out[:, :8])
+        check("decoupled-c2 world p'", wo[:, 11:14], cs(ts, 1))
+        check("decoupled-c2 world p''", wo[:, 17:20], cs(ts, 2))
+        # the third derivative is 6 c3, of order 100 on short segments: relative
+        check("decoupled-c2 world p''' (relative)", wo[:, 23:26] / max(1.0, np.max(np.abs(cs(ts, 3)))),
+              cs(ts, 3) / max(1.0, np.max(np.abs(cs(ts, 3)))))
+        if n > 2:
+            check("decoupled-c2 world angular rate", wo[:, 8:11], np.einsum("kij,kj->ki", R, rs(ts, 1)))
+            check("decoupled-c2 world angular acceleration", wo[:, 14:17], np.einsum("kij,kj->ki", R, rs(ts, 2)))
+        # decoupled, world: slerp's constant body rate (the segment's rotation
+        # vector over its length) in world axes, the chord's slope, no
+        # acceleration or jerk
+        wo = run("decoupled", group, t, q, p, ts, ("--with", "velocity,acceleration,jerk", "--frame", "world"))
+        seg = np.clip(np.searchsorted(t, ts, side="right") - 1, 0, n - 2)
+        h = np.diff(t)
+        rate = np.array([(rot[i].inv() * rot[i + 1]).as_rotvec() / h[i] for i in range(n - 1)])
+        Rw = Rotation.from_quat(wo[:, 4:8]).as_matrix()
+        check("decoupled world angular rate", wo[:, 8:11], np.einsum("kij,kj->ki", Rw, rate[seg]))
+        check("decoupled world p'", wo[:, 11:14], (np.diff(p, axis=0) / h[:, None])[seg])
+        check("decoupled world: no acceleration, no jerk", wo[:, 14:], 0 * wo[:, 14:])
 
 bad = 0
 for name, d in worst.items():

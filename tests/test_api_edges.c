@@ -191,6 +191,16 @@ static int c_path_differentiate_segment(void)
 {
     return ga_path_differentiate_segment(IN(0, &path), 1, 0.5, GA_FRAME_SPATIAL, &buf[1].d, &buf[2].d);
 }
+/* v, a and j of the two below may be NULL (path.h) */
+static int c_path_derivatives(void)
+{
+    return ga_path_derivatives(IN(0, &path), 0.7, GA_FRAME_WORLD, &buf[1].d, &buf[2].d, &buf[3].d);
+}
+static int c_path_derivatives_segment(void)
+{
+    return ga_path_derivatives_segment(IN(0, &path), 1, 0.5, GA_FRAME_SPATIAL, &buf[1].d, &buf[2].d,
+                                       &buf[3].d);
+}
 static int c_path_measure_growth(void) { return ga_path_measure_growth(IN(0, &path), OUT(1)); }
 static int c_path_stepper_init(void)
 {
@@ -305,6 +315,8 @@ static const api_case cases[] = {
     CASE(path_acceleration_segment, 2, 2),
     CASE(path_differentiate, 1, 6),
     CASE(path_differentiate_segment, 1, 6),
+    CASE(path_derivatives, 1, 14),
+    CASE(path_derivatives_segment, 1, 14),
     CASE(path_measure_growth, 2, 2),
     CASE(path_stepper_init, 2, 2),
     CASE(path_stepper_next, 2, 2),

@@ -457,10 +457,47 @@ static void test_growth(void)
     tk_add_status(&c_arg, ga_path_measure_growth(&b.p, NULL), GA_ERR_ARG);
     tk_add_status(&c_arg, ga_path_measure_growth(&b.p, &gr), GA_OK);
     tk_add_bool(&c_arg, gr.ratio == 0.0 && gr.first == 1);
+    /* a near-duplicate key, 1e-4 after key 3 of keys 0.1 apart moving at
+       0.64 along x, off the line by 1 mm: its chord (14 m/s) must not set
+       the bound, so every scheme's velocity there (c2 12 m/s) is flagged,
+       where without it the keys give ratios of at most about 1 */
+    tk_check c_dup = tk_begin("growth: a near-duplicate key flagged on every rigid scheme (c2 ~19x)", 0);
+    k.n = 8;
+    for (int i = 0; i < 7; ++i) {
+        k.t[i + (i > 3)] = 0.1 * i;
+        k.m[i + (i > 3)] = rigid((ga_vec3){0, 0, 1}, 0.2 * sin(0.1 * i),
+                                 (ga_vec3){0.064 * i, 0.05 * sin(0.1 * i), 0});
+    }
+    k.t[4] = k.t[3] + 1e-4;
+    k.m[4] = rigid((ga_vec3){0, 0, 1}, 0.2 * sin(0.3),
+                   (ga_vec3){0.192 + 0.001, 0.05 * sin(0.3) - 0.0005, 0.0005});
+    set_scale(&k);
+    for (int s = 0; s < GA_SCHEME_COUNT; ++s) {
+        if (s == GA_SCHEME_QUADRATIC || s == GA_SCHEME_BSPLINE) /* 3 keys; even times */
+            continue;
+        int st = mkpath(&b, &ga_group_cga, (ga_scheme)s, &k, NULL);
+        if (st == GA_OK)
+            st = ga_path_measure_growth(&b.p, &gr);
+        tk_add_bool(&c_dup, st == GA_OK && gr.first < (size_t)k.n && gr.ratio > 10.0);
+        if (s == GA_SCHEME_C2)
+            tk_note("     near-duplicate key: c2's largest ratio %.3g at key %zu\n", gr.ratio, gr.key);
+        /* the same keys without it */
+        keyset k2 = k;
+        k2.n = 7;
+        for (int i = 4; i < 7; ++i) {
+            k2.t[i] = k.t[i + 1];
+            k2.m[i] = k.m[i + 1];
+        }
+        st = mkpath(&b, &ga_group_cga, (ga_scheme)s, &k2, NULL);
+        if (st == GA_OK)
+            st = ga_path_measure_growth(&b.p, &gr);
+        tk_add_bool(&c_dup, st == GA_OK && gr.first == (size_t)k2.n);
+    }
     tk_end(&c_avg);
     tk_end(&c_avgf);
     tk_end(&c_l2);
     tk_end(&c_arg);
+    tk_end(&c_dup);
     tk_note("     c2 on the same random keys: largest ratio %.3g\n", c2max);
 }
 

@@ -50,12 +50,16 @@ static void warn_growth(const ic_opts *io, const ic_input *in, const ga_path *pa
         if (strtod(ratio, NULL) > GA_PATH_GROWTH_MAX)
             break;
     }
+    /* lihao2 carries its velocity along; any other scheme breaks the rule
+       through keys much closer than the others (near-duplicates) */
     fprintf(stderr,
             "garotor interp: warning: %s: the %s path's velocity grows past %g times the fastest chord on "
-            "the segment t = %s to %s (lines %ld to %ld), up to %s times at t = %s; --scheme lihao3 or c2 "
-            "follow the chords (docs/schemes.md)\n",
+            "the segment t = %s to %s (lines %ld to %ld), up to %s times at t = %s; %s (docs/schemes.md)\n",
             f->name, ga_scheme_name(io->scheme), GA_PATH_GROWTH_MAX, f->first[a], f->first[b],
-            f->item[a].line, f->item[b].line, ratio, f->first[gr.key]);
+            f->item[a].line, f->item[b].line, ratio, f->first[gr.key],
+            io->scheme == GA_SCHEME_LIHAO2 ? "--scheme lihao3 or c2 follow the chords"
+                                           : "keys much closer together than the others (near-duplicates?) "
+                                             "make any scheme fast there");
 }
 
 int cmd_interp(const cli_opts *o)
@@ -80,7 +84,7 @@ int cmd_interp(const cli_opts *o)
     smp.path = &path;
     smp.dw = io.g->rigid ? 6 : 16;
     smp.pw = io.pose ? 8 : 17;
-    smp.width = smp.pw + (io.with_v + io.with_a) * smp.dw;
+    smp.width = smp.pw + (io.with_v + io.with_a + io.with_j) * smp.dw;
     if (ic_write(&io, &in, &smp) == 0)
         rc = 0;
 done:

@@ -29,10 +29,11 @@ typedef struct {
     ga_scheme scheme;
     ga_eval ev;
     svg_view view;
-    int pose;                    /* --format pose */
-    int extrap;                  /* --extrapolate: 0 error, 1 hold, 2 extend */
-    int with_v, with_a, spatial; /* --with velocity[,acceleration], --frame spatial */
-    int ns;                      /* --time-unit ns */
+    int pose;                   /* --format pose */
+    int extrap;                 /* --extrapolate: 0 error, 1 hold, 2 extend */
+    int with_v, with_a, with_j; /* --with velocity,acceleration,jerk (any of them) */
+    ga_frame frame;             /* --frame */
+    int ns;                     /* --time-unit ns */
 } ic_opts;
 /* Parse and check every option, in the order their messages come. */
 int ic_options(const cli_opts *o, ic_opts *io);
@@ -87,7 +88,8 @@ typedef struct {
     const ic_timebase *tb;
     ga_eval ev;
     double step;
-    int extrap, pose, with_v, with_a, spatial;
+    int extrap, pose, with_v, with_a, with_j;
+    ga_frame frame;
     int pw, dw, width;   /* pose, algebra element and row widths */
     const double *times; /* the keys' relative times */
     size_t n;            /* keys */

@@ -83,27 +83,52 @@ static int sample_options(const cli_opts *o, ic_opts *io)
     return 0;
 }
 
+/* --with: a comma-separated list of velocity, acceleration and jerk, each at
+ * most once (the columns come in that order whatever the list's). */
+static int with_list(const char *s, ic_opts *io)
+{
+    static const char *const name[3] = {"velocity", "acceleration", "jerk"};
+    int *flag[3] = {&io->with_v, &io->with_a, &io->with_j};
+    while (*s) {
+        size_t len = strcspn(s, ",");
+        int k = 0;
+        while (k < 3 && !(strlen(name[k]) == len && strncmp(s, name[k], len) == 0)) k++;
+        if (k == 3 || *flag[k])
+            return -1;
+        *flag[k] = 1;
+        s += len;
+        if (*s == ',' && *++s == '\0')
+            return -1;
+    }
+    return io->with_v + io->with_a + io->with_j ? 0 : -1;
+}
+
 /* What a row holds besides the pose (--with, --frame) and --time-unit. */
 static int row_options(const cli_opts *o, ic_opts *io)
 {
-    io->with_v = io->with_a = io->spatial = 0;
-    if (o->with && strcmp(o->with, "velocity") == 0)
-        io->with_v = 1;
-    else if (o->with && strcmp(o->with, "velocity,acceleration") == 0)
-        io->with_v = io->with_a = 1;
-    else if (o->with) {
-        fprintf(stderr, "garotor interp: --with must be velocity or velocity,acceleration, not '%s'\n",
+    io->with_v = io->with_a = io->with_j = 0;
+    io->frame = GA_FRAME_BODY;
+    if (o->with && with_list(o->with, io)) {
+        fprintf(stderr,
+                "garotor interp: --with must list velocity, acceleration or jerk (each once, joined by "
+                "commas), not '%s'\n",
                 o->with);
         return -1;
     }
     if (o->frame && strcmp(o->frame, "spatial") == 0)
-        io->spatial = 1;
+        io->frame = GA_FRAME_SPATIAL;
+    else if (o->frame && strcmp(o->frame, "world") == 0)
+        io->frame = GA_FRAME_WORLD;
     else if (o->frame && strcmp(o->frame, "body") != 0) {
-        fprintf(stderr, "garotor interp: --frame must be body or spatial, not '%s'\n", o->frame);
+        fprintf(stderr, "garotor interp: --frame must be body, spatial or world, not '%s'\n", o->frame);
         return -1;
     }
-    if (o->frame && !io->with_v) {
-        fprintf(stderr, "garotor interp: --frame applies only with --with velocity[,acceleration]\n");
+    if (o->frame && !o->with) {
+        fprintf(stderr, "garotor interp: --frame applies only with --with velocity,acceleration,jerk\n");
+        return -1;
+    }
+    if (io->frame == GA_FRAME_WORLD && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --frame world needs a rigid group (--group cga or matrix)\n");
         return -1;
     }
     io->ns = 0;

@@ -99,19 +99,22 @@ static int sample_extrapolated(const ga_path *p, ga_eval ev, double step, int ex
     return GA_OK;
 }
 
-/* Velocity and acceleration at t, extrapolated as the samples are. */
-static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, double *v, double *a)
+/* Velocity, acceleration and jerk at t (those not NULL: only they are
+ * computed), extrapolated as the samples are. */
+static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, double *v, double *a, double *j)
 {
     size_t seg;
     double u;
     if (!extrap || !outside(p, extrap, t, &seg, &u))
-        return ga_path_differentiate(p, t, f, v, a);
+        return ga_path_derivatives(p, t, f, v, a, j);
     if (seg == SIZE_MAX) {
-        memset(v, 0, p->group->dim * sizeof *v);
-        memset(a, 0, p->group->dim * sizeof *a);
+        double *x[3] = {v, a, j};
+        for (int k = 0; k < 3; k++)
+            if (x[k])
+                memset(x[k], 0, p->group->dim * sizeof *x[k]);
         return GA_OK;
     }
-    return ga_path_differentiate_segment(p, seg, u, f, v, a);
+    return ga_path_derivatives_segment(p, seg, u, f, v, a, j);
 }
 
 /* The samples a picture keeps: every stride-th from the first, and the last;
@@ -130,7 +133,7 @@ static int run(const ic_sampler *s, tio_out *out, picture_keep *keep, size_t *co
 {
     const ga_group *g = s->g;
     const char *name = s->in->name;
-    double t[CHUNK], off[CHUNK], row[17 + 2 * 16];
+    double t[CHUNK], off[CHUNK], row[17 + 3 * 16];
     static char stamp[TT_DIG + 32];
     unsigned char *buf = malloc(CHUNK * g->elem_size);
     ga_path_stepper stepper;
@@ -170,18 +173,22 @@ static int run(const ic_sampler *s, tio_out *out, picture_keep *keep, size_t *co
             }
             if (!s->pose)
                 memcpy(row + 1, mat.m, sizeof mat.m);
-            if (s->with_v) {
-                double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM];
-                st = differentiate(s->path, s->extrap, t[j], s->spatial ? GA_FRAME_SPATIAL : GA_FRAME_BODY,
-                                   dv, da);
+            if (s->with_v || s->with_a || s->with_j) {
+                double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM], dj[GA_GROUP_MAX_DIM];
+                st = differentiate(s->path, s->extrap, t[j], s->frame, s->with_v ? dv : NULL,
+                                   s->with_a ? da : NULL, s->with_j ? dj : NULL);
                 if (st != GA_OK) {
                     fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", name, k + 1,
                             ga_status_string(st));
                     goto done;
                 }
-                put_algebra(g, dv, row + s->pw);
+                double *col = row + s->pw;
+                if (s->with_v)
+                    put_algebra(g, dv, col), col += s->dw;
                 if (s->with_a)
-                    put_algebra(g, da, row + s->pw + s->dw);
+                    put_algebra(g, da, col), col += s->dw;
+                if (s->with_j)
+                    put_algebra(g, dj, col);
             }
             if (out)
                 tio_out_stamped(out, ic_stamp(s, k, t[j], off[j], stamp), row + 1, s->width - 1);

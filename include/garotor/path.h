@@ -225,11 +225,15 @@ typedef enum {
 
 typedef enum { GA_EVAL_DIRECT, GA_EVAL_EULER, GA_EVAL_EXACT } ga_eval;
 
-/** The frame of a velocity or acceleration: BODY, the twist of M^-1 dM/dt
- *  (and its derivative); SPATIAL, the twist of dM/dt M^-1 = Ad_M of the body
- *  one (and its derivative, which is Ad_M of the body acceleration, as
- *  [v_b, v_b] = 0). */
-typedef enum { GA_FRAME_BODY, GA_FRAME_SPATIAL } ga_frame;
+/** The frame of a velocity and its derivatives: BODY, the twist of
+ *  M^-1 dM/dt (and its derivatives); SPATIAL, the twist of dM/dt M^-1 =
+ *  Ad_M of the body one (its derivative is Ad_M of the body acceleration, as
+ *  [v_b, v_b] = 0; the next Ad_M (j_b + [v_b, a_b])); WORLD (rigid groups
+ *  only), for M = (R, p): the angular rate in world axes R w_b and its
+ *  derivatives, then the derivatives p', p'', p''' of the position, per
+ *  unit t, t^2, t^3 (the SPATIAL linear part is p' - w x p, the velocity of
+ *  the world point at the origin). */
+typedef enum { GA_FRAME_BODY, GA_FRAME_SPATIAL, GA_FRAME_WORLD } ga_frame;
 
 /** Samples between fresh direct evaluations in exact stepping (K). Between
  *  anchors the rounding of the nested differences grows like K, K^2, K^3 for
@@ -369,25 +373,50 @@ GA_API GA_NODISCARD ga_status ga_path_acceleration(const ga_path *p, double t, d
 /** The body acceleration per unit t^2 on segment seg at u. */
 GA_API GA_NODISCARD ga_status ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, double *a);
 /** Velocity (per unit t) and acceleration (per unit t^2) at t in frame f;
- *  either output may be NULL. The constant path of one key: zeros. */
+ *  either output may be NULL (the acceleration is computed all the same:
+ *  ga_path_derivatives computes only what it is asked). The constant path of
+ *  one key: zeros. GA_ERR_ARG for GA_FRAME_WORLD on a group that is not
+ *  rigid. */
 GA_API GA_NODISCARD ga_status ga_path_differentiate(const ga_path *p, double t, ga_frame f, double *v,
                                                     double *a);
 /** The same on segment seg at any finite u (outside [0, 1]: the segment's
  *  formula continued, as ga_path_eval_segment). */
 GA_API GA_NODISCARD ga_status ga_path_differentiate_segment(const ga_path *p, size_t seg, double u,
                                                             ga_frame f, double *v, double *a);
+/** Velocity (per unit t), acceleration (per unit t^2) and jerk (per unit
+ *  t^3, the derivative of the acceleration) at t in frame f (g->dim doubles
+ *  each); any output may be NULL, and only what is asked is computed: the
+ *  velocity alone is ga_path_velocity's (BODY: bit for bit), the jerk costs
+ *  what the acceleration does and a little more. Each from the segment's
+ *  own closed form: the product forms by the recursion under
+ *  "Acceleration" taken once more, j' = Ad_{F^-1} j + 2 [Ad_{F^-1} a, p' X] +
+ *  [[Ad_{F^-1} w, p' X], p' X] + [Ad_{F^-1} w, p'' X] + p''' X; exp(X(t))
+ *  (generator schemes, C2, the decoupled rotation) on the rigid groups by
+ *  SE(3)'s exp in closed form, on affine by the 4x4 jet of order 3. At a key
+ *  time the segment starting there. GA_ERR_ARG as ga_path_differentiate. */
+GA_API GA_NODISCARD ga_status ga_path_derivatives(const ga_path *p, double t, ga_frame f, double *v,
+                                                  double *a, double *j);
+/** The same on segment seg at any finite u (the segment's formula
+ *  continued outside [0, 1]). */
+GA_API GA_NODISCARD ga_status ga_path_derivatives_segment(const ga_path *p, size_t seg, double u, ga_frame f,
+                                                          double *v, double *a, double *j);
 
 /** The growth rule (docs/schemes.md, "lihao2: growth"): a path whose
  *  velocity at some key exceeds GA_PATH_GROWTH_MAX times the fastest chord of
- *  the path. The chord speed of segment j is its screw velocity
- *  s_j = plog(A_j^-1 A_{j+1})/h_j; on the rigid groups the rotation (first
+ *  the path. The chord speed from key j is the screw velocity
+ *  s_j = plog(A_j^-1 A_e)/(t_e - t_j) to the first key e > j at least 1/16
+ *  of the mean key spacing (t_{n-1} - t_0)/(n - 1) later (or the last key):
+ *  e = j + 1 unless that segment is that short, so that a near-duplicate key,
+ *  whose chord over its tiny gap is the noise of the keys, does not set the
+ *  bound (its key velocities are measured against the others' chords, and
+ *  flagged). On the rigid groups the rotation (first
  *  three) and translation (last three) parts of a twist are measured apart
  *  (Euclidean norms), on affine the whole algebra element. Key i's ratio is
  *  the largest over the parts of |part of V_i| / max_j |part of s_j|, V_i
  *  the body velocity at t_i (the segment starting there; the last key: the
  *  one ending there); a part whose chords are all zero is not measured.
  *  Schemes whose key velocities are averages of chords (screw, lihao3 by
- *  default) have ratios of at most 1; lihao2's recurrence
+ *  default) have ratios of at most 1 where no segment is that short; lihao2's recurrence
  *  V_{i+1} = (Ad B_i + 2 C_i)/h_i can grow along the keys without bound. */
 #define GA_PATH_GROWTH_MAX 3.0
 

@@ -110,7 +110,9 @@ static inline int gip_finite_elem(const ga_group *g, const void *x)
 
 /* The principal log, made deterministic at half turns (group.h half_turn). */
 int gip_plog(const ga_group *g, const void *a, double *x);
-/* x = plog(a^-1 b); rel receives a^-1 b */
+/* rel = a^-1 b; exactly the identity where a and b are the same bits */
+int gip_rel(const ga_group *g, const void *a, const void *b, void *rel);
+/* x = plog(a^-1 b) (exactly 0 where a and b are the same bits); rel receives a^-1 b */
 int gip_rel_log(const ga_group *g, const void *a, const void *b, double *x, double *rel);
 /* Doubles of the scheme's block in the workspace for N keys of algebra dimension D. */
 size_t gip_scheme_doubles(ga_scheme s, size_t N, size_t D);
@@ -135,10 +137,11 @@ void gip_gen_curve2(const ga_path *p, size_t j, double u, double *xdd);
 size_t gip_dec_doubles(size_t N);
 int gip_build_decoupled(ga_path *p);
 int gip_dec_append(ga_path *q, size_t i, const void *key);
-int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a);
+int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a, double *j,
+                 double *pw);
 /* scheme_c2.c: C2 */
 int gip_build_c2(ga_path *p);
-void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd);
+void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd, double *xddd);
 
 /* ---- c2_solve.c: the C2 system of key velocities ------------------------------------ */
 
@@ -154,6 +157,10 @@ typedef struct {
     int (*nonlin)(const ga_path *p, const double *th, const double *y, double *o);
     /* the interior rates set to where the sweeps start */
     void (*start)(ga_path *p);
+    /* NULL, or d*d doubles per segment: J_r(theta_i), filled once by
+       gip_c2_solve and read by every sweep, which inverts it by jinv */
+    double *(*jcache)(const ga_path *p, size_t seg);
+    int (*jinv)(size_t d, const double *J, double *o);
 } gip_c2_sys;
 
 int gip_c2_solve(const gip_c2_sys *s);
@@ -168,13 +175,25 @@ int gip_md_inv(size_t d, const double *a, double *o);
 int gip_bracket(const ga_group *g, const double *x, const double *y, double *out);
 int gip_exp_curve_deriv(const ga_group *g, const double *x, const double *xd, const double *xdd, double *v,
                         double *a);
+/* The body velocity (group.h dexp; may be NULL), acceleration (m >= 2) and
+ * jerk (m = 3) of exp(X(t)), x[k] the k-th derivative of X (k <= 3, each
+ * given): the rigid groups in closed form (twist_deriv.c), the others by the
+ * 4x4 jet; a and j may be NULL. */
+int gip_exp_curve_jet(const ga_group *g, const double *const *x, int m, double *v, double *a, double *j);
+
+/* ---- twist_deriv.c: the same on the rigid groups, in closed form -------------------- */
+
+/* x[0..m] the derivatives of a twist curve X(t) (1 <= m <= 3); v, a (m >= 2),
+ * j (m = 3): the body velocity, acceleration and jerk of exp(X(t)); each
+ * may be NULL. */
+void gip_twist_exp_derivs(const double *const *x, int m, double *v, double *a, double *j);
 
 /* ---- scheme_lihao.c: the product forms A_i exp(p_1(u) X_1) exp(p_2(u) X_2) ... ------
  * (SCREW, LIHAO2, LIHAO3, BSPLINE) at u: pose, body velocity per unit u, and
- * with it the body acceleration per unit u^2 */
+ * with it the body acceleration and jerk per unit u^2, u^3 (m = 2, 3) */
 int gip_prod_eval(const ga_path *p, size_t seg, double u, void *out);
 int gip_prod_velocity(const ga_path *p, size_t seg, double u, double *v);
-int gip_prod_accel(const ga_path *p, size_t seg, double u, double *v, double *a);
+int gip_prod_derivs(const ga_path *p, size_t seg, double u, int m, double *v, double *a, double *j);
 
 /* ---- eval.c ------------------------------------------------------------------------- */
 
