@@ -27,7 +27,11 @@ enum {
     OPT_HTML = 1 << 20,
     OPT_VERB = 1 << 21, /* not an option: the command takes an operation word first */
     OPT_TIME_UNIT = 1 << 22,
-    OPT_MAX_LINE = 1 << 23
+    OPT_MAX_LINE = 1 << 23,
+    OPT_CLIP = 1 << 24,
+    OPT_QUAT_ORDER = 1 << 25,
+    OPT_OUTPUT_FORMAT = 1 << 26,
+    OPT_TWIST_ORDER = 1 << 27
 };
 
 #include <stddef.h>
@@ -38,6 +42,8 @@ typedef struct {
     const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
     const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
     const char *verb;                  /* `versor exp`: the operation word */
+    const char *quat_order, *output_format, *twist_order;
+    int clip;
     double rate;
     int header, normalize;
     long samples;

@@ -452,7 +452,7 @@ int tio_out_open(tio_out *o, const char *path)
  * buffer and written at once. */
 static void put_numbers(tio_out *o, const char *lead, size_t llen, const double *v, int n)
 {
-    char line[4096];
+    char line[4096], sep = o->sep ? o->sep : ' ';
     size_t k = 0;
     if (llen) {
         if (llen > sizeof line - 1 - GA_DOUBLE_TEXT_MAX) {
@@ -468,7 +468,7 @@ static void put_numbers(tio_out *o, const char *lead, size_t llen, const double 
             k = 0;
         }
         if (i || llen)
-            line[k++] = ' ';
+            line[k++] = sep;
         k += ga_double_format(v[i] == 0.0 ? 0.0 : v[i], line + k);
     }
     line[k++] = '\n';

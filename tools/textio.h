@@ -85,6 +85,7 @@ typedef struct {
     char *resolved;   /* the file a symbolic link at path names (allocated) */
     int direct;       /* path is not a regular file (a FIFO, /dev/null): written in place */
     int pending;      /* tmp exists: removed on a signal until renamed or removed */
+    char sep;         /* between numbers: ' ' when 0 (set it after tio_out_open: ',' for CSV) */
     char tmp[4096];   /* temporary name while writing */
 } tio_out;
 /* A tio_out that was never opened (all zero: TIO_OUT_NONE) may be given to
