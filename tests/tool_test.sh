@@ -312,6 +312,53 @@ expect_error "interp: affine --twist-order" "--twist-order applies to --group cg
 awk '{ print $1, $5, $6, $7, $8, $2, $3, $4 }' "$d/k3" >"$d/k3.qfirst"
 expect_error "interp: quaternion first" "k3.qfirst:2: not a rigid motion: the quaternion has norm 1.2806248474865698, not 1 (to 1e-9; --normalize accepts up to 1e-3); the four numbers after t have norm 1: is the quaternion written before the position? the tool reads t x y z, then the quaternion" \
     "$G" interp --format pose --in "$d/k3.qfirst" --samples 3 --out "$d/out"
+# ---- --columns: any layout, a header read by name (a rostopic echo -p CSV
+# with a frame id column and two time columns), the same samples as the file
+# cut to t x y z qx qy qz qw ----
+ros=$(dirname "$doc")/figures/ros-pose.csv
+"$G" interp --columns header,t=field.header.stamp --time-unit ns --samples 5 --in "$ros" >"$d/ros.out" ||
+    fail "--columns header on a rostopic CSV"
+sed 1d "$ros" | cut -d, -f3,5- | tr ',' ' ' >"$d/ros.cut"
+"$G" interp --format pose --time-unit ns --samples 5 --in "$d/ros.cut" | cmp -s - "$d/ros.out" ||
+    fail "--columns header: not the samples of the cut file"
+"$G" interp --columns t=3,x=5,y=6,z=7,qx=8,qy=9,qz=10,qw=11 --header --time-unit ns --samples 5 --in "$ros" |
+    cmp -s - "$d/ros.out" || fail "--columns by number: not the same samples"
+awk '{ print $8, $1, $2, $3, $4, $5, $6, $7, "extra" }' "$d/k3" >"$d/k3.perm"
+"$G" interp --columns qw,t,x,y,z,qx,qy,qz --in "$d/k3.perm" --samples 7 | cmp -s - "$d/k3.xyzw.out" ||
+    fail "--columns in another order (an extra column after them)"
+expect_error "interp: --columns two time columns" "ros-pose.csv:1: columns 1 (%time) and 3 (field.header.stamp) both look like t: pick one with --columns header,t=NAME" \
+    "$G" interp --columns header --samples 3 --in "$ros" --out "$d/out"
+expect_error "interp: --columns no such name" "ros-pose.csv:1: no column named 'stamp' in the header (--columns t=stamp)" \
+    "$G" interp --columns header,t=stamp --samples 3 --in "$ros" --out "$d/out"
+printf 'time,a,b,c,d,e,f,g\n0,0,0,0,0,0,0,1\n' >"$d/nohdr.csv"
+expect_error "interp: --columns nothing like x" "nohdr.csv:1: no column of the header looks like x: name it, --columns header,x=NAME (or a column number)" \
+    "$G" interp --columns header --samples 3 --in "$d/nohdr.csv" --out "$d/out"
+: >"$d/empty"
+expect_error "interp: --columns no header row" "empty: no header row (--columns header reads one)" \
+    "$G" interp --columns header --samples 3 --in "$d/empty" --out "$d/out"
+expect_error "interp: --columns short line" "k3:1: 8 columns, but --columns reads column 9 (qw)" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,-,qw --samples 3 --in "$d/k3" --out "$d/out"
+printf '0,0,0,0,0,0,0,1\n1,zz,0,0,0,0,0,1\n' >"$d/zz.csv"
+expect_error "interp: --columns not a number" "zz.csv:2: column 2 (x): 'zz' is not a number" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,qw --samples 3 --in "$d/zz.csv" --out "$d/out"
+printf '0,0,0,0,0,0,0,1\n1,inf,0,0,0,0,0,1\n' >"$d/inf.csv"
+expect_error "interp: --columns not finite" "inf.csv:2: column 2 (x): 'inf' is not finite" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,qw --samples 3 --in "$d/inf.csv" --out "$d/out"
+printf '0 2 0 0 0 0 0 1\n1 3 0 0 0 0 0 1\n' >"$d/x2"
+expect_error "interp: --columns qw beyond 1" "x2:1: column 2 (qw) is 2: beyond 1, not a unit quaternion's; is that column the quaternion's? (--columns t,qw,qx,qy,qz,x,y,z)" \
+    "$G" interp --columns t,qw,qx,qy,qz,x,y,z --samples 3 --in "$d/x2" --out "$d/out"
+expect_error "interp: --columns bad word" "--columns: 'w' is not a column: name t x y z qx qy qz qw (or - to skip one) in the file's order, or ROLE=COLUMN (a number from 1, or a name in the header row), or header" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,w --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns twice" "--columns: a role given twice: 'x'" \
+    "$G" interp --columns t,x,x,z,qx,qy,qz,qw --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns mixed" "--columns: either the columns in order (t,x,...) or ROLE=COLUMN pairs and header, not both" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,qw=8 --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns missing" "--columns gives no column for qw" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns with --format mat" "--columns reads poses: drop --format mat" \
+    "$G" interp --columns header --format mat --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns with --quat-order" "--columns names the quaternion's columns: drop --quat-order" \
+    "$G" interp --columns header --quat-order wxyz --samples 3 --in "$d/k3" --out "$d/out"
 # ---- time units: whole-number stamps of 12 digits or more are not taken
 # for seconds unless --time-unit says so ----
 sed 's/^0 /1305031102175800000 /; s/^1 /1305031103175800000 /; s/^2.5 /1305031104675800000 /' "$d/k3" >"$d/k3.ns"

@@ -31,7 +31,8 @@ enum {
     OPT_CLIP = 1 << 24,
     OPT_QUAT_ORDER = 1 << 25,
     OPT_OUTPUT_FORMAT = 1 << 26,
-    OPT_TWIST_ORDER = 1 << 27
+    OPT_TWIST_ORDER = 1 << 27,
+    OPT_COLUMNS = 1 << 28
 };
 
 #include <stddef.h>
@@ -42,7 +43,7 @@ typedef struct {
     const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
     const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
     const char *verb;                  /* `versor exp`: the operation word */
-    const char *quat_order, *output_format, *twist_order;
+    const char *quat_order, *output_format, *twist_order, *columns;
     int clip;
     double rate;
     int header, normalize;

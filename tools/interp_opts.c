@@ -43,6 +43,16 @@ static int path_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: --format must be mat, pose or kitti, not '%s'\n", o->format);
         return -1;
     }
+    if (o->columns && o->format && !io->pose) {
+        fprintf(stderr, "garotor interp: --columns reads poses: drop --format %s\n", o->format);
+        return -1;
+    }
+    if (o->columns)
+        io->pose = 1;
+    if (o->columns && o->quat_order) {
+        fprintf(stderr, "garotor interp: --columns names the quaternion's columns: drop --quat-order\n");
+        return -1;
+    }
     if (io->pose && !io->g->rigid) {
         fprintf(stderr, "garotor interp: --group %s takes keys as matrices (--format mat)\n", io->g->name);
         return -1;

@@ -21,7 +21,7 @@ static int pose_to_mat4(const ic_opts *io, const tio_items *in, size_t i, const 
     ga_quat q = io->wxyz ? (ga_quat){v[3], v[4], v[5], v[6]} : (ga_quat){v[6], v[3], v[4], v[5]};
     double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
     double first = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
-    const char *hint = fabs(norm - 1.0) > GA_SE3_NORMALIZE_TOL &&
+    const char *hint = !io->o->columns && fabs(norm - 1.0) > GA_SE3_NORMALIZE_TOL &&
                                fabs(first - 1.0) <= (normalize ? GA_SE3_NORMALIZE_TOL : 1e-9)
                          ? "; the four numbers after t have norm 1: is the quaternion written before the "
                            "position? the tool reads t x y z, then the quaternion"
@@ -200,7 +200,7 @@ int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
 {
     ga_scheme scheme = io->scheme;
     tio_read_opts ro = cli_input(io->o);
-    if (tio_read_first(io->o->in, &ro, &in->in))
+    if (io->o->columns ? ic_read_columns(io, &in->in) : tio_read_first(io->o->in, &ro, &in->in))
         return -1;
     size_t n = in->n = in->in.n;
     in->times = malloc((n ? n : 1) * sizeof *in->times);

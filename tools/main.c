@@ -56,7 +56,7 @@ static const command commands[] = {
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
          OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT | OPT_MAX_LINE | OPT_CLIP |
-         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER,
+         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER | OPT_COLUMNS,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -97,6 +97,10 @@ static const command commands[] = {
      "  --format mat|pose|kitti   a key is t and 16 numbers (4x4, default), t x y z\n"
      "                      qx qy qz qw, or 12 numbers (KITTI's 3x4, key k at t = k)\n"
      "  --quat-order xyzw|wxyz   the quaternion's order in a pose (default xyzw)\n"
+     "  --columns LIST      pose keys in any layout: the file's columns in order\n"
+     "                      (t,x,y,z,qw,qx,qy,qz; - skips one), or ROLE=COLUMN pairs\n"
+     "                      (a number from 1 or a header name), and header: the\n"
+     "                      first line names the columns, found by name\n"
      "  --output-format mat|pose|tum|kitti|csv   what a sample's line is: as the\n"
      "                      keys (default), t x y z qx qy qz qw (tum: always xyzw),\n"
      "                      the 3x4 without t, or pose columns with commas and a header\n"
@@ -183,6 +187,7 @@ static const struct {
     {"--quat-order", OPT_QUAT_ORDER, 1},
     {"--output-format", OPT_OUTPUT_FORMAT, 1},
     {"--twist-order", OPT_TWIST_ORDER, 1},
+    {"--columns", OPT_COLUMNS, 1},
 };
 
 /* A usage error of command cmd (NULL: the demo, no command named), with a
@@ -375,6 +380,7 @@ static int parse_options(const command *c, const char *cmd, int argc, char **arg
         case OPT_QUAT_ORDER: o->quat_order = v; break;
         case OPT_OUTPUT_FORMAT: o->output_format = v; break;
         case OPT_TWIST_ORDER: o->twist_order = v; break;
+        case OPT_COLUMNS: o->columns = v; break;
         case OPT_MAX_LINE: {
             char *end = NULL;
             errno = 0;

@@ -270,6 +270,67 @@ static int read_items(const char *path, const tio_read_opts *ro, int keep_first,
     return 0;
 }
 
+int tio_read_lines(const char *path, const tio_read_opts *ro, tio_lines_text *out)
+{
+    int from_stdin = !path || strcmp(path, "-") == 0;
+    tio_lines_text t = {from_stdin ? "<stdin>" : path, NULL, NULL, 0};
+    size_t tcap = 0, lcap = 0;
+    tio_lines r = {.fd = from_stdin ? 0 : open(path, O_RDONLY),
+                   .name = t.name,
+                   .max = ro->max_line ? ro->max_line : TIO_MAX_LINE,
+                   .blksz = tio_read_block ? tio_read_block : 1};
+    if (r.fd < 0) {
+        fprintf(stderr, "garotor: %s: cannot open: %s\n", path, strerror(errno));
+        return -1;
+    }
+    int status = 0, got;
+    if (!(r.blk = malloc(r.blksz))) {
+        fprintf(stderr, "garotor: %s:1: out of memory\n", t.name);
+        status = -1;
+    }
+    while (status == 0 && (got = next_line(&r)) != 0) {
+        if (got < 0) {
+            status = -1;
+            break;
+        }
+        char *s = r.line;
+        if (r.lineno == 1 && strncmp(s, "\xEF\xBB\xBF", 3) == 0)
+            s += 3;
+        if (s[strspn(s, " \t\r\n")] == '\0')
+            continue;
+        size_t len = strlen(s);
+        char *c = malloc(len + 1);
+        if (!c || grow((void **)&t.text, &tcap, t.n + 1, sizeof *t.text) ||
+            grow((void **)&t.line, &lcap, t.n + 1, sizeof *t.line)) {
+            free(c);
+            fprintf(stderr, "garotor: %s:%ld: out of memory\n", t.name, r.lineno);
+            status = -1;
+            break;
+        }
+        memcpy(c, s, len + 1);
+        t.text[t.n] = c;
+        t.line[t.n++] = r.lineno;
+    }
+    free(r.line);
+    free(r.blk);
+    if (!from_stdin)
+        close(r.fd);
+    if (status) {
+        tio_lines_free(&t);
+        return -1;
+    }
+    *out = t;
+    return 0;
+}
+
+void tio_lines_free(tio_lines_text *l)
+{
+    for (size_t i = 0; i < l->n; i++) free(l->text[i]);
+    free(l->text);
+    free(l->line);
+    memset(l, 0, sizeof *l);
+}
+
 int tio_read(const char *path, const tio_read_opts *ro, tio_items *out)
 {
     return read_items(path, ro, 0, out);

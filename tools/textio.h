@@ -71,6 +71,20 @@ int tio_read(const char *path, const tio_read_opts *ro, tio_items *out);
 int tio_read_first(const char *path, const tio_read_opts *ro, tio_items *out);
 void tio_free(tio_items *items);
 
+/** The lines of an input as text (for a reader of named columns): every line
+ *  that is not blank, comments ('#') included, each NUL-terminated without
+ *  its newline (a UTF-8 byte-order mark at the start dropped), with its line
+ *  number; read as tio_read reads (--max-line, NUL bytes, read errors: a
+ *  message naming the line, -1). */
+typedef struct {
+    const char *name; /* as tio_items */
+    char **text;
+    long *line;
+    size_t n;
+} tio_lines_text;
+int tio_read_lines(const char *path, const tio_read_opts *ro, tio_lines_text *out);
+void tio_lines_free(tio_lines_text *l);
+
 /** Print "garotor: FILE:LINE: message" for item i to stderr; returns -1. */
 int tio_error(const tio_items *items, size_t i, const char *fmt, ...)
 #if defined(__GNUC__)
