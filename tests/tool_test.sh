@@ -359,6 +359,22 @@ expect_error "interp: --columns with --format mat" "--columns reads poses: drop 
     "$G" interp --columns header --format mat --samples 3 --in "$d/k3" --out "$d/out"
 expect_error "interp: --columns with --quat-order" "--columns names the quaternion's columns: drop --quat-order" \
     "$G" interp --columns header --quat-order wxyz --samples 3 --in "$d/k3" --out "$d/out"
+# ---- near-duplicate keys: closer than 1% of the median spacing an error;
+# --dedup merges them into their mean (time and pose), --min-gap 0 keeps them ----
+printf '0 0 0 0 0 0 0 1\n0.0333 0.1 0 0 0 0 0 1\n0.0334 0.1001 0 0 0 0 0 1\n0.0666 0.2 0 0 0 0 0 1\n0.1 0.3 0 0 0 0 0 1\n' >"$d/dup"
+expect_error "interp: near-duplicate keys" "dup:3: key at t = 0.0334 is 0.0001 s after the key at t = 0.0333 (line 2), closer than --min-gap 0.0003325 s (1% of the median spacing, 0.03325 s): pass --dedup to merge such keys, or --min-gap 0 to keep them" \
+    "$G" interp --format pose --in "$d/dup" --samples 3 --out "$d/out"
+expect_error "interp: --min-gap given" "closer than --min-gap 0.001 s: pass --dedup" \
+    "$G" interp --format pose --in "$d/dup" --samples 3 --min-gap 0.001 --out "$d/out"
+"$G" interp --format pose --in "$d/dup" --samples 3 --min-gap 0 >/dev/null || fail "--min-gap 0 keeps near-duplicates"
+# merged: one key at t = 0.03335, x = 0.10005 (the keys lie on x, rotation none)
+"$G" interp --format pose --in "$d/dup" --at 0.03335 --dedup >"$d/dedup" || fail "--dedup"
+awk '{ e = $2 - 0.10005; exit !($1 == "0.03335" && e < 1e-15 && e > -1e-15) }' "$d/dedup" ||
+    fail "--dedup: not the mean key: $(cat "$d/dedup")"
+expect_error "interp: --dedup on affine" "--dedup applies to --group cga or matrix" \
+    "$G" interp --group affine --in "$d/k3.mat" --samples 3 --dedup --out "$d/out"
+expect_error "interp: --min-gap" "--min-gap needs a number >= 0, not: -1" \
+    "$G" interp --format pose --in "$d/dup" --samples 3 --min-gap -1 --out "$d/out"
 # ---- time units: whole-number stamps of 12 digits or more are not taken
 # for seconds unless --time-unit says so ----
 sed 's/^0 /1305031102175800000 /; s/^1 /1305031103175800000 /; s/^2.5 /1305031104675800000 /' "$d/k3" >"$d/k3.ns"

@@ -32,7 +32,9 @@ enum {
     OPT_QUAT_ORDER = 1 << 25,
     OPT_OUTPUT_FORMAT = 1 << 26,
     OPT_TWIST_ORDER = 1 << 27,
-    OPT_COLUMNS = 1 << 28
+    OPT_COLUMNS = 1 << 28,
+    OPT_MIN_GAP = 1 << 29,
+    OPT_DEDUP = 1 << 30
 };
 
 #include <stddef.h>
@@ -44,7 +46,8 @@ typedef struct {
     const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
     const char *verb;                  /* `versor exp`: the operation word */
     const char *quat_order, *output_format, *twist_order, *columns;
-    int clip;
+    int clip, dedup;
+    double min_gap; /* --min-gap, in the keys' time unit */
     double rate;
     int header, normalize;
     long samples;

@@ -35,8 +35,9 @@ static int role_of(const char *w, size_t len)
 static int spec_error(const char *what, const char *word, size_t len)
 {
     fprintf(stderr, "garotor interp: --columns: %s'%.*s'%s\n", what, (int)len, word,
-            *what ? "" : " is not a column: name t x y z qx qy qz qw (or - to skip one) in the file's order, or "
-                         "ROLE=COLUMN (a number from 1, or a name in the header row), or header");
+            *what ? ""
+                  : " is not a column: name t x y z qx qy qz qw (or - to skip one) in the file's order, or "
+                    "ROLE=COLUMN (a number from 1, or a name in the header row), or header");
     return -1;
 }
 
@@ -127,9 +128,9 @@ static size_t split(char *s, char **f)
 static int looks_like(const char *name, int r)
 {
     static const char *const t_names[] = {"time", "timestamp", "stamp", "%time", "#timestamp", "# timestamp"};
-    static const char *const tails[NROLE] = {".stamp",         "position.x",    "position.y",
-                                             "position.z",     "orientation.x", "orientation.y",
-                                             "orientation.z",  "orientation.w"};
+    static const char *const tails[NROLE] = {".stamp",        "position.x",    "position.y",
+                                             "position.z",    "orientation.x", "orientation.y",
+                                             "orientation.z", "orientation.w"};
     static const char *const alt[NROLE] = {"#t", "tx", "ty", "tz", "#qx", "#qy", "#qz", "#qw"};
     size_t n = strlen(name), k = strlen(tails[r]);
     if (strcasecmp(name, role_name[r]) == 0 || strcasecmp(name, alt[r]) == 0)

@@ -93,6 +93,10 @@ static int sample_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: --velocities applies only to --scheme lihao3\n");
         return -1;
     }
+    if (o->dedup && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --dedup applies to --group cga or matrix\n");
+        return -1;
+    }
     if (o->normalize && !io->g->rigid) {
         fprintf(stderr, "garotor interp: --normalize applies to --group cga or matrix\n");
         return -1;

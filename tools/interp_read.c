@@ -196,6 +196,112 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
              : cli_check_motion(io->g, in->keys[i], f, i);
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Keys i0..i1 (closer than --min-gap) merged into key i0: the mean of their
+ * times, stamped as the tool stamps a computed time, and the mean of their
+ * poses (ga_rotor_mean). 0, or -1 after a message. */
+static int merge_keys(const ic_timebase *tb, ic_input *in, size_t i0, size_t i1)
+{
+    tio_items *f = &in->in;
+    size_t m = i1 - i0 + 1;
+    ga_rotor r[64], mean;
+    double w[64], t = 0.0;
+    if (m > 64)
+        return tio_error(f, i0, "more than 64 keys closer than --min-gap in a row: is --min-gap too large?");
+    int st = GA_OK;
+    for (size_t k = 0; k < m && st == GA_OK; k++) {
+        st = ga_rotor_from_mat4(in->keys[i0 + k], &r[k]);
+        w[k] = 1.0;
+        t += in->times[i0 + k] / (double)m;
+    }
+    if (st == GA_OK)
+        st = ga_rotor_mean(r, w, m, &mean);
+    if (st != GA_OK)
+        return tio_error(f, i0, "cannot merge the keys of lines %ld to %ld: %s", f->item[i0].line,
+                         f->item[i1].line, ga_status_string(st));
+    /* the mean time's text: the shortest decimal of it (whole ns with
+       --time-unit ns) added to the first key's, exactly */
+    static tt_dec o;
+    char *text = malloc(TT_DIG + 32);
+    if (!text)
+        return ic_oom();
+    if (tb->ns) {
+        char b[400];
+        snprintf(b, sizeof b, "%.0f", floor(t * 1e9 + 0.5));
+        tt_parse(b, &o);
+    } else
+        tt_shortest(t, &o);
+    if (tt_add(&tb->ref, &o, 0, &o)) { /* cannot happen (timetext.h) */
+        free(text);
+        return ic_oom();
+    }
+    tt_format(&o, text);
+    free(f->first[i0]);
+    f->first[i0] = text;
+    in->times[i0] = ic_rel_time(tb, text);
+    in->keys[i0] = ga_rotor_to_mat4(mean);
+    return 0;
+}
+
+/* Keys closer than --min-gap (default: 1% of the median spacing): an error
+ * naming the pair, or with --dedup merged (the keys, their times, texts and
+ * lines compacted). 0, or -1 after a message. */
+static int near_duplicates(const ic_opts *io, const ic_timebase *tb, ic_input *in)
+{
+    const cli_opts *o = io->o;
+    tio_items *f = &in->in;
+    size_t n = in->n;
+    double unit = tb->ns ? 1e-9 : 1.0, gap = o->min_gap * unit, median = 0.0;
+    const char *u = tb->ns ? "ns" : "s";
+    if (n < 2 || ((o->given & OPT_MIN_GAP) && o->min_gap == 0.0))
+        return 0;
+    if (!(o->given & OPT_MIN_GAP)) {
+        double *g = malloc((n - 1) * sizeof *g);
+        if (!g)
+            return ic_oom();
+        for (size_t i = 1; i < n; i++) g[i - 1] = in->times[i] - in->times[i - 1];
+        qsort(g, n - 1, sizeof *g, cmp_double);
+        median = (n - 1) % 2 ? g[(n - 1) / 2] : 0.5 * (g[(n - 1) / 2 - 1] + g[(n - 1) / 2]);
+        free(g);
+        gap = 0.01 * median;
+    }
+    size_t out = 0;
+    for (size_t i = 0; i < n;) {
+        size_t j = i;
+        while (j + 1 < n && in->times[j + 1] - in->times[j] < gap) j++;
+        if (j > i && !o->dedup) {
+            char dflt[96] = "";
+            if (!(o->given & OPT_MIN_GAP))
+                snprintf(dflt, sizeof dflt, " (1%% of the median spacing, %.6g %s)", median / unit, u);
+            return tio_error(
+                f, i + 1,
+                "key at t = %s is %.3g %s after the key at t = %s (line %ld), closer than --min-gap "
+                "%.6g %s%s: pass --dedup to merge such keys, or --min-gap 0 to keep them",
+                f->first[i + 1], (in->times[i + 1] - in->times[i]) / unit, u, f->first[i], f->item[i].line,
+                gap / unit, u, dflt);
+        }
+        if (j > i && merge_keys(tb, in, i, j))
+            return -1;
+        if (out != i) {
+            in->times[out] = in->times[i];
+            in->keys[out] = in->keys[i];
+            char *keep = f->first[i];
+            f->first[i] = f->first[out];
+            f->first[out] = keep;
+            f->item[out] = f->item[i];
+        }
+        out++;
+        i = j + 1;
+    }
+    in->n = out;
+    return 0;
+}
+
 int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
 {
     ga_scheme scheme = io->scheme;
@@ -210,6 +316,9 @@ int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
     for (size_t i = 0; i < n; i++)
         if (read_key(io, tb, in, i))
             return -1;
+    if (near_duplicates(io, tb, in))
+        return -1;
+    n = in->n;
     size_t min = ga_scheme_min_keys(scheme);
     if (n != 1 && (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
         fprintf(stderr, "garotor interp: %s: --scheme %s needs one key or %s %zu, found %zu\n", in->in.name,

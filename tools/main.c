@@ -56,7 +56,7 @@ static const command commands[] = {
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
          OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT | OPT_MAX_LINE | OPT_CLIP |
-         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER | OPT_COLUMNS,
+         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER | OPT_COLUMNS | OPT_MIN_GAP | OPT_DEDUP,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -90,6 +90,9 @@ static const command commands[] = {
      "                      moved on by its velocity there (bspline: outside its\n"
      "                      range; hold gives the range's end pose)\n"
      "  --clip              drop the --at and --times outside the keys instead\n"
+     "  --min-gap DT        keys closer than DT (in the keys' unit; default 1% of\n"
+     "                      their median spacing, 0: none) are an error, or with\n"
+     "  --dedup             merged: one key at their mean time and mean pose\n"
      "  --time-unit s|ns    times in seconds or whole nanoseconds; read exactly from\n"
      "                      their text, and a sample at a key's time is stamped as\n"
      "                      the key was (velocities: per second). Without it, whole\n"
@@ -188,6 +191,8 @@ static const struct {
     {"--output-format", OPT_OUTPUT_FORMAT, 1},
     {"--twist-order", OPT_TWIST_ORDER, 1},
     {"--columns", OPT_COLUMNS, 1},
+    {"--min-gap", OPT_MIN_GAP, 1},
+    {"--dedup", OPT_DEDUP, 0},
 };
 
 /* A usage error of command cmd (NULL: the demo, no command named), with a
@@ -381,6 +386,11 @@ static int parse_options(const command *c, const char *cmd, int argc, char **arg
         case OPT_OUTPUT_FORMAT: o->output_format = v; break;
         case OPT_TWIST_ORDER: o->twist_order = v; break;
         case OPT_COLUMNS: o->columns = v; break;
+        case OPT_DEDUP: o->dedup = 1; break;
+        case OPT_MIN_GAP:
+            if (parse_double(v, &o->min_gap) || !(o->min_gap >= 0.0))
+                return usage_error(cmd, "--min-gap needs a number >= 0, not", v);
+            break;
         case OPT_MAX_LINE: {
             char *end = NULL;
             errno = 0;
