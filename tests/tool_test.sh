@@ -284,6 +284,8 @@ expect_error "interp: kitti count" "k3:1: expected 12 numbers (a KITTI pose: the
     "$G" interp --format kitti --in "$d/k3" --samples 3 --out "$d/out"
 expect_error "interp: kitti read as pose" "k3.kitti:1: expected 8 numbers (t, then x y z qx qy qz qw), found 12: is this a KITTI file (3x4, no t)? pass --format kitti" \
     "$G" interp --format pose --in "$d/k3.kitti" --samples 3 --out "$d/out"
+expect_error "interp: kitti with --time-unit" "--format kitti has no times (key k is at t = k): drop --time-unit" \
+    "$G" interp --format kitti --in "$d/k3.kitti" --samples 3 --time-unit ns --out "$d/out"
 # --twist-order vw reads --velocities v first too
 printf '0 0 0.5 1 0 0\n0 0 0.3 0.5 0.5 0\n0 0 0.1 0 1 0\n' >"$d/vel.wv"
 awk '{ print $4, $5, $6, $1, $2, $3 }' "$d/vel.wv" >"$d/vel.vw"

@@ -127,6 +127,11 @@ static int row_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: --frame applies only with --with velocity[,acceleration]\n");
         return -1;
     }
+    if (o->time_unit && io->kitti) {
+        fprintf(stderr,
+                "garotor interp: --format kitti has no times (key k is at t = k): drop --time-unit\n");
+        return -1;
+    }
     io->ns = 0;
     io->unit_given = o->time_unit != NULL;
     if (o->time_unit && strcmp(o->time_unit, "ns") == 0)
