@@ -132,7 +132,9 @@ static inline int digit_count(uint64_t f)
 #endif
 }
 
-int ga_double_shortest(double x, uint64_t *digits, int *exp)
+/* ga_double_shortest's work, inlined into ga_double_format (no call through
+ * the PLT for every number). */
+static inline int shortest(double x, uint64_t *digits, int *exp)
 {
     uint64_t bits;
     memcpy(&bits, &x, sizeof bits);
@@ -175,6 +177,8 @@ int ga_double_shortest(double x, uint64_t *digits, int *exp)
     *exp = e;
     return digit_count(f);
 }
+
+int ga_double_shortest(double x, uint64_t *digits, int *exp) { return shortest(x, digits, exp); }
 
 static const char pairs[201] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
@@ -237,14 +241,29 @@ static int bits_negative(double x)
     return (int)(bits >> 63);
 }
 
-/* The 8 digits of v < 10^8 written to p[0..7]; two independent halves. */
+/* The 8 digits of v < 10^8 written to p[0..7]. On a little-endian machine
+ * all eight at once in one 64-bit word (SWAR): v split into 4-digit halves in
+ * 32-bit lanes, each into 2-digit pairs in 16-bit lanes (x 10486 >> 20 is
+ * x / 100 for x < 10^4), each pair into digits in bytes (x 103 >> 10 is
+ * x / 10 for x < 100), the first digit in the lowest byte; elsewhere by
+ * pairs from the table. */
 static inline void put8(uint32_t v, char *p)
 {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    uint64_t x = (uint64_t)(v / 10000) | ((uint64_t)(v % 10000) << 32);
+    uint64_t hi = ((x * 10486) >> 20) & 0x0000007F0000007Fu;
+    x = hi | ((x - hi * 100) << 16);
+    hi = ((x * 103) >> 10) & 0x000F000F000F000Fu;
+    x = hi | ((x - hi * 10) << 8);
+    x += 0x3030303030303030u;
+    memcpy(p, &x, 8);
+#else
     uint32_t a = v / 10000, b = v % 10000;
     memcpy(p, pairs + 2 * (a / 100), 2);
     memcpy(p + 2, pairs + 2 * (a % 100), 2);
     memcpy(p + 4, pairs + 2 * (b / 100), 2);
     memcpy(p + 6, pairs + 2 * (b % 100), 2);
+#endif
 }
 
 /* The n digits of f written to p[0..n-1]. */
@@ -271,7 +290,7 @@ static inline void put_digits(uint64_t f, int n, char *p)
 size_t ga_double_format(double x, char *buf)
 {
     uint64_t f;
-    int e, n = ga_double_shortest(x, &f, &e);
+    int e, n = shortest(x, &f, &e);
     char *p = buf;
     if (n == 0) { /* NaN or an infinity, in the words strtod reads back */
         const char *w = x != x ? "nan" : x < 0 ? "-inf" : "inf";
@@ -297,6 +316,17 @@ size_t ga_double_format(double x, char *buf)
             put_digits(f, n, p);
             p += n;
             for (int i = n; i <= xp; i++) *p++ = '0';
+        } else if (xp <= 12) {
+            /* the digits in d, then copied in two fixed-size pieces (no
+               memmove call for a byte or two): the whole part's xp + 1 and
+               the point before the rest; buf holds them (1 + 16 + 16 bytes
+               at most, before the zero) */
+            char d[40];
+            put_digits(f, n, d);
+            memcpy(p, d, 16);
+            memcpy(p + xp + 2, d + xp + 1, 16);
+            p[xp + 1] = '.';
+            p += n + 1;
         } else {
             put_digits(f, n, p + 1);
             for (int i = 0; i <= xp; i++) p[i] = p[i + 1];

@@ -59,7 +59,8 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     npy_intp n = PyArray_NDIM(x) ? PyArray_DIM(x, 0) : 0;
     npy_intp width = k == 0 ? 6 : k == 1 ? 16 : k == 3 ? 32 : 1, owidth = k == 3 ? 32 : 16;
     if (k < 0 || PyArray_SIZE(x) != n * width) {
-        PyErr_SetString(PyExc_ValueError, "c_loop: kind exp (n, 6), log (n, 4, 4), sample (n,) or gp (n, 32)");
+        PyErr_SetString(PyExc_ValueError,
+                        "c_loop: kind exp (n, 6), log (n, 4, 4), sample (n,) or gp (n, 32)");
         goto done;
     }
     if (k == 3 && (!(kt = doubles(to)) || PyArray_SIZE(kt) != n * width)) {

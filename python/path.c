@@ -454,6 +454,67 @@ static PyObject *Path_jerk(gpy_PathObject *self, PyObject *args, PyObject *kw)
                                                         : (gpy_core)GPY_CORE1(6, NULL));
 }
 
+/* Path.sample_pose: the pose x y z qx qy qz qw of each sample from the
+ * group's own rotation and translation (to_qt, as `garotor interp --format
+ * pose` writes it), the quaternion's sign following the previous sample's
+ * along t's last axis (the first: qw >= 0). */
+typedef struct {
+    path_ctx pc;
+    npy_intp run;
+    double prev[4];
+} pose_path_ctx;
+
+static int k_sample_pose(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    pose_path_ctx *c = ctx;
+    const ga_path *p = c->pc.path;
+    double e[GA_GROUP_MAX_ELEM], q[4], t[3];
+    int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
+    if (st != GA_OK)
+        return path_failed(&c->pc, st);
+    p->group->to_qt(e, q, t);
+    if (c->run == 0 || k % c->run == 0) {
+        c->prev[0] = 1.0;
+        c->prev[1] = c->prev[2] = c->prev[3] = 0.0;
+    }
+    if (q[0] * c->prev[0] + q[1] * c->prev[1] + q[2] * c->prev[2] + q[3] * c->prev[3] < 0.0)
+        for (int i = 0; i < 4; i++) q[i] = -q[i];
+    memcpy(c->prev, q, sizeof q);
+    double v[7] = {t[0], t[1], t[2], q[1], q[2], q[3], q[0]};
+    memcpy(out, v, sizeof v);
+    return GA_OK;
+}
+
+static PyObject *Path_sample_pose(gpy_PathObject *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"t", "out", NULL};
+    PyObject *t, *out = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !path_ready(self))
+        return NULL;
+    if (!self->group->to_qt) {
+        PyErr_Format(PyExc_ValueError, "Path.sample_pose: group '%s' has no poses (sample gives matrices)",
+                     self->group->name);
+        return NULL;
+    }
+    PyArrayObject *a = gpy_as_doubles(t);
+    if (!a)
+        return NULL;
+    pose_path_ctx c = {{&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY}, 0, {1, 0, 0, 0}};
+    if (PyArray_NDIM(a) >= 1)
+        c.run = PyArray_DIM(a, PyArray_NDIM(a) - 1);
+    gpy_kernel_call kc = {.what = "Path.sample_pose",
+                          .nin = 1,
+                          .in = {{.ncore = 0, .name = "t"}},
+                          .out = GPY_CORE1(7, NULL),
+                          .kernel = k_sample_pose,
+                          .ctx = &c,
+                          .explain = explain_time,
+                          .lock = self->lock};
+    PyObject *r = gpy_run_kernel(&kc, (PyObject **)&a, out);
+    Py_DECREF(a);
+    return r;
+}
+
 /* ---- append and the attributes ---------------------------------------------- */
 
 static void read_n(gpy_PathObject *self, void *n) { *(size_t *)n = self->path.n; }
@@ -807,6 +868,10 @@ done:
 static PyMethodDef Path_methods[] = {
     {"sample", (PyCFunction)(void (*)(void))Path_sample, METH_VARARGS | METH_KEYWORDS,
      "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
+    {"sample_pose", (PyCFunction)(void (*)(void))Path_sample_pose, METH_VARARGS | METH_KEYWORDS,
+     "sample_pose(t, *, out=None): the poses at the times t as (..., 7) rows x y z qx qy qz qw, from the "
+     "group's rotation and translation (garotor interp --format pose, bit for bit); the quaternion's sign "
+     "follows the previous sample's along t's last axis (cga and matrix)."},
     {"velocity", (PyCFunction)(void (*)(void))Path_velocity, METH_VARARGS | METH_KEYWORDS,
      "velocity(t, *, frame='body', out=None): the velocity per unit time at the times t: (..., 6) twists "
      "(affine: (..., 4, 4)); frame 'body' A(t)^-1 dA/dt, 'spatial' dA/dt A(t)^-1, 'world' (rigid groups) "

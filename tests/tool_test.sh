@@ -247,6 +247,163 @@ expect_error "interp: --times outside" "--times time -1 is outside the keys' ran
 "$G" interp --format pose --in "$d/k3" --at -1 --extrapolate extend >"$d/ext" || fail "--extrapolate extend"
 [ "$(cut -d' ' -f1-4 "$d/ext")" = "-1 -0.28 0.96 0" ] ||
     fail "--extrapolate extend: $(cat "$d/ext")"
+# constant-velocity: the end pose moved on by the end's body velocity. On a
+# screw path that is the end segment continued (extend), to rounding
+near() { # near FILE1 FILE2 TOL: the same numbers, to TOL
+    paste -d' ' "$1" "$2" | awk -v tol="$3" '{ h = NF / 2; for (i = 1; i <= h; i++) { e = $i - $(i + h)
+        if (e < 0) e = -e; if (e > w) w = e } } END { exit !(NR > 0 && w <= tol) }'
+}
+"$G" interp --format pose --in "$d/k3" --at -1,3.5,6 --extrapolate extend >"$d/ext.e" || fail "extend"
+"$G" interp --format pose --in "$d/k3" --at -1,3.5,6 --extrapolate constant-velocity >"$d/ext.cv" ||
+    fail "--extrapolate constant-velocity"
+near "$d/ext.e" "$d/ext.cv" 1e-14 || fail "constant-velocity on a screw path is not extend: $(cat "$d/ext.cv")"
+# on c2 (velocity varies along a segment): past the end the body velocity is
+# the end's, exactly, and the acceleration zero; the poses lie on one screw
+# motion from the end key, so the screw through the end key and the sample at
+# t = 3.1 gives the sample at t = 2.8 (an independent construction)
+"$G" interp --scheme c2 --format pose --in "$d/k3" --at 2.5,2.8,3.1 --extrapolate constant-velocity \
+    --with velocity,acceleration >"$d/cv.c2" || fail "c2 constant-velocity"
+[ "$(cut -d' ' -f9-14 "$d/cv.c2" | sort -u | wc -l)" -eq 1 ] || fail "c2 constant-velocity: velocity not constant: $(cat "$d/cv.c2")"
+[ "$(sed -n 2,3p "$d/cv.c2" | cut -d' ' -f15-20 | sort -u)" = "0 0 0 0 0 0" ] || fail "c2 constant-velocity: acceleration"
+sed -n '1p;3p' "$d/cv.c2" | cut -d' ' -f1-8 >"$d/cv.keys"
+"$G" interp --format pose --in "$d/cv.keys" --at 2.5,2.8 | sed -n 2p >"$d/cv.screw" || fail "screw through the constant-velocity samples"
+sed -n 2p "$d/cv.c2" | cut -d' ' -f1-8 >"$d/cv.4"
+near "$d/cv.screw" "$d/cv.4" 1e-14 || fail "c2 constant-velocity: not the end's screw: $(cat "$d/cv.4") against $(cat "$d/cv.screw")"
+# --clip: the given times outside the keys dropped
+"$G" interp --format pose --in "$d/k3" --times "$d/tt" --clip >"$d/clip" || fail "--clip"
+[ "$(cut -d' ' -f1 "$d/clip" | tr '\n' ' ')" = "1 " ] || fail "--clip: $(cat "$d/clip")"
+expect_error "interp: --clip and --extrapolate" "--clip drops the times --extrapolate hold would sample: give one" \
+    "$G" interp --format pose --in "$d/k3" --times "$d/tt" --clip --extrapolate hold --out "$d/out"
+# ---- layouts: --quat-order, --output-format, --format kitti, --twist-order ----
+awk '{ print $1, $2, $3, $4, $8, $5, $6, $7 }' "$d/k3" >"$d/k3.wxyz"
+"$G" interp --format pose --in "$d/k3" --samples 7 >"$d/k3.xyzw.out" || fail "k3 samples"
+"$G" interp --format pose --quat-order wxyz --in "$d/k3.wxyz" --samples 7 --output-format tum >"$d/k3.tum" ||
+    fail "--quat-order wxyz --output-format tum"
+cmp -s "$d/k3.xyzw.out" "$d/k3.tum" || fail "--quat-order wxyz read, tum written: not the xyzw samples"
+"$G" interp --format pose --quat-order wxyz --in "$d/k3.wxyz" --samples 7 >"$d/k3.wxyz.out" || fail "--quat-order wxyz"
+awk '{ print $1, $2, $3, $4, $6, $7, $8, $5 }' "$d/k3.wxyz.out" | cmp -s - "$d/k3.xyzw.out" ||
+    fail "--quat-order wxyz: not written w first"
+"$G" interp --format pose --in "$d/k3" --samples 7 --output-format csv --with velocity --twist-order vw >"$d/k3.csv" ||
+    fail "--output-format csv"
+[ "$(sed -n 1p "$d/k3.csv")" = "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz" ] || fail "csv header: $(sed -n 1p "$d/k3.csv")"
+"$G" interp --format pose --in "$d/k3" --samples 7 --with velocity >"$d/k3.v" || fail "--with velocity"
+sed 1d "$d/k3.csv" | tr ',' ' ' | awk '{ print $1, $2, $3, $4, $5, $6, $7, $8, $12, $13, $14, $9, $10, $11 }' |
+    cmp -s - "$d/k3.v" || fail "csv --twist-order vw: not the samples with v first"
+# KITTI: 12 numbers a key, key k at t = k; written back as KITTI the keys
+# come back as they were read
+"$G" interp --format pose --in "$d/k3" --at 0,1,2.5 --output-format kitti >"$d/k3.kitti" || fail "--output-format kitti"
+[ "$(awk '{ print NF }' "$d/k3.kitti" | sort -u)" = 12 ] || fail "kitti: not 12 numbers a line"
+"$G" interp --format kitti --in "$d/k3.kitti" --samples 3 >"$d/k3.kitti2" || fail "--format kitti"
+cmp -s "$d/k3.kitti" "$d/k3.kitti2" || fail "kitti round trip: $(cat "$d/k3.kitti2")"
+"$G" interp --format kitti --in "$d/k3.kitti" --samples 3 --output-format pose | cut -d' ' -f1 | tr '\n' ' ' >"$d/kt"
+[ "$(cat "$d/kt")" = "0 1 2 " ] || fail "kitti keys at t = 0, 1, 2: $(cat "$d/kt")"
+expect_error "interp: kitti count" "k3:1: expected 12 numbers (a KITTI pose: the 3x4 \\[R t\\] row by row), found 8: is this a pose file? pass --format pose" \
+    "$G" interp --format kitti --in "$d/k3" --samples 3 --out "$d/out"
+expect_error "interp: kitti read as pose" "k3.kitti:1: expected 8 numbers (t, then x y z qx qy qz qw), found 12: is this a KITTI file (3x4, no t)? pass --format kitti" \
+    "$G" interp --format pose --in "$d/k3.kitti" --samples 3 --out "$d/out"
+expect_error "interp: kitti with --time-unit" "--format kitti has no times (key k is at t = k): drop --time-unit" \
+    "$G" interp --format kitti --in "$d/k3.kitti" --samples 3 --time-unit ns --out "$d/out"
+# --twist-order vw reads --velocities v first too
+printf '0 0 0.5 1 0 0\n0 0 0.3 0.5 0.5 0\n0 0 0.1 0 1 0\n' >"$d/vel.wv"
+awk '{ print $4, $5, $6, $1, $2, $3 }' "$d/vel.wv" >"$d/vel.vw"
+"$G" interp --scheme lihao3 --format pose --in "$d/k3" --velocities "$d/vel.wv" --samples 9 >"$d/l3.wv" || fail "lihao3 wv"
+"$G" interp --scheme lihao3 --format pose --in "$d/k3" --velocities "$d/vel.vw" --twist-order vw --samples 9 >"$d/l3.vw" ||
+    fail "lihao3 --twist-order vw"
+cmp -s "$d/l3.wv" "$d/l3.vw" || fail "--twist-order vw: --velocities not read v first"
+"$G" interp --format pose --in "$d/k3" --at 0,1,2.5 --output-format mat >"$d/k3.mat" || fail "--output-format mat"
+expect_error "interp: --output-format" "--output-format must be mat, pose, tum, kitti or csv, not 'json'" \
+    "$G" interp --format pose --in "$d/k3" --samples 3 --output-format json --out "$d/out"
+expect_error "interp: --format" "--format must be mat, pose or kitti, not 'tum'" \
+    "$G" interp --format tum --in "$d/k3" --samples 3 --out "$d/out"
+expect_error "interp: tum with velocity" "--output-format tum has no room for --with: use pose, mat or csv" \
+    "$G" interp --format pose --in "$d/k3" --samples 3 --output-format tum --with velocity --out "$d/out"
+expect_error "interp: --quat-order" "--quat-order must be xyzw or wxyz, not 'wzyx'" \
+    "$G" interp --format pose --in "$d/k3" --samples 3 --quat-order wzyx --out "$d/out"
+expect_error "interp: --quat-order on matrices" "--quat-order applies to --format pose, --output-format pose or csv" \
+    "$G" interp --in "$d/k3.mat" --samples 3 --quat-order wxyz --out "$d/out"
+expect_error "interp: --twist-order" "--twist-order must be wv or vw, not 'ww'" \
+    "$G" interp --format pose --in "$d/k3" --samples 3 --twist-order ww --out "$d/out"
+expect_error "interp: affine csv" "--group affine writes matrices (--output-format mat or kitti)" \
+    "$G" interp --group affine --in "$d/k3.mat" --samples 3 --output-format csv --out "$d/out"
+expect_error "interp: affine --twist-order" "--twist-order applies to --group cga or matrix" \
+    "$G" interp --group affine --in "$d/k3.mat" --samples 3 --twist-order vw --out "$d/out"
+# the quaternion written before the position: its norm fails, the first four pass
+awk '{ print $1, $5, $6, $7, $8, $2, $3, $4 }' "$d/k3" >"$d/k3.qfirst"
+expect_error "interp: quaternion first" "k3.qfirst:2: not a rigid motion: the quaternion has norm 1.2806248474865698, not 1 (to 1e-9; --normalize accepts up to 1e-3); the four numbers after t have norm 1: is the quaternion written before the position? the tool reads t x y z, then the quaternion" \
+    "$G" interp --format pose --in "$d/k3.qfirst" --samples 3 --out "$d/out"
+# ---- --columns: any layout, a header read by name (a rostopic echo -p CSV
+# with a frame id column and two time columns), the same samples as the file
+# cut to t x y z qx qy qz qw ----
+ros=$(dirname "$doc")/figures/ros-pose.csv
+"$G" interp --columns header,t=field.header.stamp --time-unit ns --samples 5 --in "$ros" >"$d/ros.out" ||
+    fail "--columns header on a rostopic CSV"
+sed 1d "$ros" | cut -d, -f3,5- | tr ',' ' ' >"$d/ros.cut"
+"$G" interp --format pose --time-unit ns --samples 5 --in "$d/ros.cut" | cmp -s - "$d/ros.out" ||
+    fail "--columns header: not the samples of the cut file"
+"$G" interp --columns t=3,x=5,y=6,z=7,qx=8,qy=9,qz=10,qw=11 --header --time-unit ns --samples 5 --in "$ros" |
+    cmp -s - "$d/ros.out" || fail "--columns by number: not the same samples"
+awk '{ print $8, $1, $2, $3, $4, $5, $6, $7, "extra" }' "$d/k3" >"$d/k3.perm"
+"$G" interp --columns qw,t,x,y,z,qx,qy,qz --in "$d/k3.perm" --samples 7 | cmp -s - "$d/k3.xyzw.out" ||
+    fail "--columns in another order (an extra column after them)"
+expect_error "interp: --columns two time columns" "ros-pose.csv:1: columns 1 (%time) and 3 (field.header.stamp) both look like t: pick one with --columns header,t=NAME" \
+    "$G" interp --columns header --samples 3 --in "$ros" --out "$d/out"
+expect_error "interp: --columns no such name" "ros-pose.csv:1: no column named 'stamp' in the header (--columns t=stamp)" \
+    "$G" interp --columns header,t=stamp --samples 3 --in "$ros" --out "$d/out"
+printf 'time,a,b,c,d,e,f,g\n0,0,0,0,0,0,0,1\n' >"$d/nohdr.csv"
+expect_error "interp: --columns nothing like x" "nohdr.csv:1: no column of the header looks like x: name it, --columns header,x=NAME (or a column number)" \
+    "$G" interp --columns header --samples 3 --in "$d/nohdr.csv" --out "$d/out"
+: >"$d/empty"
+expect_error "interp: --columns no header row" "empty: no header row (--columns header reads one)" \
+    "$G" interp --columns header --samples 3 --in "$d/empty" --out "$d/out"
+expect_error "interp: --columns short line" "k3:1: 8 columns, but --columns reads column 9 (qw)" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,-,qw --samples 3 --in "$d/k3" --out "$d/out"
+printf '0,0,0,0,0,0,0,1\n1,zz,0,0,0,0,0,1\n' >"$d/zz.csv"
+expect_error "interp: --columns not a number" "zz.csv:2: column 2 (x): 'zz' is not a number" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,qw --samples 3 --in "$d/zz.csv" --out "$d/out"
+printf '0,0,0,0,0,0,0,1\n1,inf,0,0,0,0,0,1\n' >"$d/inf.csv"
+expect_error "interp: --columns not finite" "inf.csv:2: column 2 (x): 'inf' is not finite" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,qw --samples 3 --in "$d/inf.csv" --out "$d/out"
+printf '0 2 0 0 0 0 0 1\n1 3 0 0 0 0 0 1\n' >"$d/x2"
+expect_error "interp: --columns qw beyond 1" "x2:1: column 2 (qw) is 2: beyond 1, not a unit quaternion's; is that column the quaternion's? (--columns t,qw,qx,qy,qz,x,y,z)" \
+    "$G" interp --columns t,qw,qx,qy,qz,x,y,z --samples 3 --in "$d/x2" --out "$d/out"
+expect_error "interp: --columns bad word" "--columns: 'w' is not a column: name t x y z qx qy qz qw (or - to skip one) in the file's order, or ROLE=COLUMN (a number from 1, or a name in the header row), or header" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,w --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns twice" "--columns: a role given twice: 'x'" \
+    "$G" interp --columns t,x,x,z,qx,qy,qz,qw --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns mixed" "--columns: either the columns in order (t,x,...) or ROLE=COLUMN pairs and header, not both" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz,qw=8 --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns missing" "--columns gives no column for qw" \
+    "$G" interp --columns t,x,y,z,qx,qy,qz --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns with --format mat" "--columns reads poses: drop --format mat" \
+    "$G" interp --columns header --format mat --samples 3 --in "$d/k3" --out "$d/out"
+expect_error "interp: --columns with --quat-order" "--columns names the quaternion's columns: drop --quat-order" \
+    "$G" interp --columns header --quat-order wxyz --samples 3 --in "$d/k3" --out "$d/out"
+# ---- near-duplicate keys: closer than 1% of the median spacing an error;
+# --dedup merges them into their mean (time and pose), --min-gap 0 keeps them ----
+printf '0 0 0 0 0 0 0 1\n0.0333 0.1 0 0 0 0 0 1\n0.0334 0.1001 0 0 0 0 0 1\n0.0666 0.2 0 0 0 0 0 1\n0.1 0.3 0 0 0 0 0 1\n' >"$d/dup"
+expect_error "interp: near-duplicate keys" "dup:3: key at t = 0.0334 is 0.0001 s after the key at t = 0.0333 (line 2), closer than --min-gap 0.0003325 s (1% of the median spacing, 0.03325 s): pass --dedup to merge such keys, or --min-gap 0 to keep them" \
+    "$G" interp --format pose --in "$d/dup" --samples 3 --out "$d/out"
+expect_error "interp: --min-gap given" "closer than --min-gap 0.001 s: pass --dedup" \
+    "$G" interp --format pose --in "$d/dup" --samples 3 --min-gap 0.001 --out "$d/out"
+"$G" interp --format pose --in "$d/dup" --samples 3 --min-gap 0 >/dev/null || fail "--min-gap 0 keeps near-duplicates"
+# merged: one key at t = 0.03335, x = 0.10005 (the keys lie on x, rotation none)
+"$G" interp --format pose --in "$d/dup" --at 0.03335 --dedup >"$d/dedup" || fail "--dedup"
+awk '{ e = $2 - 0.10005; exit !($1 == "0.03335" && e < 1e-15 && e > -1e-15) }' "$d/dedup" ||
+    fail "--dedup: not the mean key: $(cat "$d/dedup")"
+expect_error "interp: --dedup on affine" "--dedup applies to --group cga or matrix" \
+    "$G" interp --group affine --in "$d/k3.mat" --samples 3 --dedup --out "$d/out"
+expect_error "interp: --min-gap" "--min-gap needs a number >= 0, not: -1" \
+    "$G" interp --format pose --in "$d/dup" --samples 3 --min-gap -1 --out "$d/out"
+# ---- time units: whole-number stamps of 12 digits or more are not taken
+# for seconds unless --time-unit says so ----
+sed 's/^0 /1305031102175800000 /; s/^1 /1305031103175800000 /; s/^2.5 /1305031104675800000 /' "$d/k3" >"$d/k3.ns"
+expect_error "interp: ns stamps as seconds" "k3.ns:1: the time 1305031102175800000 looks like nanoseconds (a whole number of 19 digits): pass --time-unit ns (or --time-unit s if it is seconds)" \
+    "$G" interp --format pose --in "$d/k3.ns" --samples 3 --out "$d/out"
+"$G" interp --format pose --in "$d/k3.ns" --samples 3 --time-unit ns >/dev/null || fail "--time-unit ns on ns stamps"
+"$G" interp --format pose --in "$d/k3.ns" --samples 3 --time-unit s >/dev/null || fail "--time-unit s on ns stamps"
+sed 's/^0 /1305031102175 /; s/^1 /1305031103175 /; s/^2.5 /1305031104675 /' "$d/k3" >"$d/k3.ms"
+expect_error "interp: ms stamps" "k3.ms:1: the time 1305031102175 looks like milliseconds (a whole number of 13 digits): --time-unit takes s or ns: convert the times (or pass --time-unit s if they are seconds)" \
+    "$G" interp --format pose --in "$d/k3.ms" --samples 3 --out "$d/out"
 # ---- --scheme bspline: 12 keys at 100 Hz with epoch stamps; its range is
 # the second key's time to the last but one's ----
 awk 'BEGIN { for (i = 0; i < 12; i++) { t = i / 100; a = 3 * t + sin(9 * t); b = cos(7 * t)
@@ -289,13 +446,19 @@ expect_error "interp: bspline uneven" "bs.uneven:6: --scheme bspline needs evenl
     "$G" interp --scheme bspline --format pose --normalize --in "$d/bs.uneven" --samples 3 --out "$d/out"
 expect_error "interp: bspline, --rate below the range" "--rate 5: no sample time in the path's range \\[1305031102.18, 1305031102.27\\]" \
     "$G" interp --scheme bspline --format pose --normalize --in "$d/bs" --rate 5 --out "$d/out"
-# ---- streaming: samples are written a chunk (512) at a time, yet a failure
-# after thousands of good samples still writes nothing (standard output: every
-# sample is checked before the first line; a file: the temporary is removed) ----
+# ---- streaming: each sample is made once and written as it is made; a
+# failure after thousands of good samples names the sample and its time, and
+# leaves no --out file (the temporary is removed); on standard output the
+# samples before it stay written ----
 awk 'BEGIN { for (i = 0; i < 3000; i++) print i / 3000; print "1e300" }' >"$d/late"
-expect_error "interp: a sample fails after 3000 (stdout)" "sampling failed" \
-    "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend
-expect_error "interp: a sample fails after 3000 (--out)" "sampling failed" \
+"$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend >"$d/late.out" 2>"$d/late.err"
+rc=$?
+cat "$d/late.err" >>"$d/all_stderr"
+[ "$rc" -eq 2 ] || fail "interp: a sample fails after 3000 (stdout): exit status $rc, want 2"
+grep -q "k3: sample 3001 at t = 1e300: sampling failed: outside the domain" "$d/late.err" ||
+    fail "interp: a sample fails after 3000 (stdout): message '$(cat "$d/late.err")'"
+[ "$(wc -l <"$d/late.out")" -eq 3000 ] || fail "interp: the 3000 samples before the failure are not on stdout"
+expect_error "interp: a sample fails after 3000 (--out)" "sample 3001 at t = 1e300: sampling failed" \
     "$G" interp --format pose --in "$d/k3" --times "$d/late" --extrapolate extend --out "$d/out"
 # a run killed while it writes (SIGTERM; SIGINT and SIGHUP alike) removes its
 # temporary: no sig.out.tmpXXXXXX is left
@@ -311,7 +474,7 @@ expect_error "interp: --out and --svg one file" "--out and --svg name the same f
 # (at 1e4 only the acceleration the tool computed with every velocity overflowed,
 # through the 4x4 jet's squarings; a velocity alone, and the closed-form
 # acceleration, are finite there: 1e100 puts the velocity itself past DBL_MAX)
-expect_error "interp: a velocity overflows" "sample 1: no velocity: outside the domain" \
+expect_error "interp: a velocity overflows" "sample 1 at t = 1e100: no velocity: outside the domain" \
     "$G" interp --format pose --scheme smooth --at 1e100 --extrapolate extend --with velocity \
     --in "$(dirname "$doc")/figures/schemes.keys" --out "$d/out"
 # the chunked samples are those of one call: the same lines to standard output,
@@ -474,7 +637,7 @@ expect_error "interp: --times empty" "tt0: no times" "$G" interp --format pose -
 expect_error "interp: --rate 0" "--rate needs a number > 0, not: 0" "$G" interp --in "$d/k3" --rate 0 --out "$d/out"
 expect_error "interp: --rate huge" "--rate 1.0000000000000001e+300 gives more than 1e9 samples" \
     "$G" interp --format pose --in "$d/k3" --rate 1e300 --out "$d/out"
-expect_error "interp: --extrapolate" "--extrapolate must be error, hold or extend, not 'wrap'" \
+expect_error "interp: --extrapolate" "--extrapolate must be error, hold, extend or constant-velocity, not 'wrap'" \
     "$G" interp --format pose --in "$d/k3" --rate 1 --extrapolate wrap --out "$d/out"
 expect_error "interp: too few keys (smooth)" "two: --scheme smooth needs one key or at least 3, found 2" \
     "$G" interp --scheme smooth --format pose --samples 3 --in "$d/two" --out "$d/out"

@@ -2,43 +2,53 @@
 #ifndef GAROTOR_TOOLS_CLI_H
 #define GAROTOR_TOOLS_CLI_H
 
-/** Every option any command takes; each command says which it accepts. */
-enum {
-    OPT_IN = 1 << 0,
-    OPT_OUT = 1 << 1,
-    OPT_HEADER = 1 << 2,
-    OPT_GROUP = 1 << 3,
-    OPT_SCHEME = 1 << 4,
-    OPT_SAMPLES = 1 << 5,
-    OPT_AT = 1 << 6,
-    OPT_FORMAT = 1 << 7,
-    OPT_EVAL = 1 << 8,
-    OPT_STEP = 1 << 9,
-    OPT_V0 = 1 << 10,
-    OPT_VELOCITIES = 1 << 11,
-    OPT_SVG = 1 << 12,
-    OPT_VIEW = 1 << 13,
-    OPT_NORMALIZE = 1 << 14,
-    OPT_WITH = 1 << 15,
-    OPT_FRAME = 1 << 16,
-    OPT_RATE = 1 << 17,
-    OPT_TIMES = 1 << 18,
-    OPT_EXTRAPOLATE = 1 << 19,
-    OPT_HTML = 1 << 20,
-    OPT_VERB = 1 << 21, /* not an option: the command takes an operation word first */
-    OPT_TIME_UNIT = 1 << 22,
-    OPT_MAX_LINE = 1 << 23,
-    OPT_TEXT = 1 << 24
-};
+/** Every option any command takes; each command says which it accepts (an
+ *  opt_bits of them: more than an int holds). */
+typedef unsigned long long opt_bits;
+#define OPT_IN (1ULL << 0)
+#define OPT_OUT (1ULL << 1)
+#define OPT_HEADER (1ULL << 2)
+#define OPT_GROUP (1ULL << 3)
+#define OPT_SCHEME (1ULL << 4)
+#define OPT_SAMPLES (1ULL << 5)
+#define OPT_AT (1ULL << 6)
+#define OPT_FORMAT (1ULL << 7)
+#define OPT_EVAL (1ULL << 8)
+#define OPT_STEP (1ULL << 9)
+#define OPT_V0 (1ULL << 10)
+#define OPT_VELOCITIES (1ULL << 11)
+#define OPT_SVG (1ULL << 12)
+#define OPT_VIEW (1ULL << 13)
+#define OPT_NORMALIZE (1ULL << 14)
+#define OPT_WITH (1ULL << 15)
+#define OPT_FRAME (1ULL << 16)
+#define OPT_RATE (1ULL << 17)
+#define OPT_TIMES (1ULL << 18)
+#define OPT_EXTRAPOLATE (1ULL << 19)
+#define OPT_HTML (1ULL << 20)
+#define OPT_VERB (1ULL << 21) /* not an option: the command takes an operation word first */
+#define OPT_TIME_UNIT (1ULL << 22)
+#define OPT_MAX_LINE (1ULL << 23)
+#define OPT_CLIP (1ULL << 24)
+#define OPT_QUAT_ORDER (1ULL << 25)
+#define OPT_OUTPUT_FORMAT (1ULL << 26)
+#define OPT_TWIST_ORDER (1ULL << 27)
+#define OPT_COLUMNS (1ULL << 28)
+#define OPT_MIN_GAP (1ULL << 29)
+#define OPT_DEDUP (1ULL << 30)
+#define OPT_TEXT (1ULL << 31)
 
 #include <stddef.h>
 
 typedef struct {
-    unsigned given; /* OPT_* bits of the options on the command line */
+    opt_bits given; /* OPT_* bits of the options on the command line */
     const char *in, *out, *svg, *velocities, *at, *view, *html;
     const char *group, *scheme, *format, *eval, *with, *frame, *times, *extrapolate;
     const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
     const char *verb;                  /* `versor exp`: the operation word */
+    const char *quat_order, *output_format, *twist_order, *columns;
+    int clip, dedup;
+    double min_gap; /* --min-gap, in the keys' time unit */
     double rate;
     int header, normalize, text; /* --text: multivectors with blade names */
     long samples;

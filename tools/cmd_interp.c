@@ -1,13 +1,13 @@
 /* tools/cmd_interp.c: `garotor interp`, samples of a path through key poses.
  *
  * Reads keyframes (t, then a pose: 16 numbers with --format mat, 7 with
- * --format pose), builds the path of --scheme on --group (path.h), and writes
- * t and the pose of each sample in the same format. Everything is read and
- * checked before anything is written; the samples are then made and written
- * a chunk at a time, never all held (interp_write.c), and a failure still
- * leaves no output. With --svg FILE it also draws the path (svg.h); a failure
- * then leaves neither the samples' file nor the picture. The steps are in
- * the files named in interp_cmd.h. */
+ * --format pose; KITTI's 12 with --format kitti), builds the path of --scheme
+ * on --group (path.h), and writes t and the pose of each sample as
+ * --output-format says. Everything is read and checked before anything is
+ * written; the samples are then made once and written a chunk at a time,
+ * never all held (interp_write.c). With --svg FILE it also draws the path
+ * (svg.h); a failure then leaves neither the samples' file nor the picture.
+ * The steps are in the files named in interp_cmd.h. */
 #include "interp_cmd.h"
 
 #include <stdio.h>
@@ -83,7 +83,7 @@ int cmd_interp(const cli_opts *o)
        else its hat, a 4x4 with zero last row (16) */
     smp.path = &path;
     smp.dw = io.g->rigid ? 6 : 16;
-    smp.pw = io.pose ? 8 : 17;
+    smp.pw = io.out_fmt == IC_OUT_MAT ? 17 : io.out_fmt == IC_OUT_KITTI ? 13 : 8; /* t and the pose */
     smp.width = smp.pw + (io.with_v + io.with_a + io.with_j) * smp.dw;
     if (ic_write(&io, &in, &smp) == 0)
         rc = 0;

@@ -2,6 +2,7 @@
  * its files; internal to the tool, every name prefixed ic_.
  *
  *   interp_opts.c    the options, parsed and checked into an ic_opts
+ *   interp_columns.c --columns: keys in any column layout, a header read by name
  *   interp_read.c    the inputs: keys (mat or pose), --at, --times, --v0,
  *                    --velocities, read and checked into an ic_input
  *   interp_times.c   times relative to the first key, exactly; the sample
@@ -30,11 +31,19 @@ typedef struct {
     ga_eval ev;
     svg_view view;
     int pose;                   /* --format pose */
-    int extrap;                 /* --extrapolate: 0 error, 1 hold, 2 extend */
+    int kitti;                  /* --format kitti: 12 numbers a key, no t */
+    int extrap;                 /* --extrapolate: 0 error, 1 hold, 2 extend, 3 constant-velocity */
+    int clip;                   /* --clip: given times outside the range dropped */
     int with_v, with_a, with_j; /* --with velocity,acceleration,jerk (any of them) */
     ga_frame frame;             /* --frame */
     int ns;                     /* --time-unit ns */
+    int unit_given;             /* --time-unit given (no guess from the stamps then) */
+    int wxyz;                   /* --quat-order wxyz */
+    int vw;                     /* --twist-order vw: twists written (and read) v first */
+    int out_fmt;                /* --output-format: an IC_OUT_* */
 } ic_opts;
+/* What a row of samples is (--output-format; default: as the keys were read). */
+enum { IC_OUT_MAT, IC_OUT_POSE, IC_OUT_TUM, IC_OUT_KITTI, IC_OUT_CSV };
 /* Parse and check every option, in the order their messages come. */
 int ic_options(const cli_opts *o, ic_opts *io);
 
@@ -54,24 +63,29 @@ int ic_whole(const char *text);
 
 /* What was read, all of it held until the command ends (ic_input_free). */
 typedef struct {
-    tio_items in;   /* the keys' file */
-    tio_items tin;  /* --times FILE */
-    tio_items vin;  /* --velocities FILE */
-    size_t n;       /* keys */
-    double *times;  /* the keys' relative times */
-    ga_mat4 *keys;  /* the keys, as matrices */
-    size_t i0, i1;  /* the path's range (ga_path_range): from key i0 to key i1 */
-    char *at_buf;   /* --at: a copy of its text */
-    char **at_arg;  /* --at: each time's text, in at_buf */
-    size_t nat;     /* given times (--at, --times) */
-    char **at_text; /* given times as written, NULL for none */
-    double *at;     /* given times, relative */
-    double *vel;    /* --v0 (one) or --velocities (one a key), NULL for none */
+    tio_items in;     /* the keys' file */
+    tio_items tin;    /* --times FILE */
+    tio_items vin;    /* --velocities FILE */
+    size_t n;         /* keys */
+    double *times;    /* the keys' relative times */
+    ga_mat4 *keys;    /* the keys, as matrices */
+    size_t i0, i1;    /* the path's range (ga_path_range): from key i0 to key i1 */
+    char *at_buf;     /* --at: a copy of its text */
+    char **at_arg;    /* --at: each time's text, in at_buf */
+    size_t nat;       /* given times (--at, --times) */
+    char **at_text;   /* given times as written, NULL for none */
+    char **clip_text; /* --clip: those kept (the texts are at_arg's or tin's) */
+    double *at;       /* given times, relative */
+    double *vel;      /* --v0 (one) or --velocities (one a key), NULL for none */
 } ic_input;
 /* --at t1,t2,...: the texts of the times, checked to be finite numbers. */
 int ic_parse_at(const char *s, ic_input *in);
-/* The keys' file: keys in --format, times increasing, enough for --scheme. */
+/* The keys' file: keys in --format, times increasing, enough for --scheme
+ * (with no --time-unit, whole-number stamps of 12 digits or more refused). */
 int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in);
+/* --columns: the keys' file in any column layout, read into the items of a
+ * pose file (t x y z qx qy qz qw) (interp_columns.c). */
+int ic_read_columns(const ic_opts *io, tio_items *out);
 /* The given times (--times FILE or --at), relative to the first key's. */
 int ic_read_times(const ic_opts *io, const ic_timebase *tb, ic_input *in);
 /* --v0 or --velocities FILE, as elements of the group's algebra. */
@@ -90,10 +104,11 @@ typedef struct {
     double step;
     int extrap, pose, with_v, with_a, with_j;
     ga_frame frame;
-    int pw, dw, width;   /* pose, algebra element and row widths */
-    const double *times; /* the keys' relative times */
-    size_t n;            /* keys */
-    size_t i0, i1;       /* the path's range: from key i0 to key i1 (bspline: 1 and n - 2) */
+    int out_fmt, wxyz, vw; /* --output-format, --quat-order wxyz, --twist-order vw */
+    int pw, dw, width;     /* pose, algebra element and row widths */
+    const double *times;   /* the keys' relative times */
+    size_t n;              /* keys */
+    size_t i0, i1;         /* the path's range: from key i0 to key i1 (bspline: 1 and n - 2) */
     ic_when kind;
     size_t ns;            /* samples (IC_RATE: the most there can be) */
     const double *at;     /* IC_GIVEN: the times, relative */
@@ -102,6 +117,9 @@ typedef struct {
     int rq, rexact;
     size_t k0;     /* IC_RATE: the first k in the range */
     double s0, sp; /* IC_NS_SAMPLES: the range's start and span in nanoseconds */
+    /* --extrapolate constant-velocity: the pose and body velocity at the
+       range's start [0] and end [1] (ic_write sets them) */
+    double cv_pose[2][GA_GROUP_MAX_ELEM], cv_vel[2][GA_GROUP_MAX_DIM];
 } ic_sampler;
 /* The sample times of --samples, --rate, --at or --times (path and widths
  * are set once the path is built). */
@@ -114,7 +132,7 @@ int ic_sample_time(const ic_sampler *s, size_t k, double *t, double *off);
 const char *ic_stamp(const ic_sampler *s, size_t k, double t, double off, char *buf);
 
 /* Every sample written to --out, and the picture to --svg, --html. */
-int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp);
+int ic_write(const ic_opts *io, const ic_input *in, ic_sampler *smp);
 
 /* The message of a failed allocation; -1. */
 static inline int ic_oom(void)

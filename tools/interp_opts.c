@@ -34,11 +34,23 @@ static int path_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: --step applies only to --eval euler\n");
         return -1;
     }
-    io->pose = 0;
+    io->pose = io->kitti = 0;
     if (o->format && strcmp(o->format, "pose") == 0)
         io->pose = 1;
+    else if (o->format && strcmp(o->format, "kitti") == 0)
+        io->kitti = 1;
     else if (o->format && strcmp(o->format, "mat") != 0) {
-        fprintf(stderr, "garotor interp: --format must be mat or pose, not '%s'\n", o->format);
+        fprintf(stderr, "garotor interp: --format must be mat, pose or kitti, not '%s'\n", o->format);
+        return -1;
+    }
+    if (o->columns && o->format && !io->pose) {
+        fprintf(stderr, "garotor interp: --columns reads poses: drop --format %s\n", o->format);
+        return -1;
+    }
+    if (o->columns)
+        io->pose = 1;
+    if (o->columns && o->quat_order) {
+        fprintf(stderr, "garotor interp: --columns names the quaternion's columns: drop --quat-order\n");
         return -1;
     }
     if (io->pose && !io->g->rigid) {
@@ -58,13 +70,18 @@ static int sample_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: give one of --samples N, --at t1,t2,..., --rate HZ, --times FILE\n");
         return -1;
     }
+    static const char *const extrap[] = {"error", "hold", "extend", "constant-velocity"};
     io->extrap = 0;
-    if (o->extrapolate && strcmp(o->extrapolate, "hold") == 0)
-        io->extrap = 1;
-    else if (o->extrapolate && strcmp(o->extrapolate, "extend") == 0)
-        io->extrap = 2;
-    else if (o->extrapolate && strcmp(o->extrapolate, "error") != 0) {
-        fprintf(stderr, "garotor interp: --extrapolate must be error, hold or extend, not '%s'\n",
+    while (o->extrapolate && io->extrap < 4 && strcmp(o->extrapolate, extrap[io->extrap]) != 0) io->extrap++;
+    if (io->extrap == 4) {
+        fprintf(stderr,
+                "garotor interp: --extrapolate must be error, hold, extend or constant-velocity, not '%s'\n",
+                o->extrapolate);
+        return -1;
+    }
+    io->clip = o->clip;
+    if (o->clip && o->extrapolate) {
+        fprintf(stderr, "garotor interp: --clip drops the times --extrapolate %s would sample: give one\n",
                 o->extrapolate);
         return -1;
     }
@@ -74,6 +91,10 @@ static int sample_options(const cli_opts *o, ic_opts *io)
     }
     if ((o->given & OPT_VELOCITIES) && io->scheme != GA_SCHEME_LIHAO3) {
         fprintf(stderr, "garotor interp: --velocities applies only to --scheme lihao3\n");
+        return -1;
+    }
+    if (o->dedup && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --dedup applies to --group cga or matrix\n");
         return -1;
     }
     if (o->normalize && !io->g->rigid) {
@@ -131,11 +152,70 @@ static int row_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: --frame world needs a rigid group (--group cga or matrix)\n");
         return -1;
     }
+    if (o->time_unit && io->kitti) {
+        fprintf(stderr,
+                "garotor interp: --format kitti has no times (key k is at t = k): drop --time-unit\n");
+        return -1;
+    }
     io->ns = 0;
+    io->unit_given = o->time_unit != NULL;
     if (o->time_unit && strcmp(o->time_unit, "ns") == 0)
         io->ns = 1;
     else if (o->time_unit && strcmp(o->time_unit, "s") != 0) {
         fprintf(stderr, "garotor interp: --time-unit must be s or ns, not '%s'\n", o->time_unit);
+        return -1;
+    }
+    return 0;
+}
+
+/* The layout of a row written (--output-format, --quat-order,
+ * --twist-order). */
+static int layout_options(const cli_opts *o, ic_opts *io)
+{
+    static const char *const fmt[] = {"mat", "pose", "tum", "kitti", "csv"};
+    io->out_fmt = io->pose ? IC_OUT_POSE : io->kitti ? IC_OUT_KITTI : IC_OUT_MAT;
+    if (o->output_format) {
+        io->out_fmt = 0;
+        while (io->out_fmt < 5 && strcmp(o->output_format, fmt[io->out_fmt]) != 0) io->out_fmt++;
+        if (io->out_fmt == 5) {
+            fprintf(stderr,
+                    "garotor interp: --output-format must be mat, pose, tum, kitti or csv, not '%s'\n",
+                    o->output_format);
+            return -1;
+        }
+    }
+    int quat_out = io->out_fmt == IC_OUT_POSE || io->out_fmt == IC_OUT_TUM || io->out_fmt == IC_OUT_CSV;
+    if (quat_out && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --group %s writes matrices (--output-format mat or kitti)\n",
+                io->g->name);
+        return -1;
+    }
+    if (io->with_v && (io->out_fmt == IC_OUT_TUM || io->out_fmt == IC_OUT_KITTI)) {
+        fprintf(stderr, "garotor interp: --output-format %s has no room for --with: use pose, mat or csv\n",
+                fmt[io->out_fmt]);
+        return -1;
+    }
+    io->wxyz = 0;
+    if (o->quat_order && strcmp(o->quat_order, "wxyz") == 0)
+        io->wxyz = 1;
+    else if (o->quat_order && strcmp(o->quat_order, "xyzw") != 0) {
+        fprintf(stderr, "garotor interp: --quat-order must be xyzw or wxyz, not '%s'\n", o->quat_order);
+        return -1;
+    }
+    if (o->quat_order && !io->pose && !(quat_out && io->out_fmt != IC_OUT_TUM)) {
+        fprintf(stderr,
+                "garotor interp: --quat-order applies to --format pose, --output-format pose or csv\n");
+        return -1;
+    }
+    io->vw = 0;
+    if (o->twist_order && strcmp(o->twist_order, "vw") == 0)
+        io->vw = 1;
+    else if (o->twist_order && strcmp(o->twist_order, "wv") != 0) {
+        fprintf(stderr, "garotor interp: --twist-order must be wv or vw, not '%s'\n", o->twist_order);
+        return -1;
+    }
+    if (o->twist_order && !io->g->rigid) {
+        fprintf(stderr, "garotor interp: --twist-order applies to --group cga or matrix\n");
         return -1;
     }
     return 0;
@@ -161,7 +241,8 @@ static int file_options(const cli_opts *o, ic_opts *io)
 int ic_options(const cli_opts *o, ic_opts *io)
 {
     io->o = o;
-    if (path_options(o, io) || sample_options(o, io) || row_options(o, io) || file_options(o, io))
+    if (path_options(o, io) || sample_options(o, io) || row_options(o, io) || layout_options(o, io) ||
+        file_options(o, io))
         return -1;
     return 0;
 }

@@ -9,23 +9,33 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A unit quaternion (ROS order qx qy qz qw) and a position to a 4x4 matrix;
- * -1 after a message when q is not unit to 1e-9, or with --normalize to
- * GA_SE3_NORMALIZE_TOL (then q is divided by its norm: ga_quat_normalize). */
-static int pose_to_mat4(const tio_items *in, size_t i, const double *v, int normalize, ga_mat4 *out)
+/* A unit quaternion (qx qy qz qw, or qw qx qy qz with --quat-order wxyz) and
+ * a position to a 4x4 matrix; -1 after a message when q is not unit to 1e-9,
+ * or with --normalize to GA_SE3_NORMALIZE_TOL (then q is divided by its norm:
+ * ga_quat_normalize). A norm far from 1 (beyond what --normalize accepts)
+ * where the first four numbers have norm 1 is named as a quaternion written
+ * before the position. */
+static int pose_to_mat4(const ic_opts *io, const tio_items *in, size_t i, const double *v, ga_mat4 *out)
 {
-    ga_quat q = {v[6], v[3], v[4], v[5]};
+    int normalize = io->o->normalize;
+    ga_quat q = io->wxyz ? (ga_quat){v[3], v[4], v[5], v[6]} : (ga_quat){v[6], v[3], v[4], v[5]};
     double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    double first = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
+    const char *hint = !io->o->columns && fabs(norm - 1.0) > GA_SE3_NORMALIZE_TOL &&
+                               fabs(first - 1.0) <= (normalize ? GA_SE3_NORMALIZE_TOL : 1e-9)
+                         ? "; the four numbers after t have norm 1: is the quaternion written before the "
+                           "position? the tool reads t x y z, then the quaternion"
+                         : "";
     if (normalize && ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &q) != GA_OK)
         return tio_error(in, i,
                          "not a rigid motion: the quaternion has norm %.17g, farther from 1 "
-                         "than --normalize accepts (1e-3)",
-                         norm);
+                         "than --normalize accepts (1e-3)%s",
+                         norm, hint);
     if (!normalize && fabs(norm - 1.0) > 1e-9)
         return tio_error(in, i,
                          "not a rigid motion: the quaternion has norm %.17g, not 1 "
-                         "(to 1e-9; --normalize accepts up to 1e-3)",
-                         norm);
+                         "(to 1e-9; --normalize accepts up to 1e-3)%s",
+                         norm, hint);
     *out = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[0], v[1], v[2]}));
     return 0;
 }
@@ -93,12 +103,64 @@ int ic_parse_at(const char *s, ic_input *in)
     return 0;
 }
 
+/* A KITTI key: 12 numbers, the 3x4 [R t] row by row, at time i (its text
+ * made "i", so that samples there are stamped so). */
+static int read_kitti(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
+{
+    tio_items *f = &in->in;
+    int m = f->item[i].count;
+    if (m != 12)
+        return tio_error(f, i, "expected 12 numbers (a KITTI pose: the 3x4 [R t] row by row), found %d%s", m,
+                         m == 8               ? ": is this a pose file? pass --format pose"
+                         : m == 17 || m == 16 ? ": is this a file of 4x4 matrices? drop --format kitti"
+                                              : "");
+    char b[32], *t;
+    int len = snprintf(b, sizeof b, "%zu", i);
+    if (!(t = malloc((size_t)len + 1)))
+        return ic_oom();
+    memcpy(t, b, (size_t)len + 1);
+    free(f->first[i]);
+    f->first[i] = t;
+    if (i == 0)
+        tt_parse(t, &tb->ref);
+    in->times[i] = (double)i;
+    ga_mat4 *k = &in->keys[i];
+    memcpy(k->m, f->value + f->item[i].first, 12 * sizeof *k->m);
+    k->m[12] = k->m[13] = k->m[14] = 0.0;
+    k->m[15] = 1.0;
+    int krc;
+    return normalize_key(io->g, io->o->normalize, f, i, k, &krc) ? krc : cli_check_motion(io->g, *k, f, i);
+}
+
+/* Whole-number key times of 12 digits or more, with no --time-unit: epoch
+ * milliseconds, microseconds or nanoseconds, which read as seconds would give
+ * velocities per ms, us or ns. An error naming what they look like. */
+static int guess_unit(const ic_opts *io, const ic_input *in)
+{
+    const tio_items *f = &in->in;
+    if (io->unit_given || io->kitti || f->n == 0)
+        return 0;
+    tt_dec t;
+    tt_parse(f->first[0], &t);
+    int digits = t.n + t.exp; /* of a whole number */
+    if (!tt_is_integer(&t) || digits < 12)
+        return 0;
+    const char *unit = digits >= 18 ? "nanoseconds" : digits >= 15 ? "microseconds" : "milliseconds";
+    return tio_error(f, 0, "the time %s looks like %s (a whole number of %d digits): %s", f->first[0], unit,
+                     digits,
+                     digits >= 18 ? "pass --time-unit ns (or --time-unit s if it is seconds)"
+                                  : "--time-unit takes s or ns: convert the times (or pass --time-unit s if "
+                                    "they are seconds)");
+}
+
 /* Key i: its number of numbers, its time (the first key's is the
  * reference), after the one before, and its pose an element of the group. */
 static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
 {
     const tio_items *f = &in->in;
     int want = io->pose ? 8 : 17;
+    if (io->kitti)
+        return read_kitti(io, tb, in, i);
     /* a line of separators only is an item of no numbers, and with no
        number in the whole input value is NULL: no pointer arithmetic on
        it (undefined; found by fuzz/fuzz_tool under UBSan:
@@ -109,12 +171,15 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
            a matrix, a matrix (t and 16) read as a pose, a key without its t */
         int m = f->item[i].count;
         const char *hint = !io->pose && io->g->rigid && m == 8 ? ": is this a pose file? pass --format pose"
-                         : io->pose && m == 17 ? ": is this a file of 4x4 matrices? drop --format pose"
-                         : m == want - 1       ? ": is t missing? a key is its time, then the pose"
-                                               : "";
+                         : io->pose && m == 17     ? ": is this a file of 4x4 matrices? drop --format pose"
+                         : m == want - 1           ? ": is t missing? a key is its time, then the pose"
+                         : m == 12 && io->g->rigid ? ": is this a KITTI file (3x4, no t)? pass --format kitti"
+                                                   : "";
         return tio_error(f, i, "expected %d numbers (t, then %s), found %d%s", want,
                          io->pose ? "x y z qx qy qz qw" : "a 4x4 matrix", m, hint);
     }
+    if (i == 0 && guess_unit(io, in))
+        return -1;
     if (tb->ns && !ic_whole(f->first[i]))
         return tio_error(f, i, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[i]);
     if (i == 0)
@@ -123,7 +188,7 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
     if (i > 0 && !(in->times[i] > in->times[i - 1]))
         return tio_error(f, i, "key times must increase strictly: %s after %s", f->first[i], f->first[i - 1]);
     if (io->pose)
-        return pose_to_mat4(f, i, v + 1, io->o->normalize, &in->keys[i]);
+        return pose_to_mat4(io, f, i, v + 1, &in->keys[i]);
     int krc;
     memcpy(in->keys[i].m, v + 1, sizeof in->keys[i].m);
     return normalize_key(io->g, io->o->normalize, f, i, &in->keys[i], &krc)
@@ -131,11 +196,117 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
              : cli_check_motion(io->g, in->keys[i], f, i);
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Keys i0..i1 (closer than --min-gap) merged into key i0: the mean of their
+ * times, stamped as the tool stamps a computed time, and the mean of their
+ * poses (ga_rotor_mean). 0, or -1 after a message. */
+static int merge_keys(const ic_timebase *tb, ic_input *in, size_t i0, size_t i1)
+{
+    tio_items *f = &in->in;
+    size_t m = i1 - i0 + 1;
+    ga_rotor r[64], mean;
+    double w[64], t = 0.0;
+    if (m > 64)
+        return tio_error(f, i0, "more than 64 keys closer than --min-gap in a row: is --min-gap too large?");
+    int st = GA_OK;
+    for (size_t k = 0; k < m && st == GA_OK; k++) {
+        st = ga_rotor_from_mat4(in->keys[i0 + k], &r[k]);
+        w[k] = 1.0;
+        t += in->times[i0 + k] / (double)m;
+    }
+    if (st == GA_OK)
+        st = ga_rotor_mean(r, w, m, &mean);
+    if (st != GA_OK)
+        return tio_error(f, i0, "cannot merge the keys of lines %ld to %ld: %s", f->item[i0].line,
+                         f->item[i1].line, ga_status_string(st));
+    /* the mean time's text: the shortest decimal of it (whole ns with
+       --time-unit ns) added to the first key's, exactly */
+    static tt_dec o;
+    char *text = malloc(TT_DIG + 32);
+    if (!text)
+        return ic_oom();
+    if (tb->ns) {
+        char b[400];
+        snprintf(b, sizeof b, "%.0f", floor(t * 1e9 + 0.5));
+        tt_parse(b, &o);
+    } else
+        tt_shortest(t, &o);
+    if (tt_add(&tb->ref, &o, 0, &o)) { /* cannot happen (timetext.h) */
+        free(text);
+        return ic_oom();
+    }
+    tt_format(&o, text);
+    free(f->first[i0]);
+    f->first[i0] = text;
+    in->times[i0] = ic_rel_time(tb, text);
+    in->keys[i0] = ga_rotor_to_mat4(mean);
+    return 0;
+}
+
+/* Keys closer than --min-gap (default: 1% of the median spacing): an error
+ * naming the pair, or with --dedup merged (the keys, their times, texts and
+ * lines compacted). 0, or -1 after a message. */
+static int near_duplicates(const ic_opts *io, const ic_timebase *tb, ic_input *in)
+{
+    const cli_opts *o = io->o;
+    tio_items *f = &in->in;
+    size_t n = in->n;
+    double unit = tb->ns ? 1e-9 : 1.0, gap = o->min_gap * unit, median = 0.0;
+    const char *u = tb->ns ? "ns" : "s";
+    if (n < 2 || ((o->given & OPT_MIN_GAP) && o->min_gap == 0.0))
+        return 0;
+    if (!(o->given & OPT_MIN_GAP)) {
+        double *g = malloc((n - 1) * sizeof *g);
+        if (!g)
+            return ic_oom();
+        for (size_t i = 1; i < n; i++) g[i - 1] = in->times[i] - in->times[i - 1];
+        qsort(g, n - 1, sizeof *g, cmp_double);
+        median = (n - 1) % 2 ? g[(n - 1) / 2] : 0.5 * (g[(n - 1) / 2 - 1] + g[(n - 1) / 2]);
+        free(g);
+        gap = 0.01 * median;
+    }
+    size_t out = 0;
+    for (size_t i = 0; i < n;) {
+        size_t j = i;
+        while (j + 1 < n && in->times[j + 1] - in->times[j] < gap) j++;
+        if (j > i && !o->dedup) {
+            char dflt[96] = "";
+            if (!(o->given & OPT_MIN_GAP))
+                snprintf(dflt, sizeof dflt, " (1%% of the median spacing, %.6g %s)", median / unit, u);
+            return tio_error(
+                f, i + 1,
+                "key at t = %s is %.3g %s after the key at t = %s (line %ld), closer than --min-gap "
+                "%.6g %s%s: pass --dedup to merge such keys, or --min-gap 0 to keep them",
+                f->first[i + 1], (in->times[i + 1] - in->times[i]) / unit, u, f->first[i], f->item[i].line,
+                gap / unit, u, dflt);
+        }
+        if (j > i && merge_keys(tb, in, i, j))
+            return -1;
+        if (out != i) {
+            in->times[out] = in->times[i];
+            in->keys[out] = in->keys[i];
+            char *keep = f->first[i];
+            f->first[i] = f->first[out];
+            f->first[out] = keep;
+            f->item[out] = f->item[i];
+        }
+        out++;
+        i = j + 1;
+    }
+    in->n = out;
+    return 0;
+}
+
 int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
 {
     ga_scheme scheme = io->scheme;
     tio_read_opts ro = cli_input(io->o);
-    if (tio_read_first(io->o->in, &ro, &in->in))
+    if (io->o->columns ? ic_read_columns(io, &in->in) : tio_read_first(io->o->in, &ro, &in->in))
         return -1;
     size_t n = in->n = in->in.n;
     in->times = malloc((n ? n : 1) * sizeof *in->times);
@@ -145,6 +316,9 @@ int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
     for (size_t i = 0; i < n; i++)
         if (read_key(io, tb, in, i))
             return -1;
+    if (near_duplicates(io, tb, in))
+        return -1;
+    n = in->n;
     size_t min = ga_scheme_min_keys(scheme);
     if (n != 1 && (n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
         fprintf(stderr, "garotor interp: %s: --scheme %s needs one key or %s %zu, found %zu\n", in->in.name,
@@ -203,16 +377,30 @@ int ic_read_times(const ic_opts *io, const ic_timebase *tb, ic_input *in)
             return ic_oom();
         for (size_t k = 0; k < in->nat; k++) in->at[k] = ic_rel_time(tb, in->at_text[k]);
     }
+    if (in->at_text && io->clip) { /* --clip: those outside the range dropped */
+        if (!(in->clip_text = malloc(in->nat * sizeof *in->clip_text)))
+            return ic_oom();
+        size_t m = 0;
+        for (size_t k = 0; k < in->nat; k++)
+            if (in->at[k] >= in->times[in->i0] && in->at[k] <= in->times[in->i1]) {
+                in->at[m] = in->at[k];
+                in->clip_text[m++] = in->at_text[k];
+            }
+        in->nat = m;
+        in->at_text = in->clip_text;
+    }
     return 0;
 }
 
 /* A velocity as the tool reads it: 6 numbers, a twist (on every group: its
  * hat read by the group's vee), or on a group that is not rigid 16, a 4x4
  * with last row zero. Writes g->dim doubles. */
-static int read_velocity(const ga_group *g, const double *v, int count, double *x)
+static int read_velocity(const ga_group *g, int vw, const double *v, int count, double *x)
 {
     ga_mat4 a;
-    if (count == 6)
+    if (count == 6 && vw) /* --twist-order vw: v first */
+        a = ga_twist_hat((ga_twist){{v[3], v[4], v[5]}, {v[0], v[1], v[2]}});
+    else if (count == 6)
         a = ga_twist_hat((ga_twist){{v[0], v[1], v[2]}, {v[3], v[4], v[5]}});
     else if (count == 16 && !g->rigid)
         memcpy(a.m, v, sizeof a.m);
@@ -232,7 +420,7 @@ int ic_read_velocities(const ic_opts *io, ic_input *in)
         in->vel = malloc(GA_GROUP_MAX_DIM * sizeof *in->vel);
         if (!in->vel)
             return ic_oom();
-        read_velocity(g, o->v0, 6, in->vel);
+        read_velocity(g, io->vw, o->v0, 6, in->vel);
     }
     if (!o->velocities)
         return 0;
@@ -250,11 +438,12 @@ int ic_read_velocities(const ic_opts *io, ic_input *in)
     if (!in->vel)
         return ic_oom();
     for (size_t i = 0; i < n; i++)
-        if (read_velocity(g, f->item[i].count ? f->value + f->item[i].first : NULL, f->item[i].count,
+        if (read_velocity(g, io->vw, f->item[i].count ? f->value + f->item[i].first : NULL, f->item[i].count,
                           in->vel + i * (size_t)g->dim))
             return tio_error(f, i,
-                             "expected 6 numbers (a body velocity w1 w2 w3 v1 v2 v3)%s, "
+                             "expected 6 numbers (a body velocity %s)%s, "
                              "found %d",
+                             io->vw ? "v1 v2 v3 w1 w2 w3" : "w1 w2 w3 v1 v2 v3",
                              g->rigid ? "" : " or 16 (a 4x4, last row zero)", f->item[i].count);
     return 0;
 }
@@ -266,6 +455,7 @@ void ic_input_free(ic_input *in)
     free(in->at);
     free(in->at_buf);
     free(in->at_arg);
+    free(in->clip_text);
     free(in->vel);
     tio_free(&in->in);
     tio_free(&in->vin);

@@ -124,6 +124,9 @@ int ic_plan(const ic_opts *io, const ic_timebase *tb, const ic_input *in, ic_sam
                         .with_a = io->with_a,
                         .with_j = io->with_j,
                         .frame = io->frame,
+                        .out_fmt = io->out_fmt,
+                        .wxyz = io->wxyz,
+                        .vw = io->vw,
                         .times = in->times,
                         .n = in->n,
                         .i0 = i0,
@@ -149,7 +152,7 @@ int ic_plan(const ic_opts *io, const ic_timebase *tb, const ic_input *in, ic_sam
         smp->at = in->at;
         smp->at_text = in->at_text;
     }
-    for (size_t k = 0; k < in->nat && !io->extrap && in->at_text; k++)
+    for (size_t k = 0; k < in->nat && !io->extrap && !io->clip && in->at_text; k++)
         if (!(in->at[k] >= in->times[i0] && in->at[k] <= in->times[i1])) {
             fprintf(stderr,
                     "garotor interp: %s time %s is outside the %s range [%s, %s] (see "

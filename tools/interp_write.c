@@ -1,13 +1,15 @@
 /* tools/interp_write.c: the output of `garotor interp`: each sample's stamp
- * and pose (a 4x4, or x y z qx qy qz qw with --format pose), with --with its
- * velocity and acceleration, at times outside the path's range as
- * --extrapolate says; and the picture of the path (--svg, --html: svg.h,
- * html.h).
+ * and pose as --output-format says (a 4x4, a pose from the group's own
+ * rotation and translation, KITTI's 3x4, CSV), with --with its velocity and
+ * acceleration, at times outside the path's range as --extrapolate says; and
+ * the picture of the path (--svg, --html: svg.h, html.h).
  *
  * Nothing but the keys (and given times) is held: each chunk of CHUNK sample
- * times is made, sampled, turned into rows and written before the next, so
- * memory does not grow with the number of samples. A failure still leaves no
- * output: neither the samples' file nor the picture. */
+ * times is made, sampled, turned into rows and written before the next, each
+ * sample once, so memory does not grow with the number of samples and the
+ * first line comes out at once. A sample that cannot be computed stops the
+ * run: a regular --out file and the picture are removed; on standard output
+ * the samples before it stay written. */
 #include "html.h"
 #include "interp_cmd.h"
 
@@ -18,31 +20,32 @@
 
 enum { CHUNK = 512 };
 
-/* The pose (x y z qx qy qz qw) of a rigid 4x4 matrix; the quaternion's sign
- * follows *prev (the previous sample's) so that the output is continuous.
- * Returns the status of reading m as a rigid motion. */
-static int mat4_to_pose(ga_mat4 m, ga_quat *prev, double *v)
+/* The pose of a rigid element straight from the group (to_qt: a rotor's own
+ * quaternion and translation, no 4x4 in between): x y z then the quaternion
+ * (qx qy qz qw, or qw qx qy qz with wxyz), its sign following *prev (the
+ * previous sample's) so that the output is continuous. */
+static void element_pose(const ga_group *g, const void *e, int wxyz, double prev[4], double *v)
 {
-    ga_rotor r;
-    ga_vec3 t = {m.m[3], m.m[7], m.m[11]};
-    int st = ga_rotor_from_mat4(m, &r);
-    if (st != GA_OK)
-        return st;
-    ga_quat q = ga_rotor_to_quat(r);
-    if (q.w * prev->w + q.x * prev->x + q.y * prev->y + q.z * prev->z < 0.0)
-        q = (ga_quat){-q.w, -q.x, -q.y, -q.z};
-    *prev = q;
-    double pose[7] = {t.x, t.y, t.z, q.x, q.y, q.z, q.w};
+    double q[4], p[3]; /* q = (w, x, y, z) */
+    g->to_qt(e, q, p);
+    if (q[0] * prev[0] + q[1] * prev[1] + q[2] * prev[2] + q[3] * prev[3] < 0.0)
+        for (int i = 0; i < 4; i++) q[i] = -q[i];
+    memcpy(prev, q, sizeof q);
+    double pose[7] = {p[0], p[1], p[2], q[1], q[2], q[3], q[0]};
+    if (wxyz) {
+        pose[3] = q[0];
+        memcpy(pose + 4, q + 1, 3 * sizeof *q);
+    }
     memcpy(v, pose, sizeof pose);
-    return GA_OK;
 }
 
-/* An algebra element as written: 6 numbers on a rigid group, else the 16 of
- * its hat. */
-static void put_algebra(const ga_group *g, const double *x, double *row)
+/* An algebra element as written: 6 numbers on a rigid group (w v, or v w
+ * with vw), else the 16 of its hat. */
+static void put_algebra(const ga_group *g, int vw, const double *x, double *row)
 {
     if (g->rigid) {
-        memcpy(row, x, 6 * sizeof *row);
+        memcpy(row, x + 3 * vw, 3 * sizeof *row);
+        memcpy(row + 3, x + 3 * !vw, 3 * sizeof *row);
         return;
     }
     ga_mat4 h = g->hat(x);
@@ -52,7 +55,8 @@ static void put_algebra(const ga_group *g, const double *x, double *row)
 /* Where a time outside the path's range (ga_path_range: the keys' times,
  * bspline [t_1, t_{n-2}]) goes (--extrapolate): hold, the pose at the range's
  * end (segment SIZE_MAX, u 0 before, 1 after); extend, the end segment at its
- * u outside [0, 1]. 0 for a time inside, 1 outside. */
+ * u outside [0, 1]; constant-velocity, segment SIZE_MAX - 1 and *u the time
+ * past the end (negative before the start). 0 for a time inside, 1 outside. */
 static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *u)
 {
     size_t m = ga_path_segments(p);
@@ -60,7 +64,10 @@ static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *
     if (ga_path_range(p, &r0, &r1) != GA_OK || (t >= r0 && t <= r1))
         return 0; /* a built path has a range: ga_path_sample reports the rest */
     int after = t > r1;
-    if (extrap == 1 || m == 0) {
+    if (extrap == 3) {
+        *seg = SIZE_MAX - 1;
+        *u = after ? t - r1 : t - r0;
+    } else if (extrap == 1 || m == 0) {
         *seg = SIZE_MAX;
         *u = after;
     } else {
@@ -74,47 +81,111 @@ static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *
     return 1;
 }
 
-/* ga_path_sample with --extrapolate hold or extend for times outside. */
-static int sample_extrapolated(const ga_path *p, ga_eval ev, double step, int extrap, size_t ns,
-                               const double *at, void *out)
+/* The pose at t, extrapolated as --extrapolate says: constant-velocity is the
+ * end pose E moved by its body velocity V for the time past the end, exactly
+ * E exp(dt V). */
+static int sample_at(const ic_sampler *s, double t, void *o)
 {
-    const ga_group *g = p->group;
-    for (size_t k = 0; k < ns; k++) {
-        char *o = (char *)out + k * g->elem_size;
-        size_t seg;
-        double u;
-        int st;
-        if (!outside(p, extrap, at[k], &seg, &u))
-            st = ga_path_sample(p, ev, step, 1, at + k, o);
-        else if (seg == SIZE_MAX) { /* the range's end: the end key, or bspline's end pose */
-            double r0, r1;
-            st = ga_path_range(p, &r0, &r1);
-            if (st == GA_OK)
-                st = ga_path_eval(p, u > 0 ? r1 : r0, o);
-        } else
-            st = ga_path_eval_segment(p, seg, u, o);
-        if (st != GA_OK)
-            return st;
+    const ga_path *p = s->path;
+    size_t seg;
+    double u;
+    if (!outside(p, s->extrap, t, &seg, &u))
+        return ga_path_sample(p, s->ev, s->step, 1, &t, o);
+    if (seg == SIZE_MAX - 1) {
+        const ga_group *g = p->group;
+        int end = u > 0;
+        double x[GA_GROUP_MAX_DIM], e[GA_GROUP_MAX_ELEM];
+        for (size_t i = 0; i < g->dim; i++) x[i] = u * s->cv_vel[end][i];
+        int st = g->exp(x, e);
+        if (st == GA_OK)
+            g->compose(s->cv_pose[end], e, o);
+        return st;
     }
-    return GA_OK;
+    if (seg == SIZE_MAX) { /* the range's end: the end key, or bspline's end pose */
+        double r0, r1;
+        int st = ga_path_range(p, &r0, &r1);
+        return st != GA_OK ? st : ga_path_eval(p, u > 0 ? r1 : r0, o);
+    }
+    return ga_path_eval_segment(p, seg, u, o);
+}
+
+/* The derivatives past the end under --extrapolate constant-velocity: the
+ * body velocity V of the end (end: 0 first, 1 last) held, at the pose e. In
+ * the body frame V, in the spatial frame Ad(e) V, and neither changes; in the
+ * world frame (rotation R of e, V = (w, v)) the rate R w, which stays, and the
+ * position's derivatives R v, R (w x v), R (w x (w x v)). */
+static void constant_velocity_derivs(const ic_sampler *s, int end, const void *e, double *v, double *a,
+                                     double *j)
+{
+    const ga_group *g = s->path->group;
+    const double *vb = s->cv_vel[end];
+    double *x[3] = {v, a, j};
+    for (int k = 0; k < 3; k++)
+        if (x[k])
+            memset(x[k], 0, g->dim * sizeof *x[k]);
+    if (s->frame == GA_FRAME_WORLD) { /* a rigid group (checked with the options) */
+        ga_mat4 M = g->to_mat4(e);
+        double d[3][3]; /* v, w x v, w x (w x v) */
+        memcpy(d[0], vb + 3, sizeof d[0]);
+        for (int k = 1; k < 3; k++) {
+            d[k][0] = vb[1] * d[k - 1][2] - vb[2] * d[k - 1][1];
+            d[k][1] = vb[2] * d[k - 1][0] - vb[0] * d[k - 1][2];
+            d[k][2] = vb[0] * d[k - 1][1] - vb[1] * d[k - 1][0];
+        }
+        for (int r = 0; r < 3; r++) {
+            const double *R = M.m + 4 * r;
+            if (v)
+                v[r] = R[0] * vb[0] + R[1] * vb[1] + R[2] * vb[2];
+            for (int k = 0; k < 3; k++)
+                if (x[k])
+                    x[k][3 + r] = R[0] * d[k][0] + R[1] * d[k][1] + R[2] * d[k][2];
+        }
+    } else if (v && s->frame == GA_FRAME_SPATIAL)
+        g->adjoint(e, vb, v);
+    else if (v)
+        memcpy(v, vb, g->dim * sizeof *v);
 }
 
 /* Velocity, acceleration and jerk at t (those not NULL: only they are
- * computed), extrapolated as the samples are. */
-static int differentiate(const ga_path *p, int extrap, double t, ga_frame f, double *v, double *a, double *j)
+ * computed; the pose there: e), extrapolated as the samples are. */
+static int differentiate(const ic_sampler *s, double t, const void *e, double *v, double *a, double *j)
 {
+    const ga_path *p = s->path;
     size_t seg;
     double u;
-    if (!extrap || !outside(p, extrap, t, &seg, &u))
-        return ga_path_derivatives(p, t, f, v, a, j);
-    if (seg == SIZE_MAX) {
+    if (!s->extrap || !outside(p, s->extrap, t, &seg, &u))
+        return ga_path_derivatives(p, t, s->frame, v, a, j);
+    if (seg == SIZE_MAX - 1) {
+        constant_velocity_derivs(s, u > 0, e, v, a, j);
+        return GA_OK;
+    }
+    if (seg == SIZE_MAX) { /* held: nothing moves */
         double *x[3] = {v, a, j};
         for (int k = 0; k < 3; k++)
             if (x[k])
                 memset(x[k], 0, p->group->dim * sizeof *x[k]);
         return GA_OK;
     }
-    return ga_path_derivatives_segment(p, seg, u, f, v, a, j);
+    return ga_path_derivatives_segment(p, seg, u, s->frame, v, a, j);
+}
+
+/* --extrapolate constant-velocity: the pose and body velocity at both ends
+ * of the range, once. 0, or -1 after a message. */
+static int constant_velocity_ends(ic_sampler *s)
+{
+    double r[2];
+    int st = ga_path_range(s->path, &r[0], &r[1]);
+    for (int i = 0; i < 2 && st == GA_OK; i++) {
+        st = ga_path_eval(s->path, r[i], s->cv_pose[i]);
+        if (st == GA_OK)
+            st = ga_path_differentiate(s->path, r[i], GA_FRAME_BODY, s->cv_vel[i], NULL);
+    }
+    if (st != GA_OK) {
+        fprintf(stderr, "garotor interp: %s: no velocity at the end of the path: %s\n", s->in->name,
+                ga_status_string(st));
+        return -1;
+    }
+    return 0;
 }
 
 /* The samples a picture keeps: every stride-th from the first, and the last;
@@ -126,78 +197,102 @@ typedef struct {
     size_t stride, n;
 } picture_keep;
 
-/* Every sample: made, checked, written to out (NULL: not written) and kept as
- * a matrix in keep (NULL: not kept); *count is the number of samples.
- * 0, or -1 after a message. */
+/* The row of sample k (the element e at t): its pose as --output-format
+ * says, then with --with its velocity, acceleration and jerk (those asked); written to out (NULL:
+ * not written). 0, or -1 after a message naming the sample and its time. */
+static int put_row(const ic_sampler *s, tio_out *out, size_t k, double t, double off, const void *e,
+                   double prev[4])
+{
+    const ga_group *g = s->g;
+    double row[17 + 3 * 16];
+    static char stamp[TT_DIG + 32];
+    int pw = s->pw - 1; /* the pose's numbers, without t */
+    if (s->out_fmt == IC_OUT_MAT || s->out_fmt == IC_OUT_KITTI) {
+        ga_mat4 mat = g->to_mat4(e);
+        memcpy(row + 1, mat.m, (size_t)pw * sizeof *row);
+    } else
+        element_pose(g, e, s->wxyz && s->out_fmt != IC_OUT_TUM, prev, row + 1);
+    if (s->with_v || s->with_a || s->with_j) {
+        double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM], dj[GA_GROUP_MAX_DIM];
+        int st = differentiate(s, t, e, s->with_v ? dv : NULL, s->with_a ? da : NULL, s->with_j ? dj : NULL);
+        if (st != GA_OK) {
+            fprintf(stderr, "garotor interp: %s: sample %zu at t = %s: no velocity: %s\n", s->in->name, k + 1,
+                    ic_stamp(s, k, t, off, stamp), ga_status_string(st));
+            return -1;
+        }
+        double *col = row + s->pw;
+        if (s->with_v)
+            put_algebra(g, s->vw, dv, col), col += s->dw;
+        if (s->with_a)
+            put_algebra(g, s->vw, da, col), col += s->dw;
+        if (s->with_j)
+            put_algebra(g, s->vw, dj, col);
+    }
+    if (!out)
+        return 0;
+    if (s->out_fmt == IC_OUT_KITTI)
+        tio_out_line(out, row + 1, s->width - 1);
+    else
+        tio_out_stamped(out, ic_stamp(s, k, t, off, stamp), row + 1, s->width - 1);
+    return 0;
+}
+
+/* Every sample, made once: checked, written to out (NULL: not written) as it
+ * is made and kept as a matrix in keep (NULL: not kept); *count is the
+ * number of samples. A sample that cannot be computed stops the run with a
+ * message naming it and its time. 0, or -1 after a message. */
 static int run(const ic_sampler *s, tio_out *out, picture_keep *keep, size_t *count)
 {
     const ga_group *g = s->g;
     const char *name = s->in->name;
-    double t[CHUNK], off[CHUNK], row[17 + 3 * 16];
+    double t[CHUNK], off[CHUNK], prev[4] = {1, 0, 0, 0};
     static char stamp[TT_DIG + 32];
     unsigned char *buf = malloc(CHUNK * g->elem_size);
     ga_path_stepper stepper;
-    ga_quat prev = {1, 0, 0, 0};
     size_t k = 0;
-    int st = buf ? GA_OK : GA_ERR_ARG, rc = -1;
+    int st = GA_OK, rc = -1;
     if (!buf)
         return ic_oom();
     if (s->kind == IC_UNIFORM)
         st = ga_path_stepper_init(s->path, s->ev, s->step, s->ns, s->times[s->i0], s->times[s->i1], &stepper);
+    if (st != GA_OK) { /* cannot happen for a built path */
+        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", name, ga_status_string(st));
+        goto done;
+    }
     /* an output that fails (a full disk; a pipe whose reader left, SIGPIPE
        ignored) stops the samples: tio_out_finish then says so */
-    for (int more = 1; st == GA_OK && more && !(out && ferror(out->fp));) {
-        size_t m = 0;
+    for (int more = 1; more && !(out && ferror(out->fp));) {
+        size_t m = 0, good;
         while (m < CHUNK && (more = ic_sample_time(s, k + m, &t[m], &off[m]))) m++;
         if (m == 0)
             break;
-        if (s->kind == IC_UNIFORM)
-            for (size_t j = 0; j < m && st == GA_OK; j++)
-                st = ga_path_stepper_next(&stepper, buf + j * g->elem_size);
-        else if (!s->extrap)
-            st = ga_path_sample(s->path, s->ev, s->step, m, t, buf);
+        /* the chunk's poses; good: how many were made before one failed */
+        if (s->kind == IC_UNIFORM) {
+            for (good = 0; good < m; good++)
+                if ((st = ga_path_stepper_next(&stepper, buf + good * g->elem_size)) != GA_OK)
+                    break;
+        } else if (!s->extrap && (st = ga_path_sample(s->path, s->ev, s->step, m, t, buf)) == GA_OK)
+            good = m;
         else
-            st = sample_extrapolated(s->path, s->ev, s->step, s->extrap, m, t, buf);
-        if (st != GA_OK)
-            break;
-        for (size_t j = 0; j < m; j++, k++) {
-            ga_mat4 mat = g->to_mat4(buf + j * g->elem_size);
+            for (good = 0; good < m; good++)
+                if ((st = sample_at(s, t[good], buf + good * g->elem_size)) != GA_OK)
+                    break;
+        for (size_t j = 0; j < good; j++, k++) {
+            const void *e = buf + j * g->elem_size;
             if (keep && k % keep->stride == 0)
-                keep->m[keep->n++] = mat;
+                keep->m[keep->n++] = g->to_mat4(e);
             else if (keep) /* the last sample so far, in the slot after the kept ones */
-                keep->m[keep->n] = mat;
-            if (s->pose && (st = mat4_to_pose(mat, &prev, row + 1)) != GA_OK) {
-                fprintf(stderr, "garotor interp: %s: sample %zu is not a rigid motion: %s\n", name, k + 1,
-                        ga_status_string(st));
+                keep->m[keep->n] = g->to_mat4(e);
+            if (put_row(s, out, k, t[j], off[j], e, prev))
                 goto done;
-            }
-            if (!s->pose)
-                memcpy(row + 1, mat.m, sizeof mat.m);
-            if (s->with_v || s->with_a || s->with_j) {
-                double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM], dj[GA_GROUP_MAX_DIM];
-                st = differentiate(s->path, s->extrap, t[j], s->frame, s->with_v ? dv : NULL,
-                                   s->with_a ? da : NULL, s->with_j ? dj : NULL);
-                if (st != GA_OK) {
-                    fprintf(stderr, "garotor interp: %s: sample %zu: no velocity: %s\n", name, k + 1,
-                            ga_status_string(st));
-                    goto done;
-                }
-                double *col = row + s->pw;
-                if (s->with_v)
-                    put_algebra(g, dv, col), col += s->dw;
-                if (s->with_a)
-                    put_algebra(g, da, col), col += s->dw;
-                if (s->with_j)
-                    put_algebra(g, dj, col);
-            }
-            if (out)
-                tio_out_stamped(out, ic_stamp(s, k, t[j], off[j], stamp), row + 1, s->width - 1);
+        }
+        if (good < m) {
+            fprintf(stderr, "garotor interp: %s: sample %zu at t = %s: sampling failed: %s\n", name, k + 1,
+                    ic_stamp(s, k, t[good], off[good], stamp), ga_status_string(st));
+            goto done;
         }
     }
-    if (st != GA_OK)
-        fprintf(stderr, "garotor interp: %s: sampling failed: %s\n", name, ga_status_string(st));
-    else
-        rc = 0;
+    rc = 0;
     if (keep && k && (k - 1) % keep->stride != 0)
         keep->n++; /* the last sample, off the stride */
 done:
@@ -231,17 +326,31 @@ static int draw(const ic_opts *io, const ic_input *in, const double *key_t, cons
     return st;
 }
 
-/* A regular --out file is written beside its name and renamed onto it only
- * when every sample was written, so the samples are made once. To standard
- * output or a FIFO, whatever is written stays written: every sample is made
- * and checked first, without a line written, and made again as it is
- * written. The picture (--svg, --html) needs the samples' matrices before
- * the samples are written: they are kept in that first pass (at most
- * PICTURE_MAX + 1 of them). The picture is drawn to its temporary file and
- * renamed after the last sample was written (and flushed), so a run cut off
- * while it writes (a write error, `| head` and its SIGPIPE, any other
- * signal) leaves no picture of samples it did not write. */
-int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
+/* The header line of --output-format csv: the names of the columns. */
+static void csv_header(const ic_sampler *s, tio_out *out)
+{
+    static const char *const pose[2][7] = {{"x", "y", "z", "qx", "qy", "qz", "qw"},
+                                           {"x", "y", "z", "qw", "qx", "qy", "qz"}};
+    static const char *const tw[2][6] = {{"wx", "wy", "wz", "vx", "vy", "vz"},
+                                         {"vx", "vy", "vz", "wx", "wy", "wz"}};
+    fputs("t", out->fp);
+    for (int i = 0; i < 7; i++) fprintf(out->fp, ",%s", pose[s->wxyz][i]);
+    static const char *const prefix[3] = {"", "d", "dd"}; /* velocity, acceleration, jerk */
+    const int with[3] = {s->with_v, s->with_a, s->with_j};
+    for (int d = 0; d < 3; d++)
+        for (int i = 0; i < 6 && with[d]; i++) fprintf(out->fp, ",%s%s", prefix[d], tw[s->vw][i]);
+    fputc('\n', out->fp);
+}
+
+/* The samples are made once, each written as it is made: a regular --out
+ * file is written beside its name and renamed onto it only when every sample
+ * was written; to standard output, a FIFO or a device the samples before a
+ * failure stay written. The picture (--svg, --html) keeps the samples'
+ * matrices (at most PICTURE_MAX + 1 of them) as they are written, and is drawn
+ * to its temporary file after the last sample and renamed after the samples'
+ * file, so a run cut off while it writes (a write error, `| head` and its
+ * SIGPIPE, any other signal) leaves no picture of samples it did not write. */
+int ic_write(const ic_opts *io, const ic_input *in, ic_sampler *smp)
 {
     const cli_opts *o = io->o;
     size_t n = in->n;
@@ -249,6 +358,8 @@ int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
     double *key_t = NULL;
     picture_keep pk = {NULL, 1, 0};
     tio_out out = TIO_OUT_NONE, svg = TIO_OUT_NONE, html = TIO_OUT_NONE;
+    if (smp->extrap == 3 && constant_velocity_ends(smp))
+        goto done;
     if (drawn) { /* the picture labels the keys with their times as read */
         key_t = malloc(n * sizeof *key_t);
         pk.stride = smp->ns > PICTURE_MAX ? (smp->ns + PICTURE_MAX - 1) / PICTURE_MAX : 1;
@@ -257,21 +368,21 @@ int ic_write(const ic_opts *io, const ic_input *in, const ic_sampler *smp)
             ic_oom();
             goto done;
         }
-        for (size_t i = 0; i < n; i++) key_t[i] = strtod(in->in.first[i], NULL);
+        for (size_t i = 0; i < n; i++) key_t[i] = io->kitti ? (double)i : strtod(in->in.first[i], NULL);
     }
     if (tio_out_open(&out, o->out))
         goto done;
+    if (smp->out_fmt == IC_OUT_CSV) {
+        out.sep = ',';
+        csv_header(smp, &out);
+    }
     size_t ns = 0;
-    if ((drawn || !out.path || out.direct) && run(smp, NULL, drawn ? &pk : NULL, &ns)) {
+    if (run(smp, &out, drawn ? &pk : NULL, &ns) != 0 ||
+        (drawn && draw(io, in, key_t, pk.m, pk.n, ns, &svg, &html) != 0)) {
         tio_out_close(&out, 0);
         goto done;
     }
-    if (drawn && draw(io, in, key_t, pk.m, pk.n, ns, &svg, &html)) {
-        tio_out_close(&out, 0);
-        goto done;
-    }
-    int ok = run(smp, &out, NULL, &ns) == 0;
-    if (!ok || tio_out_finish(&out) != 0) {
+    if (tio_out_finish(&out) != 0) {
         tio_out_close(&out, 0);
         goto done;
     }

@@ -15,8 +15,9 @@
 typedef struct {
     const char *name;
     int (*run)(const cli_opts *o);
-    unsigned accepts; /* OPT_* bits */
+    opt_bits accepts; /* OPT_* bits */
     const char *help;
+    const char *help_more; /* the help's rest, NULL for none (a string literal has at most 4095 bytes) */
 } command;
 
 static const command commands[] = {
@@ -27,7 +28,8 @@ static const command commands[] = {
      "paths through them, and how far rotors and 4x4 matrices disagree.\n"
      "  --svg FILE       also draw the two paths as an SVG picture\n"
      "  --view V         the picture's view: iso (default), xy, xz or yz\n"
-     "  --html FILE      also write a web page that draws them in 3D (drag to turn)\n"},
+     "  --html FILE      also write a web page that draws them in 3D (drag to turn)\n",
+     NULL},
     {"exp", cmd_exp, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_MAX_LINE,
      "usage: garotor exp [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
      "                   [--max-line N]\n"
@@ -38,7 +40,8 @@ static const command commands[] = {
      "  --group affine   items are 4x4 matrices with last row zero, general matrix exp\n"
      "  --in FILE, --out FILE   input and output (default standard input and output)\n"
      "  --header         skip the first line of the input (a CSV header)\n"
-     "  --max-line N     a line of more than N bytes is an error (default 1048576)\n"},
+     "  --max-line N     a line of more than N bytes is an error (default 1048576)\n",
+     NULL},
     {"log", cmd_log, OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_MAX_LINE,
      "usage: garotor log [--group cga|matrix|affine] [--in FILE] [--out FILE] [--header]\n"
      "                   [--max-line N]\n"
@@ -48,11 +51,13 @@ static const command commands[] = {
      "  --group matrix   through Eberly's SE(3) closed form\n"
      "  --group affine   any 4x4 with last row 0 0 0 1 and det > 0; writes the\n"
      "                   principal matrix log as a 4x4 with last row zero\n"
-     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n",
+     NULL},
     {"interp", cmd_interp,
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
-         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT | OPT_MAX_LINE,
+         OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT | OPT_MAX_LINE | OPT_CLIP |
+         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER | OPT_COLUMNS | OPT_MIN_GAP | OPT_DEDUP,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -68,7 +73,7 @@ static const command commands[] = {
      "                      velocity (6 numbers, per unit t) per key\n"
      "  --scheme decoupled  position linear, rotation by slerp (cga, matrix)\n"
      "  --scheme decoupled-c2   position by the not-a-knot cubic spline, rotation\n"
-     "                      by a C2 cubic in the rotation vector (cga, matrix)\n"
+     "                      by a C2 cubic in the rotation vector (cga, matrix)\n",
      "  --scheme bspline    n >= 4 evenly spaced keys as control poses of the\n"
      "                      uniform cumulative cubic B-spline (C2; the keys are not\n"
      "                      hit), defined from the second key's t to the last but one's\n"
@@ -80,14 +85,31 @@ static const command commands[] = {
      "  --rate HZ           samples at t0 + k/HZ, k = 0, 1, ... up to the last key\n"
      "                      (bspline: those in its range)\n"
      "  --times FILE        samples at the times in FILE, one a line\n"
-     "  --extrapolate error|hold|extend   a sample time outside the keys: an error\n"
-     "                      (default), the end key with zero velocity, or the end\n"
-     "                      segment's formula continued (bspline: outside its range;\n"
-     "                      hold gives the range's end pose)\n"
-     "  --time-unit s|ns    times in seconds (default) or whole nanoseconds; read\n"
-     "                      exactly from their text, and a sample at a key's time\n"
-     "                      is stamped as the key was (velocities: per second)\n"
-     "  --format mat|pose   a pose is 16 numbers (4x4, default) or x y z qx qy qz qw\n"
+     "  --extrapolate error|hold|extend|constant-velocity   a sample time outside the\n"
+     "                      keys: an error (default), the end key with zero velocity,\n"
+     "                      the end segment's formula continued, or the end pose\n"
+     "                      moved on by its velocity there (bspline: outside its\n"
+     "                      range; hold gives the range's end pose)\n"
+     "  --clip              drop the --at and --times outside the keys instead\n"
+     "  --min-gap DT        keys closer than DT (in the keys' unit; default 1% of\n"
+     "                      their median spacing, 0: none) are an error, or with\n"
+     "  --dedup             merged: one key at their mean time and mean pose\n"
+     "  --time-unit s|ns    times in seconds or whole nanoseconds; read exactly from\n"
+     "                      their text, and a sample at a key's time is stamped as\n"
+     "                      the key was (velocities: per second). Without it, whole\n"
+     "                      numbers of 12 digits or more are an error (ms, us, ns?)\n"
+     "  --format mat|pose|kitti   a key is t and 16 numbers (4x4, default), t x y z\n"
+     "                      qx qy qz qw, or 12 numbers (KITTI's 3x4, key k at t = k)\n"
+     "  --quat-order xyzw|wxyz   the quaternion's order in a pose (default xyzw)\n"
+     "  --columns LIST      pose keys in any layout: the file's columns in order\n"
+     "                      (t,x,y,z,qw,qx,qy,qz; - skips one), or ROLE=COLUMN pairs\n"
+     "                      (a number from 1 or a header name), and header: the\n"
+     "                      first line names the columns, found by name\n"
+     "  --output-format mat|pose|tum|kitti|csv   what a sample's line is: as the\n"
+     "                      keys (default), t x y z qx qy qz qw (tum: always xyzw),\n"
+     "                      the 3x4 without t, or pose columns with commas and a header\n"
+     "  --twist-order wv|vw   a velocity's order, written and read: w v (default) or\n"
+     "                      v w (ROS's Twist: linear, then angular)\n"
      "  --group cga|matrix|affine   rotors (default), SE(3) matrices, or general\n"
      "                      homogeneous matrices (keys in --format mat)\n"
      "  --eval direct|exact|euler   closed form (default), exact incremental\n"
@@ -124,7 +146,8 @@ static const command commands[] = {
      "           of F(x) for odd V); an error where it goes to infinity\n"
      "  --text   multivectors in and out with blade names, 1 + 2e12 - 0.5e45, in\n"
      "           place of the numbers (docs/conventions.md); apply reads V; x y z\n"
-     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n",
+     NULL},
     {"object", cmd_object, OPT_VERB | OPT_IN | OPT_OUT | OPT_HEADER | OPT_MAX_LINE,
      "usage: garotor object OP [--in FILE] [--out FILE] [--header] [--max-line N]\n"
      "Conformal objects, one item a line, fields separated by ';'. An object is a\n"
@@ -147,7 +170,8 @@ static const command commands[] = {
      "  between   A; B: a rotor taking A to B, two objects of one kind, with a\n"
      "            dilation where their sizes differ\n"
      "  interp    A; B; T: the object at T along that rotor (A at 0, B at 1)\n"
-     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n"},
+     "  --in FILE, --out FILE, --header, --max-line N   as for exp\n",
+     NULL},
 };
 
 static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
@@ -169,7 +193,7 @@ static const char usage[] = "usage: garotor [COMMAND] [OPTIONS]\n"
 
 static const struct {
     const char *name;
-    unsigned bit;
+    opt_bits bit;
     int takes_value;
 } option_table[] = {
     {"--in", OPT_IN, 1},
@@ -196,6 +220,13 @@ static const struct {
     {"--time-unit", OPT_TIME_UNIT, 1},
     {"--max-line", OPT_MAX_LINE, 1},
     {"--text", OPT_TEXT, 0},
+    {"--clip", OPT_CLIP, 0},
+    {"--quat-order", OPT_QUAT_ORDER, 1},
+    {"--output-format", OPT_OUTPUT_FORMAT, 1},
+    {"--twist-order", OPT_TWIST_ORDER, 1},
+    {"--columns", OPT_COLUMNS, 1},
+    {"--min-gap", OPT_MIN_GAP, 1},
+    {"--dedup", OPT_DEDUP, 0},
 };
 
 /* A usage error of command cmd (NULL: the demo, no command named), with a
@@ -385,6 +416,16 @@ static int parse_options(const command *c, const char *cmd, int argc, char **arg
         case OPT_TIMES: o->times = v; break;
         case OPT_EXTRAPOLATE: o->extrapolate = v; break;
         case OPT_TIME_UNIT: o->time_unit = v; break;
+        case OPT_CLIP: o->clip = 1; break;
+        case OPT_QUAT_ORDER: o->quat_order = v; break;
+        case OPT_OUTPUT_FORMAT: o->output_format = v; break;
+        case OPT_TWIST_ORDER: o->twist_order = v; break;
+        case OPT_COLUMNS: o->columns = v; break;
+        case OPT_DEDUP: o->dedup = 1; break;
+        case OPT_MIN_GAP:
+            if (parse_double(v, &o->min_gap) || !(o->min_gap >= 0.0))
+                return usage_error(cmd, "--min-gap needs a number >= 0, not", v);
+            break;
         case OPT_MAX_LINE: {
             char *end = NULL;
             errno = 0;
@@ -480,6 +521,8 @@ int main(int argc, char **argv)
     for (int i = first; i < argc; i++)
         if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             fputs(c->help, stdout);
+            if (c->help_more)
+                fputs(c->help_more, stdout);
             return flushed(0);
         }
     cli_opts o;

@@ -290,7 +290,9 @@ int tio_text_error(const tio_texts *t, size_t i, size_t at, const char *fmt, ...
     return -1;
 }
 
-int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out)
+/* raw: every line that is not blank, comments and a header included, as
+   it is (tio_read_lines); else the lines tio_read_text keeps, trimmed */
+static int read_text(const char *path, const tio_read_opts *ro, int raw, tio_texts *out)
 {
     int from_stdin = !path || strcmp(path, "-") == 0;
     tio_texts t = {from_stdin ? "<stdin>" : path, NULL, NULL, NULL, 0};
@@ -313,16 +315,15 @@ int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out)
             status = -1;
             break;
         }
-        if (r.lineno == 1 && ro->header)
+        if (r.lineno == 1 && ro->header && !raw)
             continue;
         char *s = r.line;
         if (r.lineno == 1 && strncmp(s, "\xEF\xBB\xBF", 3) == 0)
             s += 3;
-        while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n') s++;
-        if (*s == '\0' || *s == '#')
+        if (raw ? s[strspn(s, " \t\r\n")] == '\0' : (s += strspn(s, " \t\r\n"), *s == '\0' || *s == '#'))
             continue;
         size_t len = strlen(s);
-        while (len && strchr(" \t\r\n", s[len - 1])) len--;
+        while (!raw && len && strchr(" \t\r\n", s[len - 1])) len--;
         char *copy = malloc(len + 1);
         if (!copy || grow((void **)&t.text, &cap[0], t.n + 1, sizeof *t.text) ||
             grow((void **)&t.line, &cap[1], t.n + 1, sizeof *t.line) ||
@@ -349,6 +350,16 @@ int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out)
     }
     *out = t;
     return 0;
+}
+
+int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out)
+{
+    return read_text(path, ro, 0, out);
+}
+
+int tio_read_lines(const char *path, const tio_read_opts *ro, tio_lines_text *out)
+{
+    return read_text(path, ro, 1, out);
 }
 
 int tio_read(const char *path, const tio_read_opts *ro, tio_items *out)
@@ -533,7 +544,7 @@ int tio_out_open(tio_out *o, const char *path)
  * buffer and written at once. */
 static void put_numbers(tio_out *o, const char *lead, size_t llen, const double *v, int n)
 {
-    char line[4096];
+    char line[4096], sep = o->sep ? o->sep : ' ';
     size_t k = 0;
     if (llen) {
         if (llen > sizeof line - 1 - GA_DOUBLE_TEXT_MAX) {
@@ -549,7 +560,7 @@ static void put_numbers(tio_out *o, const char *lead, size_t llen, const double 
             k = 0;
         }
         if (i || llen)
-            line[k++] = ' ';
+            line[k++] = sep;
         k += ga_double_format(v[i] == 0.0 ? 0.0 : v[i], line + k);
     }
     line[k++] = '\n';

@@ -88,6 +88,12 @@ typedef struct {
  *  -1 after a message. */
 int tio_read_text(const char *path, const tio_read_opts *ro, tio_texts *out);
 void tio_texts_free(tio_texts *t);
+/** The lines of an input as they are (for a reader of named columns): every
+ *  line that is not blank, comments ('#') and a header included, without its
+ *  newline (a UTF-8 byte-order mark at the start dropped), read as
+ *  tio_read_text reads; freed by tio_texts_free. */
+typedef tio_texts tio_lines_text;
+int tio_read_lines(const char *path, const tio_read_opts *ro, tio_lines_text *out);
 /** Print "garotor: FILE:LINE:COLUMN: message" for line i, at byte `at` of
  *  its text, to stderr; returns -1. */
 int tio_text_error(const tio_texts *t, size_t i, size_t at, const char *fmt, ...)
@@ -110,6 +116,7 @@ typedef struct {
     char *resolved;   /* the file a symbolic link at path names (allocated) */
     int direct;       /* path is not a regular file (a FIFO, /dev/null): written in place */
     int pending;      /* tmp exists: removed on a signal until renamed or removed */
+    char sep;         /* between numbers: ' ' when 0 (set it after tio_out_open: ',' for CSV) */
     char tmp[4096];   /* temporary name while writing */
 } tio_out;
 /* A tio_out that was never opened (all zero: TIO_OUT_NONE) may be given to
