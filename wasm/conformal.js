@@ -12,7 +12,7 @@ var REAL = ['real', 'tangent', 'imaginary'];
 var COL = { pair: '#9467bd', line: '#1f77b4', circle: '#2ca02c', plane: '#17becf', sphere: '#ff7f0e',
             S: '#7f7f7f', meet: '#d62728', image: '#e377c2', path: '#333333' };
 var DEF = { pts: [[1, 0, 0], [0, 1, 0], [-0.6, -0.5, 0.2], [0.2, 0.1, 1.1], [1.3, 0.9, 0.3]], rho: 1,
-            az: 0.8, el: 0.45, zoom: 1, versor: 'inversion', vparam: 1, scheme: 0, s: 0.5 };
+            az: 0.8, el: 0.45, zoom: 1.25, versor: 'inversion', vparam: 1, scheme: 0, s: 0.5 };
 var st = JSON.parse(JSON.stringify(DEF));
 var c = document.getElementById('view'), g = c.getContext('2d');
 var M, H, base, R = null, keys = [], times = [], pathPts = [], pathRange = [0, 1], pathStatus = 0;
@@ -111,7 +111,7 @@ function scale() { return 0.16 * Math.min(c.width, c.height) * st.zoom; }
 function proj(p) {
   var ca = Math.cos(st.az), sa = Math.sin(st.az), ce = Math.cos(st.el), se = Math.sin(st.el);
   var u = ca * p[0] - sa * p[1], v = sa * p[0] + ca * p[1], w = ce * p[2] - se * v, s = scale();
-  return [c.width / 2 + s * u, c.height / 2 - s * w];
+  return [c.width / 2 + s * u, 0.44 * c.height - s * w];
 }
 function add3(a, b, k) { return [a[0] + k * b[0], a[1] + k * b[1], a[2] + k * b[2]]; }
 function cross(a, b) { return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]; }
