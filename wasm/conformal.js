@@ -16,7 +16,7 @@ var DEF = { pts: [[1, 0, 0], [0, 1, 0], [-0.6, -0.5, 0.2], [0.2, 0.1, 1.1], [1.3
 var st = JSON.parse(JSON.stringify(DEF));
 var c = document.getElementById('view'), g = c.getContext('2d');
 var M, H, base, R = null, keys = [], times = [], pathPts = [], pathRange = [0, 1], pathStatus = 0;
-var timing = { load: 0, script: 0, last: 0, max: 0, n: 0, times: [] };
+var timing = { load: 0, script: 0, module: 0, start: t00, last: 0, max: 0, n: 0, times: [] };
 
 /* ---- the library, through wasm/shim.c ---- */
 function at(k) { return (base + 40 * k) * 8; }
@@ -185,14 +185,23 @@ function draw() {
 }
 function fmt(x) { return (Math.abs(x) < 5e-15 ? 0 : x).toPrecision(6).replace(/\.?0+$/, '').replace(/\.?0+e/, 'e'); }
 function vec(a) { return '(' + a.map(fmt).join(', ') + ')'; }
-function panel() {
-  var rows = scene.list.map(function (e) {
-    var o = e.obj, what = o.status ? statusText(o.status) : KIND[o.kind] + (o.kind >= 4 ? ', ' + REAL[o.reality] : '');
-    var where = o.status ? '' : 'centre ' + vec(o.centre) + (o.kind >= 4 ? ', r² ' + fmt(o.r2) : '');
-    return '<tr><td><span class="sw" style="background:' + e.colour + '"></span>' + e.name + '</td><td>' + what +
-      '</td><td>' + where + '</td><td class="mv">' + e.text + '</td></tr>';
+var rows = [];
+function panel() { /* the table's rows are made once per set of objects, then only their texts change */
+  var tb = document.getElementById('objects');
+  if (rows.length !== scene.list.length || rows.some(function (r, i) { return r.name !== scene.list[i].name; })) {
+    tb.textContent = ''; rows = scene.list.map(function (e) {
+      var tr = document.createElement('tr'), r = { name: e.name, td: [] };
+      for (var j = 0; j < 4; j++) { var td = document.createElement('td'); tr.appendChild(td); r.td.push(td); }
+      r.td[0].innerHTML = '<span class="sw" style="background:' + e.colour + '"></span>';
+      r.td[0].appendChild(document.createTextNode(e.name)); r.td[3].className = 'mv';
+      tb.appendChild(tr); return r; });
+  }
+  scene.list.forEach(function (e, i) {
+    var o = e.obj, td = rows[i].td;
+    td[1].textContent = o.status ? statusText(o.status) : KIND[o.kind] + (o.kind >= 4 ? ', ' + REAL[o.reality] : '');
+    td[2].textContent = o.status ? '' : 'centre ' + vec(o.centre) + (o.kind >= 4 ? ', r² ' + fmt(o.r2) : '');
+    td[3].textContent = e.text;
   });
-  document.getElementById('objects').innerHTML = rows.join('');
   document.getElementById('versor-text').textContent = scene.versor;
   var p = document.getElementById('pose');
   if (!pose || pose.status) p.textContent = 'path: ' + statusText(pathStatus || (pose ? pose.status : -6));
@@ -298,6 +307,7 @@ window.garotorPage = {
   project: function (p) { var q = proj(p), r = c.getBoundingClientRect(); return [q[0] + r.left, q[1] + r.top]; }
 };
 garotorWasm().then(function (mod) {
+  timing.module = performance.now() - t00; /* the module decoded, compiled and instantiated */
   M = mod; H = M.HEAPF64; base = M._gw_scratch() >> 3;
   init();
   timing.load = performance.now(); /* since the navigation began */
