@@ -271,10 +271,14 @@ try:
         st = b.eval('garotorPage.state()')
         compare('scheme %s at t = %r' % (st['schemeName'], st['pose']['t']),
                 json.loads(b.eval('garotorPage.stateHex()')))
-    # the three kinds of meet: move Q and the radius of S so that the sphere
-    # meets S in a real, a tangent and an imaginary circle
+    # the three kinds of meet: move Q and the radius of S (its input fields)
+    # so that the meets are real, imaginary and tangent
     realities = []
-    for q, rho in (([1.3, 0.9, 0.3], 1), ([2.5, 0.0, 0.0], 0.5), ([4, 0, 0], 0.5)):
+    # (the line P0 P1, x + y = 1 in z = 0, passes 0.5 below (0.5, 0.5, 0.5):
+    # S of radius 0.5 there touches it, a tangent point pair; the radius is a
+    # slider of step 0.01)
+    for q, rho in (([1.3, 0.9, 0.3], 1), ([2.5, 0.0, 0.0], 0.5), ([4, 0, 0], 0.5),
+                   ([0.5, 0.5, 0.5], 0.5)):
         b.eval("(function(){var P=%s;for(var j=0;j<3;j++){var e=document.getElementById('p4'+j);"
                "e.value=P[j];e.dispatchEvent(new Event('input'));}var r=document.getElementById('rho');"
                "r.value=%r;r.dispatchEvent(new Event('input'));})()" % (json.dumps(q), rho))
@@ -283,7 +287,7 @@ try:
         compare('Q = %s, radius %s' % (q, rho), json.loads(b.eval('garotorPage.stateHex()')))
     print('     meets (sphere, line, circle with S; 0 real, 1 tangent, 2 imaginary): %s' % realities)
     flat = {x for r in realities for x in r}
-    check({0, 2} <= flat, 'the meets shown include real and imaginary ones')
+    check({0, 1, 2} <= flat, 'the meets shown include real, tangent and imaginary ones')
 
     b.eval("document.getElementById('reset').click()")
     shot = b.send('Page.captureScreenshot', {'format': 'png'})
