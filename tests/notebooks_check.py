@@ -29,7 +29,7 @@ except ImportError as e:
 
 moddir = os.path.abspath(sys.argv[1])
 fix = '--fix' in sys.argv[2:]
-if not glob.glob(os.path.join(moddir, 'garotor*.so')):
+if not glob.glob(os.path.join(moddir, 'garotor', '_garotor*.so')):  # the package garotor
     print('SKIP no garotor module in %s (-Dpython=disabled?)' % moddir)
     sys.exit(77)
 os.environ['PYTHONPATH'] = moddir + os.pathsep + os.environ.get('PYTHONPATH', '')
