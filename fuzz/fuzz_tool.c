@@ -34,8 +34,10 @@
  *     has a NUL byte or a line longer than --max-line (default 1048576);
  *   - status 2 leaves no output file, no picture and no temporary file;
  *   - status 0 leaves the output file, every number in it finite, lines of
- *     one width (6 or 16 numbers; for interp 8 or 17, plus 6, 12, 16 or 32
- *     with --with velocity[,acceleration]);
+ *     one width (6 or 16 numbers; for interp 8, 12 (kitti) or 17, plus 6,
+ *     12, 18, 16, 32 or 48 with --with velocity,acceleration,jerk; csv after
+ *     its header line, its commas read as blanks); versor --text writes
+ *     blade names, not checked as numbers;
  *   - exp (cga, matrix) writes rigid motions: last row exactly 0 0 0 1,
  *     rotation part orthonormal to 1e-9; log (cga, matrix) writes twists with
  *     rotation angle in [0, pi]; interp --format mat on cga/matrix writes
@@ -199,8 +201,11 @@ static void check_versor(int verb, const double *v, int k, long lineno, const ui
 }
 
 /* Read the output back and check it. */
-static void check_output(int kind, int affine, int pose, int verb, const uint8_t *in, size_t nin, int header)
+/* ofmt: interp's --output-format (0 mat, 1 pose, 2 tum, 3 kitti, 4 csv), or
+   what --format implies */
+static void check_output(int kind, int affine, int ofmt, int verb, const uint8_t *in, size_t nin, int header)
 {
+    int pose = ofmt == 1 || ofmt == 2 || ofmt == 4, kitti = ofmt == 3;
     FILE *f = fopen(out_path, "r");
     FZ_CHECK(f != NULL, "exit status 0 but no output file");
     char *line = NULL;
@@ -209,6 +214,15 @@ static void check_output(int kind, int affine, int pose, int verb, const uint8_t
     long lineno = 0;
     while (getline(&line, &cap, f) >= 0) {
         lineno++;
+        if (kind == K_INTERP && ofmt == 4) { /* csv: a header line, then numbers and commas */
+            if (lineno == 1) {
+                FZ_CHECK(!strncmp(line, "t,", 2), "csv output: no header line");
+                continue;
+            }
+            for (char *c = line; *c; c++)
+                if (*c == ',')
+                    *c = ' ';
+        }
         double v[64];
         int k = 0;
         char *s = line, *end;
@@ -231,8 +245,9 @@ static void check_output(int kind, int affine, int pose, int verb, const uint8_t
             check_versor(verb, v, k, lineno, in, nin, header);
             continue;
         }
-        int base = kind == K_INTERP ? (k >= 17 && !pose ? 17 : 8) : k, extra = k - base;
-        FZ_CHECK(kind == K_INTERP ? extra == 0 || extra == 6 || extra == 12 || extra == 16 || extra == 32
+        int base = kind == K_INTERP ? (kitti ? 12 : k >= 17 && !pose ? 17 : 8) : k, extra = k - base;
+        FZ_CHECK(kind == K_INTERP ? extra == 0 || extra == 6 || extra == 12 || extra == 18 || extra == 16 ||
+                                        extra == 32 || extra == 48
                                   : k == 6 || k == 16,
                  "output line %ld has %d numbers", lineno, k);
         FZ_CHECK(width < 0 || k == width, "output line %ld: %d numbers after %d", lineno, k, width);
@@ -242,8 +257,10 @@ static void check_output(int kind, int affine, int pose, int verb, const uint8_t
             m = v;
         if (kind == K_INTERP && !affine && base == 17)
             m = v + 1;
+        if (kind == K_INTERP && !affine && kitti) /* 3 x 4: the last row implied */
+            m = v;
         if (m) {
-            FZ_CHECK(m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1,
+            FZ_CHECK(kitti || (m[12] == 0 && m[13] == 0 && m[14] == 0 && m[15] == 1),
                      "output line %ld: last row not 0 0 0 1", lineno);
             for (int r = 0; r < 3; r++)
                 for (int c = 0; c < 3; c++) {
@@ -336,7 +353,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int argc = 0;
     argv[argc++] = "garotor";
     int want_vel = 0, want_svg = 0, want_html = 0, kind = -1, affine = 0, pose = 0, verb = -1, header = 0;
-    size_t max_line = (size_t)1 << 20; /* the tool's default (TIO_MAX_LINE) */
+    int kitti = 0, ofmt = -1, text = 0; /* --format kitti, --output-format, --text */
+    size_t max_line = (size_t)1 << 20;  /* the tool's default (TIO_MAX_LINE) */
     static char capped[3][32];
     /* the span of the keys' times (the first number of each input line), for
        capping --rate below: HZ is lowered so that it gives at most 4096
@@ -393,6 +411,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                  : !strcmp(tok, "apply") ? V_APPLY
                                          : -1;
         header |= !strcmp(tok, "--header");
+        text |= !strcmp(tok, "--text");
         if (argc >= MAXARG)
             return 0;
         if (!strcmp(tok, "--help") || !strcmp(tok, "-h"))
@@ -432,6 +451,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (v) {
                 argv[argc++] = v;
                 pose = !strcmp(v, "pose");
+                kitti = !strcmp(v, "kitti");
+            }
+            continue;
+        }
+        if (!strcmp(tok, "--output-format")) {
+            char *v = strtok_r(NULL, " \t\r", &save);
+            argv[argc++] = tok;
+            if (v) {
+                static const char *const fmt[] = {"mat", "pose", "tum", "kitti", "csv"};
+                argv[argc++] = v;
+                for (int i = 0; i < 5; i++)
+                    if (!strcmp(v, fmt[i]))
+                        ofmt = i;
             }
             continue;
         }
@@ -506,7 +538,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check_read_ok("input", rest, nin, max_line);
         if (want_vel && vel)
             check_read_ok("velocity file", vel, nvel, max_line);
-        check_output(kind, affine, pose, verb, rest, nin, header);
+        /* versor --text writes blade names: its lines are not checked as numbers */
+        if (!(kind == K_VERSOR && text))
+            check_output(kind, affine, ofmt >= 0 ? ofmt : pose ? 1 : kitti ? 3 : 0, verb, rest, nin, header);
         check_no_stray_files(1);
     }
     unlink(out_path);

@@ -190,7 +190,8 @@ static int layout_options(const cli_opts *o, ic_opts *io)
                 io->g->name);
         return -1;
     }
-    if (io->with_v && (io->out_fmt == IC_OUT_TUM || io->out_fmt == IC_OUT_KITTI)) {
+    if ((io->with_v || io->with_a || io->with_j) &&
+        (io->out_fmt == IC_OUT_TUM || io->out_fmt == IC_OUT_KITTI)) {
         fprintf(stderr, "garotor interp: --output-format %s has no room for --with: use pose, mat or csv\n",
                 fmt[io->out_fmt]);
         return -1;
