@@ -63,15 +63,21 @@ static double angle(ga_vec3 a, ga_vec3 b)
     return atan2(tk_norm(cross(a, b)), a.x * b.x + a.y * b.y + a.z * b.z);
 }
 
-/* How far the object of X is from o: the largest of |centre| / L, |r^2| / L^2
-   and the angle of the directions, L = max(1, |c| + |r|) of either. For a
-   plane and a line the centre is the point nearest the origin. */
+/* How far the object of X is from o beyond what their read-backs know: the
+   largest of the centres' distance / L, the r^2 difference / L^2 and the
+   directions' angle, each less the bounds (err, r2_err, angle_err) that
+   ga_object_from_mv states for the two, L = max(1, |c| + |r|) of either. B
+   is built from the moved points, rounded: a thin line or a small round far
+   out is known only to its bound (a line through two points 0.01 apart at
+   200 to ~u 200 / 0.01 rad), which no V can beat. For a plane and a line
+   the centre is the point nearest the origin. */
 static double object_err(ga_object x, ga_object o)
 {
     double L = fmax(1.0, fmax(tk_norm(x.centre) + sqrt(fabs(x.r2)), tk_norm(o.centre) + sqrt(fabs(o.r2))));
-    double e = tk_max(tk_norm(sub(x.centre, o.centre)) / L, fabs(x.r2 - o.r2) / (L * L));
+    double e = tk_max(fmax(0.0, tk_norm(sub(x.centre, o.centre)) - x.err - o.err) / L,
+                      fmax(0.0, fabs(x.r2 - o.r2) - x.r2_err - o.r2_err) / (L * L));
     if (o.kind != GA_OBJECT_SPHERE)
-        e = tk_max(e, angle(x.direction, o.direction));
+        e = tk_max(e, fmax(0.0, angle(x.direction, o.direction) - x.angle_err - o.angle_err));
     return x.kind == o.kind ? e : INFINITY;
 }
 

@@ -301,7 +301,9 @@ GA_API GA_NODISCARD ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
  *  multiple of B, positive with the orientation where the kind has one (lines,
  *  planes, circles, point pairs): computed with ga_versor_apply, its centre
  *  and r^2 are B's to 1e-12 of the scene (L = max(1, |c| + |r|) of both, L^2
- *  for r^2) and its direction to 1e-12 rad, for scenes up to 1e2 from the
+ *  for r^2) and its direction to 1e-12 rad, beyond the bounds err, r2_err
+ *  and angle_err that ga_object_from_mv states for the two (what their
+ *  coefficients know), for scenes up to 1e2 from the
  *  origin and sizes 1e-2 to 1e2 (beyond, the sandwich's rounding grows like
  *  u |c|^2, as for every round held about the origin: object.h, "Accuracy").
  *  Statuses of ga_rotor_between's read-back (GA_ERR_IMAGINARY,
