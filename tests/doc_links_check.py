@@ -11,8 +11,17 @@ where it has one and the target is a Markdown page (or the page itself,
 headings (lower case, punctuation but - and _ dropped, spaces to -, a
 repeated anchor numbered -1, -2, ...) or an explicit <a id="..."> /
 <a name="...">. Links into notebooks (.ipynb) and other files are checked
-for the file only. Prints each broken link with its page and line; exit
-status 0 when none is broken. Standard library only.
+for the file only.
+
+It also checks the folds of the answers (<details><summary>Answer</summary>
+... </details>, folded on GitHub) in the pages of exercises, FOLDED below:
+each fold is closed before the next opens, and every fenced block of the
+page's exercises (of exercises.md, all; of students.md, those under
+"## Exercises") lies inside one, so that no answer shows before the reader
+opens it.
+
+Prints each failure with its page and line; exit status 0 when there is
+none. Standard library only.
 """
 
 import os
@@ -64,6 +73,42 @@ def links(text):
             yield n, m.group(1)
 
 
+FOLDED = {"exercises.md": None, "students.md": "## Exercises"}
+
+
+def check_folds(name, text, section):
+    """The failures of the answer folds of one page."""
+    bad = []
+    inside = False
+    on = section is None
+    opened = 0
+    fenced = False
+    for n, line in enumerate(text.split("\n"), 1):
+        if FENCE.match(line):
+            fenced = not fenced
+            if fenced and on and not inside:
+                bad.append("%s:%d: a fenced block outside an answer fold" % (name, n))
+            continue
+        if fenced:
+            continue
+        if section is not None and line.startswith("## "):
+            on = line.strip() == section
+        if line.startswith("<details>"):
+            if inside:
+                bad.append("%s:%d: <details> inside another fold" % (name, n))
+            inside = True
+            opened += 1
+        elif line.startswith("</details>"):
+            if not inside:
+                bad.append("%s:%d: </details> without <details>" % (name, n))
+            inside = False
+    if inside:
+        bad.append("%s: a fold is not closed" % name)
+    if opened == 0:
+        bad.append("%s: no answer folds" % name)
+    return bad
+
+
 def check(src):
     pages = [os.path.join(src, "README.md")]
     docs = os.path.join(src, "docs")
@@ -94,6 +139,8 @@ def check(src):
             if frag and where.endswith(".md") and frag not in anchors_of(where):
                 bad.append("%s:%d: %s: no heading or anchor #%s in %s"
                            % (rel, n, target, frag, os.path.relpath(where, src)))
+        if os.path.basename(page) in FOLDED:
+            bad += check_folds(rel, text, FOLDED[os.path.basename(page)])
     return count, bad
 
 
@@ -104,6 +151,11 @@ def self_test():
     assert got == want, got
     found = list(links("see [x](a.md#b) and ![p](f/g.svg) `[no](c.md)`\n```\n[no](d.md)\n```\n"))
     assert found == [(1, "a.md#b"), (1, "f/g.svg")], found
+    page = "Q\n<details><summary>Answer</summary>\n\n```text\n$ a\n```\n</details>\n"
+    assert check_folds("p", page, None) == []
+    assert len(check_folds("p", page.replace("</details>", ""), None)) == 1
+    assert check_folds("p", "```text\n```\n" + page, None) == ["p:1: a fenced block outside an answer fold"]
+    assert check_folds("p", "```sh\n```\n## Exercises\n" + page, "## Exercises") == []
 
 
 def main():
@@ -116,7 +168,8 @@ def main():
         print("FAIL: no relative links found")
         return 1
     if not bad:
-        print("doc_links_check: %d relative links resolve" % count)
+        print("doc_links_check: %d relative links resolve, the answers of %s are folded"
+              % (count, " and ".join(sorted(FOLDED))))
     return 1 if bad else 0
 
 
