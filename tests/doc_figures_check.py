@@ -47,7 +47,7 @@ on x86-64 with glibc's maths functions on their FMA code paths, what a CPU
 with FMA runs by default and what CI runs: the digits of test_versor depend
 on them. Off them (GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA, or a CPU
 without FMA) it prints other last digits in three of its lines, two of them
-in docs/versors.md's tables; soak_c2_keys and figures_matrices print the
+in docs/numerics.md's tables; soak_c2_keys and figures_matrices print the
 same either way.
 ga_mv_gp's own code paths (SSE2, AVX2, AVX-512F) give the same bits
 (tests/test_gp_blocks.c).

@@ -10,8 +10,8 @@ where emscripten and node are found).
 The module inside the committed page may be an older build of the library:
 any change to ga/ or interp/ changes the bytes of garotor.wasm, not always
 its numbers, and tests/page_test.py checks the committed page's numbers
-against the native library bit for bit (the test page-committed; page where
-emscripten is missing). This test says whether the module is the one built
+against the native library bit for bit (the test page, in its second tab
+beside a WebAssembly build, in its only one where emscripten is missing). This test says whether the module is the one built
 here, and fails only when the page's own parts are stale. To refresh the
 page:
     meson compile -C build conformal-page

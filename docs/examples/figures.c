@@ -13,7 +13,11 @@
  * program says so and exits 1 without finishing the picture. Plain SVG, no
  * dependencies; coordinates with two decimals, so the bytes are stable. The
  * 3D scenes are an orthographic view from azimuth 35 degrees, elevation 22
- * degrees; the plane pictures (inversion, dilation) look down the z axis. */
+ * degrees; the plane pictures (inversion, dilation) look down the z axis.
+ * The null cone is drawn in three coefficients of G(4,1), (e1, e4, e5), from
+ * azimuth -62 degrees, elevation 14, each point drawn on it checked null
+ * (F . F = 0); an imaginary circle has no real point to check, so it is drawn
+ * from its read-back, which is checked against r^2 = 1 - d^2/4 instead. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -565,6 +569,156 @@ static void dilation_figure(const char *dir)
     end(&V);
 }
 
+/* ---- the null cone and an imaginary circle -------------------------------------- */
+
+/* the vector c1 e1 + c4 e4 + c5 e5 of G(4,1), drawn at (c1, c4, c5) */
+static ga_mv e145(double c1, double c4, double c5)
+{
+    ga_mv v = ga_mv_scalar(0);
+    v.c[0] = 0, v.c[1] = c1, v.c[4] = c4, v.c[5] = c5;
+    return v;
+}
+
+/* v is null: v.v = 0 to 1e-12 of |v|^2 */
+static void check_null(ga_mv v)
+{
+    double s = ga_mv_sp(v, v), m = ga_mv_maxabs(v);
+    if (!(fabs(s) <= 1e-12 * (m * m + 1)))
+        die("a point drawn on the cone is not a null vector");
+}
+
+static void null_cone(const char *dir)
+{
+    view V = {.ox = 230, .oy = 300, .px = 58};
+    begin(&V, dir, "cga-null-cone.svg", "Points are null vectors: F(x) lies on the cone F &#183; F = 0", 460,
+          390);
+    /* the coordinates (c1, c4, c5) of e1, e4, e5, drawn as x, y, z, seen from the side of e1 */
+    double az = -62 * PI / 180, el = 14 * PI / 180;
+    V.right = v3(-sin(az), cos(az), 0);
+    V.up = v3(-sin(el) * cos(az), -sin(el) * sin(az), cos(el));
+    V.toward = v3(cos(el) * cos(az), cos(el) * sin(az), sin(el));
+    const double top = 3.4;
+    const char *cone = "stroke=\"#1f77b4\" stroke-width=\"1\" stroke-opacity=\"0.6\"";
+    /* the cone c1^2 + c4^2 = c5^2, 0 <= c5 <= top: its rim and 12 of its lines, each point checked null */
+    fprintf(V.f, "<polyline fill=\"#1f77b4\" fill-opacity=\"0.08\" %s points=\"", cone);
+    for (int i = 0; i <= 120; i++) {
+        double a = 2 * PI * i / 120;
+        check_null(e145(top * cos(a), top * sin(a), top));
+        if (i)
+            fputc(' ', V.f);
+        pt(&V, v3(top * cos(a), top * sin(a), top));
+    }
+    fputs("\"/>\n", V.f);
+    for (int k = 0; k < 12; k++) {
+        double a = 2 * PI * k / 12;
+        check_null(e145(top * cos(a), top * sin(a), top));
+        segment(&V, v3(0, 0, 0), v3(top * cos(a), top * sin(a), top), cone);
+    }
+    /* the hyperplane F . n = -1, c5 - c4 = 1, where the points of space lie */
+    fputs("<polygon fill=\"#ff7f0e\" fill-opacity=\"0.10\" stroke=\"#ff7f0e\" stroke-width=\"1\" points=\"",
+          V.f);
+    pt(&V, v3(-2.6, -0.7, 0.3)), fputc(' ', V.f), pt(&V, v3(2.6, -0.7, 0.3)), fputc(' ', V.f);
+    pt(&V, v3(2.6, 2.4, 3.4)), fputc(' ', V.f), pt(&V, v3(-2.6, 2.4, 3.4));
+    fputs("\"/>\n", V.f);
+    /* the axes e1, e4, e5 */
+    const char *grey = "#888888";
+    arrow(&V, v3(0, 0, 0), v3(1.6, 0, 0), grey);
+    arrow(&V, v3(0, 0, 0), v3(0, 1.3, 0), grey);
+    arrow(&V, v3(0, 0, 0), v3(0, 0, 1.3), grey);
+    text(&V, v3(1.6, 0, 0), 4, 14, "fill=\"#666666\"", "e1");
+    text(&V, v3(0, 1.3, 0), 6, 4, "fill=\"#666666\"", "e4");
+    text(&V, v3(0, 0, 1.3), -22, 0, "fill=\"#666666\"", "e5");
+    /* the points of the e1 axis, F(t e1), from the library: a parabola on the cone */
+    fputs("<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"2.5\" points=\"", V.f);
+    for (int i = 0; i <= 100; i++) {
+        double t = -2.3 + 4.6 * i / 100;
+        ga_mv F = ga_point_up(v3(t, 0, 0));
+        check_null(F);
+        if (fabs(ga_mv_sp(F, ga_mv_add(e145(0, 1, 0), e145(0, 0, 1))) + 1) > 1e-12)
+            die("F(x) . n is not -1");
+        if (i)
+            fputc(' ', V.f);
+        pt(&V, v3(F.c[1], F.c[4], F.c[5]));
+    }
+    fputs("\"/>\n", V.f);
+    const double ts[] = {0, 1, -1, 2};
+    const char *names[] = {"F(0) = &#8722;n&#772;/2", "F(e1)", "F(&#8722;e1)", "F(2 e1)"};
+    const double dx[] = {-96, 10, -58, 10}, dy[] = {22, 14, 14, 14};
+    for (int i = 0; i < 4; i++) {
+        ga_mv F = ga_point_up(v3(ts[i], 0, 0));
+        point(&V, v3(F.c[1], F.c[4], F.c[5]), "#d62728", names[i], dx[i], dy[i]);
+    }
+    /* n = e4 + e5 lies on the cone: the point at infinity, where F(x) goes as |x| grows */
+    check_null(e145(0, 1, 1));
+    arrow(&V, v3(0, 0, 0), v3(0, 2.2, 2.2), "#2ca02c");
+    text(&V, v3(0, 2.2, 2.2), -150, -4, "fill=\"#2ca02c\"", "n = e4 + e5 (infinity)");
+    fprintf(
+        V.f,
+        "<text x=\"12\" y=\"44\">the coefficients (c1, c4, c5) of F(t e1) = t e1 + (t&#178; &#8722; 1)/2 e4 "
+        "+ (t&#178; + 1)/2 e5</text>\n"
+        "<text x=\"12\" y=\"352\">blue: the null cone c1&#178; + c4&#178; = c5&#178;; orange: the "
+        "hyperplane F &#183; n = &#8722;1.</text>\n"
+        "<text x=\"12\" y=\"370\">red: the points of the e1 axis, a parabola where the two "
+        "meet.</text>\n");
+    end(&V);
+}
+
+/* two unit spheres whose centres are d apart meet in a circle of r^2 = 1 - d^2/4: real,
+ * tangent (one point) or imaginary (no real point, drawn dashed with radius sqrt(-r^2)) */
+static void imaginary_circle(const char *dir)
+{
+    view V = {.oy = 135, .px = 50};
+    begin(&V, dir, "cga-imaginary-circle.svg",
+          "Two unit spheres d apart meet in a real, tangent or imaginary circle", 760, 280);
+    const double ds[] = {1.5, 2, 3};
+    const int want[] = {GA_REALITY_REAL, GA_REALITY_TANGENT, GA_REALITY_IMAGINARY};
+    for (int k = 0; k < 3; k++) {
+        V.ox = 70 + 250 * k;
+        ga_vec3 c1 = v3(0, 0, 0), c2 = v3(0, ds[k], 0);
+        ga_mv S1 = ga_sphere_dual(c1, 1), S2 = ga_sphere_dual(c2, 1);
+        sphere(&V, c1, 1, ga_mv_undual(S1), "#1f77b4");
+        sphere(&V, c2, 1, ga_mv_undual(S2), "#2ca02c");
+        ga_mv M = ga_mv_meet(S1, S2);
+        ga_object o = read_back(M, GA_OBJECT_CIRCLE);
+        if (o.reality != want[k] || fabs(o.r2 - (1 - ds[k] * ds[k] / 4)) > 1e-12 ||
+            fabs(o.centre.y - ds[k] / 2) > 1e-12 || fabs(fabs(o.direction.y) - 1) > 1e-12)
+            die("the meet is not the circle of r^2 = 1 - d^2/4 halfway between the centres");
+        char s[160];
+        if (o.reality == GA_REALITY_REAL)
+            circle(&V, o.centre, sqrt(o.r2), o.direction, M, "stroke=\"#d62728\" stroke-width=\"2.5\"", NULL);
+        else if (o.reality == GA_REALITY_TANGENT)
+            point(&V, o.centre, "#d62728", NULL, 0, 0);
+        else { /* no real point to check: drawn from the read-back, radius sqrt(-r^2), dashed */
+            ga_vec3 u, w;
+            basis(o.direction, &u, &w);
+            double r = sqrt(-o.r2);
+            fputs("<polyline fill=\"none\" stroke=\"#d62728\" stroke-width=\"2.5\" stroke-dasharray=\"7,5\" "
+                  "points=\"",
+                  V.f);
+            for (int i = 0; i <= 144; i++) {
+                double t = 2 * PI * i / 144;
+                if (i)
+                    fputc(' ', V.f);
+                pt(&V, add(o.centre, add(scale(u, r * cos(t)), scale(w, r * sin(t)))));
+            }
+            fputs("\"/>\n", V.f);
+            point(&V, o.centre, "#d62728", NULL, 0, 0);
+        }
+        snprintf(s, sizeof s, "d = %g: %s, r&#178; = %g", ds[k],
+                 k == 0   ? "real"
+                 : k == 1 ? "tangent"
+                          : "imaginary",
+                 o.r2 == 0 ? 0.0 : o.r2);
+        text(&V, c1, -50, 95, "", s);
+    }
+    fprintf(V.f,
+            "<text x=\"12\" y=\"252\">The meet is a circle halfway between the centres, r&#178; = 1 &#8722; "
+            "d&#178;/4. Beyond d = 2 it has no real point:</text>\n"
+            "<text x=\"12\" y=\"270\">r&#178; &lt; 0, an imaginary circle, drawn dashed with radius "
+            "&#8730;&#8722;r&#178; about its centre, where the real one would be.</text>\n");
+    end(&V);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -580,5 +734,7 @@ int main(int argc, char **argv)
     meet_line(argv[1]);
     inversion_figure(argv[1]);
     dilation_figure(argv[1]);
+    null_cone(argv[1]);
+    imaginary_circle(argv[1]);
     return 0;
 }
