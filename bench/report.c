@@ -104,6 +104,8 @@ static const ratio_def ratios[] = {
     {"sample_direct/exp", "sample_direct", "exp", 2.0, 0, "a closed-form screw pose against one exp"},
     {"sample_exact/motor_mul", "sample_exact", "motor_mul", 2.5, 0,
      "an exactly stepped screw pose against one product"},
+    {"sample_decoupled/eigen_slerp_lerp", "sample_decoupled", "eigen_slerp_lerp", 1.0, 0,
+     "a decoupled pose against Eigen's slerp + lerp, same keys and times"},
     {"se3_exp/eigen_expm", "se3_exp", "eigen_expm", 1.0, 0,
      "closed-form SE(3) exp against Eigen's general expm"},
     {"se3_log/eigen_logm", "se3_log", "eigen_logm", 1.0, 0,

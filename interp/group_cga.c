@@ -73,10 +73,19 @@ static void cga_to_qt(const void *g, double q[4], double p[3])
     p[1] = t.y;
     p[2] = t.z;
 }
-static void cga_from_qt(const double q[4], const double p[3], void *out)
+/* ga_rotor_from_quat_inline's terms, written to out in place (no ga_rotor
+   built on the stack and copied: the decoupled samplers call it per pose) */
+static void cga_from_qt(const double q[4], const double p[3], void *res)
 {
-    ga_quat a = {q[0], q[1], q[2], q[3]};
-    *(ga_rotor *)out = ga_rotor_from_quat(a, ga__v3(p[0], p[1], p[2]));
+    double *out = res, bx = -q[1], by = -q[2], bz = -q[3];
+    out[0] = q[0];
+    out[1] = bz;
+    out[2] = -by;
+    out[3] = bx;
+    out[4] = 0.5 * ((p[1] * bz - p[2] * by) - q[0] * p[0]);
+    out[5] = 0.5 * ((p[2] * bx - p[0] * bz) - q[0] * p[1]);
+    out[6] = 0.5 * ((p[0] * by - p[1] * bx) - q[0] * p[2]);
+    out[7] = -0.5 * (p[0] * bx + p[1] * by + p[2] * bz);
 }
 static int cga_from_mat4(ga_mat4 m, void *out) { return ga_rotor_from_mat4(m, (ga_rotor *)out); }
 static ga_mat4 cga_to_mat4(const void *g) { return ga_rotor_to_mat4(*(const ga_rotor *)g); }
