@@ -99,6 +99,7 @@ static const ratio_def ratios[] = {
      "what the compact form saves over the full algebra"},
     {"exp/se3_exp", "exp", "se3_exp", 0.7, 0, "rotor exp against Eberly's 4x4 exp"},
     {"log/se3_log", "log", "se3_log", 0.7, 0, "rotor log against Eberly's 4x4 log"},
+    {"log/exp", "log", "exp", 1.3, 0, "rotor log against rotor exp"},
     {"sample_exact/sample_euler", "sample_exact", "sample_euler", 0.5, 0,
      "exact stepping against one Euler step, same poses"},
     {"sample_direct/exp", "sample_direct", "exp", 2.0, 0, "a closed-form screw pose against one exp"},
