@@ -64,7 +64,7 @@ extern ga_mat4 gen_m[RING];                  /* expm(gen_x): general invertible 
 extern volatile double sink;
 extern int status_or; /* OR of every status returned in the timed loops */
 
-enum { PG_CGA_SCREW, PG_SE3_SCREW, PG_CGA_LIHAO3, PG_SE3_LIHAO3, N_PATH_KINDS };
+enum { PG_CGA_SCREW, PG_SE3_SCREW, PG_CGA_LIHAO3, PG_SE3_LIHAO3, PG_CGA_DECOUPLED, N_PATH_KINDS };
 
 typedef struct {
     const ga_group *group;

@@ -45,10 +45,9 @@ int status_or;
 /* ---- paths ----------------------------------------------------------------- */
 
 const path_kind_def path_kind[N_PATH_KINDS] = {
-    {&ga_group_cga, GA_SCHEME_SCREW},
-    {&ga_group_se3, GA_SCHEME_SCREW},
-    {&ga_group_cga, GA_SCHEME_LIHAO3},
-    {&ga_group_se3, GA_SCHEME_LIHAO3},
+    {&ga_group_cga, GA_SCHEME_SCREW},     {&ga_group_se3, GA_SCHEME_SCREW},
+    {&ga_group_cga, GA_SCHEME_LIHAO3},    {&ga_group_se3, GA_SCHEME_LIHAO3},
+    {&ga_group_cga, GA_SCHEME_DECOUPLED},
 };
 
 ga_path paths[N_PATH_KINDS][N_PATHS];
@@ -256,6 +255,7 @@ static const sample_ctx ctx_cga_lihao3_euler = {PG_CGA_LIHAO3, GA_EVAL_EULER};
 static const sample_ctx ctx_se3_lihao3_direct = {PG_SE3_LIHAO3, GA_EVAL_DIRECT};
 static const sample_ctx ctx_se3_lihao3_exact = {PG_SE3_LIHAO3, GA_EVAL_EXACT};
 static const sample_ctx ctx_se3_lihao3_euler = {PG_SE3_LIHAO3, GA_EVAL_EULER};
+static const sample_ctx ctx_cga_decoupled_direct = {PG_CGA_DECOUPLED, GA_EVAL_DIRECT};
 
 bench benches[] = {
     /* the keys of docs/conventions.md */
@@ -291,6 +291,9 @@ bench benches[] = {
      NULL, 0, NULL, 0, 0, 0},
     {"gp_rotor_vector", "ga_mv_gp_even_vector: a rotor times a point, as ga_mv", run_gp_rotor_vector, NULL, 0,
      NULL, 0, 0, 0},
+    {"sample_decoupled",
+     "decoupled path on rotors, per pose: closed form (slerp + lerp, eigen_slerp_lerp's keys)", run_sample,
+     &ctx_cga_decoupled_direct, 0, NULL, 0, 0, 0},
     /* extras */
     {"mat4_apply_many", "ga_mat4_apply_many: 1000 points under one 4x4, per point", run_mat4_apply_many, NULL,
      0, NULL, 0, 0, 0},

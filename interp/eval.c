@@ -25,6 +25,11 @@ ga_status ga_path_eval_segment(const ga_path *p, size_t seg, double u, void *out
     const gai_group_fast *f = gip_screw_fast(p);
     if (f) /* the group's own screw sampler */
         return gip_screw_eval(p, f, seg, u, out);
+    if (p->scheme == GA_SCHEME_DECOUPLED) { /* slerp and the chord from the segment's constants */
+        double c[GIP_DEC_CONST];
+        gip_dec_prep(p, seg, c);
+        return gip_dec_at(p, c, u, out);
+    }
     if (gip_is_decoupled(p->scheme))
         return gip_dec_eval(p, seg, u, out, NULL, NULL, NULL, NULL);
     if (p->scheme == GA_SCHEME_C2) { /* A_i exp(x(tau)) */

@@ -365,6 +365,55 @@ int gip_build_decoupled(ga_path *p)
     return GA_OK;
 }
 
+/* DECOUPLED's pose from constants of its segment (c: GIP_DEC_CONST doubles,
+ * gip_dec_prep): the rotation q_i exp(a n) with a = u th/2, n the unit axis
+ * of the segment's rotation vector th, is cos(a) q_i + sin(a) (q_i n), so a
+ * pose costs cos and sin of one angle and a linear combination of two fixed
+ * quaternions; the position is the chord, y_i + m tau as gip_dec_eval has
+ * it. Layout: c[0..3] q_i, c[4..7] q_i n (Hamilton product with (0, n)),
+ * c[8] |th|/(2h), c[9..11] y_i, c[12..14] m, c[15] h. */
+void gip_dec_prep(const ga_path *p, size_t seg, double *c)
+{
+    const double *rc = dseg(p, seg), *q0 = dkey(p, seg);
+    double mx = fmax(fabs(rc[0]), fmax(fabs(rc[1]), fabs(rc[2]))), n[4] = {0, 0, 0, 0}, half = 0.0;
+    if (mx > 0.0) { /* the norm scaled: no overflow where h is tiny, no underflow where th is */
+        double v[3] = {rc[0] / mx, rc[1] / mx, rc[2] / mx}, l = sqrt(dot3(v, v));
+        for (int k = 0; k < 3; ++k) n[k + 1] = v[k] / l;
+        half = 0.5 * (mx * l);
+    }
+    memcpy(c, q0, 4 * sizeof(double));
+    qmul(q0, n, c + 4);
+    c[8] = half;
+    memcpy(c + 9, rc + 9, 3 * sizeof(double));
+    memcpy(c + 12, rc + 12, 3 * sizeof(double));
+    c[15] = gip_seg_len(p, seg);
+}
+
+int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
+{
+    double tau = u * c[15], a = c[8] * tau, a2 = a * a, cs, sn, q[4], pos[3];
+    if (a2 <= (GA_PI / 4) * (GA_PI / 4)) { /* ga_rotor_exp's series: no trig call */
+        double y2 = a2 * a2, y4 = y2 * y2, y8 = y4 * y4;
+        cs = ga__series_estrin9(GA__SERIES_F0, a2, y2, y4, y8);
+        sn = a * ga__series_estrin9(GA__SERIES_F1, a2, y2, y4, y8);
+    } else if (a > 0.0 && a <= 3 * GA_PI / 4) { /* r = pi/2 - a: sin a = cos r, cos a = r sinc r */
+        double r = (GA_PIO2_HI - a) + GA_PIO2_LO, y = r * r, y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+        sn = ga__series_estrin9(GA__SERIES_F0, y, y2, y4, y8);
+        cs = r * ga__series_estrin9(GA__SERIES_F1, y, y2, y4, y8);
+    } else { /* beyond the segment (u > 3/2 at a half turn, or u < 0) */
+        cs = cos(a);
+        sn = sin(a);
+    }
+    for (int k = 0; k < 4; ++k) q[k] = cs * c[k] + sn * c[4 + k];
+    for (int k = 0; k < 3; ++k) pos[k] = c[12 + k] * tau + c[9 + k];
+    p->group->from_qt(q, pos, out);
+    const double *o = out;
+    double z = 0.0;
+    for (size_t k = 0; k < p->group->elem_size / sizeof(double); ++k)
+        z += o[k] - o[k]; /* 0 for finite, NaN for Inf and NaN (gip_finite_elem) */
+    return z == 0.0 ? GA_OK : GA_ERR_DOMAIN;
+}
+
 /* The pose on segment seg at u, and (each may be NULL) the body velocity,
  * acceleration and jerk per unit t, and pw: the position's derivatives p',
  * p'', p''' in world axes (9 doubles). */

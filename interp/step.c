@@ -198,6 +198,23 @@ static int screw_next(ga_path_stepper *s, const gai_group_fast *f, size_t seg, d
     return st;
 }
 
+/* DIRECT and EXACT samples of DECOUPLED (no product form: EXACT is DIRECT):
+ * slot 0 holds the constants of segment s->seg (gip_dec_prep), made whenever
+ * s->seg changes; at a key time the key itself, as gip_eval_direct. */
+_Static_assert(GIP_DEC_CONST <= GA_GROUP_MAX_ELEM, "a decoupled segment's constants fill one slot");
+static int dec_next(ga_path_stepper *s, size_t seg, double u, void *out)
+{
+    const ga_path *p = s->path;
+    if (seg != s->seg)
+        gip_dec_prep(p, seg, s->slot[0]);
+    s->seg = seg;
+    if (u == 0.0 || u == 1.0) {
+        gip_copy_elem(p->group, out, gip_key_of(p, seg + (u == 1.0)));
+        return GA_OK;
+    }
+    return gip_dec_at(p, s->slot[0], u, out);
+}
+
 ga_status ga_path_stepper_next(ga_path_stepper *s, void *out)
 {
     if (!s || !out || s->k >= s->n)
@@ -219,6 +236,8 @@ ga_status ga_path_stepper_next(ga_path_stepper *s, void *out)
         st = euler_sample(p, s->step, &s->seg, &s->grid, s->slot[0], seg, u, out);
     } else if ((f = gip_screw_fast(p))) {
         st = screw_next(s, f, seg, u, out);
+    } else if (p->scheme == GA_SCHEME_DECOUPLED && p->n > 1) {
+        st = dec_next(s, seg, u, out);
     } else if (s->eval == GA_EVAL_DIRECT || gip_nfac(p->scheme) == 0 || p->n == 1) {
         st = gip_eval_direct(p, seg, u, out);
         s->seg = seg; /* DIRECT keeps no state: seg is only where to look first */

@@ -139,6 +139,11 @@ int gip_build_decoupled(ga_path *p);
 int gip_dec_append(ga_path *q, size_t i, const void *key);
 int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a, double *j,
                  double *pw);
+/* DECOUPLED's pose at (seg, u) from its segment's GIP_DEC_CONST constants,
+   made by gip_dec_prep; GA_OK or GA_ERR_DOMAIN where it is not finite */
+#define GIP_DEC_CONST 16
+void gip_dec_prep(const ga_path *p, size_t seg, double *c);
+int gip_dec_at(const ga_path *p, const double *c, double u, void *out);
 /* scheme_c2.c: C2 */
 int gip_build_c2(ga_path *p);
 void gip_c2_curve(const ga_path *p, size_t seg, double u, double *x, double *xd, double *xdd, double *xddd);
