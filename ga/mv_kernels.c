@@ -127,6 +127,16 @@ PRODUCT(ga_mv_gp_even_vector, mv_gp_eg1)
 PRODUCT(ga_mv_gp_vector_vector, mv_gp_g1g1)
 PRODUCT(ga_mv_gp_even_even, mv_gp_ee)
 
+ga_status ga_mv_gp_even_vector_sparse(const double *even, const double *vec, double *odd)
+{
+    if (!even || !vec || !odd)
+        return GA_ERR_ARG;
+    double o[16]; /* odd may overlap even or vec: read both before writing */
+    mv_gp_eg1_sparse(even, vec, o);
+    memcpy(odd, o, sizeof o);
+    return GA_OK;
+}
+
 void gak_dot_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { gak_dot_blocks(a->c, b->c, r->c); }
 void gak_dot_dense(const double *a, const double *b, double *r) { mv_dot_dense(a, b, r); }
 void gak_gp_even_vector_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_eg1(a->c, b->c, r->c); }
