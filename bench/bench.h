@@ -49,8 +49,9 @@
 /* ---- the rings and paths (cases.c defines them, inputs.c fills them) ------- */
 
 extern ga_mv mv_a[RING], mv_b[RING];
-extern ga_mv mv_rot[RING], mv_rot_rev[RING]; /* rot_a as multivectors, and their reverses */
-extern ga_mv mv_pt[RING];                    /* F(x) of pts */
+extern ga_mv mv_rot[RING], mv_rot_rev[RING];       /* rot_a as multivectors, and their reverses */
+extern ga_mv mv_pt[RING];                          /* F(x) of pts */
+extern double even_rot[RING][16], vec_pt[RING][5]; /* mv_rot's even and mv_pt's vector coefficients */
 extern ga_rotor rot_a[RING], rot_b[RING];
 extern ga_dualquat dq_a[RING], dq_b[RING];
 extern ga_vec3 pts[RING];

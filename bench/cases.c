@@ -15,6 +15,7 @@
 
 ga_mv mv_a[RING], mv_b[RING];
 ga_mv mv_rot[RING], mv_rot_rev[RING], mv_pt[RING];
+double even_rot[RING][16], vec_pt[RING][5];
 ga_rotor rot_a[RING], rot_b[RING];
 ga_dualquat dq_a[RING], dq_b[RING];
 ga_vec3 pts[RING];
@@ -31,6 +32,7 @@ static ga_mv out_mv[RING];
 static ga_rotor out_rot[RING];
 static ga_dualquat out_dq[RING];
 static ga_vec3 out_v3[RING];
+static double out_odd[RING][16];
 static ga_generator out_gen[RING];
 static ga_twist out_tw[RING];
 static ga_mat4 out_mat[RING];
@@ -109,8 +111,11 @@ RING_LOOP(run_op_ptr, gak_op_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[3
 RING_LOOP(run_dot_ptr, gak_dot_p(&mv_a[j], &mv_b[j], &out_mv[j]), out_mv[last].c[31])
 RING_LOOP(run_gp_rotor_vector_ptr, gak_gp_even_vector_p(&mv_rot[j], &mv_pt[j], &out_mv[j]),
           out_mv[last].c[31])
-/* sparse pairs: a rotor times a point, both as full multivectors */
-RING_LOOP(run_gp_rotor_vector, out_mv[j] = ga_mv_gp_even_vector(mv_rot[j], mv_pt[j]), out_mv[last].c[31])
+/* sparse pairs: a rotor times a point, on their coefficients (16 even, 5),
+   and both as full multivectors */
+RING_LOOP(run_gp_rotor_vector, st |= ga_mv_gp_even_vector_sparse(even_rot[j], vec_pt[j], out_odd[j]),
+          out_odd[last][15])
+RING_LOOP(run_gp_rotor_vector_mv, out_mv[j] = ga_mv_gp_even_vector(mv_rot[j], mv_pt[j]), out_mv[last].c[31])
 /* the sandwich of a point: ga_versor_apply, and by hand (two ga_mv_gp, the
    reverse taken beforehand) */
 RING_LOOP(run_versor_apply, st |= ga_versor_apply(mv_rot[j], mv_pt[j], &out_mv[j]), out_mv[last].c[5])
@@ -142,6 +147,86 @@ POINTS_LOOP(run_mat4_loop, const ga_mat4 *m = &rigid_a[j];
             for (size_t i = 0; i < APPLY_POINTS; i++) out_pts[i] = mat4_apply(m, pts[i]))
 POINTS_LOOP(run_motor_apply_loop, ga_rotor r = rot_a[j];
             for (size_t i = 0; i < APPLY_POINTS; i++) out_pts[i] = ga_rotor_apply(r, pts[i]))
+/* The machine's multiply-add peak, a call one multiply-add (a lane's): in
+ * this build's scalar code (a multiplication, then an addition: the library
+ * compiles without contraction), one dependent chain (latency) and 16
+ * independent ones (throughput, as -O3 vectorises them); and with gcc on
+ * x86-64, fused multiply-adds in vectors of 8 (AVX-512F + FMA, where the CPU
+ * has them; else the scalar loops), 1 chain and 16. The multiplier 1 - 2^-30
+ * and the addend keep every chain finite and its numbers never denormal. */
+#define MADD_A (1.0 - 0x1p-30)
+#define MADD_B 0x1p-40
+static double madd_x[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+static size_t run_madd_dep(const void *ctx, size_t n)
+{
+    (void)ctx;
+    double x = madd_x[0], a = MADD_A * (1.0 + 0.0 * sink), b = MADD_B;
+    for (size_t i = 0; i < n; i++) x = x * a + b;
+    madd_x[0] = x;
+    sink = x;
+    return n;
+}
+static size_t run_madd_indep(const void *ctx, size_t n)
+{
+    (void)ctx;
+    double x[16], a = MADD_A * (1.0 + 0.0 * sink), b = MADD_B;
+    memcpy(x, madd_x, sizeof x);
+    size_t m = (n + 15) / 16;
+    for (size_t i = 0; i < m; i++)
+        for (int k = 0; k < 16; k++) x[k] = x[k] * a + b;
+    memcpy(madd_x, x, sizeof x);
+    sink = x[0] + x[15];
+    return 16 * m;
+}
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define BENCH_FMA_V8 1
+typedef double v8d __attribute__((vector_size(64)));
+__attribute__((target("avx512f,fma"))) static size_t fma_v8(size_t n, int chains)
+{
+    v8d x[16], a, b;
+    for (int k = 0; k < 16; k++)
+        for (int l = 0; l < 8; l++) x[k][l] = madd_x[k] + l;
+    for (int l = 0; l < 8; l++) a[l] = MADD_A * (1.0 + 0.0 * sink), b[l] = MADD_B;
+    size_t m;
+    if (chains == 1) {
+        m = (n + 7) / 8;
+        for (size_t i = 0; i < m; i++)
+            x[0] = __builtin_ia32_vfmaddpd512_mask(x[0], a, b, (unsigned char)-1, 4);
+        m *= 8;
+    } else {
+        m = (n + 127) / 128;
+        for (size_t i = 0; i < m; i++)
+            for (int k = 0; k < 16; k++)
+                x[k] = __builtin_ia32_vfmaddpd512_mask(x[k], a, b, (unsigned char)-1, 4);
+        m *= 128;
+    }
+    double s = 0.0;
+    for (int k = 0; k < 16; k++) s += x[k][0] + x[k][7];
+    sink = s;
+    return m;
+}
+static int fma_v8_here(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
+}
+#endif
+static size_t run_fma_dep(const void *ctx, size_t n)
+{
+#ifdef BENCH_FMA_V8
+    if (fma_v8_here())
+        return fma_v8(n, 1);
+#endif
+    return run_madd_dep(ctx, n);
+}
+static size_t run_fma_indep(const void *ctx, size_t n)
+{
+#ifdef BENCH_FMA_V8
+    if (fma_v8_here())
+        return fma_v8(n, 16);
+#endif
+    return run_madd_indep(ctx, n);
+}
 RING_LOOP(run_exp, out_rot[j] = ga_rotor_exp(gens[j]), out_rot[last].e123n)
 RING_LOOP(run_log, st |= ga_rotor_log(rot_a[j], &out_gen[j]), out_gen[last].e3n)
 RING_LOOP(run_se3_exp, out_mat[j] = ga_se3_exp(twists[j]), out_mat[last].m[11])
@@ -289,8 +374,8 @@ bench benches[] = {
      0, 0, 0},
     {"sandwich_hand", "ga_mv_gp(ga_mv_gp(R, F(x)), ~R), ~R given: the sandwich by hand", run_sandwich_hand,
      NULL, 0, NULL, 0, 0, 0},
-    {"gp_rotor_vector", "ga_mv_gp_even_vector: a rotor times a point, as ga_mv", run_gp_rotor_vector, NULL, 0,
-     NULL, 0, 0, 0},
+    {"gp_rotor_vector", "ga_mv_gp_even_vector_sparse: a rotor's 16 even coefficients times a point's 5",
+     run_gp_rotor_vector, NULL, 0, NULL, 0, 0, 0},
     {"sample_decoupled",
      "decoupled path on rotors, per pose: closed form (slerp + lerp, eigen_slerp_lerp's keys)", run_sample,
      &ctx_cga_decoupled_direct, 0, NULL, 0, 0, 0},
@@ -311,8 +396,18 @@ bench benches[] = {
     {"lc_ptr", "ga_mv_lc's code by pointer (gak_lc_p)", run_lc_ptr, NULL, 0, NULL, 0, 0, 0},
     {"op_ptr", "ga_mv_op's code by pointer (gak_op_p)", run_op_ptr, NULL, 0, NULL, 0, 0, 0},
     {"dot_ptr", "ga_mv_dot's code by pointer (gak_dot_p)", run_dot_ptr, NULL, 0, NULL, 0, 0, 0},
+    {"gp_rotor_vector_mv", "ga_mv_gp_even_vector: the same product, both as ga_mv (by value)",
+     run_gp_rotor_vector_mv, NULL, 0, NULL, 0, 0, 0},
     {"gp_rotor_vector_ptr", "ga_mv_gp_even_vector's code by pointer (gak_gp_even_vector_p)",
      run_gp_rotor_vector_ptr, NULL, 0, NULL, 0, 0, 0},
+    {"madd_dep", "one multiply-add (mul, then add), scalar, one dependent chain: latency", run_madd_dep, NULL,
+     0, NULL, 0, 0, 0},
+    {"madd_indep", "one multiply-add (mul, then add), 16 independent chains as -O3 compiles them",
+     run_madd_indep, NULL, 0, NULL, 0, 0, 0},
+    {"fma_dep", "one fused multiply-add, a lane of an AVX-512F vector, one dependent chain", run_fma_dep,
+     NULL, 0, NULL, 0, 0, 0},
+    {"fma_indep", "one fused multiply-add, a lane of an AVX-512F vector, 16 independent chains",
+     run_fma_indep, NULL, 0, NULL, 0, 0, 0},
     {"mat4_mul", "ga_mat4_mul: product of two 4x4 rigid motions", run_mat4_mul, NULL, 0, NULL, 0, 0, 0},
     {"motor_mul_call", "ga_rotor_mul: the same product through the library's symbol", run_motor_mul_call,
      NULL, 0, NULL, 0, 0, 0},

@@ -163,6 +163,10 @@ int setup_inputs(void)
         mv_rot[j] = ga_rotor_to_mv(rot_a[j]);
         mv_rot_rev[j] = ga_mv_reverse(mv_rot[j]);
         mv_pt[j] = ga_point_up(pts[j]);
+        for (int i = 0, k = 0; i < 32; i++)
+            if (ga_blade_grade(i) % 2 == 0)
+                even_rot[j][k++] = mv_rot[j].c[i];
+        for (int i = 0; i < 5; i++) vec_pt[j][i] = mv_pt[j].c[1 + i];
     }
     gp_tables();
     return build_paths();

@@ -222,14 +222,55 @@ void gak_op_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_op_dense(a->c, b->c
 GA_BLOCKS_IFUNC(gak_dot_blocks, mv_dot_blocks)
 GA_BLOCKS_IFUNC(gak_gp_even, mv_gpe_blocks)
 GA_BLOCKS_IFUNC(gak_gp_odd, mv_gpo_blocks)
+/* ga_mv_dot picked as ga_mv_gp is, each form writing its result where the
+   caller wants it (through gak_dot_blocks, one more call and a copy of the
+   256-byte result: 1.35 times the time by pointer, docs/benchmarks.md) */
+__attribute__((target("avx512f"))) static ga_mv dot_avx512f(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_dot_blocks8(a.c, b.c, r.c);
+    return r;
+}
+__attribute__((target("avx2"))) static ga_mv dot_avx2(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_dot_blocks4(a.c, b.c, r.c);
+    return r;
+}
+static ga_mv dot_sse2(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_dot_blocks2(a.c, b.c, r.c);
+    return r;
+}
+static gp_fn dot_resolve(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") ? dot_avx512f
+         : __builtin_cpu_supports("avx2")    ? dot_avx2
+                                             : dot_sse2;
+}
+ga_mv ga_mv_dot(ga_mv a, ga_mv b) __attribute__((ifunc("dot_resolve")));
 #elif defined(GA_DENSE_BLOCKS)
 void gak_dot_blocks(const double *a, const double *b, double *r) { mv_dot_blocks2(a, b, r); }
 void gak_gp_even(const double *a, const double *b, double *r) { mv_gpe_blocks2(a, b, r); }
 void gak_gp_odd(const double *a, const double *b, double *r) { mv_gpo_blocks2(a, b, r); }
+ga_mv ga_mv_dot(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    mv_dot_blocks2(a.c, b.c, r.c);
+    return r;
+}
 #else
 void gak_dot_blocks(const double *a, const double *b, double *r) { gak_dot_dense(a, b, r); }
 void gak_gp_even(const double *a, const double *b, double *r) { mv_gp_dense(a, b, r); }
 void gak_gp_odd(const double *a, const double *b, double *r) { mv_gp_dense(a, b, r); }
+ga_mv ga_mv_dot(ga_mv a, ga_mv b)
+{
+    ga_mv r;
+    gak_dot_dense(a.c, b.c, r.c);
+    return r;
+}
 #endif
 void gak_lc_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_lc_dense(a->c, b->c, r->c); }
 
@@ -247,7 +288,7 @@ ga_mv ga_mv_lc(ga_mv a, ga_mv b)
     return r;
 }
 
-/* ga_mv_sp, ga_mv_dot and ga_mv_ip: ga/mv_kernels.c (generated, as the products above). */
+/* ga_mv_sp and ga_mv_ip: ga/mv_kernels.c (generated, as the products above); ga_mv_dot above. */
 
 /* Multiply the grade-k part by sign[k]. */
 static ga_mv grade_signs(ga_mv a, const double sign[6])

@@ -2,10 +2,11 @@
  * and the sparse kernels of the geometric product, all written out term by
  * term by gen/generate.py (ga/mv_kernels.inc, section 13 of the script):
  *
- *   - ga_mv_sp, ga_mv_dot, ga_mv_ip: every term summed in the order of the
- *     blade loop they replace (a's blade, then b's), so their numbers are the
- *     loop's (but the sign of a zero result: the sums start at their first
- *     term, not at +0.0);
+ *   - ga_mv_sp, ga_mv_ip and the straight-line fat dot: every term summed in
+ *     the order of the blade loop they replace (a's blade, then b's), so
+ *     their numbers are the loop's (but the sign of a zero result: the sums
+ *     start at their first term, not at +0.0); ga_mv_dot itself is the same
+ *     sums in vectors (ga/mv.c);
  *   - ga_mv_regressive: the outer product of the duals, undualled, in the
  *     order of ga_mv_op's loop on the duals (the dual and the undual only
  *     move and negate coefficients): the numbers of undual(op(dual a,
@@ -119,13 +120,22 @@ double ga_mv_sp(ga_mv a, ga_mv b) { return mv_sp_dense(a.c, b.c); }
         return r;                                                                                            \
     }
 
-PRODUCT(ga_mv_dot, gak_dot_blocks)
 PRODUCT(ga_mv_ip, mv_ip_dense)
 PRODUCT(ga_mv_regressive, mv_regressive_dense)
 PRODUCT(ga_mv_commutator, mv_commutator_dense)
 PRODUCT(ga_mv_gp_even_vector, mv_gp_eg1)
 PRODUCT(ga_mv_gp_vector_vector, mv_gp_g1g1)
 PRODUCT(ga_mv_gp_even_even, mv_gp_ee)
+
+ga_status ga_mv_gp_even_vector_sparse(const double *even, const double *vec, double *odd)
+{
+    if (!even || !vec || !odd)
+        return GA_ERR_ARG;
+    double o[16]; /* odd may overlap even or vec: read both before writing */
+    mv_gp_eg1_sparse(even, vec, o);
+    memcpy(odd, o, sizeof o);
+    return GA_OK;
+}
 
 void gak_dot_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { gak_dot_blocks(a->c, b->c, r->c); }
 void gak_dot_dense(const double *a, const double *b, double *r) { mv_dot_dense(a, b, r); }

@@ -157,6 +157,28 @@ def gen_sparse():
             lines, c = _function('mv_gp_%s%s' % (pname, qname), what, P, vars_.names)
             out += lines
             counts['mv_gp_%s%s' % (pname, qname)] = c
+    # an even multivector times a vector on their coefficients alone (the
+    # public ga_mv_gp_even_vector_sparse): e[j] the j-th even blade, v[j] the
+    # j-th vector, o[j] the j-th odd blade of the result, in the canonical
+    # order; the variables declared in mv_gp_eg1's order, so the same sums
+    vars_ = Vars()
+    ev = [m for m in ALG.masks if popcount(m) % 2 == 0]
+    od = [m for m in ALG.masks if popcount(m) % 2 == 1]
+    A = {m: vars_('e[%d]' % j) for j, m in enumerate(ev)}
+    B = {m: vars_('v[%d]' % j) for j, m in enumerate(m for m in ALG.masks if popcount(m) == 1)}
+    P = ALG.product(A, B)
+    assert all(popcount(m) % 2 == 1 for m in P)
+    lines, mul, add = [], 0, 0
+    for j, m in enumerate(od):
+        p = P.get(m, Poly())
+        lines += emit_sum('o[%d]' % j, p, vars_.names, a_major)
+        dm, da = p.ops()
+        mul, add = mul + dm, add + da
+    counts['mv_gp_eg1_sparse'] = (mul, add)
+    out += ['', '/* o = the odd coefficients of e v, e the 16 even coefficients of a multivector, v the',
+            '   5 of a vector: %d multiplications, %d additions (mv_gp_eg1\'s sums). */' % (mul, add),
+            'static void mv_gp_eg1_sparse(const double *restrict e, const double *restrict v, double *restrict o)',
+            '{'] + lines + ['}']
     # vector times vector
     vars_ = Vars()
     A = _sparse_vars(vars_, 'a', lambda m: popcount(m) == 1)

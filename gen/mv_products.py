@@ -138,6 +138,32 @@ def _dot_keeps(ma, mb):
     return (ma & mb) == ma or (ma & mb) == mb
 
 
+# b into mask order, and the result back into blade order, as whole vectors:
+# each block of W masks gathers its lanes from the blocks of b (blade order)
+# that hold them, by two-source shuffles (an exact move of doubles, so the
+# numbers are those of the scalar copy). Written for the dot only: with the
+# copy through bf[] gcc builds each permuted b (lane ^ x) from 8 scalar loads,
+# with the vectors it is one shuffle (docs/benchmarks.md, "Round three").
+def _gather(W, dst, src, order, lines):
+    """dst[q] lane l = src element order[W q + l] (src blocks of W)."""
+    vi = 'mv_v%di' % W
+    for q in range(32 // W):
+        want = [order[W * q + l] for l in range(W)]
+        blocks = sorted(set(e // W for e in want))
+        if len(blocks) == 1:
+            lines.append('    %s[%d] = __builtin_shuffle(%s[%d], (%s){%s});' % (
+                dst, q, src, blocks[0], vi, ', '.join(str(e % W) for e in want)))
+            continue
+        b0, b1 = blocks[0], blocks[1]
+        idx = [(e % W if e // W == b0 else W + e % W) if e // W in (b0, b1) else 0 for e in want]
+        lines.append('    %s[%d] = __builtin_shuffle(%s[%d], %s[%d], (%s){%s});' % (
+            dst, q, src, b0, src, b1, vi, ', '.join(map(str, idx))))
+        for bx in blocks[2:]:
+            idx = [W + e % W if e // W == bx else l for l, e in enumerate(want)]
+            lines.append('    %s[%d] = __builtin_shuffle(%s[%d], %s[%d], (%s){%s});' % (
+                dst, q, dst, q, src, bx, vi, ', '.join(map(str, idx))))
+
+
 def gen_more_blocks():
     masks = ALG.masks
     out = ['', '#ifdef GA_DENSE_BLOCKS',
@@ -164,14 +190,17 @@ def gen_more_blocks():
             out += ['', '/* r = %s in %d vectors of %d doubles. */' % (what, nb, W),
                     'GA_DENSE_FN void mv_%s_blocks%d(const double *restrict a, const double *restrict b,'
                     % (name, W),
-                    '                               double *restrict r)', '{',
-                    '    double bf[32], rf[32];',
-                    '    %s bm[%d], acc[%d], t, f;' % (vd, nb, nb),
-                    '    %s sg;' % vi,
-                    '    (void)sg;',
-                    '    (void)f;']
-            out += ['    bf[%d] = b[%d];' % (m, i) for i, m in enumerate(masks)]
-            out += ['    __builtin_memcpy(bm, bf, sizeof bm);']
+                    '                               double *restrict r)', '{']
+            if dot:
+                out += ['    %s bv[%d], bm[%d], acc[%d], rv[%d], t, f;' % (vd, nb, nb, nb, nb),
+                        '    __builtin_memcpy(bv, b, sizeof bv);']
+                _gather(W, 'bm', 'bv', [ALG.index[m] for m in range(32)], out)
+            else:
+                out += ['    double bf[32], rf[32];',
+                        '    %s bm[%d], acc[%d], t;' % (vd, nb, nb),
+                        '    %s sg;' % vi]
+                out += ['    bf[%d] = b[%d];' % (m, i) for i, m in enumerate(masks)]
+                out += ['    __builtin_memcpy(bm, bf, sizeof bm);']
             started = [False] * nb
             for k in ks:
                 ma = masks[k]
@@ -195,8 +224,12 @@ def gen_more_blocks():
                                 % (k, W * q),
                                 '    acc[%d] %s a[%d] * (%s)((%s)%s ^ sg);' % (q, op, k, vd, vi, src)]
             assert all(started)
-            out += ['    __builtin_memcpy(rf, acc, sizeof rf);']
-            out += ['    r[%d] = rf[%d];' % (i, m) for i, m in enumerate(masks)]
+            if dot:
+                _gather(W, 'rv', 'acc', masks, out)
+                out += ['    __builtin_memcpy(r, rv, sizeof rv);']
+            else:
+                out += ['    __builtin_memcpy(rf, acc, sizeof rf);']
+                out += ['    r[%d] = rf[%d];' % (i, m) for i, m in enumerate(masks)]
             out += ['}']
     out += ['#endif']
     return out

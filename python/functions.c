@@ -80,18 +80,31 @@ int gpy_k_apply(void *ctx, const double *const *in, double *out, npy_intp k)
     int st = g->from_mat4(gpy_mat_get(in[0]), a);
     if (st != GA_OK)
         return st;
-    const double *x = in[1];
-    if (g == &ga_group_cga) {
-        ga_vec3 y = ga_rotor_apply(*(const ga_rotor *)a, (ga_vec3){x[0], x[1], x[2]});
-        out[0] = y.x, out[1] = y.y, out[2] = y.z;
-    } else {
-        ga_mat4 m = g->to_mat4(a);
-        double y[3];
-        for (int r = 0; r < 3; r++)
-            y[r] = m.m[4 * r] * x[0] + m.m[4 * r + 1] * x[1] + m.m[4 * r + 2] * x[2] + m.m[4 * r + 3];
-        memcpy(out, y, sizeof y);
-    }
-    return GA_OK;
+    /* the batch functions on one point: the numbers of gpy_apply_many */
+    ga_vec3 x = {in[1][0], in[1][1], in[1][2]}, y;
+    if (g == &ga_group_cga)
+        st = ga_rotor_apply_many(*(const ga_rotor *)a, &x, 1, &y);
+    else
+        st = ga_mat4_apply_many(g->to_mat4(a), &x, 1, &y);
+    out[0] = y.x, out[1] = y.y, out[2] = y.z;
+    return st;
+}
+
+/* One motion T, n points: T converted once, then the batch (cga: the rotor's
+   matrix, ga_rotor_apply_many; the others: the group's matrix,
+   ga_mat4_apply_many), 9 multiplications and 9 additions a point. x and y
+   are n ga_vec3 in C order (y may be x: each point is read before it is
+   written). */
+int gpy_apply_many(void *ctx, const double *T, const double *x, npy_intp n, double *y)
+{
+    const ga_group *g = ctx;
+    double a[GA_GROUP_MAX_ELEM];
+    int st = g->from_mat4(gpy_mat_get(T), a);
+    if (st != GA_OK)
+        return st;
+    if (g == &ga_group_cga)
+        return ga_rotor_apply_many(*(const ga_rotor *)a, (const ga_vec3 *)x, (size_t)n, (ga_vec3 *)y);
+    return ga_mat4_apply_many(g->to_mat4(a), (const ga_vec3 *)x, (size_t)n, (ga_vec3 *)y);
 }
 
 /* ---- quaternions, poses, dual quaternions (cga: through the rotor) --------- */
@@ -320,6 +333,7 @@ PyObject *gpy_apply(PyObject *self, PyObject *args, PyObject *kw)
                           .in = {GPY_CORE2(4, 4, "T"), GPY_CORE1(3, "points")},
                           .out = GPY_CORE1(3, NULL),
                           .kernel = gpy_k_apply,
+                          .many = gpy_apply_many,
                           .ctx = (void *)g};
     return gpy_run_kernel(&kc, in, out);
 }

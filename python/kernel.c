@@ -412,7 +412,35 @@ PyObject *gpy_run_kernel(gpy_kernel_call *kc, PyObject *const *objs, PyObject *o
     /* a new result is written in place (discarded on an error); out= through
        a buffer, so that an element that fails leaves it untouched */
     double *direct = out ? NULL : (double *)PyArray_DATA(res);
-    for (npy_intp k = 0; k < total; k++) {
+    npy_intp k0 = 0; /* the elements before k0 done by kc->many */
+    int whole1 = kc->many && kc->nin == 2 && nl[0] == 0 && nl[1] == kc->nlead;
+    for (int d = 0; whole1 && d < nl[1]; d++) whole1 = PyArray_DIM(a[1], d) == kc->lead[d];
+    if (whole1) {
+        double chunk[1536]; /* out=: results through here, checked before they are written */
+        npy_intp room = (npy_intp)(sizeof chunk / sizeof *chunk) / (osize > 0 ? osize : 1);
+        while (k0 < total) {
+            npy_intp m = direct || total - k0 < room ? total - k0 : room;
+            double *o = direct ? direct + k0 * osize : chunk;
+            if (kc->many(kc->ctx, base[0], base[1] + k0 * csize[1], m, o) != GA_OK ||
+                !gpy_all_finite(o, m * osize))
+                break;
+            if (!direct)
+                for (npy_intp i = 0; i < m; i++) sink_put(&dst, k0 + i, o + i * osize);
+            k0 += m;
+        }
+        if (k0 < total && !same) { /* the odometer at k0 */
+            npy_intp rest = k0;
+            for (int d = kc->nlead - 1; d >= 0; d--) {
+                idx[d] = rest % kc->lead[d];
+                rest /= kc->lead[d];
+            }
+            for (int j = 0; j < kc->nin; j++) {
+                p[j] = base[j];
+                for (int d = 0; d < kc->nlead; d++) p[j] += idx[d] * step[j][d];
+            }
+        }
+    }
+    for (npy_intp k = k0; k < total; k++) {
         const double *in[GPY_MAX_IN];
         double buf[GPY_MAX_OUT], *o = direct ? direct + k * osize : buf;
         for (int j = 0; j < kc->nin; j++) in[j] = same ? base[j] + k * csize[j] : p[j];

@@ -110,6 +110,13 @@ typedef struct {
     /* or NULL: for the first bad element (its inputs, the kernel's status),
        why it is bad where the status alone does not say, into why[size] */
     void (*explain)(void *ctx, const double *const *in, int status, char *why, size_t size);
+    /* or NULL: n elements that share input 0's one element (in0), input 1's
+       and the results' in C order (in1, out; out may be in1 itself): the
+       numbers kernel gives element by element. Run where input 0 has no
+       leading dimensions and input 1 the whole broadcast shape (one motion,
+       many points); any status or result not finite, and the elements from
+       there on are run one by one, which names the error */
+    int (*many)(void *ctx, const double *in0, const double *in1, npy_intp n, double *out);
     /* or NULL: held over the loop (taken with the GIL released), for a
        context that another thread may change (a Path's) */
     PyThread_type_lock lock;
@@ -145,6 +152,8 @@ int gpy_k_log(void *ctx, const double *const *in, double *out, npy_intp k);
 int gpy_k_compose(void *ctx, const double *const *in, double *out, npy_intp k);
 int gpy_k_inverse(void *ctx, const double *const *in, double *out, npy_intp k);
 int gpy_k_apply(void *ctx, const double *const *in, double *out, npy_intp k);
+/* apply of one motion to n points (gpy_kernel_call.many): the same numbers */
+int gpy_apply_many(void *ctx, const double *T, const double *x, npy_intp n, double *y);
 int gpy_k_from_quat(void *ctx, const double *const *in, double *out, npy_intp k);
 int gpy_k_from_pose(void *ctx, const double *const *in, double *out, npy_intp k);
 int gpy_k_to_quat(void *ctx, const double *const *in, double *out, npy_intp k);

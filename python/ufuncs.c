@@ -282,6 +282,21 @@ static void loop(char **args, npy_intp const *dims, npy_intp const *steps, void 
     fexcept_t saved;
     fegetexceptflag(&saved, FE_ALL_EXCEPT);
     int failed = 0;
+    /* one element of input 0 for all (a motion on many points): the batch,
+       where the operands lie in C order; a status or a result not finite, and
+       the loop below does them one by one (NaN for each failed one) */
+    const npy_intp w = (npy_intp)sizeof(double);
+    int (*many)(void *, const double *, const double *, npy_intp,
+                double *) = d->kernel == gpy_k_apply ? gpy_apply_many : NULL; /* gpy_kernel_call.many */
+    if (many && d->nin == 2 && dims[0] > 1 && direct && steps[0] == 0 && plain(&d->in[0], cs[0]) &&
+        plain(&d->in[1], cs[1]) && steps[1] == core_count(&d->in[1]) * w && steps[2] == osize * w &&
+        (uintptr_t)args[0] % sizeof(double) == 0 && (uintptr_t)args[1] % sizeof(double) == 0 &&
+        many((void *)d->ctx, (const double *)args[0], (const double *)args[1], dims[0], (double *)args[2]) ==
+            GA_OK &&
+        gpy_all_finite((const double *)args[2], dims[0] * osize)) {
+        fesetexceptflag(&saved, FE_ALL_EXCEPT);
+        return;
+    }
     for (npy_intp i = 0; i < dims[0]; i++) {
         double buf[GPY_MAX_IN][GPY_MAX_OUT], obuf[GPY_MAX_OUT];
         const double *in[GPY_MAX_IN];

@@ -141,6 +141,11 @@ static int c_rotor_mean(void)
 static int c_versor_apply(void) { return ga_versor_apply(ga_versor_translation(va), X, OUT(0)); }
 static ga_vec3 pts_in[2] = {{0.3, -0.2, 0.7}, {1.1, 0.4, -0.5}};
 static ga_mv mvs_in[2];
+static const double even_in[16] = {0.9, 0.1, -0.2, 0.3}, vec_in[5] = {1.0, 2.0, 3.0, 0.5, -0.5};
+static int c_mv_gp_even_vector_sparse(void)
+{
+    return ga_mv_gp_even_vector_sparse(IN(0, even_in), IN(1, vec_in), OUT(2));
+}
 static int c_rotor_apply_many(void) { return ga_rotor_apply_many(R, IN(0, pts_in), 2, OUT(1)); }
 static int c_mat4_apply_many(void) { return ga_mat4_apply_many(M, IN(0, pts_in), 2, OUT(1)); }
 static int c_versor_apply_many(void)
@@ -295,6 +300,7 @@ static const api_case cases[] = {
     CASE(se3_jac_log, 1, 1),
     CASE(versor_apply, 1, 1),
     CASE(versor_apply_many, 2, 2),
+    CASE(mv_gp_even_vector_sparse, 3, 4),
     CASE(rotor_apply_many, 2, 2),
     CASE(mat4_apply_many, 2, 2),
     CASE(versor_dilation, 1, 1),

@@ -163,14 +163,32 @@ static void section_sparse(void)
     tk_check ev = tk_begin("gp_even_vector = gp of the parts, bit for bit", 0.0);
     tk_check vv = tk_begin("gp_vector_vector = gp of the parts, bit for bit", 0.0);
     tk_check ee = tk_begin("gp_even_even = gp of the parts, bit for bit", 0.0);
+    tk_check es = tk_begin(
+        "gp_even_vector_sparse = gp_even_vector on the odd blades, bit for bit (also in place)", 0.0);
     for (int k = 0; k < N; k++) {
         /* every grade present: the kernels must not read the others */
         ga_mv a = rand_mv(&r, 0x3f), b = rand_mv(&r, 0x3f);
         tk_add_bool(&ev, same(ga_mv_gp_even_vector(a, b), ga_mv_gp(grades_of(a, 0x15), grades_of(b, 0x2))));
         tk_add_bool(&vv, same(ga_mv_gp_vector_vector(a, b), ga_mv_gp(grades_of(a, 0x2), grades_of(b, 0x2))));
         tk_add_bool(&ee, same(ga_mv_gp_even_even(a, b), ga_mv_gp(grades_of(a, 0x15), grades_of(b, 0x15))));
+        /* the even blades are 0, 6..15, 26..30, the odd 1..5, 16..25, 31 */
+        double even[16], vec[5], odd[16];
+        int ne = 0, no = 0;
+        for (int i = 0; i < 32; i++)
+            if (ga_blade_grade(i) % 2 == 0)
+                even[ne++] = a.c[i];
+        memcpy(vec, b.c + 1, sizeof vec);
+        TK_OK(ga_mv_gp_even_vector_sparse(even, vec, odd));
+        ga_mv want = ga_mv_gp_even_vector(a, b), got = ga_mv_zero();
+        for (int i = 0; i < 32; i++)
+            if (ga_blade_grade(i) % 2 == 1)
+                got.c[i] = odd[no++];
+        TK_OK(ga_mv_gp_even_vector_sparse(even, vec, even)); /* the result over an input */
+        tk_add_bool(&es, ne == 16 && no == 16 && same(got, grades_of(want, 0x2a)) &&
+                             memcmp(even, odd, sizeof odd) == 0);
     }
     tk_end(&ev);
+    tk_end(&es);
     tk_end(&vv);
     tk_end(&ee);
 }

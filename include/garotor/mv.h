@@ -103,10 +103,20 @@ GA_API ga_mv ga_mv_ip(ga_mv a, ga_mv b);
  * other coefficients are not read), computing only the terms those grades
  * have, each coefficient summed in ga_mv_gp's order: for finite inputs the
  * numbers of ga_mv_gp of those parts, bit for bit, but the sign of a zero
- * coefficient. No status. */
+ * coefficient. No status (but the pointer form's, for its pointers). */
 /** <a>_even <b>_1: a rotor (or any even multivector) times a vector (grades
  *  1, 3 and 5 of the result; the others are 0). */
 GA_API ga_mv ga_mv_gp_even_vector(ga_mv a, ga_mv b);
+/** The same product on the coefficients alone, no 32-component value passed
+ *  or returned: even[16] are an even multivector's coefficients on the blades
+ *  of even grade in the canonical order (indices 0, 6..15, 26..30 of a
+ *  ga_mv), vec[5] a vector's (e1..e5), and odd[16] receives the product's
+ *  coefficients on the blades of odd grade (indices 1..5, 16..25, 31): the
+ *  numbers ga_mv_gp_even_vector gives there, bit for bit. odd may be the
+ *  array even or vec (all read before any is written). GA_ERR_ARG where a
+ *  pointer is NULL (nothing written); no other status: NaN and Inf
+ *  propagate. */
+GA_API GA_NODISCARD ga_status ga_mv_gp_even_vector_sparse(const double *even, const double *vec, double *odd);
 /** <a>_1 <b>_1: a vector times a vector (grades 0 and 2). */
 GA_API ga_mv ga_mv_gp_vector_vector(ga_mv a, ga_mv b);
 /** <a>_even <b>_even: the product of two rotors of G(4,1) as full

@@ -598,3 +598,35 @@ def test_multivector_general_exp_log_and_inner_products(rng):
     assert np.array_equal(np.asarray(e12.dot(e1)), np.asarray(-e2))
     assert np.array_equal(np.asarray(garotor.Multivector.blade(0).dot(e1)), np.asarray(e1))
     assert np.array_equal(np.asarray(garotor.Multivector.blade(0).ip(e1)), np.zeros(32))
+
+
+@pytest.mark.parametrize("group", ["cga", "matrix", "affine"])
+def test_apply_one_motion_many_points(rng, group):
+    """One motion on many points runs the batch (ga_rotor_apply_many,
+    ga_mat4_apply_many): the numbers of the same motion per point, bit for bit,
+    through apply, apply with out=, in place and the ufunc; an error names the
+    point and leaves out= from there on as it was."""
+    T = rigid(rng, ())
+    x = rng.normal(size=(5, 1000, 3)) * 10.0 ** rng.integers(-3, 4, size=(5, 1000, 1))
+    per_point = garotor.apply(np.broadcast_to(T, x.shape[:-1] + (4, 4)), x, group)
+    assert garotor.apply(T, x, group).tobytes() == per_point.tobytes()
+    out = np.full_like(x, 7.0)
+    assert garotor.apply(T, x, group, out=out) is out and out.tobytes() == per_point.tobytes()
+    y = x.copy()
+    garotor.apply(T, y, group, out=y)
+    assert y.tobytes() == per_point.tobytes()
+    uf = {"cga": garotor.ufunc.apply, "matrix": garotor.ufunc.apply_matrix,
+          "affine": garotor.ufunc.apply_affine}[group]
+    assert uf(T, x).tobytes() == per_point.tobytes()
+    assert garotor.apply(T, x[0, 5], group).tobytes() == per_point[0, 5].tobytes()
+    # a NaN at point (2, 700): the error names it; out= keeps the points before
+    bad = x.copy()
+    bad[2, 700, 1] = np.nan
+    out = np.full_like(x, 7.0)
+    with pytest.raises(garotor.Error, match=r"index \(?2, 700\)?.*points\[2, 700, 1\] is nan"):
+        garotor.apply(T, bad, group, out=out)
+    flat, want = out.reshape(-1, 3), per_point.reshape(-1, 3)
+    assert flat[:2700].tobytes() == want[:2700].tobytes() and np.all(flat[2700:] == 7.0)
+    with pytest.warns(RuntimeWarning):
+        got = uf(T, bad)
+    assert np.all(np.isnan(got[2, 700])) and got[2, 699].tobytes() == per_point[2, 699].tobytes()
