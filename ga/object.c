@@ -503,7 +503,10 @@ ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out)
         return st;
     if (a.kind != b.kind)
         return GA_ERR_ARG;
-    double L2 = fmax(1.0, fmax(ga__v3_dot(a.centre, a.centre), ga__v3_dot(b.centre, b.centre)));
+    /* relative to the scene, L = max(1, |c| + |r|) of either (object.h): a
+       sphere of radius 80 has r^2 only to ~u 80^2 */
+    double La = norm3(a.centre) + sqrt(fabs(a.r2)), Lb = norm3(b.centre) + sqrt(fabs(b.r2));
+    double L2 = fmax(1.0, fmax(La * La, Lb * Lb));
     if (fabs(a.r2 - b.r2) > GA_POINT_TOL * L2)
         return GA_ERR_NOTRIGID;
     ga_rotor R = a.kind == GA_OBJECT_SPHERE || a.kind == GA_OBJECT_FLATPOINT ? ga_rotor_identity()
