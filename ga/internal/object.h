@@ -1,5 +1,5 @@
-/* ga/internal/object.h (internal, not installed): what conformal.c, object.c
- * and meet.c share (and mv_algebra.c, whose inverse bounds its rounding by
+/* ga/internal/object.h (internal, not installed): what conformal.c, object.c,
+ * object_between.c and meet.c share (and mv_algebra.c, whose inverse bounds its rounding by
  * gao_abs_gp). Prefix gao_.
  *
  * The accuracy model of object.h: every coefficient of an input is known to
@@ -73,5 +73,11 @@ ga_mv gao_uncertainty(ga_mv X, double kappa);
 /* The classification and read-back of object.c: strict = 0 reads a round
    too far out to promise anything roughly (a local origin for the meet). */
 ga_status gao_classify(ga_mv X, int strict, ga_object *o);
+/* ga_object_from_mv to GA_OBJECT_TOL (object.h): GA_ERR_PRECISION beyond it,
+   GA_ERR_NOTBLADE for an empty object, GA_ERR_IMAGINARY for an imaginary
+   round (the read-back of the functions that state no bound of their own:
+   object.c, object_between.c); _pair: A's, then B's, the first failure. */
+int gao_read_real(ga_mv O, ga_object *o);
+int gao_read_real_pair(ga_mv A, ga_mv B, ga_object *a, ga_object *b);
 
 #endif

@@ -286,7 +286,8 @@ GA_API GA_NODISCARD ga_status ga_object_angle(ga_mv A, ga_mv B, double *out);
  *  direction to B's (any half turn about a perpendicular axis when opposite).
  *  It takes A to a positive multiple of B (with orientation, where the kinds
  *  have one). GA_ERR_ARG for different kinds, GA_ERR_NOTRIGID for rounds of
- *  different radii (relative GA_POINT_TOL: a dilation would be needed),
+ *  different radii (|r2A - r2B| > GA_POINT_TOL L^2, L = max(1, |c| + |r|) of
+ *  either: a dilation would be needed),
  *  GA_ERR_IMAGINARY, GA_ERR_NOTBLADE for empty objects. */
 GA_API GA_NODISCARD ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
 
