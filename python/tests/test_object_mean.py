@@ -142,6 +142,12 @@ def test_errors():
     with pytest.raises(garotor.Error, match=r"weights\[0\] is not finite") as e:
         garotor.object_mean(S, [np.inf, 1])
     assert e.value.status == GA_ERR_NOTFINITE
+    for i in range(2):  # NaN at each weight: named by its index
+        w = np.ones(2)
+        w[i] = np.nan
+        with pytest.raises(garotor.Error, match=r"weights\[%d\] is not finite" % i) as e:
+            garotor.object_mean(S, w)
+        assert e.value.status == GA_ERR_NOTFINITE and e.value.index == (i,)
     with pytest.raises(ValueError, match=r"weights must have shape \(2,\)"):
         garotor.object_mean(S, [1, 2, 3])
     with pytest.raises(garotor.Error, match=r"objects\[1\] is of another kind") as e:
