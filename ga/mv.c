@@ -490,8 +490,10 @@ ga_status ga_mv_parse(const char *text, ga_mv *out)
             s = t;
         } else if ((i = read_blade(&s)) < 0)
             return GA_ERR_ARG;
-        finite &= isfinite(v);
         r.c[i] += sign * v;
+        /* a number beyond the double range, or terms of one blade adding up
+           past it ("1e+308 + 1e+308"): GA_ERR_NOTFINITE alike */
+        finite &= isfinite(v) && isfinite(r.c[i]);
         terms++;
         s = skip_blanks(s);
     }

@@ -299,6 +299,10 @@ PyObject *gpy_MV_reject(PyObject *self, PyObject *o);
 PyObject *gpy_MV_pow(PyObject *self, PyObject *t);
 PyObject *gpy_MV_sqrt(PyObject *self, PyObject *u);
 PyObject *gpy_MV_apply(PyObject *self, PyObject *o);
+PyObject *gpy_MV_between(PyObject *self, PyObject *o);
+PyObject *gpy_MV_interp(PyObject *self, PyObject *args);
+/* object_mean(objects, weights=None), a module function */
+PyObject *gpy_object_mean(PyObject *self, PyObject *args, PyObject *kw);
 PyObject *gpy_MV_reflection(PyObject *cls, PyObject *args);
 PyObject *gpy_MV_inversion(PyObject *cls, PyObject *args);
 PyObject *gpy_MV_dilation(PyObject *cls, PyObject *args);

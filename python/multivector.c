@@ -537,6 +537,11 @@ static PyMethodDef MV_methods[] = {
     {"meet", gpy_MV_meet, METH_O, "meet(B): the meet of two objects, A* ^ B* undualised (ga_mv_meet)"},
     {"join", gpy_MV_join, METH_O, "join(B): the smallest blade holding both objects (ga_mv_join)"},
     {"meet_rel", gpy_MV_meet_rel, METH_O, "meet_rel(B): the meet relative to the join (ga_mv_meet_rel)"},
+    {"between", gpy_MV_between, METH_O,
+     "between(B): a rotor V of G(4,1) taking this object to B, of the same kind, maybe another size "
+     "(ga_versor_between)"},
+    {"interp", gpy_MV_interp, METH_VARARGS,
+     "interp(B, t): the object at t along between(B): this object at t = 0, B at t = 1 (ga_object_interp)"},
     {"object", (PyCFunction)(void (*)(void))gpy_MV_object, METH_VARARGS | METH_KEYWORDS,
      "object(origin=None, scale=1.0): the object read back, a garotor.Object (ga_object_from_mv; "
      "ga_object_from_mv_about with an origin or a scale)"},

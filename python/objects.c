@@ -424,3 +424,118 @@ PyObject *gpy_fit_line(PyObject *self, PyObject *obj)
         return gpy_status_error("fit_line", st);
     return tuple_of(2, vec3_array(u), vec3_array(q), NULL);
 }
+
+/* ---- between, interp, mean (object.h) ------------------------------------------ */
+
+/* A.between(B): the rotor of G(4,1) taking A to B (ga_versor_between) */
+PyObject *gpy_MV_between(PyObject *self, PyObject *o)
+{
+    ga_mv b, r;
+    if (other_operand("Multivector.between", o, &b) < 0)
+        return NULL;
+    int st = ga_versor_between(MV(self), b, &r);
+    return st == GA_OK ? gpy_mv_result("Multivector.between", r)
+                       : gpy_status_error("Multivector.between", st);
+}
+
+/* A.interp(B, t): the object at t along A.between(B) (ga_object_interp) */
+PyObject *gpy_MV_interp(PyObject *self, PyObject *args)
+{
+    PyObject *o;
+    double t;
+    if (!PyArg_ParseTuple(args, "Od:interp", &o, &t))
+        return NULL;
+    ga_mv b, r;
+    if (other_operand("Multivector.interp", o, &b) < 0)
+        return NULL;
+    if (gpy_finite_number("Multivector.interp", t) < 0)
+        return NULL;
+    int st = ga_object_interp(MV(self), b, t, &r);
+    return st == GA_OK ? gpy_mv_result("Multivector.interp", r) : gpy_status_error("Multivector.interp", st);
+}
+
+/* object_mean(objects, weights=None): ga_object_mean over a sequence of
+ * Multivectors; an error names the first bad element (its index) */
+PyObject *gpy_object_mean(PyObject *self, PyObject *args, PyObject *kw)
+{
+    (void)self;
+    static const char *what = "object_mean";
+    static char *kwlist[] = {"objects", "weights", NULL};
+    PyObject *objs, *wobj = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|O:object_mean", kwlist, &objs, &wobj))
+        return NULL;
+    PyObject *seq = PySequence_Fast(objs, "object_mean: objects must be a sequence of Multivectors");
+    if (!seq)
+        return NULL;
+    npy_intp n = PySequence_Fast_GET_SIZE(seq);
+    PyArrayObject *wa = NULL;
+    ga_mv *A = PyMem_Malloc((size_t)(n ? n : 1) * sizeof *A), r;
+    PyObject *result = NULL;
+    char why[160];
+    if (!A) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (n == 0) {
+        PyErr_Format(PyExc_ValueError, "%s: no objects", what);
+        goto done;
+    }
+    for (npy_intp i = 0; i < n; i++) {
+        PyObject *x = PySequence_Fast_GET_ITEM(seq, i);
+        if (!PyObject_TypeCheck(x, &gpy_MVType)) {
+            PyErr_Format(PyExc_TypeError, "%s: objects[%zd] is not a Multivector", what, (Py_ssize_t)i);
+            goto done;
+        }
+        A[i] = MV(x);
+        if (!ga_mv_isfinite(A[i])) {
+            snprintf(why, sizeof why, "objects[%zd] holds NaN or an infinity", (Py_ssize_t)i);
+            gpy_raise_status_why(what, 1, &n, i, GA_ERR_NOTFINITE, why);
+            goto done;
+        }
+    }
+    const double *w = NULL;
+    if (wobj != Py_None) {
+        if (!(wa = gpy_as_doubles(wobj)))
+            goto done;
+        if (PyArray_NDIM(wa) != 1 || PyArray_DIM(wa, 0) != n) {
+            PyErr_Format(PyExc_ValueError, "%s: weights must have shape (%zd,), one for each object", what,
+                         (Py_ssize_t)n);
+            goto done;
+        }
+        w = PyArray_DATA(wa);
+        for (npy_intp i = 0; i < n; i++)
+            if (!isfinite(w[i]) || !(w[i] >= 0.0)) {
+                snprintf(why, sizeof why, "weights[%zd] is %s", (Py_ssize_t)i,
+                         isfinite(w[i]) ? "negative" : "not finite");
+                gpy_raise_status_why(what, 1, &n, i, isfinite(w[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE, why);
+                goto done;
+            }
+    }
+    int st = ga_object_mean(A, w, (size_t)n, &r);
+    if (st == GA_OK) {
+        result = gpy_mv_result(what, r);
+        goto done;
+    }
+    /* name the object the status is about, where one is */
+    ga_object o0, oi;
+    int s0 = ga_object_from_mv(A[0], &o0);
+    for (npy_intp i = 0; i < n; i++) {
+        int si = i ? ga_object_from_mv(A[i], &oi) : s0;
+        if (si != GA_OK || (si == GA_OK && i == 0 && o0.kind == GA_OBJECT_EMPTY)) {
+            snprintf(why, sizeof why, "objects[%zd] is no object to average", (Py_ssize_t)i);
+            gpy_raise_status_why(what, 1, &n, i, si != GA_OK ? si : st, why);
+            goto done;
+        }
+        if (i && s0 == GA_OK && oi.kind != o0.kind && st == GA_ERR_ARG) {
+            snprintf(why, sizeof why, "objects[%zd] is of another kind than objects[0]", (Py_ssize_t)i);
+            gpy_raise_status_why(what, 1, &n, i, st, why);
+            goto done;
+        }
+    }
+    gpy_status_error(what, st);
+done:
+    Py_XDECREF(wa);
+    PyMem_Free(A);
+    Py_DECREF(seq);
+    return result;
+}

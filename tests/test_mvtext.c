@@ -206,6 +206,18 @@ static void section_parse(void)
     expect_parse("1E400", GA_ERR_NOTFINITE, one);
     expect_parse("-1e+400 e12", GA_ERR_NOTFINITE, one);
     expect_parse("1 + 1e+400e12", GA_ERR_NOTFINITE, one);
+    /* terms of one blade adding up past DBL_MAX: refused as one literal
+       beyond the range is (GA_ERR_NOTFINITE), whether the sum stays infinite or comes back */
+    expect_parse("1e+308 + 1e+308", GA_ERR_NOTFINITE, one);
+    expect_parse("-1e+308e12 - 1e+308 e12", GA_ERR_NOTFINITE, one);
+    expect_parse("1e+308 + 1e+308 - 1e+308", GA_ERR_NOTFINITE, one);
+    expect_parse("1.7976931348623157e+308 e1 + 1e+292 e1", GA_ERR_NOTFINITE, one);
+    /* up to DBL_MAX it is read: no false refusal */
+    {
+        ga_mv m = ga_mv_zero();
+        m.c[0] = DBL_MAX;
+        expect_parse("1e+308 + 7.976931348623157e+307", GA_OK, m);
+    }
     expect_parse("1e-400", GA_OK, ga_mv_zero());
     expect_parse("-4e-324e3", GA_OK, term(GA_BLADE_E3, -0x1p-1074));
     /* a decimal of any length, as the tool reads it (one of 400 characters

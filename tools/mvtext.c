@@ -46,9 +46,6 @@ int mvt_parse(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
     int st = ga_mv_parse(buf, &x);
     if (st == GA_OK) {
         free(buf);
-        if (!ga_mv_isfinite(x)) /* terms of one blade whose sum overflows */
-            return tio_text_error(t, i, f.at,
-                                  "not a multivector: its terms add up beyond the range of a double");
         *out = x;
         return 0;
     }
@@ -101,6 +98,8 @@ int mvt_parse(const tio_texts *t, size_t i, mvt_field f, ga_mv *out)
         k = end;
     }
     free(buf);
+    if (st == GA_ERR_NOTFINITE) /* every term reads alone: terms of one blade whose sum overflows */
+        return tio_text_error(t, i, f.at, "not a multivector: its terms add up beyond the range of a double");
     return tio_text_error(t, i, f.at, "not a multivector: %s", ga_status_string(st));
 }
 

@@ -165,7 +165,8 @@ GA_API GA_NODISCARD ga_status ga_mv_format(ga_mv a, char *buf, size_t cap, size_
  *  ("1E12"): 'e' followed by a digit begins a blade name, so "2e12" is 2 e12,
  *  as ganja.js prints it. A number is read as the tool's reader reads it
  *  (strtod, any length): beyond the double range ("1e+400", "1E400") it is
- *  GA_ERR_NOTFINITE, as the tool reports "number K is not finite"; below the
+ *  GA_ERR_NOTFINITE, as the tool reports "number K is not finite", and so
+ *  are terms of one blade that add up beyond it ("1e+308 + 1e+308"); below the
  *  smallest subnormal ("1e-400") it reads as 0, as there. "1e400" is 1 e400,
  *  an unknown name: GA_ERR_ARG. GA_ERR_ARG for anything else (an empty
  *  text, an unknown name, "e21", "nan", a mantissa of 400 characters or

@@ -326,6 +326,60 @@ GA_API GA_NODISCARD ga_status ga_versor_between(ga_mv A, ga_mv B, ga_mv *out);
  *  or infinite t, GA_ERR_DOMAIN where the result overflows. */
 GA_API GA_NODISCARD ga_status ga_object_interp(ga_mv A, ga_mv B, double t, ga_mv *out);
 
+/** The weighted mean of n objects A[i] of one kind (spheres, planes, circles,
+ *  lines, point pairs or flat points) with weights w[i] >= 0 (NULL: all equal;
+ *  not all 0; only their ratios matter): the direct average of Hadfield and
+ *  Lasenby ("Direct linear interpolation of geometric objects in conformal
+ *  geometric algebra", 2019; clifford's average_objects). Each object is
+ *  normalised to |<X ~X>_0| = 1 (a sphere or plane as its dual vector, the
+ *  other kinds as the direct blade), the weighted sum C = sum_i w_i X_i taken
+ *  and, for grades 2 and 3, projected back onto the blades: C = k X with k a
+ *  scalar plus a 4-vector, k the square root of +-C ~C (Dorst and
+ *  Valkenburg's), X = k^-1 C. The result is that X, normalised to
+ *  |<X ~X>_0| = 1, in the form of the inputs (a sphere or plane as a 4-blade
+ *  where every input is one, else as a vector). Orientation counts: an
+ *  object and its reverse cancel.
+ *  What it is, by kind (w_i normalised to sum 1):
+ *    - spheres (F(c_i) - r_i^2/2 n over r_i): centre sum a_i c_i / sum a_i,
+ *      a_i = w_i / r_i, and r^2 = (sum w_i r_i) / (sum a_i) - the a-weighted
+ *      variance of the centres: about one centre the radius is
+ *      sqrt(AM(r) HM(r)), the arithmetic and harmonic weighted means (for
+ *      two radii with equal weights, their geometric mean); centres spread
+ *      wider than the radii give an imaginary sphere (the pencil of spheres
+ *      of two objects passes through their common circle). Circles and point
+ *      pairs of one carrier about one centre, likewise;
+ *    - planes (m_i + d_i n, |m_i| = 1): the normal along sum w_i m_i, at the
+ *      distance sum w_i d_i / |sum w_i m_i|; parallel planes: the weighted
+ *      mean of their distances. Parallel lines, flat points: the weighted
+ *      mean of their positions;
+ *    - n = 2 with weights (1 - t, t): ga_object_interp(A, B, t) where the
+ *      two are parallel flats of one orientation, or concentric rounds (of
+ *      one carrier) at t = 1/2; otherwise another object of the same pencil
+ *      (two spheres of one radius apart average to a smaller sphere through
+ *      their common circle, interp moves one rigidly to the other).
+ *  Rounds are normalised about their own centres, and summed, projected and
+ *  normalised about c0, the a-weighted mean of their centres (moved there and
+ *  back exactly, gao_translate's rounding once), so that a far scene keeps
+ *  what its objects' coefficients hold ("Accuracy" above); flats about the
+ *  origin. The mean of n copies of one object is that object, and the mean
+ *  of V A_i V^-1 (V a rigid motion or a dilation) is V (mean) V^-1, each to
+ *  a few times the bounds ga_object_from_mv states for the mean and the
+ *  inputs (the normalisation and the projection are invariant under V;
+ *  docs/conformal.md has the figures). It does not depend on the order of
+ *  the objects, bit for bit: every sum is exact (a fixed-point accumulator),
+ *  rounded once.
+ *  Statuses: GA_ERR_ARG for n = 0, a negative weight, weights all 0, objects
+ *  of different kinds; GA_ERR_NOTFINITE for NaN/Inf in an object or weight;
+ *  ga_object_from_mv's statuses for each object; GA_ERR_NOTBLADE for an empty
+ *  object; GA_ERR_DOMAIN for a tangent round (a point: radius 0, no
+ *  normalisation), for a sum that is no multiple of an object (no real root
+ *  k) or whose object is of another kind (planes whose normals cancel: the
+ *  plane at infinity; spheres of opposite orientation: a plane), and on
+ *  overflow; GA_ERR_SINGULAR where the weighted objects cancel to within
+ *  16 u of the largest term. The result may be a tangent or imaginary round
+ *  (ga_object_from_mv reads it so). Not iterative. */
+GA_API GA_NODISCARD ga_status ga_object_mean(const ga_mv *A, const double *w, size_t n, ga_mv *out);
+
 #ifdef __cplusplus
 }
 #endif
