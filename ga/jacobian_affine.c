@@ -191,7 +191,8 @@ static ga_status affine_in(ga_mat4 m, ga_mat4 *out, ga_mat4 *inv)
 {
     if (!m4_finite(m))
         return GA_ERR_NOTFINITE;
-    if (fabs(m.m[12]) > 1e-12 || fabs(m.m[13]) > 1e-12 || fabs(m.m[14]) > 1e-12 || fabs(m.m[15] - 1.0) > 1e-12)
+    if (fabs(m.m[12]) > 1e-12 || fabs(m.m[13]) > 1e-12 || fabs(m.m[14]) > 1e-12 ||
+        fabs(m.m[15] - 1.0) > 1e-12)
         return GA_ERR_DOMAIN;
     double det = m.m[0] * (m.m[5] * m.m[10] - m.m[6] * m.m[9]) -
                  m.m[1] * (m.m[4] * m.m[10] - m.m[6] * m.m[8]) + m.m[2] * (m.m[4] * m.m[9] - m.m[5] * m.m[8]);
@@ -217,7 +218,8 @@ static ga_mat12 adj(ga_mat4 a, ga_mat4 ai)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 4; j++)
             for (int k = 0; k < 3; k++)
-                for (int l = 0; l < 4; l++) o.m[N * (4 * i + j) + 4 * k + l] = a.m[4 * i + k] * ai.m[4 * l + j];
+                for (int l = 0; l < 4; l++)
+                    o.m[N * (4 * i + j) + 4 * k + l] = a.m[4 * i + k] * ai.m[4 * l + j];
     return o;
 }
 

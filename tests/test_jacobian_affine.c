@@ -362,7 +362,8 @@ static void section_statuses(void)
     memset(&x, 0, sizeof x);
     x.m[0] = 400.0;
     x.m[5] = -400.0; /* ad has the eigenvalue 800: phi(800) overflows */
-    tk_expect_status("J_r overflowing (eigenvalues +-400): GA_ERR_DOMAIN", ga_affine_jr(x, &j), GA_ERR_DOMAIN);
+    tk_expect_status("J_r overflowing (eigenvalues +-400): GA_ERR_DOMAIN", ga_affine_jr(x, &j),
+                     GA_ERR_DOMAIN);
     tk_expect_status("a side that is neither: GA_ERR_ARG", ga_affine_jac_inverse(id, (ga_jac_side)7, &j),
                      GA_ERR_ARG);
     bad.m[0] = -1.0;
