@@ -130,10 +130,13 @@ ga_status ga_path_velocity(const ga_path *p, double t, double *v)
 /* Body velocity, acceleration and (m = 3) jerk per unit u (u^2, u^3) on
  * segment seg, m = 2 or 3; v (may be NULL: not needed), a, and j where m
  * reaches it; pw (decoupled only, may be NULL): the position's world
- * derivatives per unit t. */
+ * derivatives per unit t. *a_t: set where a is per unit t already (the
+ * curves through exp, whose derivatives are per unit t: no round trip
+ * through h^2), else cleared. */
 static int derivs_u(const ga_path *p, size_t seg, double u, int m, double *v, double *a, double *j,
-                    double *pw)
+                    double *pw, int *a_t)
 {
+    *a_t = 0;
     const ga_group *g = p->group;
     size_t d = g->dim, nf = gip_nfac(p->scheme);
     double h = gip_seg_len(p, seg), vv[GIP_MAXD];
@@ -151,14 +154,17 @@ static int derivs_u(const ga_path *p, size_t seg, double u, int m, double *v, do
         } else {
             gip_gen_curve(p, seg, u, x0, x1);
             gip_gen_curve2(p, seg, u, x2);
-            memset(x3, 0, d * sizeof(double)); /* X''' = 0: at most quadratic */
+            if (m >= 3)
+                memset(x3, 0, d * sizeof(double)); /* X''' = 0: at most quadratic */
         }
         if ((st = gip_exp_curve_jet(g, xs, m, v, a, m >= 3 ? j : NULL)))
             return st;
+        *a_t = 1;
     }
     if (v)
         gip_lin(d, v, h, v, 0.0, v);
-    gip_lin(d, a, h * h, a, 0.0, a);
+    if (!*a_t)
+        gip_lin(d, a, h * h, a, 0.0, a);
     if (m >= 3)
         gip_lin(d, j, h * h * h, j, 0.0, j);
     return GA_OK;
@@ -170,10 +176,11 @@ ga_status ga_path_acceleration_segment(const ga_path *p, size_t seg, double u, d
         return GA_ERR_ARG;
     size_t d = p->group->dim;
     double v[GIP_MAXD], w[GIP_MAXD], h = gip_seg_len(p, seg);
-    int st = derivs_u(p, seg, u, 2, v, w, NULL, NULL);
+    int a_t, st = derivs_u(p, seg, u, 2, v, w, NULL, NULL, &a_t);
     if (st != GA_OK)
         return st;
-    gip_lin(d, w, 1.0 / (h * h), w, 0.0, w);
+    if (!a_t)
+        gip_lin(d, w, 1.0 / (h * h), w, 0.0, w);
     if (!gip_allfinite(w, d))
         return GA_ERR_DOMAIN;
     memcpy(a, w, d * sizeof(double));
@@ -247,18 +254,18 @@ ga_status ga_path_derivatives_segment(const ga_path *p, size_t seg, double u, ga
         return GA_ERR_ARG;
     const ga_group *g = p->group;
     size_t d = g->dim;
-    int m = j ? 3 : a ? 2 : 1, st;
+    int m = j ? 3 : a ? 2 : 1, st, a_t = 0;
     double vb[GIP_MAXD], ab[GIP_MAXD], jb[GIP_MAXD], h = gip_seg_len(p, seg), e[GIP_MAXE], pw[9];
     int dec = gip_is_decoupled(p->scheme), need_v = v || f != GA_FRAME_BODY;
     if (m == 1)
         st = gip_velocity_u(p, seg, u, vb);
     else /* the velocity where it is asked for or a frame needs it */
-        st = derivs_u(p, seg, u, m, need_v ? vb : NULL, ab, jb, dec && f == GA_FRAME_WORLD ? pw : NULL);
+        st = derivs_u(p, seg, u, m, need_v ? vb : NULL, ab, jb, dec && f == GA_FRAME_WORLD ? pw : NULL, &a_t);
     if (st != GA_OK)
         return st;
     if (need_v)
         gip_lin(d, vb, 1.0 / h, vb, 0.0, vb);
-    if (m >= 2)
+    if (m >= 2 && !a_t)
         gip_lin(d, ab, 1.0 / (h * h), ab, 0.0, ab);
     if (m >= 3)
         gip_lin(d, jb, 1.0 / (h * h * h), jb, 0.0, jb);

@@ -2,7 +2,8 @@
  * A(t) = exp(X(t)) for a curve X(t) of twists (the rigid groups, cga and
  * se3), in closed form: the derivatives of X carried through SE(3)'s
  * exp by Taylor jets in t (f, f', f'', f'''), in place of the 4x4 jet of
- * jet.c, which the affine group keeps.
+ * jet.c, which the affine group keeps. The acceleration alone has its own
+ * shorter form (twist_accel below), used wherever an acceleration is asked.
  *
  * For X = (w, v): exp(X) = (R, p), R = exp([w]x), p = J_l(w) v, and
  * R^T J_l(w) = J_r(w) = I - k0 [w]x + k1 [w]x^2 (k0 = (1 - cos th)/th^2,
@@ -193,12 +194,138 @@ static inline void twist_derivs(const double *const *x, int m, double *v, double
     }
 }
 
+/* ---- the acceleration alone, in fewer operations -----------------------------------
+ * With w x (w x y) = (w.y) w - s y and sinc th = 1 - s k1,
+ * J_r(w) y = A y - k0 (w x y) + k1 (w.y) w (A = sinc th), and w.w' = s'/2:
+ *   W  = A w' - k0 (w x w') + K w,  K = k1 s'/2,
+ *   W' = A' w' + A w'' - k0' (w x w') - k0 (w x w'') + K' w + K w',
+ *   q  = A y - k0 c + P w,  c = w x y, P = k1 (w.y),
+ * q' and q'' by Leibniz on the three products, and the acceleration
+ * (W', q'' + W' x q + W x q'): 10 cross products against twist_derivs's 18
+ * with its jets of every product. The functions f_n(s) = sum_k (-s)^k/(2k+n)!
+ * (f_1 = A, f_2 = k0, f_3 = k1) and their derivatives in s: for s < 9,
+ * f_6 and f_7 by their series (13 terms: the next is under 1e-20 of each),
+ * then f_n = 1/n! - s f_{n+2} and f_n' = (n f_{n+2} - f_{n+1})/2; else from
+ * th = sqrt(s), sin th, cos th, with 2 s f_n' = f_{n-1} - n f_n. */
+static const double F6[13] = {0.001388888888888889,    -2.48015873015873e-05,  2.755731922398589e-07,
+                              -2.08767569878681e-09,   1.1470745597729725e-11, -4.779477332387385e-14,
+                              1.5619206968586225e-16,  -4.110317623312165e-19, 8.896791392450574e-22,
+                              -1.6117375710961184e-24, 2.4795962632247976e-27, -3.279889237069838e-30,
+                              3.7699876288159054e-33};
+static const double F7[13] = {0.0001984126984126984,   -2.7557319223985893e-06, 2.505210838544172e-08,
+                              -1.6059043836821613e-10, 7.647163731819816e-13,   -2.8114572543455206e-15,
+                              8.22063524662433e-18,    -1.9572941063391263e-20, 3.868170170630684e-23,
+                              -6.446950284384474e-26,  9.183689863795546e-29,   -1.1309962886447716e-31,
+                              1.216125041553518e-34};
+
+/* f_1, f_2, f_3 at s and their first two derivatives in s: f[n-1][0..2] */
+static inline void fseries(double s, double f[3][3])
+{
+    if (s < 9.0) {
+        double f6 = F6[12], f7 = F7[12];
+        for (int k = 11; k >= 0; --k) {
+            f6 = f6 * s + F6[k];
+            f7 = f7 * s + F7[k];
+        }
+        double f5 = 1.0 / 120.0 - s * f7, f4 = 1.0 / 24.0 - s * f6, f3 = 1.0 / 6.0 - s * f5,
+               f2 = 0.5 - s * f4;
+        f[0][0] = 1.0 - s * f3;
+        f[1][0] = f2;
+        f[2][0] = f3;
+        f[1][1] = f4 - 0.5 * f3;
+        f[2][1] = 0.5 * (3.0 * f5 - f4);
+        f[1][2] = 0.25 * ((8.0 * f6 - 5.0 * f5) + f4);
+        f[2][2] = 0.25 * ((15.0 * f7 - 7.0 * f6) + f5);
+    } else {
+        double th = sqrt(s), sn = sin(th), cs = cos(th), h = 0.5 / s;
+        double f1 = sn / th, f2 = (1.0 - cs) / s, f3 = (1.0 - f1) / s;
+        double d1 = h * (cs - f1), d2 = h * (f1 - 2.0 * f2), d3 = h * (f2 - 3.0 * f3);
+        f[0][0] = f1;
+        f[1][0] = f2;
+        f[2][0] = f3;
+        f[1][1] = d2;
+        f[2][1] = d3;
+        f[1][2] = h * (d1 - 4.0 * d2);
+        f[2][2] = h * (d2 - 5.0 * d3);
+    }
+    /* f_1' = (f_3 - f_2)/2 */
+    f[0][1] = 0.5 * (f[2][0] - f[1][0]);
+    f[0][2] = 0.5 * (f[2][1] - f[1][1]);
+}
+
+static inline void cross3(const double *a, const double *b, double *o)
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+static inline double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* the t-jet (g, g', g'') of f(s(t)) from f, df/ds, d2f/ds2 and s, s', s'' */
+static inline void sjet(const double *f, double s1, double s2, double *o)
+{
+    o[0] = f[0];
+    o[1] = f[1] * s1;
+    o[2] = f[2] * (s1 * s1) + f[1] * s2;
+}
+
+/* the body acceleration of exp(X(t)), x[0..2] = X, X', X'' */
+static void twist_accel(const double *const *x, double *acc)
+{
+    const double *w0 = x[0], *w1 = x[1], *w2 = x[2], *y0 = x[0] + 3, *y1 = x[1] + 3, *y2 = x[2] + 3;
+    double s0 = dot3(w0, w0), s1 = 2.0 * dot3(w0, w1), s2 = 2.0 * (dot3(w1, w1) + dot3(w0, w2));
+    double f[3][3], A[3], K0[3], K1[3];
+    fseries(s0, f);
+    sjet(f[0], s1, s2, A);
+    sjet(f[1], s1, s2, K0);
+    sjet(f[2], s1, s2, K1);
+    /* the angular part */
+    double c1[3], c2[3], W[3], Wd[3];
+    cross3(w0, w1, c1);
+    cross3(w0, w2, c2);
+    double K = 0.5 * K1[0] * s1, Kd = 0.5 * (K1[1] * s1 + K1[0] * s2);
+    for (int e = 0; e < 3; ++e) {
+        W[e] = (A[0] * w1[e] - K0[0] * c1[e]) + K * w0[e];
+        Wd[e] = ((A[1] * w1[e] + A[0] * w2[e]) - (K0[1] * c1[e] + K0[0] * c2[e])) + (Kd * w0[e] + K * w1[e]);
+    }
+    /* q = J_r(w) y and its derivatives */
+    double c[3], ca[3], cb[3], cc[3], cd[3], ce[3];
+    cross3(w0, y0, c);
+    cross3(w1, y0, ca);
+    cross3(w0, y1, cb);
+    cross3(w2, y0, cc);
+    cross3(w1, y1, cd);
+    cross3(w0, y2, ce);
+    double p0 = dot3(w0, y0), p1 = dot3(w1, y0) + dot3(w0, y1),
+           p2 = (dot3(w2, y0) + 2.0 * dot3(w1, y1)) + dot3(w0, y2);
+    double P0 = K1[0] * p0, P1 = K1[1] * p0 + K1[0] * p1, P2 = (K1[2] * p0 + 2.0 * K1[1] * p1) + K1[0] * p2;
+    double q0[3], q1[3], q2[3];
+    for (int e = 0; e < 3; ++e) {
+        double d1 = ca[e] + cb[e], d2 = (cc[e] + 2.0 * cd[e]) + ce[e];
+        q0[e] = (A[0] * y0[e] - K0[0] * c[e]) + P0 * w0[e];
+        q1[e] = ((A[1] * y0[e] + A[0] * y1[e]) - (K0[1] * c[e] + K0[0] * d1)) + (P1 * w0[e] + P0 * w1[e]);
+        q2[e] = ((A[2] * y0[e] + 2.0 * A[1] * y1[e]) + A[0] * y2[e]) -
+                ((K0[2] * c[e] + 2.0 * K0[1] * d1) + K0[0] * d2) +
+                ((P2 * w0[e] + 2.0 * P1 * w1[e]) + P0 * w2[e]);
+    }
+    double o[3] = {q2[0], q2[1], q2[2]};
+    cross_acc(1.0, Wd, q0, o);
+    cross_acc(1.0, W, q1, o);
+    memcpy(acc, Wd, sizeof Wd);
+    memcpy(acc + 3, o, sizeof o);
+}
+
 void gip_twist_exp_derivs(const double *const *x, int m, double *v, double *a, double *j)
 {
-    if (m == 2)
-        twist_derivs(x, 2, v, a, j);
-    else if (m == 3)
-        twist_derivs(x, 3, v, a, j);
-    else
-        twist_derivs(x, 1, v, a, j);
+    /* the acceleration by twist_accel wherever it is asked (alone or with the
+       jerk: the same bits), the velocity and the jerk by the jets */
+    if (a && m >= 2)
+        twist_accel(x, a);
+    if (j && m >= 3)
+        twist_derivs(x, 3, v, NULL, j);
+    else if (v)
+        twist_derivs(x, 1, v, NULL, NULL);
 }

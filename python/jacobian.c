@@ -81,6 +81,67 @@ static PyObject *py_ad(PyObject *s, PyObject *a, PyObject *k)
     return (void)s, twist_call("ad", T_AD, a, k);
 }
 
+/* ---- the affine algebra: (..., 4, 4) elements (last row ignored) -> (..., 12, 12) */
+
+static int k_affine(void *ctx, const double *const *in, double *out, npy_intp k)
+{
+    (void)k;
+    ga_mat4 x = gpy_mat_get(in[0]);
+    ga_mat12 j;
+    int st = GA_OK;
+    for (int i = 0; i < 16; i++) /* the last row too, which ad ignores: no number passed over */
+        if (!isfinite(x.m[i]))
+            return GA_ERR_NOTFINITE;
+    switch (*(const int *)ctx) {
+    case T_JR: st = ga_affine_jr(x, &j); break;
+    case T_JL: st = ga_affine_jl(x, &j); break;
+    case T_JR_INV: st = ga_affine_jr_inverse(x, &j); break;
+    case T_JL_INV: st = ga_affine_jl_inverse(x, &j); break;
+    default: j = ga_affine_ad(x); break;
+    }
+    if (st == GA_OK)
+        memcpy(out, j.m, sizeof j.m);
+    return st;
+}
+
+static PyObject *affine_call(const char *what, int kind, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"X", "out", NULL};
+    PyObject *x, *out = NULL;
+    char fmt[48];
+    snprintf(fmt, sizeof fmt, "O|$O:%s", what);
+    if (!PyArg_ParseTupleAndKeywords(args, kw, fmt, kwlist, &x, &out))
+        return NULL;
+    gpy_kernel_call kc = {.what = what,
+                          .nin = 1,
+                          .in = {GPY_CORE2(4, 4, "X")},
+                          .out = GPY_CORE2(12, 12, NULL),
+                          .kernel = k_affine,
+                          .ctx = &kind};
+    return gpy_run_kernel(&kc, &x, out);
+}
+
+static PyObject *py_affine_jr(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, affine_call("affine_jr", T_JR, a, k);
+}
+static PyObject *py_affine_jl(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, affine_call("affine_jl", T_JL, a, k);
+}
+static PyObject *py_affine_jr_inverse(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, affine_call("affine_jr_inverse", T_JR_INV, a, k);
+}
+static PyObject *py_affine_jl_inverse(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, affine_call("affine_jl_inverse", T_JL_INV, a, k);
+}
+static PyObject *py_affine_ad(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, affine_call("affine_ad", T_AD, a, k);
+}
+
 /* ---- rigid motions ----------------------------------------------------------- */
 
 enum { G_ADJOINT, G_COMPOSE, G_INVERSE, G_BETWEEN, G_ACT, G_LOG };
@@ -90,12 +151,49 @@ typedef struct {
     int which; /* 0: the Jacobian of the first argument, 1: of the second */
     int rotor; /* 1: group cga (through the rotor), 0: matrix */
     ga_jac_side side;
+    int affine; /* 1: group affine (ga_affine_*, 12x12) */
 } group_ctx;
+
+/* the affine group's Jacobians (ga_affine_*) */
+static int k_group_affine(const group_ctx *c, const double *const *in, double *out)
+{
+    ga_mat4 a = gpy_mat_get(in[0]), b = a;
+    ga_vec3 p = {0, 0, 0};
+    if (c->op == G_COMPOSE || c->op == G_BETWEEN)
+        b = gpy_mat_get(in[1]);
+    if (c->op == G_ACT)
+        p = (ga_vec3){in[1][0], in[1][1], in[1][2]};
+    ga_mat12 j1, j2;
+    ga_mat3x12 ja;
+    ga_mat3 jp;
+    int st;
+    switch (c->op) {
+    case G_ADJOINT: st = ga_affine_adjoint_matrix(a, &j1); break;
+    case G_COMPOSE: st = ga_affine_jac_compose(a, b, c->side, &j1, &j2); break;
+    case G_INVERSE: st = ga_affine_jac_inverse(a, c->side, &j1); break;
+    case G_BETWEEN: st = ga_affine_jac_between(a, b, c->side, &j1, &j2); break;
+    case G_ACT:
+        st = ga_affine_jac_act(a, p, c->side, &ja, &jp);
+        if (st == GA_OK) {
+            if (c->which)
+                memcpy(out, jp.m, sizeof jp.m);
+            else
+                memcpy(out, ja.m, sizeof ja.m);
+        }
+        return st;
+    default: st = ga_affine_jac_log(a, c->side, &j1); break;
+    }
+    if (st == GA_OK)
+        memcpy(out, c->which ? j2.m : j1.m, sizeof j1.m);
+    return st;
+}
 
 static int k_group(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     (void)k;
     const group_ctx *c = ctx;
+    if (c->affine)
+        return k_group_affine(c, in, out);
     ga_mat4 a = gpy_mat_get(in[0]), b = a;
     ga_rotor ra = {0}, rb = {0};
     ga_vec3 p = {0, 0, 0};
@@ -151,8 +249,9 @@ static int group_args(const char *what, const char *gname, const char *sname, gr
     const ga_group *g = gpy_group_arg(what, gname);
     if (!g)
         return -1;
-    if (!g->rigid) {
-        PyErr_Format(PyExc_ValueError, "%s: group must be 'cga' or 'matrix' (rigid motions), not '%s'", what,
+    c->affine = g == &ga_group_affine;
+    if (!g->rigid && !c->affine) {
+        PyErr_Format(PyExc_ValueError, "%s: group must be 'cga', 'matrix' or 'affine', not '%s'", what,
                      g->name);
         return -1;
     }
@@ -190,7 +289,7 @@ static PyObject *group_call(const char *what, int op, PyObject *args, PyObject *
     }
     if (!ok)
         return NULL;
-    group_ctx c = {op, 0, 0, GA_JAC_RIGHT};
+    group_ctx c = {op, 0, 0, GA_JAC_RIGHT, 0};
     if (group_args(what, gname, sname, &c) < 0)
         return NULL;
     if (op == G_ADJOINT && sname) {
@@ -204,8 +303,9 @@ static PyObject *group_call(const char *what, int op, PyObject *args, PyObject *
         kc.in[0] = (gpy_core)GPY_CORE2(4, 4, op == G_ACT ? "T" : nin == 2 ? "A" : "T");
         if (nin == 2)
             kc.in[1] = op == G_ACT ? (gpy_core)GPY_CORE1(3, "points") : (gpy_core)GPY_CORE2(4, 4, "B");
-        kc.out = op == G_ACT ? (w ? (gpy_core)GPY_CORE2(3, 3, NULL) : (gpy_core)GPY_CORE2(3, 6, NULL))
-                             : (gpy_core)GPY_CORE2(6, 6, NULL);
+        npy_intp d = c.affine ? 12 : 6;
+        kc.out = op == G_ACT ? (w ? (gpy_core)GPY_CORE2(3, 3, NULL) : (gpy_core)GPY_CORE2(3, d, NULL))
+                             : (gpy_core)GPY_CORE2(d, d, NULL);
         res[w] = gpy_run_kernel(&kc, in, NULL);
         if (!res[w]) {
             Py_XDECREF(res[0]);
@@ -259,8 +359,21 @@ PyMethodDef gpy_jacobian_methods[] = {
     {"jl_inverse", FN(py_jl_inverse), KW,
      "jl_inverse(xi, *, out=None): the inverse of jl(xi), for a rotation angle |w| below 2 pi."},
     {"ad", FN(py_ad), KW, "ad(xi, *, out=None): the small adjoint [[w]x, 0; [v]x, [w]x] (..., 6, 6)."},
+    {"affine_jr", FN(py_affine_jr), KW,
+     "affine_jr(X, *, out=None): the right Jacobian of expm at affine algebra elements (..., 4, 4)\n"
+     "(last row ignored; coordinates the 12 entries of rows 0..2) -> (..., 12, 12)."},
+    {"affine_jl", FN(py_affine_jl), KW, "affine_jl(X, *, out=None): the left Jacobian, affine_jr(-X)."},
+    {"affine_jr_inverse", FN(py_affine_jr_inverse), KW,
+     "affine_jr_inverse(X, *, out=None): the inverse of affine_jr(X) (singular where eigenvalues of ad X\n"
+     "are 2 pi i k apart)."},
+    {"affine_jl_inverse", FN(py_affine_jl_inverse), KW,
+     "affine_jl_inverse(X, *, out=None): the inverse of affine_jl(X)."},
+    {"affine_ad", FN(py_affine_ad), KW,
+     "affine_ad(X, *, out=None): the small adjoint of the affine algebra, Y -> X Y - Y X (..., 12, 12)."},
     {"adjoint", FN(py_adjoint), KW,
-     "adjoint(T, group='cga'): Ad(T) = [R, 0; [t]x R, R] of rigid motions (..., 4, 4) -> (..., 6, 6)."},
+     "adjoint(T, group='cga'): Ad(T) = [R, 0; [t]x R, R] of rigid motions (..., 4, 4) -> (..., 6, 6);\n"
+     "group='affine': Y -> T Y T^-1 (..., 12, 12). The jac_* below take group='affine' as well\n"
+     "(12 x 12 Jacobians, 3 x 12 for the point's)."},
     {"jac_compose", FN(py_jac_compose), KW,
      "jac_compose(A, B, group='cga', side='right'): the Jacobians (J_A, J_B) of A B, each (..., 6, 6)."},
     {"jac_inverse", FN(py_jac_inverse), KW,

@@ -71,7 +71,7 @@ void gpy_nonfinite_why(const char *name, PyArrayObject *a, npy_intp flat, char *
 /* ---- the vectorised loop (kernel.c) --------------------------------------- */
 
 #define GPY_MAX_IN 3
-#define GPY_MAX_OUT 36 /* numbers in one element of a result (a 6x6 Jacobian) */
+#define GPY_MAX_OUT 144 /* numbers in one element of a result (a 12x12 affine Jacobian) */
 
 typedef struct {
     int ncore;        /* trailing dimensions of one element */

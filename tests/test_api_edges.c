@@ -132,6 +132,17 @@ static int c_se3_jac_inverse(void) { return ga_se3_jac_inverse(M, GA_JAC_RIGHT, 
 static int c_se3_jac_between(void) { return ga_se3_jac_between(M, M, GA_JAC_RIGHT, OUT(0), OUT(1)); }
 static int c_se3_jac_act(void) { return ga_se3_jac_act(M, va, GA_JAC_LEFT, OUT(0), OUT(1)); }
 static int c_se3_jac_log(void) { return ga_se3_jac_log(M, GA_JAC_LEFT, OUT(0)); }
+static ga_mat4 affine_x(void) { return ga_twist_hat((ga_twist){{0.1, 0.2, 0.3}, {1, 2, 3}}); }
+static int c_affine_jr(void) { return ga_affine_jr(affine_x(), OUT(0)); }
+static int c_affine_jl(void) { return ga_affine_jl(affine_x(), OUT(0)); }
+static int c_affine_jr_inverse(void) { return ga_affine_jr_inverse(affine_x(), OUT(0)); }
+static int c_affine_jl_inverse(void) { return ga_affine_jl_inverse(affine_x(), OUT(0)); }
+static int c_affine_adjoint_matrix(void) { return ga_affine_adjoint_matrix(M, OUT(0)); }
+static int c_affine_jac_compose(void) { return ga_affine_jac_compose(M, M, GA_JAC_RIGHT, OUT(0), OUT(1)); }
+static int c_affine_jac_inverse(void) { return ga_affine_jac_inverse(M, GA_JAC_LEFT, OUT(0)); }
+static int c_affine_jac_between(void) { return ga_affine_jac_between(M, M, GA_JAC_LEFT, OUT(0), OUT(1)); }
+static int c_affine_jac_act(void) { return ga_affine_jac_act(M, va, GA_JAC_RIGHT, OUT(0), OUT(1)); }
+static int c_affine_jac_log(void) { return ga_affine_jac_log(M, GA_JAC_RIGHT, OUT(0)); }
 static int c_rotor_mean(void)
 {
     static const double w[2] = {1.0, 0.5};
@@ -307,6 +318,16 @@ static const api_case cases[] = {
     CASE(se3_jac_between, 2, 3),
     CASE(se3_jac_act, 2, 3),
     CASE(se3_jac_log, 1, 1),
+    CASE(affine_jr, 1, 1),
+    CASE(affine_jl, 1, 1),
+    CASE(affine_jr_inverse, 1, 1),
+    CASE(affine_jl_inverse, 1, 1),
+    CASE(affine_adjoint_matrix, 1, 1),
+    CASE(affine_jac_compose, 2, 3),
+    CASE(affine_jac_inverse, 1, 1),
+    CASE(affine_jac_between, 2, 3),
+    CASE(affine_jac_act, 2, 3),
+    CASE(affine_jac_log, 1, 1),
     CASE(versor_apply, 1, 1),
     CASE(versor_apply_many, 2, 2),
     CASE(mv_gp_even_vector_sparse, 3, 4),

@@ -3,7 +3,8 @@
  * Jacobians of exp and their inverses, the small and the large adjoint, and
  * the Jacobians of compose, inverse, between, act (a point) and log, for
  * both representations of SE(3): rotors (ga_rotor) and 4x4 matrices
- * (ga_mat4). The two give the same matrices to rounding.
+ * (ga_mat4). The two give the same matrices to rounding. The same set for
+ * the affine group of 4x4 matrices (below, with its own conventions).
  *
  * Conventions (docs/conventions.md, "Jacobians"):
  *   - a tangent vector is a twist in garotor's order (wx, wy, wz, vx, vy, vz),
@@ -127,6 +128,78 @@ GA_API GA_NODISCARD ga_status ga_se3_jac_act(ga_mat4 a, ga_vec3 p, ga_jac_side s
                                              ga_mat3 *jp);
 /** ga_rotor_jac_log for 4x4 rigid motions (ga_se3_log's twist). */
 GA_API GA_NODISCARD ga_status ga_se3_jac_log(ga_mat4 a, ga_jac_side side, ga_mat6 *j);
+
+/* ---- the affine group: homogeneous 4x4 matrices with det > 0 ------------ */
+
+/* Its algebra element is a 4x4 X whose last row is zero (the last row of an
+ * argument is ignored); its coordinates are the 12 entries of rows 0..2,
+ * x[4*i + j] = X[i][j] (the group ga_group_affine's vee). A 12x12 matrix is
+ * row-major, m[12*row + col]; a 3x12 m[12*row + col]. The conventions of the
+ * rigid functions above hold: X (+) tau = X exp(tau) (right) or
+ * exp(tau) X (left). There is no closed form: J_r(X) = phi(-ad X) and
+ * J_l(X) = phi(ad X), phi(z) = (e^z - 1)/z, are summed on 12x12 matrices
+ * by scaling, Taylor series and doubling (phi(2z) = phi(z)(e^z + 1)/2), the
+ * inverses by Gaussian elimination with partial pivoting. For X in se(3)
+ * they are the rigid ones, in these coordinates. */
+
+/** A 12x12 matrix, row-major: m[12*row + col]. */
+typedef struct {
+    double m[144];
+} ga_mat12;
+
+/** A 3x12 matrix, row-major: m[12*row + col]. */
+typedef struct {
+    double m[36];
+} ga_mat3x12;
+
+/** The small adjoint ad(X), the matrix of Y -> X Y - Y X on the algebra. */
+GA_API ga_mat12 ga_affine_ad(ga_mat4 x);
+
+/** The right Jacobian of exp, J_r(X) = sum_k (-ad X)^k / (k+1)!:
+ *  expm(X + E) = expm(X) expm(J_r(X) E) + O(|E|^2), i.e. J_r(X) E =
+ *  expm(-X) L(X, E), L the Frechet derivative of expm. GA_ERR_NOTFINITE for
+ *  NaN/Inf, GA_ERR_DOMAIN for a result that overflows. */
+GA_API GA_NODISCARD ga_status ga_affine_jr(ga_mat4 x, ga_mat12 *out);
+
+/** The left Jacobian of exp, J_l(X) = J_r(-X): expm(X + E) =
+ *  expm(J_l(X) E) expm(X) + O(|E|^2). As ga_affine_jr. */
+GA_API GA_NODISCARD ga_status ga_affine_jl(ga_mat4 x, ga_mat12 *out);
+
+/** The inverse of J_r(X). J_r(X) is singular where two eigenvalues of X
+ *  differ by 2 pi i k, k != 0: GA_ERR_SINGULAR there (a pivot of the
+ *  elimination below 1e-14 of the matrix's largest entry); otherwise as
+ *  ga_affine_jr. */
+GA_API GA_NODISCARD ga_status ga_affine_jr_inverse(ga_mat4 x, ga_mat12 *out);
+
+/** The inverse of J_l(X) (= that of J_r(-X)); as ga_affine_jr_inverse. */
+GA_API GA_NODISCARD ga_status ga_affine_jl_inverse(ga_mat4 x, ga_mat12 *out);
+
+/* The group's functions check their pointers (GA_ERR_ARG for a NULL or a
+ * side that is neither GA_JAC_RIGHT nor GA_JAC_LEFT), then each element A:
+ * GA_ERR_NOTFINITE for NaN/Inf, GA_ERR_DOMAIN for a last row farther than
+ * 1e-12 from 0 0 0 1 or det < 0, GA_ERR_SINGULAR for a singular A (as
+ * ga_mat4_inverse). The last row is then taken as 0 0 0 1 exactly. The
+ * formulas are the rigid ones (above) with the affine Ad and, for act,
+ * right J_A[i][4k+l] = M[i][k] p~[l], left J_A[i][4k+l] = delta_ik y~[l]
+ * (M the linear part of A, p~ = (p, 1), y~ = (A p, 1)), J_p = M. */
+
+/** The adjoint matrix Ad(A), the matrix of Y -> A Y A^-1 on the algebra. */
+GA_API GA_NODISCARD ga_status ga_affine_adjoint_matrix(ga_mat4 a, ga_mat12 *out);
+/** The Jacobians of A B with respect to A and B. */
+GA_API GA_NODISCARD ga_status ga_affine_jac_compose(ga_mat4 a, ga_mat4 b, ga_jac_side side, ga_mat12 *ja,
+                                                    ga_mat12 *jb);
+/** The Jacobian of A^-1. */
+GA_API GA_NODISCARD ga_status ga_affine_jac_inverse(ga_mat4 a, ga_jac_side side, ga_mat12 *j);
+/** The Jacobians of A^-1 B with respect to A and B. */
+GA_API GA_NODISCARD ga_status ga_affine_jac_between(ga_mat4 a, ga_mat4 b, ga_jac_side side, ga_mat12 *ja,
+                                                    ga_mat12 *jb);
+/** The Jacobians of the point A p with respect to A (3x12) and p (3x3). */
+GA_API GA_NODISCARD ga_status ga_affine_jac_act(ga_mat4 a, ga_vec3 p, ga_jac_side side, ga_mat3x12 *ja,
+                                                ga_mat3 *jp);
+/** The Jacobian of the principal log (ga_mat4_logm): J_r(X)^-1 / J_l(X)^-1
+ *  at X = logm(A); ga_mat4_logm's refusals (an eigenvalue on the negative
+ *  real axis) and ga_affine_jr_inverse's. */
+GA_API GA_NODISCARD ga_status ga_affine_jac_log(ga_mat4 a, ga_jac_side side, ga_mat12 *j);
 
 #ifdef __cplusplus
 }

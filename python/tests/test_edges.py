@@ -79,7 +79,11 @@ def array_calls(rng):
         return np.concatenate([np.ravel(j) for j in r])
 
     calls += [(f, "xi", xi, getattr(garotor, f)) for f in ("jr", "jl", "jr_inverse", "jl_inverse", "ad")]
-    for g in ("cga", "matrix"):
+    XA = 0.1 * T.copy()  # affine algebra elements: a NaN in any of the 16 numbers, the last row's too
+    XA[..., 3, :] = 0.0
+    calls += [(f, "X", XA, getattr(garotor, f))
+              for f in ("affine_jr", "affine_jl", "affine_jr_inverse", "affine_jl_inverse", "affine_ad")]
+    for g in ("cga", "matrix", "affine"):
         calls += [
             (f"adjoint/{g}", "T", T, lambda a, g=g: garotor.adjoint(a, g)),
             (f"jac_compose/{g}:A", "A", T, lambda a, g=g: both(garotor.jac_compose(a, T, g))),
