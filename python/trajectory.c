@@ -29,8 +29,8 @@ static void traj_free(traj *tr)
 /* Read obj as TUM rows; t0 NULL: the first row's time (set into *t0v), else
  * *t0v is subtracted; shift added after. -1 with garotor.Error naming the
  * array (name) and the row. */
-static int traj_read(const char *what, const char *name, PyObject *obj, int normalize, int have_t0, double *t0v,
-                     double shift, npy_intp min_rows, traj *tr)
+static int traj_read(const char *what, const char *name, PyObject *obj, int normalize, int have_t0,
+                     double *t0v, double shift, npy_intp min_rows, traj *tr)
 {
     char where[96], why[200];
     snprintf(where, sizeof where, "%s: %s", what, name);
@@ -42,10 +42,11 @@ static int traj_read(const char *what, const char *name, PyObject *obj, int norm
         for (int d = 0; d < PyArray_NDIM(a) && d < 4; d++)
             snprintf(shape + strlen(shape), sizeof shape - strlen(shape), "%s%zd", d ? ", " : "",
                      (Py_ssize_t)PyArray_DIM(a, d));
-        PyErr_Format(PyExc_ValueError,
-                     "%s must be an (n, 8) array of TUM rows t x y z qx qy qz qw with n >= %zd (numpy.loadtxt "
-                     "of a TUM file), not shape (%s)",
-                     where, (Py_ssize_t)min_rows, shape);
+        PyErr_Format(
+            PyExc_ValueError,
+            "%s must be an (n, 8) array of TUM rows t x y z qx qy qz qw with n >= %zd (numpy.loadtxt "
+            "of a TUM file), not shape (%s)",
+            where, (Py_ssize_t)min_rows, shape);
         Py_DECREF(a);
         return -1;
     }
@@ -75,8 +76,8 @@ static int traj_read(const char *what, const char *name, PyObject *obj, int norm
         tr->t[i] = (r[0] - *t0v) + shift;
         if (i > 0 && !(r[0] > r[-8])) {
             char x[32], y[32];
-            snprintf(why, sizeof why, "times must increase strictly: %s[%zd, 0] = %s after %s", name, (Py_ssize_t)i,
-                     gpy_repr_text(r[0], x), gpy_repr_text(r[-8], y));
+            snprintf(why, sizeof why, "times must increase strictly: %s[%zd, 0] = %s after %s", name,
+                     (Py_ssize_t)i, gpy_repr_text(r[0], x), gpy_repr_text(r[-8], y));
             gpy_raise_status_why(where, 1, &n, i, GA_ERR_ARG, why);
             Py_DECREF(a);
             return -1;
@@ -87,7 +88,8 @@ static int traj_read(const char *what, const char *name, PyObject *obj, int norm
             snprintf(why, sizeof why,
                      "%s[%zd, 4:8] (qx qy qz qw): the quaternion has norm %s, not 1 (to 1e-9; normalize=True "
                      "accepts up to 1e-3)",
-                     name, (Py_ssize_t)i, gpy_repr_text(sqrt(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7]), x));
+                     name, (Py_ssize_t)i,
+                     gpy_repr_text(sqrt(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7]), x));
             gpy_raise_status_why(where, 1, &n, i, st, why);
             Py_DECREF(a);
             return -1;
@@ -160,7 +162,8 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
     else if (strcmp(align, "sim3") == 0)
         do_align = 1, with_scale = 1;
     else if (strcmp(align, "none") != 0)
-        return PyErr_Format(PyExc_ValueError, "%s: align must be 'none', 'se3' or 'sim3', not '%s'", what, align);
+        return PyErr_Format(PyExc_ValueError, "%s: align must be 'none', 'se3' or 'sim3', not '%s'", what,
+                            align);
     if (strcmp(angle, "deg") != 0 && strcmp(angle, "rad") != 0)
         return PyErr_Format(PyExc_ValueError, "%s: angle must be 'deg' or 'rad', not '%s'", what, angle);
     if (delta < 1)
@@ -204,21 +207,23 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
         if (st == GA_OK)
             st = ga_traj_transform(T, scale, E, n, E);
         if (st != GA_OK) {
-            PyErr_Format(gpy_error,
-                         "%s: align='%s': the %zu associated positions do not fix an alignment (fewer than 3, "
-                         "or on one line)",
-                         what, align, n);
+            PyErr_Format(
+                gpy_error,
+                "%s: align='%s': the %zu associated positions do not fix an alignment (fewer than 3, "
+                "or on one line)",
+                what, align, n);
             goto done;
         }
     }
     size_t npairs = ga_traj_rpe_count(n, (size_t)delta, all_pairs);
     if ((want & WANT_RPE) && npairs == 0) {
-        PyErr_Format(gpy_error, "%s: delta %zd leaves no pair among the %zu associated poses", what, delta, n);
+        PyErr_Format(gpy_error, "%s: delta %zd leaves no pair among the %zu associated poses", what, delta,
+                     n);
         goto done;
     }
-    res = Py_BuildValue("{s:n,s:N,s:N,s:d,s:N}", "pairs", (Py_ssize_t)n, "ref_index", index_array(ir, (npy_intp)n),
-                        "est_index", index_array(ie, (npy_intp)n), "scale", scale, "transform",
-                        array_of(T.m, 4, 4));
+    res = Py_BuildValue("{s:n,s:N,s:N,s:d,s:N}", "pairs", (Py_ssize_t)n, "ref_index",
+                        index_array(ir, (npy_intp)n), "est_index", index_array(ie, (npy_intp)n), "scale",
+                        scale, "transform", array_of(T.m, 4, 4));
     if (!res)
         goto done;
     if (want & WANT_APE) {
@@ -228,7 +233,8 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
             goto done;
         }
         PyObject *a = stats_dict(e1, (npy_intp)n), *b = a ? stats_dict(e2, (npy_intp)n) : NULL;
-        if (!b || PyDict_SetItemString(res, "ape_trans", a) < 0 || PyDict_SetItemString(res, "ape_rot", b) < 0) {
+        if (!b || PyDict_SetItemString(res, "ape_trans", a) < 0 ||
+            PyDict_SetItemString(res, "ape_rot", b) < 0) {
             Py_XDECREF(a);
             Py_XDECREF(b);
             Py_CLEAR(res);
@@ -244,7 +250,8 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
             goto done;
         }
         PyObject *a = stats_dict(e1, (npy_intp)npairs), *b = a ? stats_dict(e2, (npy_intp)npairs) : NULL;
-        if (!b || PyDict_SetItemString(res, "rpe_trans", a) < 0 || PyDict_SetItemString(res, "rpe_rot", b) < 0) {
+        if (!b || PyDict_SetItemString(res, "rpe_trans", a) < 0 ||
+            PyDict_SetItemString(res, "rpe_rot", b) < 0) {
             Py_XDECREF(a);
             Py_XDECREF(b);
             Py_CLEAR(res);
@@ -269,8 +276,14 @@ static PyObject *py_evaluate(PyObject *s, PyObject *a, PyObject *k)
 {
     return (void)s, eval_call("evaluate", WANT_APE | WANT_RPE, a, k);
 }
-static PyObject *py_ape(PyObject *s, PyObject *a, PyObject *k) { return (void)s, eval_call("ape", WANT_APE, a, k); }
-static PyObject *py_rpe(PyObject *s, PyObject *a, PyObject *k) { return (void)s, eval_call("rpe", WANT_RPE, a, k); }
+static PyObject *py_ape(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, eval_call("ape", WANT_APE, a, k);
+}
+static PyObject *py_rpe(PyObject *s, PyObject *a, PyObject *k)
+{
+    return (void)s, eval_call("rpe", WANT_RPE, a, k);
+}
 
 /* ---- align ------------------------------------------------------------------ */
 
@@ -321,7 +334,8 @@ static PyObject *py_align(PyObject *self, PyObject *args, PyObject *kw)
     if (!R || !E)
         goto done;
     if (nr != ne) {
-        PyErr_Format(PyExc_ValueError, "align: ref and est must hold as many poses (associated pairs), not %zd and %zd",
+        PyErr_Format(PyExc_ValueError,
+                     "align: ref and est must hold as many poses (associated pairs), not %zd and %zd",
                      (Py_ssize_t)nr, (Py_ssize_t)ne);
         goto done;
     }
@@ -330,9 +344,10 @@ static PyObject *py_align(PyObject *self, PyObject *args, PyObject *kw)
     int st = nr == 0 ? GA_ERR_DOMAIN : ga_traj_align(R, E, (size_t)nr, with_scale, &T, &s);
     if (st != GA_OK) {
         gpy_raise_status_why("align", 0, NULL, 0, st,
-                             st == GA_ERR_DOMAIN ? "the positions do not fix an alignment (fewer than 3, or on one "
-                                                   "line; with scale, est's positions all equal)"
-                                                 : NULL);
+                             st == GA_ERR_DOMAIN
+                                 ? "the positions do not fix an alignment (fewer than 3, or on one "
+                                   "line; with scale, est's positions all equal)"
+                                 : NULL);
         goto done;
     }
     res = Py_BuildValue("(Nd)", array_of(T.m, 4, 4), s);
@@ -355,7 +370,8 @@ static PyObject *py_fit(PyObject *self, PyObject *args, PyObject *kw)
         return NULL;
     char num[32];
     if (!(h > 0) || !isfinite(h))
-        return PyErr_Format(PyExc_ValueError, "fit: spacing must be a number > 0, not %s", gpy_repr_text(h, num));
+        return PyErr_Format(PyExc_ValueError, "fit: spacing must be a number > 0, not %s",
+                            gpy_repr_text(h, num));
     if (!(smooth >= 0) || !isfinite(smooth))
         return PyErr_Format(PyExc_ValueError, "fit: smooth must be a number >= 0, not %s",
                             gpy_repr_text(smooth, num));
@@ -390,9 +406,10 @@ static PyObject *py_fit(PyObject *self, PyObject *args, PyObject *kw)
     PyEval_RestoreThread(ts);
     if (st != GA_OK) {
         gpy_raise_status_why("fit", 0, NULL, 0, st,
-                             st == GA_ERR_DOMAIN ? "the least-squares problem has no finite solution (a control "
-                                                   "pose with no key near it: try a larger spacing or smooth)"
-                                                 : NULL);
+                             st == GA_ERR_DOMAIN
+                                 ? "the least-squares problem has no finite solution (a control "
+                                   "pose with no key near it: try a larger spacing or smooth)"
+                                 : NULL);
         goto done;
     }
     /* the rows: the keys' own stamps, the knots t_0 + (j - 1) spacing; the

@@ -181,8 +181,12 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
         tt_add(&b, t0, 1, &d);
         tr->t[i] = tt_to_double(&d, 0);
         if (i > 0 && !(tr->t[i] > tr->t[i - 1]))
-            return tio_error(f, i, "column 1: times must increase strictly: %s after %s", f->first[i],
-                             f->first[i - 1]);
+            return tio_error(f, i, "column 1: times must increase strictly: %s after %s (%s)", f->first[i],
+                             f->first[i - 1],
+                             !(tr->t[i] < tr->t[i - 1])
+                                 ? "a repeated stamp: keep one of the two lines"
+                                 : "out of order: evo sorts by time, garotor reads the file as given: sort "
+                                   "it by its first column, `sort -g -k1,1`");
         if (ga_traj_pose_from_tum(v + 1, o->normalize, &tr->m[i]) != GA_OK) {
             double norm = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
             return tio_error(f, i,
