@@ -193,10 +193,11 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
         goto done;
     }
     if (n == 0) {
-        PyErr_Format(gpy_error,
-                     "%s: no pose of the %s is within max_diff %s s of a pose of the %s (offset %s)", what,
-                     est.n > ref.n ? "reference" : "estimate", gpy_repr_text(max_diff, num),
-                     est.n > ref.n ? "estimate" : "reference", gpy_repr_text(offset, num2));
+        char why[200];
+        snprintf(why, sizeof why, "no pose of the %s is within max_diff %s s of a pose of the %s (offset %s)",
+                 est.n > ref.n ? "reference" : "estimate", gpy_repr_text(max_diff, num),
+                 est.n > ref.n ? "estimate" : "reference", gpy_repr_text(offset, num2));
+        gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_DOMAIN, why);
         goto done;
     }
     for (size_t k = 0; k < n; k++) R[k] = ref.m[ir[k]], E[k] = est.m[ie[k]];
@@ -207,18 +208,20 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
         if (st == GA_OK)
             st = ga_traj_transform(T, scale, E, n, E);
         if (st != GA_OK) {
-            PyErr_Format(
-                gpy_error,
-                "%s: align='%s': the %zu associated positions do not fix an alignment (fewer than 3, "
-                "or on one line)",
-                what, align, n);
+            char why[160];
+            snprintf(why, sizeof why,
+                     "align='%s': the %zu associated positions do not fix an alignment (fewer than 3, or on "
+                     "one line)",
+                     align, n);
+            gpy_raise_status_why(what, 0, NULL, 0, st, why);
             goto done;
         }
     }
     size_t npairs = ga_traj_rpe_count(n, (size_t)delta, all_pairs);
     if ((want & WANT_RPE) && npairs == 0) {
-        PyErr_Format(gpy_error, "%s: delta %zd leaves no pair among the %zu associated poses", what, delta,
-                     n);
+        char why[120];
+        snprintf(why, sizeof why, "delta %zd leaves no pair among the %zu associated poses", delta, n);
+        gpy_raise_status_why(what, 0, NULL, 0, GA_ERR_ARG, why);
         goto done;
     }
     res = Py_BuildValue("{s:n,s:N,s:N,s:d,s:N}", "pairs", (Py_ssize_t)n, "ref_index",
@@ -386,8 +389,10 @@ static PyObject *py_fit(PyObject *self, PyObject *args, PyObject *kw)
     size_t nc;
     int st = ga_traj_fit_count(z.t[z.n - 1], h, &nc);
     if (st != GA_OK) {
-        PyErr_Format(gpy_error, "fit: spacing %s makes more than %d knot intervals over the keys' span",
-                     gpy_repr_text(h, num), GA_TRAJ_FIT_MAX_SEGMENTS);
+        char why[120];
+        snprintf(why, sizeof why, "spacing %s makes more than %d knot intervals over the keys' span",
+                 gpy_repr_text(h, num), GA_TRAJ_FIT_MAX_SEGMENTS);
+        gpy_raise_status_why("fit", 0, NULL, 0, st, why);
         goto done;
     }
     size_t ws = ga_traj_fit_workspace_size(nc);

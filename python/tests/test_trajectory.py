@@ -216,8 +216,9 @@ def test_bad_input_named(files):
         garotor.evaluate(ref, ref, align="sideways")
     with pytest.raises(garotor.Error, match="no pose of the estimate is within max_diff"):
         garotor.evaluate(ref, ref + [[100.0] + [0.0] * 7])
-    with pytest.raises(garotor.Error, match="delta 400 leaves no pair"):
+    with pytest.raises(garotor.Error, match="delta 400 leaves no pair") as e:
         garotor.rpe(ref, ref, delta=400)
+    assert e.value.index == () and e.value.status == -6  # GA_ERR_ARG
     garotor.ape(ref, ref, delta=400)  # the APE has no pairs to make
     with pytest.raises(ValueError, match="spacing must be a number > 0, not 0.0"):
         garotor.fit(ref, 0.0)
