@@ -89,7 +89,8 @@ PyMODINIT_FUNC PyInit__garotor(void)
         PyModule_AddObjectRef(m, "MultivectorArray", (PyObject *)&gpy_MVAType) < 0 ||
         gpy_objects_init(m) < 0 || gpy_ufuncs_init(m) < 0 ||
         PyModule_AddStringConstant(m, "__version__", GAROTOR_VERSION_STRING) < 0 ||
-        PyModule_AddFunctions(m, gpy_jacobian_methods) < 0)
+        PyModule_AddFunctions(m, gpy_jacobian_methods) < 0 ||
+        PyModule_AddFunctions(m, gpy_trajectory_methods) < 0)
         goto fail;
     for (int i = 1; i < 32; i++) {
         PyObject *b = gpy_mv_new(ga_mv_blade(i));

@@ -14,6 +14,8 @@
  *   mvarray.c      the MultivectorArray type and the multivector kernels
  *   ufuncs.c       garotor.ufunc: numpy generalized ufuncs of the kernels
  *   jacobian.c     the Lie-group Jacobians (gpy_jacobian_methods)
+ *   trajectory.c   trajectories compared and fitted: evaluate, ape, rpe,
+ *                  align, fit (gpy_trajectory_methods)
  */
 #ifndef GAROTOR_PYTHON_MODULE_H
 #define GAROTOR_PYTHON_MODULE_H
@@ -186,6 +188,10 @@ PyObject *gpy_down(PyObject *self, PyObject *args, PyObject *kw);
 /* ---- Jacobians (jacobian.c): added to the module by PyInit_garotor ---------- */
 
 extern PyMethodDef gpy_jacobian_methods[];
+
+/* ---- trajectories (trajectory.c): added to the module by PyInit_garotor ----- */
+
+extern PyMethodDef gpy_trajectory_methods[];
 
 /* ---- Path (path.c) --------------------------------------------------------- */
 

@@ -216,7 +216,13 @@ def main():
     outp = os.path.join(d, "report.txt")
     cases = [(7, lines[7].rsplit(" ", 1)[0], "bad.txt:8: expected 8 numbers (t x y z qx qy qz qw), found 7"),
              (9, lines[9].rsplit(" ", 1)[0] + " 0.9", "bad.txt:10: columns 5-8 (qx qy qz qw): the quaternion has norm"),
-             (11, lines[10], "bad.txt:12: column 1: times must increase strictly")]
+             (11, lines[10], "bad.txt:12: column 1: times must increase strictly"),
+             (13, lines[11], "bad.txt:14: column 1: times must increase strictly: %s after %s (out of order: "
+              "evo sorts by time, garotor reads the file as given: sort it by its first column, `sort -g -k1,1`)"
+              % (lines[11].split()[0], lines[12].split()[0])),
+             (11, lines[10].split()[0] + " " + lines[11].split(" ", 1)[1],
+              "bad.txt:12: column 1: times must increase strictly: %s after %s (a repeated stamp: keep one of "
+              "the two lines)" % (lines[10].split()[0], lines[10].split()[0]))]
     for k, text, want in cases:
         l2 = list(lines)
         l2[k] = text

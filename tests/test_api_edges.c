@@ -107,6 +107,33 @@ static int c_object_angle(void) { return ga_object_angle(P, P2, OUT(0)); }
 static int c_rotor_between(void) { return ga_rotor_between(P, P2, OUT(0)); }
 static int c_versor_between(void) { return ga_versor_between(S, S, OUT(0)); }
 static int c_object_interp(void) { return ga_object_interp(C, C, 0.5, OUT(0)); }
+static ga_mat4 tr_a[5], tr_b[5], fit_z[8];
+static double tum_row[7] = {1, 2, 3, 0, 0.6, 0, 0.8}, tr_t[5] = {0, 1, 2, 3, 4},
+              tr_t2[4] = {0.1, 1.1, 2.1, 3.1};
+static double fit_t[8] = {0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75}, tr_err[5] = {3, 1, 4, 1, 5};
+static double fit_work[4096];
+static int c_traj_pose_from_tum(void) { return ga_traj_pose_from_tum(IN(0, tum_row), 0, OUT(1)); }
+static int c_traj_pose_to_tum(void) { return ga_traj_pose_to_tum(M, OUT(0), OUT(1)); }
+static int c_traj_associate(void)
+{
+    return ga_traj_associate(IN(0, tr_t), 5, IN(1, tr_t2), 4, 0.5, OUT(2), OUT(3), OUT(4));
+}
+static int c_traj_align(void) { return ga_traj_align(IN(0, tr_a), IN(1, tr_b), 5, 1, OUT(2), OUT(3)); }
+static int c_traj_transform(void) { return ga_traj_transform(M, 2.0, IN(0, tr_a), 5, OUT(1)); }
+static int c_traj_ape(void) { return ga_traj_ape(IN(0, tr_a), IN(1, tr_b), 5, 1.0, OUT(2), OUT(3)); }
+static int c_traj_rpe(void) { return ga_traj_rpe(IN(0, tr_a), IN(1, tr_b), 5, 2, 1, 1.0, OUT(2), OUT(3)); }
+static int c_traj_statistics(void) { return ga_traj_statistics(IN(0, tr_err), 5, OUT(1)); }
+static int c_traj_fit_count(void) { return ga_traj_fit_count(1.75, 0.5, OUT(0)); }
+static int c_traj_fit_bspline(void)
+{
+    return ga_traj_fit_bspline(IN(0, fit_t), IN(1, fit_z), 8, 0.5, 0.1, IN(2, fit_work),
+                               ga_traj_fit_workspace_size(7), OUT(3), 7);
+}
+static int c_traj_bspline_pose(void) { return ga_traj_bspline_pose(IN(0, tr_a), 5, 0.5, 0.3, OUT(1)); }
+static int c_traj_fit_residuals(void)
+{
+    return ga_traj_fit_residuals(IN(0, fit_t), IN(1, fit_z), 8, IN(2, tr_a), 5, 0.5, OUT(3), OUT(4));
+}
 static int c_quat_normalize(void) { return ga_quat_normalize(ga_rotor_to_quat(R), 1e-9, OUT(0)); }
 static int c_rotor_from_mv(void) { return ga_rotor_from_mv(Rmv, 1e-9, OUT(0)); }
 static int c_rotor_normalize(void) { return ga_rotor_normalize(R, OUT(0)); }
@@ -358,6 +385,18 @@ static const api_case cases[] = {
     CASE(path_stepper_next, 2, 2),
     CASE(path_sample_uniform, 2, 2),
     CASE(path_sample, 3, 4),
+    CASE(traj_pose_from_tum, 2, 2),
+    CASE(traj_pose_to_tum, 2, 3),
+    CASE(traj_associate, 5, 28),
+    CASE(traj_align, 4, 12),
+    CASE(traj_transform, 2, 2),
+    CASE(traj_ape, 4, 12),
+    CASE(traj_rpe, 4, 12),
+    CASE(traj_statistics, 2, 2),
+    CASE(traj_fit_count, 1, 1),
+    CASE(traj_fit_bspline, 4, 8),
+    CASE(traj_bspline_pose, 2, 2),
+    CASE(traj_fit_residuals, 5, 24),
 };
 
 static void setup_inputs(void)
@@ -383,6 +422,14 @@ static void setup_inputs(void)
                                                  ga_rotor_rotation(axis, 0.3 * i)));
         tk_expect_status("setup: a key", G->from_mat4(keys4[i], keys + i * ed), GA_OK);
     }
+    for (int i = 0; i < 5; i++) { /* two trajectories, positions not on one line */
+        tr_a[i] = ga_se3_exp((ga_twist){{0.1 * i, -0.2, 0.3 * i}, {0.4 * i, 0.2 * i * i, 1.0 - 0.3 * i}});
+        tr_b[i] = ga_mat4_mul(M, ga_se3_exp((ga_twist){{0.02, 0.01 * i, 0}, {0.01 * i, 0, 0.03}}));
+        tr_b[i] = ga_mat4_mul(tr_b[i], tr_a[i]);
+    }
+    for (int i = 0; i < 8; i++)
+        fit_z[i] = ga_se3_exp((ga_twist){{0.2 * fit_t[i], 0, 0.1}, {fit_t[i], 0.5 * fit_t[i] * fit_t[i], 0}});
+    tk_expect(ga_traj_fit_workspace_size(7) <= sizeof fit_work, "setup: the fit's workspace fits");
     work_bytes = ga_path_workspace_size(G, GA_SCHEME_LIHAO2, 4);
     size_t cap_bytes = ga_path_workspace_size(G, GA_SCHEME_SCREW, 6);
     tk_expect(work_bytes <= sizeof work && cap_bytes <= sizeof work_cap &&

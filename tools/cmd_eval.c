@@ -181,46 +181,30 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
         tt_add(&b, t0, 1, &d);
         tr->t[i] = tt_to_double(&d, 0);
         if (i > 0 && !(tr->t[i] > tr->t[i - 1]))
-            return tio_error(f, i, "column 1: times must increase strictly: %s after %s", f->first[i],
-                             f->first[i - 1]);
-        ga_quat q = {v[7], v[4], v[5], v[6]};
-        double norm = sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-        if (o->normalize ? ga_quat_normalize(q, GA_SE3_NORMALIZE_TOL, &q) != GA_OK : fabs(norm - 1.0) > 1e-9)
+            return tio_error(f, i, "column 1: times must increase strictly: %s after %s (%s)", f->first[i],
+                             f->first[i - 1],
+                             !(tr->t[i] < tr->t[i - 1])
+                                 ? "a repeated stamp: keep one of the two lines"
+                                 : "out of order: evo sorts by time, garotor reads the file as given: sort "
+                                   "it by its first column, `sort -g -k1,1`");
+        if (ga_traj_pose_from_tum(v + 1, o->normalize, &tr->m[i]) != GA_OK) {
+            double norm = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
             return tio_error(f, i,
                              "columns 5-8 (qx qy qz qw): the quaternion has norm %.17g, not 1 (to 1e-9; "
                              "--normalize accepts up to 1e-3)",
                              norm);
-        tr->m[i] = ga_rotor_to_mat4(ga_rotor_from_quat(q, (ga_vec3){v[1], v[2], v[3]}));
+        }
     }
     return 0;
-}
-
-/* ---- association (evo.core.sync.associate_trajectories) ------------------------- */
-
-/* The index of the time in t[0..n-1] (increasing) nearest x, the lower on a tie. */
-static size_t nearest(const double *t, size_t n, double x)
-{
-    size_t lo = 0, hi = n; /* first index with t >= x */
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (t[mid] < x)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    if (lo == n)
-        return n - 1;
-    if (lo > 0 && fabs(t[lo - 1] - x) <= fabs(t[lo] - x))
-        return lo - 1;
-    return lo;
 }
 
 /* ---- the report --------------------------------------------------------------- */
 
 static void put_stats(FILE *fp, const char *title, const char *align, double *err, size_t n)
 {
-    ev_stats s;
-    ev_statistics(err, n, &s);
+    ga_traj_stats s;
+    if (ga_traj_statistics(err, n, &s) != GA_OK)
+        s = (ga_traj_stats){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
     const char *name[7] = {"max", "mean", "median", "min", "rmse", "sse", "std"};
     double v[7] = {s.max, s.mean, s.median, s.min, s.rmse, s.sse, s.std};
     fprintf(fp, "\n%s\n%s\n\n", title, align);
@@ -241,52 +225,42 @@ static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
     if (ev_traj_read(o->ref, &ro, &t0, &have0, &zero, ref) ||
         ev_traj_read(o->est, &ro, &t0, &have0, &off, est))
         return 2;
-    /* evo: the estimate is the long one only when it has strictly more poses */
-    int est_long = est->n > ref->n;
-    const ev_traj *sh = est_long ? ref : est, *lg = est_long ? est : ref;
-    size_t n = 0, *is = malloc(sh->n * sizeof *is), *il = malloc(sh->n * sizeof *il);
-    ga_mat4 *R = malloc(sh->n * sizeof *R), *E = malloc(sh->n * sizeof *E);
-    double *err = malloc(sh->n * sizeof *err);
+    size_t cap = ref->n < est->n ? ref->n : est->n, n = 0;
+    size_t *ir = malloc(cap * sizeof *ir), *ie = malloc(cap * sizeof *ie);
+    ga_mat4 *R = malloc(cap * sizeof *R), *E = malloc(cap * sizeof *E);
+    double *err = malloc(cap * sizeof *err), *err2 = malloc(cap * sizeof *err2);
     int rc = 2;
-    if (!is || !il || !R || !E || !err) {
+    if (!ir || !ie || !R || !E || !err || !err2) {
         fprintf(stderr, "garotor eval: out of memory\n");
         goto done;
     }
-    for (size_t i = 0; i < sh->n; i++) {
-        size_t j = nearest(lg->t, lg->n, sh->t[i]);
-        if (fabs(lg->t[j] - sh->t[i]) <= o->max_diff)
-            is[n] = i, il[n] = j, n++;
-    }
+    if (ga_traj_associate(ref->t, ref->n, est->t, est->n, o->max_diff, ir, ie, &n) != GA_OK)
+        goto done; /* not reached: the reader checked the times */
     if (n == 0) {
+        /* evo: the estimate is the long one only when it has strictly more poses */
+        const ev_traj *sh = est->n > ref->n ? ref : est, *lg = est->n > ref->n ? est : ref;
         fprintf(stderr,
                 "garotor eval: no pose of %s is within --max-diff %s s of a pose of %s (--offset %s)\n",
                 sh->in.name, o->max_diff_text ? o->max_diff_text : "0.01", lg->in.name,
                 o->offset_text ? o->offset_text : "0");
         goto done;
     }
-    for (size_t k = 0; k < n; k++) {
-        R[k] = est_long ? sh->m[is[k]] : lg->m[il[k]];
-        E[k] = est_long ? lg->m[il[k]] : sh->m[is[k]];
-    }
+    for (size_t k = 0; k < n; k++) R[k] = ref->m[ir[k]], E[k] = est->m[ie[k]];
     double scale = 1.0;
     const char *align = "(not aligned)";
     if (o->align) {
         ga_mat4 T;
-        if (n < 3 || ev_align(R, E, n, o->scale, &T, &scale) != 0) {
+        if (ga_traj_align(R, E, n, o->scale, &T, &scale) != GA_OK ||
+            ga_traj_transform(T, scale, E, n, E) != GA_OK) {
             fprintf(stderr,
                     "garotor eval: --align %s: the %zu associated positions do not fix an alignment "
                     "(fewer than 3, or on one line)\n",
                     o->align_name, n);
             goto done;
         }
-        for (size_t k = 0; k < n; k++) {
-            for (int a = 0; a < 3; a++) E[k].m[4 * a + 3] *= scale;
-            E[k] = ga_mat4_mul(T, E[k]);
-        }
         align = o->scale ? "(with Sim(3) Umeyama alignment)" : "(with SE(3) Umeyama alignment)";
     }
-    size_t npairs = 0;
-    for (size_t i = 0; i + (size_t)o->delta < n; i += o->all_pairs ? 1 : (size_t)o->delta) npairs++;
+    size_t npairs = ga_traj_rpe_count(n, (size_t)o->delta, o->all_pairs);
     if (npairs == 0) {
         fprintf(stderr, "garotor eval: --delta %ld leaves no pair among the %zu associated poses\n", o->delta,
                 n);
@@ -307,49 +281,34 @@ static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
     double k = o->degrees ? 180.0 / 3.14159265358979323846 : 1.0;
     char title[160], rpe_for[96];
     /* APE: E_i = est_i^-1 ref_i (evo: relative_se3(x_t, x_t*)) */
-    for (size_t i = 0; i < n; i++) {
-        double d2 = 0;
-        for (int a = 0; a < 3; a++)
-            d2 += (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]) * (E[i].m[4 * a + 3] - R[i].m[4 * a + 3]);
-        err[i] = sqrt(d2);
-    }
-    put_stats(fp, "APE w.r.t. translation part (m)", align, err, n);
-    for (size_t i = 0; i < n; i++) {
-        ga_mat4 e = ga_mat4_mul(ga_se3_inverse(E[i]), R[i]);
-        err[i] = k * ev_angle(&e);
-    }
-    snprintf(title, sizeof title, "APE w.r.t. rotation angle (%s)", unit);
-    put_stats(fp, title, align, err, n);
-    /* RPE: E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), Q the reference, P the estimate */
-    ga_mat4 *Ee = malloc(npairs * sizeof *Ee);
-    if (!Ee) {
+    if (ga_traj_ape(R, E, n, k, err, err2) != GA_OK) {
         tio_out_discard(&out);
-        fprintf(stderr, "garotor eval: out of memory\n");
+        fprintf(stderr, "garotor eval: the poses are not finite after --align\n");
         goto done;
     }
-    size_t m = 0;
-    for (size_t i = 0; i + (size_t)o->delta < n; i += o->all_pairs ? 1 : (size_t)o->delta) {
-        size_t j = i + (size_t)o->delta;
-        ga_mat4 q = ga_mat4_mul(ga_se3_inverse(R[i]), R[j]), p = ga_mat4_mul(ga_se3_inverse(E[i]), E[j]);
-        Ee[m++] = ga_mat4_mul(ga_se3_inverse(q), p);
+    put_stats(fp, "APE w.r.t. translation part (m)", align, err, n);
+    snprintf(title, sizeof title, "APE w.r.t. rotation angle (%s)", unit);
+    put_stats(fp, title, align, err2, n);
+    /* RPE: E = (Q_i^-1 Q_j)^-1 (P_i^-1 P_j), Q the reference, P the estimate */
+    if (ga_traj_rpe(R, E, n, (size_t)o->delta, o->all_pairs, k, err, err2) != GA_OK) {
+        tio_out_discard(&out);
+        fprintf(stderr, "garotor eval: the poses are not finite after --align\n");
+        goto done;
     }
     snprintf(rpe_for, sizeof rpe_for, "for delta = %ld (frames) using %s pairs", o->delta,
              o->all_pairs ? "all" : "consecutive");
-    for (size_t i = 0; i < m; i++)
-        err[i] = sqrt(Ee[i].m[3] * Ee[i].m[3] + Ee[i].m[7] * Ee[i].m[7] + Ee[i].m[11] * Ee[i].m[11]);
     snprintf(title, sizeof title, "RPE w.r.t. translation part (m)\n%s", rpe_for);
-    put_stats(fp, title, align, err, m);
-    for (size_t i = 0; i < m; i++) err[i] = k * ev_angle(&Ee[i]);
+    put_stats(fp, title, align, err, npairs);
     snprintf(title, sizeof title, "RPE w.r.t. rotation angle (%s)\n%s", unit, rpe_for);
-    put_stats(fp, title, align, err, m);
-    free(Ee);
+    put_stats(fp, title, align, err2, npairs);
     rc = tio_out_close(&out, 1) ? 2 : 0;
 done:
-    free(is);
-    free(il);
+    free(ir);
+    free(ie);
     free(R);
     free(E);
     free(err);
+    free(err2);
     return rc;
 }
 

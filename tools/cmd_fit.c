@@ -5,10 +5,9 @@
  * of `interp --scheme bspline` (path.h, BSPLINE), fitted by Levenberg-
  * Marquardt to the residuals r_k = log(S(t_k)^-1 Z_k) (a twist: radians and
  * units of length weighted alike), with an optional smoothing term
- * sqrt(lambda) (log(X_j^-1 X_j+1) - log(X_j+1^-1 X_j+2)). The Jacobians are
- * central differences on right perturbations X_j exp(d); the normal
- * equations are banded (a residual touches 4 consecutive control poses) and
- * solved by a banded Cholesky factorisation.
+ * sqrt(lambda) (log(X_j^-1 X_j+1) - log(X_j+1^-1 X_j+2)). The fit is the
+ * library's (garotor/trajectory.h, ga_traj_fit_bspline); this file reads,
+ * checks and writes.
  */
 #include "eval.h"
 
@@ -34,228 +33,6 @@ static const char fit_help[] =
     "  --in FILE, --out FILE   input and output (default standard input and output)\n"
     "  --header            skip the first line of the input (a CSV header)\n";
 
-typedef struct {
-    const ga_mat4 *X; /* control poses */
-    size_t n;         /* how many */
-    double h;         /* knot spacing */
-} spline;
-
-/* the segment of t (relative to t_0) and its u in [0, 1] */
-static size_t segment(const spline *s, double t, double *u)
-{
-    double x = t / s->h;
-    double f = floor(x);
-    if (f < 0)
-        f = 0;
-    if (f > (double)(s->n - 4))
-        f = (double)(s->n - 4);
-    *u = x - f;
-    return (size_t)f;
-}
-
-static ga_twist rel_log(ga_mat4 a, ga_mat4 b)
-{
-    ga_twist x = {{0, 0, 0}, {0, 0, 0}};
-    if (ga_se3_log(ga_mat4_mul(ga_se3_inverse(a), b), &x) != GA_OK)
-        x.w.x = NAN;
-    return x;
-}
-
-static ga_twist tw_scale(ga_twist x, double k)
-{
-    return (ga_twist){{k * x.w.x, k * x.w.y, k * x.w.z}, {k * x.v.x, k * x.v.y, k * x.v.z}};
-}
-
-/* S(t) on segment seg from controls c[0..3] */
-static ga_mat4 eval4(const ga_mat4 *c, double u)
-{
-    double b[3] = {(5 + 3 * u - 3 * u * u + u * u * u) / 6, (1 + 3 * u + 3 * u * u - 2 * u * u * u) / 6,
-                   u * u * u / 6};
-    ga_mat4 a = c[0];
-    for (int j = 0; j < 3; j++) a = ga_mat4_mul(a, ga_se3_exp(tw_scale(rel_log(c[j], c[j + 1]), b[j])));
-    return a;
-}
-
-static void res_key(const ga_mat4 *c, double u, ga_mat4 z, double *r)
-{
-    ga_twist x = rel_log(eval4(c, u), z);
-    r[0] = x.w.x, r[1] = x.w.y, r[2] = x.w.z, r[3] = x.v.x, r[4] = x.v.y, r[5] = x.v.z;
-}
-
-static void res_smooth(const ga_mat4 *c, double w, double *r)
-{
-    ga_twist a = rel_log(c[0], c[1]), b = rel_log(c[1], c[2]);
-    double x[6] = {a.w.x - b.w.x, a.w.y - b.w.y, a.w.z - b.w.z, a.v.x - b.v.x, a.v.y - b.v.y, a.v.z - b.v.z};
-    for (int i = 0; i < 6; i++) r[i] = w * x[i];
-}
-
-static ga_mat4 perturb(ga_mat4 m, int k, double d)
-{
-    double x[6] = {0};
-    x[k] = d;
-    return ga_mat4_mul(m, ga_se3_exp((ga_twist){{x[0], x[1], x[2]}, {x[3], x[4], x[5]}}));
-}
-
-enum { BW = 24 }; /* half bandwidth + 1 of the normal equations */
-
-/* add the residual r (6) with Jacobian J (6 x 6m, columns of controls
- * first.. first+m-1) into H (band) and g */
-static void accumulate(double *H, double *g, size_t first, int m, const double *J, const double *r)
-{
-    int cols = 6 * m;
-    for (int a = 0; a < cols; a++) {
-        size_t ia = 6 * first + (size_t)a;
-        double ga = 0;
-        for (int i = 0; i < 6; i++) ga += J[i * cols + a] * r[i];
-        g[ia] += ga;
-        for (int b = a; b < cols; b++) {
-            double s = 0;
-            for (int i = 0; i < 6; i++) s += J[i * cols + a] * J[i * cols + b];
-            H[ia * BW + (size_t)(b - a)] += s;
-        }
-    }
-}
-
-/* the Jacobian of resid (over m controls starting at c) by central differences */
-static void jacobian(ga_mat4 *c, int m, double u, ga_mat4 z, double w, int key, double *J)
-{
-    const double hd = 1e-6;
-    int cols = 6 * m;
-    for (int p = 0; p < cols; p++) {
-        ga_mat4 keep = c[p / 6];
-        double rp[6], rm[6];
-        c[p / 6] = perturb(keep, p % 6, hd);
-        if (key)
-            res_key(c, u, z, rp);
-        else
-            res_smooth(c, w, rp);
-        c[p / 6] = perturb(keep, p % 6, -hd);
-        if (key)
-            res_key(c, u, z, rm);
-        else
-            res_smooth(c, w, rm);
-        c[p / 6] = keep;
-        for (int i = 0; i < 6; i++) J[i * cols + p] = (rp[i] - rm[i]) / (2 * hd);
-    }
-}
-
-/* solve the band SPD system (H + mu diag) x = -g in place of a copy; -1 if not SPD */
-static int band_solve(const double *H, const double *g, size_t n, double mu, double *L, double *x)
-{
-    for (size_t i = 0; i < n; i++)
-        for (int d = 0; d < BW; d++) L[i * BW + d] = 0;
-    /* L[i*BW + (i - j)] = L(i, j) */
-    for (size_t j = 0; j < n; j++) {
-        double s = H[j * BW] * (1 + mu) + 1e-12;
-        for (size_t k = j >= BW - 1 ? j - (BW - 1) : 0; k < j; k++)
-            s -= L[j * BW + (j - k)] * L[j * BW + (j - k)];
-        if (!(s > 0))
-            return -1;
-        double ljj = sqrt(s);
-        L[j * BW] = ljj;
-        for (size_t i = j + 1; i < n && i < j + BW; i++) {
-            double t = H[j * BW + (i - j)];
-            for (size_t k = i >= BW - 1 ? i - (BW - 1) : 0; k < j; k++)
-                t -= L[i * BW + (i - k)] * L[j * BW + (j - k)];
-            L[i * BW + (i - j)] = t / ljj;
-        }
-    }
-    for (size_t i = 0; i < n; i++) { /* L y = -g */
-        double s = -g[i];
-        for (size_t k = i >= BW - 1 ? i - (BW - 1) : 0; k < i; k++) s -= L[i * BW + (i - k)] * x[k];
-        x[i] = s / L[i * BW];
-    }
-    for (size_t i = n; i-- > 0;) { /* L^T x = y */
-        double s = x[i];
-        for (size_t k = i + 1; k < n && k < i + BW; k++) s -= L[k * BW + (k - i)] * x[k];
-        x[i] = s / L[i * BW];
-    }
-    return 0;
-}
-
-static double cost_of(const ev_traj *z, const spline *s, double w)
-{
-    double c = 0, r[6];
-    for (size_t k = 0; k < z->n; k++) {
-        double u;
-        size_t seg = segment(s, z->t[k], &u);
-        res_key(s->X + seg, u, z->m[k], r);
-        for (int i = 0; i < 6; i++) c += r[i] * r[i];
-    }
-    for (size_t j = 0; w > 0 && j + 2 < s->n; j++) {
-        res_smooth(s->X + j, w, r);
-        for (int i = 0; i < 6; i++) c += r[i] * r[i];
-    }
-    return c;
-}
-
-/* Levenberg-Marquardt on the control poses X[0..n-1] */
-static int fit(const ev_traj *z, ga_mat4 *X, size_t n, double h, double lambda)
-{
-    size_t dim = 6 * n;
-    double *H = malloc(dim * BW * sizeof *H), *g = malloc(dim * sizeof *g), *L = malloc(dim * BW * sizeof *L),
-           *dx = malloc(dim * sizeof *dx);
-    ga_mat4 *Y = malloc(n * sizeof *Y);
-    int rc = -1;
-    if (!H || !g || !L || !dx || !Y)
-        goto done;
-    double w = sqrt(lambda), mu = 1e-6;
-    spline s = {X, n, h};
-    double cost = cost_of(z, &s, w);
-    for (int it = 0; it < 100; it++) {
-        memset(H, 0, dim * BW * sizeof *H);
-        memset(g, 0, dim * sizeof *g);
-        double J[6 * 24], r[6];
-        for (size_t k = 0; k < z->n; k++) {
-            double u;
-            size_t seg = segment(&s, z->t[k], &u);
-            res_key(X + seg, u, z->m[k], r);
-            jacobian(X + seg, 4, u, z->m[k], 0, 1, J);
-            accumulate(H, g, seg, 4, J, r);
-        }
-        for (size_t j = 0; w > 0 && j + 2 < n; j++) {
-            res_smooth(X + j, w, r);
-            jacobian(X + j, 3, 0, X[0], w, 0, J);
-            accumulate(H, g, j, 3, J, r);
-        }
-        int accepted = 0;
-        double step = 0, newcost = cost;
-        for (int tries = 0; tries < 20 && !accepted; tries++) {
-            if (band_solve(H, g, dim, mu, L, dx) == 0) {
-                step = 0;
-                for (size_t j = 0; j < n; j++) {
-                    const double *d = dx + 6 * j;
-                    Y[j] = ga_mat4_mul(X[j], ga_se3_exp((ga_twist){{d[0], d[1], d[2]}, {d[3], d[4], d[5]}}));
-                    for (int i = 0; i < 6; i++) step = fmax(step, fabs(d[i]));
-                }
-                spline sy = {Y, n, h};
-                newcost = cost_of(z, &sy, w);
-                if (newcost <= cost) {
-                    accepted = 1;
-                    break;
-                }
-            }
-            mu *= 10;
-        }
-        if (!accepted)
-            break; /* no step lowers the cost: a minimum to rounding */
-        memcpy(X, Y, n * sizeof *X);
-        mu = fmax(mu / 10, 1e-12);
-        double drop = cost - newcost;
-        cost = newcost;
-        if (step < 1e-12 || drop <= 1e-14 * cost)
-            break;
-    }
-    rc = isfinite(cost) ? 0 : -1;
-done:
-    free(H);
-    free(g);
-    free(L);
-    free(dx);
-    free(Y);
-    return rc;
-}
-
 /* ---- the command ---------------------------------------------------------- */
 
 static int usage(const char *what, const char *arg)
@@ -268,14 +45,9 @@ static int usage(const char *what, const char *arg)
 /* a pose line: the quaternion's sign kept continuous through *prev */
 static void put_pose(tio_out *o, const char *stamp, ga_mat4 m, ga_quat *prev, const double *extra, int nextra)
 {
-    ga_rotor r;
-    if (ga_rotor_from_mat4(m, &r) != GA_OK)
-        r = ga_rotor_identity();
-    ga_quat q = ga_rotor_to_quat(r);
-    if (q.w * prev->w + q.x * prev->x + q.y * prev->y + q.z * prev->z < 0)
-        q = (ga_quat){-q.w, -q.x, -q.y, -q.z};
-    *prev = q;
-    double v[9] = {m.m[3], m.m[7], m.m[11], q.x, q.y, q.z, q.w};
+    double v[9];
+    if (ga_traj_pose_to_tum(m, prev, v) != GA_OK)
+        return; /* not reached: no pointer is NULL */
     for (int i = 0; i < nextra; i++) v[7 + i] = extra[i];
     tio_out_stamped(o, stamp, v, 7 + nextra);
 }
@@ -332,49 +104,42 @@ int cmd_fit_main(int argc, char **argv)
     ev_traj z;
     memset(&z, 0, sizeof z);
     int rc = 2;
-    ga_mat4 *X = NULL;
+    ga_mat4 *X = NULL, *F = NULL;
+    double *res = NULL;
+    void *work = NULL;
     tio_out out = TIO_OUT_NONE, cout = TIO_OUT_NONE;
     if (ev_traj_read(val[0], &ro, &t0, &have0, &zero, &z))
         goto done;
-    double span = z.t[z.n - 1];
-    double segs = ceil(span / h);
-    if (segs < 1)
-        segs = 1;
-    if (segs > 1e6) {
-        fprintf(stderr, "garotor fit: --spacing %s makes %.0f segments (at most 1e6)\n", val[2], segs);
+    size_t n;
+    if (ga_traj_fit_count(z.t[z.n - 1], h, &n) != GA_OK) {
+        fprintf(stderr, "garotor fit: --spacing %s makes %.0f segments (at most 1e6)\n", val[2],
+                ceil(z.t[z.n - 1] / h));
         goto done;
     }
-    size_t n = (size_t)segs + 3;
     if (z.n < 4) {
         fprintf(stderr, "garotor fit: %s: %zu poses; a fit needs at least 4\n", z.in.name, z.n);
         goto done;
     }
+    size_t wsize = ga_traj_fit_workspace_size(n);
     X = malloc(n * sizeof *X);
-    if (!X) {
+    F = malloc(z.n * sizeof *F);
+    res = malloc(2 * z.n * sizeof *res);
+    work = wsize ? malloc(wsize) : NULL;
+    if (!X || !F || !res || !work) {
         fprintf(stderr, "garotor fit: out of memory\n");
         goto done;
     }
-    for (size_t j = 0, k = 0; j < n; j++) { /* start: the key nearest each knot */
-        double c = ((double)j - 1) * h;
-        while (k + 1 < z.n && fabs(z.t[k + 1] - c) <= fabs(z.t[k] - c)) k++;
-        X[j] = z.m[k];
-    }
-    if (fit(&z, X, n, h, lambda)) {
+    if (ga_traj_fit_bspline(z.t, z.m, z.n, h, lambda, work, wsize, X, n) != GA_OK) {
         fprintf(stderr, "garotor fit: the least-squares problem has no finite solution (out of memory, or a "
                         "control pose with no key near it: try a larger --spacing or --smooth)\n");
         goto done;
     }
     if (tio_out_open(&out, val[1]))
         goto done;
-    spline s = {X, n, h};
+    if (ga_traj_fit_residuals(z.t, z.m, z.n, X, n, h, F, res) != GA_OK)
+        goto done; /* not reached: the fit checked its inputs */
     ga_quat prev = {1, 0, 0, 0};
-    for (size_t k = 0; k < z.n; k++) {
-        double u;
-        size_t seg = segment(&s, z.t[k], &u);
-        ga_mat4 f = eval4(X + seg, u), e = ga_mat4_mul(ga_se3_inverse(f), z.m[k]);
-        double res[2] = {sqrt(e.m[3] * e.m[3] + e.m[7] * e.m[7] + e.m[11] * e.m[11]), ev_angle(&e)};
-        put_pose(&out, z.in.first[k], f, &prev, res, 2);
-    }
+    for (size_t k = 0; k < z.n; k++) put_pose(&out, z.in.first[k], F[k], &prev, res + 2 * k, 2);
     if (val[4]) {
         if (tio_out_open(&cout, val[4]))
             goto done;
@@ -403,6 +168,9 @@ done:
         tio_out_discard(&cout);
     }
     free(X);
+    free(F);
+    free(res);
+    free(work);
     ev_traj_free(&z);
     return rc;
 }

@@ -2,8 +2,8 @@
  * trajectories associated by time, aligned (Horn's closed form of the
  * Umeyama problem, SE(3) or Sim(3)), and their absolute and relative pose
  * errors in evo's definitions. cmd_eval.c holds the command (options,
- * reading, association, report) and the TUM reader `garotor fit` shares,
- * eval_metrics.c the numbers. Prefix ev_.
+ * reading, report) and the TUM reader `garotor fit` shares; the numbers
+ * are the library's (garotor/trajectory.h). Prefix ev_.
  */
 #ifndef GAROTOR_TOOLS_EVAL_H
 #define GAROTOR_TOOLS_EVAL_H
@@ -44,29 +44,5 @@ int cmd_eval_main(int argc, char **argv);
 
 /** `garotor fit` (cmd_fit.c), argv after the word `fit`: the exit status. */
 int cmd_fit_main(int argc, char **argv);
-
-/** The statistics evo prints for an error array. */
-typedef struct {
-    double max, mean, median, min, rmse, sse, std;
-} ev_stats;
-
-/** The statistics of err[0..n-1], n >= 1, as numpy computes them (median:
- *  the mean of the two middle values for even n; std: the population
- *  deviation). err is sorted in place. */
-void ev_statistics(double *err, size_t n, ev_stats *out);
-
-/** The alignment of est to ref minimising sum |s R est_i + t - ref_i|^2 over
- *  the positions (Umeyama 1991; s = 1 unless with_scale), through Horn's
- *  unit quaternion (1987): R is the eigenvector of the largest eigenvalue of
- *  his 4x4 matrix N, found by Jacobi's method, and s = tr(R^T C) / var(est)
- *  with C the cross-covariance (Umeyama's tr(D S)). Writes T = [R, t; 0 1]
- *  and s. -1 when the rotation is not unique (the largest eigenvalue of N is
- *  double: the positions are collinear or fewer than 3 distinct), or the
- *  estimate's positions do not spread (var 0) for the scale. */
-int ev_align(const ga_mat4 *ref, const ga_mat4 *est, size_t n, int with_scale, ga_mat4 *T, double *s);
-
-/** The rotation angle of the 3x3 block of m, in [0, pi]:
- *  atan2(|vee(R - R^T)| / 2, (tr R - 1) / 2). */
-double ev_angle(const ga_mat4 *m);
 
 #endif

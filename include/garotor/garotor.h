@@ -23,6 +23,7 @@
  *   path.h       interpolation schemes through key poses, and their evaluators
  *   fit.h        least-squares spheres, circles, planes and lines through points
  *   jacobian.h   Lie-group Jacobians of rigid motions (manif, gtsam, Sophus)
+ *   trajectory.h trajectories compared (evo's APE, RPE, alignment) and fitted (B-spline)
  */
 #ifndef GAROTOR_H
 #define GAROTOR_H
@@ -41,5 +42,6 @@
 #include "path.h"
 #include "fit.h"
 #include "jacobian.h"
+#include "trajectory.h"
 
 #endif

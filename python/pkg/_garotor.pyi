@@ -343,3 +343,47 @@ class _UFuncs(types.ModuleType):
     norm2: np.ufunc
 
 ufunc: _UFuncs
+
+# ---- trajectories (docs/python.md, "Evaluating and fitting trajectories") ----
+# evaluate's dict: pairs (int), ref_index and est_index (int64 arrays), scale
+# (float), transform (4, 4), and per error kind a dict of "errors" (array) and
+# the floats max, mean, median, min, rmse, sse, std
+def evaluate(
+    ref: ArrayLike,
+    est: ArrayLike,
+    *,
+    max_diff: float = 0.01,
+    offset: float = 0.0,
+    align: str = "none",
+    delta: int = 1,
+    all_pairs: bool = False,
+    angle: str = "deg",
+    normalize: bool = False,
+) -> dict[str, Any]: ...
+def ape(
+    ref: ArrayLike,
+    est: ArrayLike,
+    *,
+    max_diff: float = 0.01,
+    offset: float = 0.0,
+    align: str = "none",
+    delta: int = 1,
+    all_pairs: bool = False,
+    angle: str = "deg",
+    normalize: bool = False,
+) -> dict[str, Any]: ...
+def rpe(
+    ref: ArrayLike,
+    est: ArrayLike,
+    *,
+    max_diff: float = 0.01,
+    offset: float = 0.0,
+    align: str = "none",
+    delta: int = 1,
+    all_pairs: bool = False,
+    angle: str = "deg",
+    normalize: bool = False,
+) -> dict[str, Any]: ...
+def align(ref: ArrayLike, est: ArrayLike, *, scale: bool = False) -> tuple[_F, float]: ...
+# fit's dict: fitted (n, 8), residuals (n, 2), controls (m, 8), spacing (float)
+def fit(poses: ArrayLike, spacing: float, *, smooth: float = 0.0, normalize: bool = False) -> dict[str, Any]: ...
