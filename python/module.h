@@ -7,7 +7,7 @@
  *   module.c       the module: its function table, PyInit__garotor
  *   kernel.c       errors, array conversion, the broadcasting kernel runner
  *   functions.c    the element-wise functions: exp, log, compose, ..., up, down
- *   path.c         the Path type
+ *   path.c         the Path type (with path_sample.c and path_keys.c: path.h)
  *   multivector.c  the Multivector type
  *   objects.c      Multivector's object methods (meet, join, read-back,
  *                  versors, projections, powers), garotor.Object, the fits
