@@ -178,7 +178,13 @@ PyObject *gpy_down(PyObject *self, PyObject *args, PyObject *kw);
 
 extern PyMethodDef gpy_jacobian_methods[];
 
-/* ---- Path (path.c) --------------------------------------------------------- */
+/* ---- Path (path.c, path.h) ---------------------------------------------------- */
+
+/* a time as the exact decimal m x 10^e it was given as (path_times.c) */
+typedef struct {
+    int64_t m;
+    int e;
+} gpy_stamp;
 
 typedef struct {
     PyObject_HEAD const ga_group *group;
@@ -193,6 +199,11 @@ typedef struct {
        it with the GIL released; taken only with the GIL released (or
        without waiting), so that no thread waits for it holding the GIL */
     PyThread_type_lock lock;
+    /* the key times as given (path.cap of them, path.n set), in seconds or,
+       with ns, nanoseconds (whole: e = 0); the path's own times are each
+       minus stamp[0], in seconds (gpy_stamp_rel), as the tool's are */
+    gpy_stamp *stamp;
+    int ns;
 } gpy_PathObject;
 
 extern PyTypeObject gpy_PathType;

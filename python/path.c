@@ -42,6 +42,7 @@ static void Path_dealloc(gpy_PathObject *self)
 {
     PyMem_Free(self->work);
     PyMem_Free(self->vel);
+    PyMem_Free(self->stamp);
     if (self->lock)
         PyThread_free_lock(self->lock);
     Py_TYPE(self)->tp_free((PyObject *)self);
@@ -93,11 +94,13 @@ static int read_velocities(const ga_group *g, PyObject *obj, size_t count, doubl
 }
 
 /* Build self's path (Path_init, Path.__setstate__) in a new workspace of
- * wbytes: n keys at times t, 4x4 matrices (mat4) or group elements; *vel
- * (nvel doubles, or NULL) becomes self's on success (kept for pickling) and
- * *vel NULL. 0, or -1 with an exception. */
+ * wbytes: n keys at the relative times t, 4x4 matrices (mat4) or group
+ * elements; *vel (nvel doubles, or NULL) becomes self's on success (kept
+ * for pickling) and *vel NULL, as *stamp (the times as given, room for the
+ * capacity's) does with ns. 0, or -1 with an exception. */
 static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme, size_t n, const double *t,
-                      const void *keys, int mat4, double **vel, size_t nvel, size_t wbytes)
+                      const void *keys, int mat4, double **vel, size_t nvel, gpy_stamp **stamp, int ns,
+                      size_t wbytes)
 {
     void *work = PyMem_Malloc(wbytes);
     if (!work) {
@@ -125,16 +128,22 @@ static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme,
     self->vel = *vel;
     self->nvel = *vel ? nvel : 0;
     *vel = NULL;
+    self->stamp = *stamp;
+    self->ns = ns;
+    *stamp = NULL;
     return 0;
 }
 
 static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"times", "poses", "scheme", "group", "velocities", "capacity", NULL};
+    static char *kwlist[] = {"times",      "poses",    "scheme",    "group",
+                             "velocities", "capacity", "time_unit", NULL};
     PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None;
-    const char *sname = "screw", *gname = "cga";
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$O:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
-                                     &cobj))
+    const char *sname = "screw", *gname = "cga", *unit = NULL;
+    int ns;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$Oz:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
+                                     &cobj, &unit) ||
+        gpy_path_unit("Path", unit, &ns))
         return -1;
     if (self->work) {
         PyErr_SetString(PyExc_TypeError, "Path: already initialised");
@@ -157,7 +166,9 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     double *vel = NULL;
     size_t nvel = 0;
     ga_mat4 *keys = NULL;
-    PyArrayObject *t = gpy_as_doubles(tobj);
+    gpy_stamp *stamp = NULL;
+    double *rel = NULL;
+    PyArrayObject *t = gpy_path_times_in(tobj);
     PyArrayObject *p = t ? gpy_as_doubles(pobj) : NULL;
     if (!p)
         goto done;
@@ -184,7 +195,7 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
                      scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, (Py_ssize_t)n);
         goto done;
     }
-    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n);
+    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n), room = (size_t)n;
     if (wbytes == 0) { /* the scheme is not defined on the group (path.h) */
         PyErr_Format(PyExc_ValueError, "Path: scheme '%s' is not defined on group '%s'", sname, g->name);
         goto done;
@@ -209,21 +220,18 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
                          "Path: capacity %zd is too large: its workspace does not fit in memory", cap);
             goto done;
         }
+        room = (size_t)cap;
     }
-    const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
-    for (npy_intp i = 0; i < n; i++)
-        if (!isfinite(tv[i]) || (i > 0 && !(tv[i] > tv[i - 1]))) {
-            char why[160] = "", a[32], b[32];
-            if (isfinite(tv[i]))
-                snprintf(why, sizeof why, "%s is not after the time before it, %s (times must increase)",
-                         gpy_repr_text(tv[i], a), gpy_repr_text(tv[i - 1], b));
-            else
-                gpy_nonfinite_why("times", t, i, why, sizeof why);
-            gpy_raise_status_why("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE,
-                                 *why ? why : NULL);
-            goto done;
-        }
-    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, tv) : 0;
+    const double *pv = PyArray_DATA(p);
+    stamp = PyMem_Malloc(room * sizeof *stamp);
+    rel = PyMem_Malloc((size_t)n * sizeof *rel);
+    if (!stamp || !rel) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (gpy_path_key_times("Path", t, ns, stamp, rel))
+        goto done;
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, rel) : 0;
     if (bad) {
         PyErr_Format(
             PyExc_ValueError,
@@ -278,9 +286,11 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
         if (read_velocities(g, vobj, count, vel))
             goto done;
     }
-    rc = path_build(self, g, scheme, (size_t)n, tv, keys, 1, &vel, nvel, wbytes);
+    rc = path_build(self, g, scheme, (size_t)n, rel, keys, 1, &vel, nvel, &stamp, ns, wbytes);
 done:
     PyMem_Free(keys);
+    PyMem_Free(stamp);
+    PyMem_Free(rel);
     PyMem_Free(vel);
     Py_XDECREF(t);
     Py_XDECREF(p);
@@ -298,10 +308,10 @@ int gpy_path_ready(gpy_PathObject *self)
 
 /* ---- pickling and copying ----------------------------------------------------- */
 
-/* A path's state: the first n key times and keys (as the group holds them) */
+/* A path's state: the first n keys (as the group holds them) */
 typedef struct {
     size_t n;
-    double *t, *keys;
+    double *keys;
 } state_copy;
 
 static void copy_state(gpy_PathObject *self, void *arg)
@@ -309,13 +319,14 @@ static void copy_state(gpy_PathObject *self, void *arg)
     state_copy *c = arg;
     const ga_path *p = &self->path;
     size_t ed = p->group->elem_size / sizeof(double);
-    memcpy(c->t, p->t, c->n * sizeof(double));
     for (size_t i = 0; i < c->n; i++)
         memcpy(c->keys + i * ed, p->key + i * p->key_stride, ed * sizeof(double));
 }
 
 /* __reduce__: copyreg.__newobj__(Path), then __setstate__(state) with state
- * (group, scheme, times, keys, velocities, capacity): the keys as the group
+ * (group, scheme, times, keys, velocities, capacity, time_unit): the times
+ * as given (Path.times: float64 seconds, or int64 nanoseconds with
+ * time_unit 'ns'), the keys as the group
  * holds them ((n, elem_size / 8) doubles: a rotor's 8 coefficients on cga,
  * a 4x4 matrix on matrix and affine), the velocities given to the
  * constructor in the group's coordinates ((count, dim), or None). Built from
@@ -330,8 +341,8 @@ static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
     const ga_group *g = self->group;
     size_t n;
     gpy_path_locked(self, gpy_path_read_n, &n); /* keys are only added: the first n stay */
-    npy_intp tn = (npy_intp)n, kd[2] = {(npy_intp)n, (npy_intp)(g->elem_size / sizeof(double))};
-    PyArrayObject *t = (PyArrayObject *)PyArray_SimpleNew(1, &tn, NPY_DOUBLE);
+    npy_intp kd[2] = {(npy_intp)n, (npy_intp)(g->elem_size / sizeof(double))};
+    PyArrayObject *t = gpy_path_times_array(self, n);
     PyArrayObject *k = t ? (PyArrayObject *)PyArray_SimpleNew(2, kd, NPY_DOUBLE) : NULL;
     PyObject *v = Py_None, *copyreg = k ? PyImport_ImportModule("copyreg") : NULL;
     PyObject *newobj = copyreg ? PyObject_GetAttrString(copyreg, "__newobj__") : NULL;
@@ -344,11 +355,11 @@ static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
     }
     PyObject *r = NULL;
     if (newobj && v) {
-        state_copy sc = {n, PyArray_DATA(t), PyArray_DATA(k)};
+        state_copy sc = {n, PyArray_DATA(k)};
         gpy_path_locked(self, copy_state, &sc);
-        r = Py_BuildValue("O(O)(ssOOOn)", newobj, (PyObject *)Py_TYPE(self), g->name,
+        r = Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
                           ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                          (Py_ssize_t)self->path.cap);
+                          (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
     }
     Py_XDECREF(t);
     Py_XDECREF(k);
@@ -374,9 +385,17 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         PyErr_SetString(PyExc_TypeError, "Path: already initialised");
         return NULL;
     }
-    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) != 6 ||
-        !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)))
-        return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity)");
+    /* a state of 6, of before time_unit: seconds */
+    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 7 ||
+        !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)) ||
+        (PyTuple_GET_SIZE(state) == 7 && !PyUnicode_Check(PyTuple_GET_ITEM(state, 6))))
+        return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity, time_unit)");
+    int ns = 0;
+    if (PyTuple_GET_SIZE(state) == 7) {
+        const char *unit = PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 6));
+        if (!unit || gpy_path_unit("Path: state", unit, &ns))
+            return NULL;
+    }
     const char *gname = PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 0));
     const char *sname = gname ? PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 1)) : NULL;
     if (!sname)
@@ -393,7 +412,9 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
     PyObject *ret = NULL;
     double *vel = NULL;
     size_t nvel = 0, ed = g->elem_size / sizeof(double);
-    PyArrayObject *t = gpy_as_doubles(PyTuple_GET_ITEM(state, 2));
+    gpy_stamp *stamp = NULL;
+    double *rel = NULL;
+    PyArrayObject *t = gpy_path_times_in(PyTuple_GET_ITEM(state, 2));
     PyArrayObject *k = t ? gpy_as_doubles(PyTuple_GET_ITEM(state, 3)) : NULL;
     PyArrayObject *v = NULL;
     if (!k)
@@ -447,11 +468,21 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         state_error("the capacity is too large, or the scheme is not defined on the group");
         goto done;
     }
-    if (path_build(self, g, scheme, (size_t)n, PyArray_DATA(t), kv, 0, &vel, nvel, wbytes) == 0) {
+    stamp = PyMem_Malloc((size_t)cap * sizeof *stamp);
+    rel = PyMem_Malloc((size_t)n * sizeof *rel);
+    if (!stamp || !rel) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (gpy_path_key_times("Path: state", t, ns, stamp, rel))
+        goto done;
+    if (path_build(self, g, scheme, (size_t)n, rel, kv, 0, &vel, nvel, &stamp, ns, wbytes) == 0) {
         Py_INCREF(Py_None);
         ret = Py_None;
     }
 done:
+    PyMem_Free(stamp);
+    PyMem_Free(rel);
     PyMem_Free(vel);
     Py_XDECREF(t);
     Py_XDECREF(k);

@@ -5,6 +5,7 @@
  *                  type's tables
  *   path_sample.c  sample, sample_pose, velocity, acceleration, jerk
  *   path_keys.c    append and the attributes
+ *   path_times.c   the times: stamps as given, relative seconds
  */
 #ifndef GAROTOR_PYTHON_PATH_H
 #define GAROTOR_PYTHON_PATH_H
@@ -43,5 +44,41 @@ PyObject *gpy_path_get_scheme(gpy_PathObject *self, void *c);
 PyObject *gpy_path_get_range(gpy_PathObject *self, void *c);
 PyObject *gpy_path_get_group(gpy_PathObject *self, void *c);
 PyObject *gpy_path_repr(gpy_PathObject *self);
+/* the first count key times as given: float64 seconds, or int64
+ * nanoseconds (ns); a new writeable array, NULL with an exception */
+PyArrayObject *gpy_path_times_array(gpy_PathObject *self, size_t count);
+
+/* ---- the times (path_times.c) ---- */
+
+/* (a - ref) x 10^-9 (ns) or x 1 in seconds, the exact difference rounded
+ * once to a double: the tool's relative time (ic_rel_time) */
+double gpy_stamp_rel(gpy_stamp a, gpy_stamp ref, int ns);
+/* x as its shortest decimal (with ns, whole nanoseconds, e = 0): 0, or -1
+ * for a NaN or an infinity, -2 (ns) not whole, -3 (ns) beyond an int64 */
+int gpy_stamp_of_double(double x, int ns, gpy_stamp *s);
+/* s as the nearest double */
+double gpy_stamp_double(gpy_stamp s);
+/* s as a Python int (ns) or float */
+PyObject *gpy_stamp_value(gpy_stamp s, int ns);
+/* s as text for messages: repr of its double, or its integer (ns) */
+const char *gpy_stamp_text(gpy_stamp s, int ns, char buf[32]);
+/* times given: an array of a signed integer dtype as int64 (exact), any
+ * other as gpy_as_doubles reads it; C-contiguous. NULL with an exception. */
+PyArrayObject *gpy_path_times_in(PyObject *obj);
+/* element i of such an array as a stamp (gpy_stamp_of_double's returns) */
+int gpy_path_stamp_at(PyArrayObject *a, npy_intp i, int ns, gpy_stamp *s);
+/* time_unit= "s" (or NULL) or "ns" into *ns; -1 with a ValueError */
+int gpy_path_unit(const char *what, const char *name, int *ns);
+/* the 1-d times t of n keys into stamp[0..n) and rel[0..n) (relative
+ * seconds), each checked: finite, whole with ns, increasing. -1 with an
+ * exception naming what. */
+int gpy_path_key_times(const char *what, PyArrayObject *t, int ns, gpy_stamp *stamp, double *rel);
+/* t (any shape) as the float64 array of its times relative to the first
+ * key's, in seconds (t itself, converted, when that is the identity: no
+ * ns and a first key at 0); *given the array of t as read, or NULL when
+ * none was made. NULL with an exception. */
+PyObject *gpy_path_rel_times(gpy_PathObject *self, PyObject *t, PyArrayObject **given);
+/* the index of the key at the relative time t (the first at or after it) */
+size_t gpy_path_key_index(const ga_path *p, double t);
 
 #endif

@@ -8,28 +8,39 @@
 /* ---- sample, velocity, acceleration ---------------------------------------- */
 
 /* A path kernel's context: the path, and its range when an element failed,
- * read there under the lock for explain_time, which runs after it. */
+ * read there under the lock for explain_time, which runs after it (with the
+ * keys' times as given, and the failed element's flat index k in given, the
+ * times as given where they were converted: gpy_path_rel_times). */
 typedef struct {
     const ga_path *path;
     int range_status;
     double t0, t1;
     ga_frame frame; /* velocity, acceleration, jerk: the frame= asked */
+    const gpy_stamp *stamp;
+    int ns;
+    PyArrayObject *given;
+    npy_intp k;
+    gpy_stamp at0, at1;
 } path_ctx;
 
-static int path_failed(path_ctx *c, int status)
+static int path_failed(path_ctx *c, int status, npy_intp k)
 {
     c->range_status = ga_path_range(c->path, &c->t0, &c->t1);
+    if (c->range_status == GA_OK) {
+        c->at0 = c->stamp[gpy_path_key_index(c->path, c->t0)];
+        c->at1 = c->stamp[gpy_path_key_index(c->path, c->t1)];
+    }
+    c->k = k;
     return status;
 }
 
 static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
 {
-    (void)k;
     const ga_path *p = ((path_ctx *)ctx)->path;
     double e[GA_GROUP_MAX_ELEM];
     int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
     if (st != GA_OK)
-        return path_failed(ctx, st);
+        return path_failed(ctx, st, k);
     gpy_mat_put(p->group->to_mat4(e), out);
     return GA_OK;
 }
@@ -37,15 +48,15 @@ static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
 /* The derivative of order o (1 velocity, 2 acceleration, 3 jerk) in the
  * context's frame, computed alone (ga_path_derivatives: the tool's --with
  * columns bit for bit; the body velocity is ga_path_velocity's). */
-static int k_derivative(void *ctx, const double *const *in, double *out, int o)
+static int k_derivative(void *ctx, const double *const *in, double *out, npy_intp k, int o)
 {
-    const path_ctx *c = ctx;
+    path_ctx *c = ctx;
     const ga_path *p = c->path;
     double x[GA_GROUP_MAX_DIM];
     int st = ga_path_derivatives(p, in[0][0], c->frame, o == 1 ? x : NULL, o == 2 ? x : NULL,
                                  o == 3 ? x : NULL);
     if (st != GA_OK)
-        return path_failed(ctx, st);
+        return path_failed(c, st, k);
     if (p->group->rigid)
         memcpy(out, x, 6 * sizeof *x);
     else
@@ -54,18 +65,15 @@ static int k_derivative(void *ctx, const double *const *in, double *out, int o)
 }
 static int k_velocity(void *ctx, const double *const *in, double *out, npy_intp k)
 {
-    (void)k;
-    return k_derivative(ctx, in, out, 1);
+    return k_derivative(ctx, in, out, k, 1);
 }
 static int k_acceleration(void *ctx, const double *const *in, double *out, npy_intp k)
 {
-    (void)k;
-    return k_derivative(ctx, in, out, 2);
+    return k_derivative(ctx, in, out, k, 2);
 }
 static int k_jerk(void *ctx, const double *const *in, double *out, npy_intp k)
 {
-    (void)k;
-    return k_derivative(ctx, in, out, 3);
+    return k_derivative(ctx, in, out, k, 3);
 }
 
 /* A time the path is not defined at: outside its range (a NaN or an
@@ -77,9 +85,16 @@ static void explain_time(void *ctx, const double *const *in, int status, char *w
     if (status == GA_ERR_NOTFINITE || pc->range_status != GA_OK)
         return;
     char a[32], b[32], c[32];
+    const char *given = gpy_repr_text(t, a); /* t as given: t itself where not converted */
+    if (pc->given && pc->k >= 0 && pc->k < PyArray_SIZE(pc->given)) {
+        if (PyArray_TYPE(pc->given) == NPY_INT64)
+            snprintf(a, sizeof a, "%lld", (long long)((const int64_t *)PyArray_DATA(pc->given))[pc->k]);
+        else
+            gpy_repr_text(((const double *)PyArray_DATA(pc->given))[pc->k], a);
+    }
     if (t < t0 || t > t1)
-        snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", gpy_repr_text(t, a),
-                 gpy_repr_text(t0, b), gpy_repr_text(t1, c));
+        snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", given,
+                 gpy_stamp_text(pc->at0, pc->ns, b), gpy_stamp_text(pc->at1, pc->ns, c));
 }
 
 /* frame= of velocity, acceleration, jerk: "body", "spatial" or "world" */
@@ -116,7 +131,8 @@ static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, c
                      : PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out)) ||
         !gpy_path_ready(self))
         return NULL;
-    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY};
+    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0,    GA_FRAME_BODY, self->stamp,
+                  self->ns,    NULL,       -1,  {0, 0}, {0, 0}};
     if (derivative && parse_frame(what, self->group, frame, &c.frame))
         return NULL;
     gpy_kernel_call kc = {.what = what,
@@ -127,7 +143,11 @@ static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, c
                           .ctx = &c,
                           .explain = explain_time,
                           .lock = self->lock};
-    return gpy_run_kernel(&kc, &t, out);
+    PyObject *rel = gpy_path_rel_times(self, t, &c.given);
+    PyObject *r = rel ? gpy_run_kernel(&kc, &rel, out) : NULL;
+    Py_XDECREF(rel);
+    Py_XDECREF(c.given);
+    return r;
 }
 
 PyObject *gpy_path_sample(gpy_PathObject *self, PyObject *args, PyObject *kw)
@@ -173,7 +193,7 @@ static int k_sample_pose(void *ctx, const double *const *in, double *out, npy_in
     double e[GA_GROUP_MAX_ELEM], q[4], t[3];
     int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
     if (st != GA_OK)
-        return path_failed(&c->pc, st);
+        return path_failed(&c->pc, st, k);
     p->group->to_qt(e, q, t);
     if (c->run == 0 || k % c->run == 0) {
         c->prev[0] = 1.0;
@@ -198,10 +218,14 @@ PyObject *gpy_path_sample_pose(gpy_PathObject *self, PyObject *args, PyObject *k
                      self->group->name);
         return NULL;
     }
-    PyArrayObject *a = gpy_as_doubles(t);
+    PyArrayObject *given;
+    PyArrayObject *a = (PyArrayObject *)gpy_path_rel_times(self, t, &given);
     if (!a)
         return NULL;
-    pose_path_ctx c = {{&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY}, 0, {1, 0, 0, 0}};
+    pose_path_ctx c = {
+        {&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY, self->stamp, self->ns, given, -1, {0, 0}, {0, 0}},
+        0,
+        {1, 0, 0, 0}};
     if (PyArray_NDIM(a) >= 1)
         c.run = PyArray_DIM(a, PyArray_NDIM(a) - 1);
     gpy_kernel_call kc = {.what = "Path.sample_pose",
@@ -214,5 +238,6 @@ PyObject *gpy_path_sample_pose(gpy_PathObject *self, PyObject *args, PyObject *k
                           .lock = self->lock};
     PyObject *r = gpy_run_kernel(&kc, (PyObject **)&a, out);
     Py_DECREF(a);
+    Py_XDECREF(given);
     return r;
 }
