@@ -9,6 +9,7 @@
  */
 #include "path.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,8 +91,55 @@ static int times10(int64_t *m)
     return 1;
 }
 
+#if defined(__SIZEOF_INT128__) && LDBL_MANT_DIG >= 64
+/* The fast route, where 128-bit integers and 64-bit long doubles are: a -
+ * ref exactly in 128 bits, then m x 10^p approximated in long double with
+ * two roundings (m, then the product or quotient by 10^p, exact for
+ * |p| <= 27): a relative error below 2^-62. Its double d is the correct
+ * rounding unless the approximation lies within that error of the midpoint
+ * between d and its neighbour: 1 and *out, or 0 (then the exact routes). */
+static int rel_fast(gpy_stamp a, gpy_stamp ref, int shift, double *out)
+{
+    const __int128 big = (__int128)1 << 120;
+    int at = a.e < ref.e ? a.e : ref.e, p;
+    __int128 ma = a.m, mb = ref.m;
+    for (int e = a.e; e > at; e--)
+        if ((ma *= 10) > big || ma < -big)
+            return 0;
+    for (int e = ref.e; e > at; e--)
+        if ((mb *= 10) > big || mb < -big)
+            return 0;
+    __int128 m = ma - mb;
+    p = at + shift;
+    if (m == 0) {
+        *out = 0.0;
+        return 1;
+    }
+    if (p < -27 || p > 27)
+        return 0;
+    long double ten = 1.0L;
+    for (int k = p < 0 ? -p : p; k > 0; k--) ten *= 10.0L; /* exact: 5^27 < 2^64 */
+    long double r = p < 0 ? (long double)m / ten : (long double)m * ten;
+    double d = (double)r;
+    if (!isnormal(d) || fabs(d) >= DBL_MAX)
+        return 0;
+    long double diff = r - (long double)d; /* exact */
+    double other = nextafter(d, diff >= 0 ? INFINITY : -INFINITY);
+    long double mid = ((long double)d + (long double)other) / 2; /* exact */
+    if (!(fabsl(mid - r) > fabsl(r) * 0x1p-61L))
+        return 0;
+    *out = d;
+    return 1;
+}
+#endif
+
 double gpy_stamp_rel(gpy_stamp a, gpy_stamp ref, int ns)
 {
+#if defined(__SIZEOF_INT128__) && LDBL_MANT_DIG >= 64
+    double fast;
+    if (rel_fast(a, ref, ns ? -9 : 0, &fast))
+        return fast;
+#endif
     int shift = ns ? -9 : 0, at = a.e < ref.e ? a.e : ref.e;
     int64_t ma = a.m, mb = ref.m;
     int ok = 1;
@@ -165,8 +213,7 @@ PyObject *gpy_path_rel_times(gpy_PathObject *self, PyObject *t, PyArrayObject **
         return NULL;
     if (!self->ns && ref.m == 0 && PyArray_TYPE(a) == NPY_DOUBLE) /* t - 0: t itself */
         return (PyObject *)a;
-    PyArrayObject *r =
-        (PyArrayObject *)PyArray_SimpleNew(PyArray_NDIM(a), PyArray_DIMS(a), NPY_DOUBLE);
+    PyArrayObject *r = (PyArrayObject *)PyArray_SimpleNew(PyArray_NDIM(a), PyArray_DIMS(a), NPY_DOUBLE);
     if (!r) {
         Py_DECREF(a);
         return NULL;

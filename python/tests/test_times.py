@@ -121,3 +121,33 @@ def test_append_ns(rng):
         p.append(t[4], P[4])
     with pytest.raises(ValueError, match="whole nanoseconds"):
         p.append(2.5, P[4])
+
+
+def test_relative_times_correctly_rounded(rng):
+    """Each sample time minus the first key's, from their shortest decimals,
+    rounded once (Fraction's float is): a Path at those relative times gives
+    the same samples bit for bit, over times of many magnitudes (the fast
+    route of path_times.c and its exact fallbacks)."""
+    from decimal import Decimal
+    from fractions import Fraction
+
+    def dec(x):
+        return Fraction(Decimal(repr(float(x))))
+
+    P = tum_keys(rng, 2)
+    for t0, span in ((1.2345678901234567, 1e5), (1700000000.123456, 3600.0), (-3.0e-7, 1e-3),
+                     (123456.789, 1e-6), (1e15 + 0.5, 1e3), (0.1, 0.2)):
+        t1 = t0 + span
+        at = np.concatenate([rng.uniform(t0, t1, size=300), [t0, t1]])
+        at = at[(at >= t0) & (at <= t1)]
+        rel = np.array([float(dec(x) - dec(t0)) for x in at])
+        r1 = float(dec(t1) - dec(t0))
+        p = garotor.Path([t0, t1], P)
+        q = garotor.Path([0.0, r1], P)
+        assert np.array_equal(p.sample(at), q.sample(rel)), t0
+        ns0 = 1_700_000_000_000_000_007
+        ins = np.sort(rng.integers(ns0, ns0 + 10**15, size=200))
+        pn = garotor.Path(np.array([ns0, ns0 + 10**15]), P, time_unit="ns")
+        qn = garotor.Path([0.0, 1e6], P)
+        reln = np.array([float(Fraction(int(x) - ns0, 10**9)) for x in ins])
+        assert np.array_equal(pn.sample(ins), qn.sample(reln))
