@@ -7,7 +7,7 @@
  *   module.c       the module: its function table, PyInit__garotor
  *   kernel.c       errors, array conversion, the broadcasting kernel runner
  *   functions.c    the element-wise functions: exp, log, compose, ..., up, down
- *   path.c         the Path type
+ *   path.c         the Path type (with path_sample.c and path_keys.c: path.h)
  *   multivector.c  the Multivector type
  *   objects.c      Multivector's object methods (meet, join, read-back,
  *                  versors, projections, powers), garotor.Object, the fits
@@ -193,7 +193,13 @@ extern PyMethodDef gpy_jacobian_methods[];
 
 extern PyMethodDef gpy_trajectory_methods[];
 
-/* ---- Path (path.c) --------------------------------------------------------- */
+/* ---- Path (path.c, path.h) ---------------------------------------------------- */
+
+/* a time as the exact decimal m x 10^e it was given as (path_times.c) */
+typedef struct {
+    int64_t m;
+    int e;
+} gpy_stamp;
 
 typedef struct {
     PyObject_HEAD const ga_group *group;
@@ -208,6 +214,11 @@ typedef struct {
        it with the GIL released; taken only with the GIL released (or
        without waiting), so that no thread waits for it holding the GIL */
     PyThread_type_lock lock;
+    /* the key times as given (path.cap of them, path.n set), in seconds or,
+       with ns, nanoseconds (whole: e = 0); the path's own times are each
+       minus stamp[0], in seconds (gpy_stamp_rel), as the tool's are */
+    gpy_stamp *stamp;
+    int ns;
 } gpy_PathObject;
 
 extern PyTypeObject gpy_PathType;

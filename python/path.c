@@ -1,25 +1,18 @@
 /* python/path.c: garotor.Path, a path through key poses (ga_path,
- * docs/python.md): its construction from numpy arrays, sample, velocity and
- * acceleration through gpy_run_kernel (kernel.c), append, and the
- * attributes.
+ * docs/python.md): its lock, its construction from numpy arrays (the
+ * checks of times, poses and velocities), pickling and copying, and the
+ * type's tables. Sampling and the derivatives are path_sample.c's, append
+ * and the attributes path_keys.c's (path.h).
  */
-#include "module.h"
+#include "path.h"
 
 #include <math.h>
 
 /* ---- the lock ---------------------------------------------------------- */
 
-/* Path.append changes a path (its keys, segments and n) that another thread
- * may be reading with the GIL released (sample, velocity, acceleration in
- * gpy_run_kernel's loop), so each Path has a lock, held by both. No thread
- * waits for it while holding the GIL: one holding the lock and waiting for
- * the GIL, and one holding the GIL and waiting for the lock, would wait
- * forever. f runs with the lock held and is C only (no Python API, as the
- * GIL may be released): taken at once where it is free, the GIL is kept;
- * else the wait (and f) happen with the GIL released. */
-typedef void (*path_fn)(gpy_PathObject *self, void *arg);
+/* the lock (path.h says why) */
 
-static void path_locked(gpy_PathObject *self, path_fn f, void *arg)
+void gpy_path_locked(gpy_PathObject *self, gpy_path_fn f, void *arg)
 {
     if (PyThread_acquire_lock(self->lock, NOWAIT_LOCK)) {
         f(self, arg);
@@ -49,6 +42,7 @@ static void Path_dealloc(gpy_PathObject *self)
 {
     PyMem_Free(self->work);
     PyMem_Free(self->vel);
+    PyMem_Free(self->stamp);
     if (self->lock)
         PyThread_free_lock(self->lock);
     Py_TYPE(self)->tp_free((PyObject *)self);
@@ -100,11 +94,13 @@ static int read_velocities(const ga_group *g, PyObject *obj, size_t count, doubl
 }
 
 /* Build self's path (Path_init, Path.__setstate__) in a new workspace of
- * wbytes: n keys at times t, 4x4 matrices (mat4) or group elements; *vel
- * (nvel doubles, or NULL) becomes self's on success (kept for pickling) and
- * *vel NULL. 0, or -1 with an exception. */
+ * wbytes: n keys at the relative times t, 4x4 matrices (mat4) or group
+ * elements; *vel (nvel doubles, or NULL) becomes self's on success (kept
+ * for pickling) and *vel NULL, as *stamp (the times as given, room for the
+ * capacity's) does with ns. 0, or -1 with an exception. */
 static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme, size_t n, const double *t,
-                      const void *keys, int mat4, double **vel, size_t nvel, size_t wbytes)
+                      const void *keys, int mat4, double **vel, size_t nvel, gpy_stamp **stamp, int ns,
+                      size_t wbytes)
 {
     void *work = PyMem_Malloc(wbytes);
     if (!work) {
@@ -132,16 +128,22 @@ static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme,
     self->vel = *vel;
     self->nvel = *vel ? nvel : 0;
     *vel = NULL;
+    self->stamp = *stamp;
+    self->ns = ns;
+    *stamp = NULL;
     return 0;
 }
 
 static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"times", "poses", "scheme", "group", "velocities", "capacity", NULL};
+    static char *kwlist[] = {"times",      "poses",    "scheme",    "group",
+                             "velocities", "capacity", "time_unit", NULL};
     PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None;
-    const char *sname = "screw", *gname = "cga";
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$O:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
-                                     &cobj))
+    const char *sname = "screw", *gname = "cga", *unit = NULL;
+    int ns;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$Oz:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
+                                     &cobj, &unit) ||
+        gpy_path_unit("Path", unit, &ns))
         return -1;
     if (self->work) {
         PyErr_SetString(PyExc_TypeError, "Path: already initialised");
@@ -164,7 +166,9 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     double *vel = NULL;
     size_t nvel = 0;
     ga_mat4 *keys = NULL;
-    PyArrayObject *t = gpy_as_doubles(tobj);
+    gpy_stamp *stamp = NULL;
+    double *rel = NULL;
+    PyArrayObject *t = gpy_path_times_in(tobj);
     PyArrayObject *p = t ? gpy_as_doubles(pobj) : NULL;
     if (!p)
         goto done;
@@ -191,7 +195,7 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
                      scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, (Py_ssize_t)n);
         goto done;
     }
-    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n);
+    size_t wbytes = ga_path_workspace_size(g, scheme, (size_t)n), room = (size_t)n;
     if (wbytes == 0) { /* the scheme is not defined on the group (path.h) */
         PyErr_Format(PyExc_ValueError, "Path: scheme '%s' is not defined on group '%s'", sname, g->name);
         goto done;
@@ -216,21 +220,18 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
                          "Path: capacity %zd is too large: its workspace does not fit in memory", cap);
             goto done;
         }
+        room = (size_t)cap;
     }
-    const double *tv = PyArray_DATA(t), *pv = PyArray_DATA(p);
-    for (npy_intp i = 0; i < n; i++)
-        if (!isfinite(tv[i]) || (i > 0 && !(tv[i] > tv[i - 1]))) {
-            char why[160] = "", a[32], b[32];
-            if (isfinite(tv[i]))
-                snprintf(why, sizeof why, "%s is not after the time before it, %s (times must increase)",
-                         gpy_repr_text(tv[i], a), gpy_repr_text(tv[i - 1], b));
-            else
-                gpy_nonfinite_why("times", t, i, why, sizeof why);
-            gpy_raise_status_why("Path: times", 1, &n, i, isfinite(tv[i]) ? GA_ERR_ARG : GA_ERR_NOTFINITE,
-                                 *why ? why : NULL);
-            goto done;
-        }
-    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, tv) : 0;
+    const double *pv = PyArray_DATA(p);
+    stamp = PyMem_Malloc(room * sizeof *stamp);
+    rel = PyMem_Malloc((size_t)n * sizeof *rel);
+    if (!stamp || !rel) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (gpy_path_key_times("Path", t, ns, stamp, rel))
+        goto done;
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, rel) : 0;
     if (bad) {
         PyErr_Format(
             PyExc_ValueError,
@@ -285,16 +286,18 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
         if (read_velocities(g, vobj, count, vel))
             goto done;
     }
-    rc = path_build(self, g, scheme, (size_t)n, tv, keys, 1, &vel, nvel, wbytes);
+    rc = path_build(self, g, scheme, (size_t)n, rel, keys, 1, &vel, nvel, &stamp, ns, wbytes);
 done:
     PyMem_Free(keys);
+    PyMem_Free(stamp);
+    PyMem_Free(rel);
     PyMem_Free(vel);
     Py_XDECREF(t);
     Py_XDECREF(p);
     return rc;
 }
 
-static int path_ready(gpy_PathObject *self)
+int gpy_path_ready(gpy_PathObject *self)
 {
     if (!self->work) {
         PyErr_SetString(PyExc_ValueError, "Path: not initialised");
@@ -303,411 +306,12 @@ static int path_ready(gpy_PathObject *self)
     return 1;
 }
 
-/* ---- sample, velocity, acceleration ---------------------------------------- */
-
-/* A path kernel's context: the path, and its range when an element failed,
- * read there under the lock for explain_time, which runs after it. */
-typedef struct {
-    const ga_path *path;
-    int range_status;
-    double t0, t1;
-    ga_frame frame; /* velocity, acceleration, jerk: the frame= asked */
-} path_ctx;
-
-static int path_failed(path_ctx *c, int status)
-{
-    c->range_status = ga_path_range(c->path, &c->t0, &c->t1);
-    return status;
-}
-
-static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
-{
-    (void)k;
-    const ga_path *p = ((path_ctx *)ctx)->path;
-    double e[GA_GROUP_MAX_ELEM];
-    int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
-    if (st != GA_OK)
-        return path_failed(ctx, st);
-    gpy_mat_put(p->group->to_mat4(e), out);
-    return GA_OK;
-}
-
-/* The derivative of order o (1 velocity, 2 acceleration, 3 jerk) in the
- * context's frame, computed alone (ga_path_derivatives: the tool's --with
- * columns bit for bit; the body velocity is ga_path_velocity's). */
-static int k_derivative(void *ctx, const double *const *in, double *out, int o)
-{
-    const path_ctx *c = ctx;
-    const ga_path *p = c->path;
-    double x[GA_GROUP_MAX_DIM];
-    int st = ga_path_derivatives(p, in[0][0], c->frame, o == 1 ? x : NULL, o == 2 ? x : NULL,
-                                 o == 3 ? x : NULL);
-    if (st != GA_OK)
-        return path_failed(ctx, st);
-    if (p->group->rigid)
-        memcpy(out, x, 6 * sizeof *x);
-    else
-        gpy_mat_put(p->group->hat(x), out);
-    return GA_OK;
-}
-static int k_velocity(void *ctx, const double *const *in, double *out, npy_intp k)
-{
-    (void)k;
-    return k_derivative(ctx, in, out, 1);
-}
-static int k_acceleration(void *ctx, const double *const *in, double *out, npy_intp k)
-{
-    (void)k;
-    return k_derivative(ctx, in, out, 2);
-}
-static int k_jerk(void *ctx, const double *const *in, double *out, npy_intp k)
-{
-    (void)k;
-    return k_derivative(ctx, in, out, 3);
-}
-
-/* A time the path is not defined at: outside its range (a NaN or an
- * infinity does not come here: the loop refuses it first). */
-static void explain_time(void *ctx, const double *const *in, int status, char *why, size_t size)
-{
-    const path_ctx *pc = ctx;
-    double t0 = pc->t0, t1 = pc->t1, t = in[0][0];
-    if (status == GA_ERR_NOTFINITE || pc->range_status != GA_OK)
-        return;
-    char a[32], b[32], c[32];
-    if (t < t0 || t > t1)
-        snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", gpy_repr_text(t, a),
-                 gpy_repr_text(t0, b), gpy_repr_text(t1, c));
-}
-
-/* frame= of velocity, acceleration, jerk: "body", "spatial" or "world" */
-static int parse_frame(const char *what, const ga_group *g, const char *name, ga_frame *f)
-{
-    if (!name || strcmp(name, "body") == 0)
-        *f = GA_FRAME_BODY;
-    else if (strcmp(name, "spatial") == 0)
-        *f = GA_FRAME_SPATIAL;
-    else if (strcmp(name, "world") == 0)
-        *f = GA_FRAME_WORLD;
-    else {
-        PyErr_Format(PyExc_ValueError, "%s: frame must be 'body', 'spatial' or 'world', not '%s'", what,
-                     name);
-        return -1;
-    }
-    if (*f == GA_FRAME_WORLD && g && !g->rigid) {
-        PyErr_Format(PyExc_ValueError, "%s: frame='world' needs a rigid group (cga or matrix), not '%s'",
-                     what, g->name);
-        return -1;
-    }
-    return 0;
-}
-
-static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, const char *what,
-                           gpy_kernel_fn kernel, gpy_core outcore)
-{
-    static char *kwlist[] = {"t", "out", NULL};
-    static char *kwlist_frame[] = {"t", "frame", "out", NULL};
-    PyObject *t, *out = NULL;
-    const char *frame = NULL;
-    int derivative = kernel != k_sample;
-    if (!(derivative ? PyArg_ParseTupleAndKeywords(args, kw, "O|$zO", kwlist_frame, &t, &frame, &out)
-                     : PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out)) ||
-        !path_ready(self))
-        return NULL;
-    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY};
-    if (derivative && parse_frame(what, self->group, frame, &c.frame))
-        return NULL;
-    gpy_kernel_call kc = {.what = what,
-                          .nin = 1,
-                          .in = {{.ncore = 0, .name = "t"}},
-                          .out = outcore,
-                          .kernel = kernel,
-                          .ctx = &c,
-                          .explain = explain_time,
-                          .lock = self->lock};
-    return gpy_run_kernel(&kc, &t, out);
-}
-
-static PyObject *Path_sample(gpy_PathObject *self, PyObject *args, PyObject *kw)
-{
-    return path_call(self, args, kw, "Path.sample", k_sample, (gpy_core)GPY_CORE2(4, 4, NULL));
-}
-
-static PyObject *Path_velocity(gpy_PathObject *self, PyObject *args, PyObject *kw)
-{
-    return path_call(self, args, kw, "Path.velocity", k_velocity,
-                     self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
-                                                        : (gpy_core)GPY_CORE1(6, NULL));
-}
-
-static PyObject *Path_acceleration(gpy_PathObject *self, PyObject *args, PyObject *kw)
-{
-    return path_call(self, args, kw, "Path.acceleration", k_acceleration,
-                     self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
-                                                        : (gpy_core)GPY_CORE1(6, NULL));
-}
-
-static PyObject *Path_jerk(gpy_PathObject *self, PyObject *args, PyObject *kw)
-{
-    return path_call(self, args, kw, "Path.jerk", k_jerk,
-                     self->group && !self->group->rigid ? (gpy_core)GPY_CORE2(4, 4, NULL)
-                                                        : (gpy_core)GPY_CORE1(6, NULL));
-}
-
-/* Path.sample_pose: the pose x y z qx qy qz qw of each sample from the
- * group's own rotation and translation (to_qt, as `garotor interp --format
- * pose` writes it), the quaternion's sign following the previous sample's
- * along t's last axis (the first: qw >= 0). */
-typedef struct {
-    path_ctx pc;
-    npy_intp run;
-    double prev[4];
-} pose_path_ctx;
-
-static int k_sample_pose(void *ctx, const double *const *in, double *out, npy_intp k)
-{
-    pose_path_ctx *c = ctx;
-    const ga_path *p = c->pc.path;
-    double e[GA_GROUP_MAX_ELEM], q[4], t[3];
-    int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
-    if (st != GA_OK)
-        return path_failed(&c->pc, st);
-    p->group->to_qt(e, q, t);
-    if (c->run == 0 || k % c->run == 0) {
-        c->prev[0] = 1.0;
-        c->prev[1] = c->prev[2] = c->prev[3] = 0.0;
-    }
-    if (q[0] * c->prev[0] + q[1] * c->prev[1] + q[2] * c->prev[2] + q[3] * c->prev[3] < 0.0)
-        for (int i = 0; i < 4; i++) q[i] = -q[i];
-    memcpy(c->prev, q, sizeof q);
-    double v[7] = {t[0], t[1], t[2], q[1], q[2], q[3], q[0]};
-    memcpy(out, v, sizeof v);
-    return GA_OK;
-}
-
-static PyObject *Path_sample_pose(gpy_PathObject *self, PyObject *args, PyObject *kw)
-{
-    static char *kwlist[] = {"t", "out", NULL};
-    PyObject *t, *out = NULL;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !path_ready(self))
-        return NULL;
-    if (!self->group->to_qt) {
-        PyErr_Format(PyExc_ValueError, "Path.sample_pose: group '%s' has no poses (sample gives matrices)",
-                     self->group->name);
-        return NULL;
-    }
-    PyArrayObject *a = gpy_as_doubles(t);
-    if (!a)
-        return NULL;
-    pose_path_ctx c = {{&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY}, 0, {1, 0, 0, 0}};
-    if (PyArray_NDIM(a) >= 1)
-        c.run = PyArray_DIM(a, PyArray_NDIM(a) - 1);
-    gpy_kernel_call kc = {.what = "Path.sample_pose",
-                          .nin = 1,
-                          .in = {{.ncore = 0, .name = "t"}},
-                          .out = GPY_CORE1(7, NULL),
-                          .kernel = k_sample_pose,
-                          .ctx = &c,
-                          .explain = explain_time,
-                          .lock = self->lock};
-    PyObject *r = gpy_run_kernel(&kc, (PyObject **)&a, out);
-    Py_DECREF(a);
-    return r;
-}
-
-/* ---- append and the attributes ---------------------------------------------- */
-
-static void read_n(gpy_PathObject *self, void *n) { *(size_t *)n = self->path.n; }
-
-/* the first n key times into t (keys are only added: they are still there) */
-typedef struct {
-    size_t n;
-    double *t;
-} times_copy;
-
-static void copy_times(gpy_PathObject *self, void *arg)
-{
-    times_copy *c = arg;
-    memcpy(c->t, self->path.t, c->n * sizeof(double));
-}
-
-static PyObject *Path_get_times(gpy_PathObject *self, void *c)
-{
-    (void)c;
-    if (!path_ready(self))
-        return NULL;
-    size_t count;
-    path_locked(self, read_n, &count);
-    npy_intp n = (npy_intp)count;
-    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, &n, NPY_DOUBLE);
-    if (!a)
-        return NULL;
-    times_copy tc = {count, PyArray_DATA(a)};
-    path_locked(self, copy_times, &tc);
-    PyArray_CLEARFLAGS(a, NPY_ARRAY_WRITEABLE);
-    return (PyObject *)a;
-}
-
-static PyObject *Path_get_capacity(gpy_PathObject *self, void *c)
-{
-    (void)c;
-    return path_ready(self) ? PyLong_FromSize_t(self->path.cap) : NULL;
-}
-
-/* One look at the path for append, under the lock: whether a key at t can
- * follow (n, the last key's time), and with commit, the key appended. */
-typedef struct {
-    double t;
-    ga_mat4 m;
-    int commit;
-    size_t n;     /* the keys, after the append where it is made */
-    double last;  /* the last key's time before it */
-    int refused;  /* the path is full or t is not after last */
-    ga_status st; /* of ga_path_append_mat4 */
-} append_op;
-
-static void append_step(gpy_PathObject *self, void *arg)
-{
-    append_op *op = arg;
-    op->n = self->path.n;
-    op->last = self->path.t[op->n - 1];
-    op->refused = op->n >= self->path.cap || !isfinite(op->t) || !(op->t > op->last);
-    if (op->commit && !op->refused) {
-        op->st = ga_path_append_mat4(&self->path, op->t, op->m);
-        op->n = self->path.n;
-    }
-}
-
-static PyObject *append_refused(gpy_PathObject *self, const append_op *op)
-{
-    if (op->n >= self->path.cap) {
-        PyErr_Format(PyExc_ValueError,
-                     "Path.append: the path is full (capacity %zu; give Path a larger capacity=)",
-                     self->path.cap);
-        return NULL;
-    }
-    char buf[128];
-    snprintf(buf, sizeof buf, "t = %.17g must be finite and after the last key's time %.17g", op->t,
-             op->last);
-    PyErr_Format(PyExc_ValueError, "Path.append: %s", buf);
-    return NULL;
-}
-
-/* append(t, pose): one key, a (4, 4) matrix or a (7,) row. The path is
- * looked at before the pose is read (its errors come first) and again when
- * the key is appended, as another thread may have appended in between. */
-static PyObject *Path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
-{
-    static char *kwlist[] = {"t", "pose", NULL};
-    append_op op = {0};
-    PyObject *pobj;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "dO:append", kwlist, &op.t, &pobj) || !path_ready(self))
-        return NULL;
-    if (!ga_scheme_can_append(self->scheme)) {
-        PyErr_Format(PyExc_ValueError, "Path.append: scheme '%s' cannot append keys (build a new Path)",
-                     ga_scheme_name(self->scheme));
-        return NULL;
-    }
-    if (!isfinite(op.t)) { /* as every call refuses a NaN or an infinity */
-        char why[64], num[32];
-        snprintf(why, sizeof why, "t is %s", gpy_repr_text(op.t, num));
-        gpy_raise_status_why("Path.append", 0, NULL, 0, GA_ERR_NOTFINITE, why);
-        return NULL;
-    }
-    path_locked(self, append_step, &op);
-    if (op.refused)
-        return append_refused(self, &op);
-    PyArrayObject *p = gpy_as_doubles(pobj);
-    if (!p)
-        return NULL;
-    int pose = PyArray_NDIM(p) == 1 && PyArray_DIM(p, 0) == 7 && self->group->rigid;
-    int mat = PyArray_NDIM(p) == 2 && PyArray_DIM(p, 0) == 4 && PyArray_DIM(p, 1) == 4;
-    int st = GA_OK;
-    if (!pose && !mat) {
-        PyErr_SetString(PyExc_ValueError, self->group->rigid
-                                              ? "Path.append: pose must have shape (4, 4) or (7,)"
-                                              : "Path.append: pose must have shape (4, 4)");
-        Py_DECREF(p);
-        return NULL;
-    }
-    npy_intp bad = gpy_first_nonfinite(PyArray_DATA(p), PyArray_SIZE(p));
-    if (bad >= 0) {
-        char why[160];
-        gpy_nonfinite_why("pose", p, bad, why, sizeof why);
-        gpy_raise_status_why("Path.append", 0, NULL, 0, GA_ERR_NOTFINITE, why);
-        Py_DECREF(p);
-        return NULL;
-    }
-    if (pose)
-        st = gpy_pose_to_mat(PyArray_DATA(p), &op.m);
-    else
-        op.m = gpy_mat_get(PyArray_DATA(p));
-    Py_DECREF(p);
-    if (st == GA_OK) {
-        op.commit = 1;
-        path_locked(self, append_step, &op);
-        if (op.refused)
-            return append_refused(self, &op);
-        st = op.st;
-    }
-    if (st == GA_ERR_ARG && self->scheme == GA_SCHEME_BSPLINE) {
-        PyErr_Format(PyExc_ValueError, "Path.append: scheme 'bspline' takes a key %s",
-                     op.n < 4 ? "only after 4 keys or more" : "only at evenly spaced times");
-        return NULL;
-    }
-    if (st != GA_OK) {
-        PyErr_Format(st == GA_ERR_DOMAIN ? gpy_error : PyExc_ValueError, "Path.append: %s",
-                     ga_status_string(st));
-        return NULL;
-    }
-    Py_RETURN_NONE;
-}
-static PyObject *Path_get_scheme(gpy_PathObject *self, void *c)
-{
-    (void)c;
-    return path_ready(self) ? PyUnicode_FromString(ga_scheme_name(self->scheme)) : NULL;
-}
-static void read_range(gpy_PathObject *self, void *arg)
-{
-    path_ctx *r = arg;
-    r->range_status = ga_path_range(&self->path, &r->t0, &r->t1);
-}
-
-static PyObject *Path_get_range(gpy_PathObject *self, void *c)
-{
-    (void)c;
-    if (!path_ready(self))
-        return NULL;
-    path_ctx r = {&self->path, GA_OK, 0.0, 0.0, GA_FRAME_BODY};
-    path_locked(self, read_range, &r);
-    if (r.range_status != GA_OK) {
-        PyErr_SetString(PyExc_ValueError, ga_status_string(r.range_status));
-        return NULL;
-    }
-    return Py_BuildValue("(dd)", r.t0, r.t1);
-}
-static PyObject *Path_get_group(gpy_PathObject *self, void *c)
-{
-    (void)c;
-    return path_ready(self) ? PyUnicode_FromString(self->group->name) : NULL;
-}
-
-static PyObject *Path_repr(gpy_PathObject *self)
-{
-    if (!self->work)
-        return PyUnicode_FromString("<garotor.Path (not initialised)>");
-    size_t n;
-    path_locked(self, read_n, &n);
-    return PyUnicode_FromFormat("<garotor.Path: %s on %s, %zu keys>", ga_scheme_name(self->scheme),
-                                self->group->name, n);
-}
-
 /* ---- pickling and copying ----------------------------------------------------- */
 
-/* A path's state: the first n key times and keys (as the group holds them) */
+/* A path's state: the first n keys (as the group holds them) */
 typedef struct {
     size_t n;
-    double *t, *keys;
+    double *keys;
 } state_copy;
 
 static void copy_state(gpy_PathObject *self, void *arg)
@@ -715,13 +319,14 @@ static void copy_state(gpy_PathObject *self, void *arg)
     state_copy *c = arg;
     const ga_path *p = &self->path;
     size_t ed = p->group->elem_size / sizeof(double);
-    memcpy(c->t, p->t, c->n * sizeof(double));
     for (size_t i = 0; i < c->n; i++)
         memcpy(c->keys + i * ed, p->key + i * p->key_stride, ed * sizeof(double));
 }
 
 /* __reduce__: copyreg.__newobj__(Path), then __setstate__(state) with state
- * (group, scheme, times, keys, velocities, capacity): the keys as the group
+ * (group, scheme, times, keys, velocities, capacity, time_unit): the times
+ * as given (Path.times: float64 seconds, or int64 nanoseconds with
+ * time_unit 'ns'), the keys as the group
  * holds them ((n, elem_size / 8) doubles: a rotor's 8 coefficients on cga,
  * a 4x4 matrix on matrix and affine), the velocities given to the
  * constructor in the group's coordinates ((count, dim), or None). Built from
@@ -731,13 +336,13 @@ static void copy_state(gpy_PathObject *self, void *arg)
 static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
 {
     (void)unused;
-    if (!path_ready(self))
+    if (!gpy_path_ready(self))
         return NULL;
     const ga_group *g = self->group;
     size_t n;
-    path_locked(self, read_n, &n); /* keys are only added: the first n stay */
-    npy_intp tn = (npy_intp)n, kd[2] = {(npy_intp)n, (npy_intp)(g->elem_size / sizeof(double))};
-    PyArrayObject *t = (PyArrayObject *)PyArray_SimpleNew(1, &tn, NPY_DOUBLE);
+    gpy_path_locked(self, gpy_path_read_n, &n); /* keys are only added: the first n stay */
+    npy_intp kd[2] = {(npy_intp)n, (npy_intp)(g->elem_size / sizeof(double))};
+    PyArrayObject *t = gpy_path_times_array(self, n);
     PyArrayObject *k = t ? (PyArrayObject *)PyArray_SimpleNew(2, kd, NPY_DOUBLE) : NULL;
     PyObject *v = Py_None, *copyreg = k ? PyImport_ImportModule("copyreg") : NULL;
     PyObject *newobj = copyreg ? PyObject_GetAttrString(copyreg, "__newobj__") : NULL;
@@ -750,11 +355,11 @@ static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
     }
     PyObject *r = NULL;
     if (newobj && v) {
-        state_copy sc = {n, PyArray_DATA(t), PyArray_DATA(k)};
-        path_locked(self, copy_state, &sc);
-        r = Py_BuildValue("O(O)(ssOOOn)", newobj, (PyObject *)Py_TYPE(self), g->name,
+        state_copy sc = {n, PyArray_DATA(k)};
+        gpy_path_locked(self, copy_state, &sc);
+        r = Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
                           ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                          (Py_ssize_t)self->path.cap);
+                          (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
     }
     Py_XDECREF(t);
     Py_XDECREF(k);
@@ -780,9 +385,17 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         PyErr_SetString(PyExc_TypeError, "Path: already initialised");
         return NULL;
     }
-    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) != 6 ||
-        !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)))
-        return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity)");
+    /* a state of 6, of before time_unit: seconds */
+    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 7 ||
+        !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)) ||
+        (PyTuple_GET_SIZE(state) == 7 && !PyUnicode_Check(PyTuple_GET_ITEM(state, 6))))
+        return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity, time_unit)");
+    int ns = 0;
+    if (PyTuple_GET_SIZE(state) == 7) {
+        const char *unit = PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 6));
+        if (!unit || gpy_path_unit("Path: state", unit, &ns))
+            return NULL;
+    }
     const char *gname = PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 0));
     const char *sname = gname ? PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 1)) : NULL;
     if (!sname)
@@ -799,7 +412,9 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
     PyObject *ret = NULL;
     double *vel = NULL;
     size_t nvel = 0, ed = g->elem_size / sizeof(double);
-    PyArrayObject *t = gpy_as_doubles(PyTuple_GET_ITEM(state, 2));
+    gpy_stamp *stamp = NULL;
+    double *rel = NULL;
+    PyArrayObject *t = gpy_path_times_in(PyTuple_GET_ITEM(state, 2));
     PyArrayObject *k = t ? gpy_as_doubles(PyTuple_GET_ITEM(state, 3)) : NULL;
     PyArrayObject *v = NULL;
     if (!k)
@@ -853,11 +468,21 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         state_error("the capacity is too large, or the scheme is not defined on the group");
         goto done;
     }
-    if (path_build(self, g, scheme, (size_t)n, PyArray_DATA(t), kv, 0, &vel, nvel, wbytes) == 0) {
+    stamp = PyMem_Malloc((size_t)cap * sizeof *stamp);
+    rel = PyMem_Malloc((size_t)n * sizeof *rel);
+    if (!stamp || !rel) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (gpy_path_key_times("Path: state", t, ns, stamp, rel))
+        goto done;
+    if (path_build(self, g, scheme, (size_t)n, rel, kv, 0, &vel, nvel, &stamp, ns, wbytes) == 0) {
         Py_INCREF(Py_None);
         ret = Py_None;
     }
 done:
+    PyMem_Free(stamp);
+    PyMem_Free(rel);
     PyMem_Free(vel);
     Py_XDECREF(t);
     Py_XDECREF(k);
@@ -866,24 +491,24 @@ done:
 }
 
 static PyMethodDef Path_methods[] = {
-    {"sample", (PyCFunction)(void (*)(void))Path_sample, METH_VARARGS | METH_KEYWORDS,
+    {"sample", (PyCFunction)(void (*)(void))gpy_path_sample, METH_VARARGS | METH_KEYWORDS,
      "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
-    {"sample_pose", (PyCFunction)(void (*)(void))Path_sample_pose, METH_VARARGS | METH_KEYWORDS,
+    {"sample_pose", (PyCFunction)(void (*)(void))gpy_path_sample_pose, METH_VARARGS | METH_KEYWORDS,
      "sample_pose(t, *, out=None): the poses at the times t as (..., 7) rows x y z qx qy qz qw, from the "
      "group's rotation and translation (garotor interp --format pose, bit for bit); the quaternion's sign "
      "follows the previous sample's along t's last axis (cga and matrix)."},
-    {"velocity", (PyCFunction)(void (*)(void))Path_velocity, METH_VARARGS | METH_KEYWORDS,
+    {"velocity", (PyCFunction)(void (*)(void))gpy_path_velocity, METH_VARARGS | METH_KEYWORDS,
      "velocity(t, *, frame='body', out=None): the velocity per unit time at the times t: (..., 6) twists "
      "(affine: (..., 4, 4)); frame 'body' A(t)^-1 dA/dt, 'spatial' dA/dt A(t)^-1, 'world' (rigid groups) "
      "the angular rate in world axes and dp/dt."},
-    {"acceleration", (PyCFunction)(void (*)(void))Path_acceleration, METH_VARARGS | METH_KEYWORDS,
+    {"acceleration", (PyCFunction)(void (*)(void))gpy_path_acceleration, METH_VARARGS | METH_KEYWORDS,
      "acceleration(t, *, frame='body', out=None): the derivative of the velocity in that frame per unit "
      "time^2 at the times t: (..., 6) (affine: (..., 4, 4)); 'world': the angular acceleration in world axes "
      "and d2p/dt2."},
-    {"jerk", (PyCFunction)(void (*)(void))Path_jerk, METH_VARARGS | METH_KEYWORDS,
+    {"jerk", (PyCFunction)(void (*)(void))gpy_path_jerk, METH_VARARGS | METH_KEYWORDS,
      "jerk(t, *, frame='body', out=None): the derivative of the acceleration in that frame per unit time^3 "
      "at the times t: (..., 6) (affine: (..., 4, 4)); 'world': d3p/dt3 for the position."},
-    {"append", (PyCFunction)(void (*)(void))Path_append, METH_VARARGS | METH_KEYWORDS,
+    {"append", (PyCFunction)(void (*)(void))gpy_path_append, METH_VARARGS | METH_KEYWORDS,
      "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
      "building one "
      "new segment; the Path then equals one built from all the keys, bit for bit. Room: Path(..., "
@@ -896,21 +521,21 @@ static PyMethodDef Path_methods[] = {
     {NULL, NULL, 0, NULL}};
 
 static PyGetSetDef Path_getset[] = {
-    {"times", (getter)Path_get_times, NULL, "the key times (a read-only copy)", NULL},
-    {"capacity", (getter)Path_get_capacity, NULL, "the keys the Path has room for (Path.append)", NULL},
-    {"scheme", (getter)Path_get_scheme, NULL, "the scheme's name", NULL},
-    {"range", (getter)Path_get_range, NULL,
+    {"times", (getter)gpy_path_get_times, NULL, "the key times (a read-only copy)", NULL},
+    {"capacity", (getter)gpy_path_get_capacity, NULL, "the keys the Path has room for (Path.append)", NULL},
+    {"scheme", (getter)gpy_path_get_scheme, NULL, "the scheme's name", NULL},
+    {"range", (getter)gpy_path_get_range, NULL,
      "(t0, t1), the times the path is defined on: the first and last key's (bspline: the second and the last "
      "but one's)",
      NULL},
-    {"group", (getter)Path_get_group, NULL, "the group's name", NULL},
+    {"group", (getter)gpy_path_get_group, NULL, "the group's name", NULL},
     {NULL, NULL, NULL, NULL, NULL}};
 
 PyTypeObject gpy_PathType = {
     PyVarObject_HEAD_INIT(NULL, 0).tp_name = "garotor.Path",
     .tp_basicsize = sizeof(gpy_PathObject),
     .tp_dealloc = (destructor)Path_dealloc,
-    .tp_repr = (reprfunc)Path_repr,
+    .tp_repr = (reprfunc)gpy_path_repr,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc =
         "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None): a path through "
