@@ -2,7 +2,7 @@
  * of G(4,1) come out exact, for exp, log and split (ga/mv_exp.c, ga/mv_log.c,
  * ga/mv_split.c): the rigid frame of a null part, where the rotor is a screw
  * (ga_rotor_exp and ga_rotor_log_literal there), and an orthonormal basis of
- * an ideal of Spin(4) for two rotations. docs/versors.md, "A null part".
+ * an ideal of Spin(4) for two rotations. docs/numerics.md, "A null part".
  */
 #include "internal/bivector_frames.h"
 

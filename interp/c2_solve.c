@@ -92,7 +92,7 @@ int gip_md_inv(size_t d, const double *a, double *o)
  * largest, or the change stops shrinking once it is below 1e-12 of it, or
  * (quadratic convergence) it is below 1e-10 of it and 1e-3 of the change
  * before. Each sweep is O(n), and the count of sweeps does not grow with n
- * (docs/schemes.md, "The C2 solver"). The Jacobians J_r(theta_i) are formed
+ * (docs/numerics.md, "c2: the solver"). The Jacobians J_r(theta_i) are formed
  * once (jcache), their inverses by blocks each sweep (jinv). Where that
  * fails, continuation
  * (gip_c2_solve). */

@@ -237,7 +237,7 @@ GA_API GA_NODISCARD ga_status ga_mv_inverse(ga_mv a, ga_mv *out);
  *  onto it by Newton steps R (3 - ~R R)/2. A null part larger than the rest
  *  (max |B| > 8, both squares li below |B|^2/64: a screw translating far, in
  *  any conformal frame) is taken in the frame where B is rigid
- *  (docs/versors.md, "A null part"): within 4 u |B|^2 of the exact exp,
+ *  (docs/numerics.md, "A null part"): within 4 u |B|^2 of the exact exp,
  *  which is what the rounding of B itself leaves. */
 GA_API ga_mv ga_mv_exp(ga_mv B);
 
@@ -270,7 +270,7 @@ GA_API GA_NODISCARD ga_status ga_mv_log(ga_mv R, ga_mv *out);
  *  Otherwise by B1 = (l1 B - Bq/2)/(l1 - l2), B2 = (Bq/2 - l2 B)/(l1 - l2),
  *  keeping the split with the smallest residual; a rotation t beside a null
  *  part N in the frame where it is rigid, which holds for any t down to 0
- *  (docs/versors.md, "A null part").
+ *  (docs/numerics.md, "A null part").
  *  Refuses: GA_ERR_NOTFINITE on NaN/Inf in B's bivector part,
  *  GA_ERR_DOMAIN when a part overflows.
  *  Accuracy: through ga_mv_factor, the factors multiply to R, commute and

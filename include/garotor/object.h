@@ -45,7 +45,7 @@
  *     _reject, _distance, ga_object_angle, ga_rotor_between) promise
  *     GA_OBJECT_TOL: they refuse with GA_ERR_PRECISION an object whose err
  *     exceeds GA_OBJECT_TOL L or whose r2_err exceeds GA_OBJECT_TOL L^2.
- * docs/conformal.md ("Far from the origin") has the figures.
+ * docs/numerics.md ("Objects far from the origin") has the figures.
  *
  * Local origin and length scale. The answer is to carry an origin o and a
  * length lambda with the object: a scene held "about (o, lambda)" is the

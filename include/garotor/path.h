@@ -93,7 +93,7 @@
  *              motion: V_i = xi solves the system with N = 0. Invariant under
  *              changes of world and body frame, like SCREW and LIHAO3.
  *              GA_ERR_DOMAIN if the sweeps and the continuation do not
- *              converge (rare: docs/schemes.md, "Where Newton fails", counts
+ *              converge (rare: docs/numerics.md, "c2: where Newton fails", counts
  *              how often).
  *
  *   BSPLINE    the uniform cumulative cubic B-spline with the keys as control

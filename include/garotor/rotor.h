@@ -189,7 +189,7 @@ GA_API ga_twist ga_generator_to_twist(ga_generator b);
 /** exp(B) of a generator, in closed form (W-L Thm 3 / eq. 2): the formula
  *  at the top of this header, exact for every B (pure translations and small
  *  angles included: cos phi, sinc phi and (cos phi - sinc phi)/phi^2 keep
- *  their relative accuracy as phi -> 0; docs/rotors.md, "The exponential").
+ *  their relative accuracy as phi -> 0; docs/numerics.md, "The rotor exponential").
  *  Any finite angle is accepted, also beyond ~1e154 where phi^2 overflows
  *  (the scaled norm there): the rotation by the double angle, as ga_se3_exp
  *  gives it. No status: NaN in, NaN out.
