@@ -237,6 +237,13 @@ static ga_mat12 m12_neg(ga_mat12 a)
     return a;
 }
 
+/* both arguments of a two-element Jacobian checked, with their inverses */
+static ga_status affine_pair_in(ga_mat4 a, ga_mat4 b, ga_mat4 *ma, ga_mat4 *mai, ga_mat4 *mb, ga_mat4 *mbi)
+{
+    ga_status st = affine_in(a, ma, mai);
+    return st == GA_OK ? affine_in(b, mb, mbi) : st;
+}
+
 ga_status ga_affine_adjoint_matrix(ga_mat4 a, ga_mat12 *out)
 {
     if (!out)
@@ -253,9 +260,7 @@ ga_status ga_affine_jac_compose(ga_mat4 a, ga_mat4 b, ga_jac_side side, ga_mat12
     if (!ja || !jb || !side_ok(side))
         return GA_ERR_ARG;
     ga_mat4 ma, mai, mb, mbi;
-    ga_status st = affine_in(a, &ma, &mai);
-    if (st == GA_OK)
-        st = affine_in(b, &mb, &mbi);
+    ga_status st = affine_pair_in(a, b, &ma, &mai, &mb, &mbi);
     if (st != GA_OK)
         return st;
     if (side == GA_JAC_RIGHT)
@@ -281,9 +286,7 @@ ga_status ga_affine_jac_between(ga_mat4 a, ga_mat4 b, ga_jac_side side, ga_mat12
     if (!ja || !jb || !side_ok(side))
         return GA_ERR_ARG;
     ga_mat4 ma, mai, mb, mbi;
-    ga_status st = affine_in(a, &ma, &mai);
-    if (st == GA_OK)
-        st = affine_in(b, &mb, &mbi);
+    ga_status st = affine_pair_in(a, b, &ma, &mai, &mb, &mbi);
     if (st != GA_OK)
         return st;
     if (side == GA_JAC_RIGHT) { /* -Ad(B^-1 A), I */
