@@ -131,6 +131,17 @@ static PyObject *stats_dict(double *err, npy_intp n)
                          "median", s.median, "min", s.min, "rmse", s.rmse, "sse", s.sse, "std", s.std);
 }
 
+/* the statistics of the translation and rotation errors under their keys:
+   0, or -1 with the Python error set */
+static int put_stats(PyObject *res, const char *kt, double *et, const char *kr, double *er, npy_intp n)
+{
+    PyObject *a = stats_dict(et, n), *b = a ? stats_dict(er, n) : NULL;
+    int rc = b && PyDict_SetItemString(res, kt, a) == 0 && PyDict_SetItemString(res, kr, b) == 0 ? 0 : -1;
+    Py_XDECREF(a);
+    Py_XDECREF(b);
+    return rc;
+}
+
 /* ---- evaluate, ape, rpe ---------------------------------------------------- */
 
 enum { WANT_APE = 1, WANT_RPE = 2 };
@@ -235,16 +246,10 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
             gpy_status_error(what, st);
             goto done;
         }
-        PyObject *a = stats_dict(e1, (npy_intp)n), *b = a ? stats_dict(e2, (npy_intp)n) : NULL;
-        if (!b || PyDict_SetItemString(res, "ape_trans", a) < 0 ||
-            PyDict_SetItemString(res, "ape_rot", b) < 0) {
-            Py_XDECREF(a);
-            Py_XDECREF(b);
+        if (put_stats(res, "ape_trans", e1, "ape_rot", e2, (npy_intp)n) < 0) {
             Py_CLEAR(res);
             goto done;
         }
-        Py_DECREF(a);
-        Py_DECREF(b);
     }
     if (want & WANT_RPE) {
         if ((st = ga_traj_rpe(R, E, n, (size_t)delta, all_pairs, unit, e1, e2)) != GA_OK) {
@@ -252,16 +257,10 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
             gpy_status_error(what, st);
             goto done;
         }
-        PyObject *a = stats_dict(e1, (npy_intp)npairs), *b = a ? stats_dict(e2, (npy_intp)npairs) : NULL;
-        if (!b || PyDict_SetItemString(res, "rpe_trans", a) < 0 ||
-            PyDict_SetItemString(res, "rpe_rot", b) < 0) {
-            Py_XDECREF(a);
-            Py_XDECREF(b);
+        if (put_stats(res, "rpe_trans", e1, "rpe_rot", e2, (npy_intp)npairs) < 0) {
             Py_CLEAR(res);
             goto done;
         }
-        Py_DECREF(a);
-        Py_DECREF(b);
     }
 done:
     traj_free(&ref);
