@@ -89,14 +89,135 @@ static int between_parts(ga_mv A, ga_mv B, ga_rotor *head, double *s, ga_rotor *
     return GA_OK;
 }
 
+/* Round <-> flat of one grade (object.h, ga_versor_between). The round a
+   (centre c, radius r) through p = c - r u is translated by -p, inverted in
+   the sphere of radius 2r about the origin (p goes to infinity, the round to
+   the flat through 2r u, perpendicular to u for a sphere, along w x u for a
+   circle of normal w, the point 2r u for a point pair) and reflected in the
+   plane through the origin of normal u (two vectors of positive square: V0 is
+   even, V0 ~V0 = 1), which leaves the flat through q = -2r u; then the rigid
+   motion M = T(cB) R T(-q) takes that flat to B. The flat's orientation is
+   taken from the image of A against a reference flat built exactly at q (a
+   sign, never a read-back of the image); a reversed flat point, which no
+   rigid motion turns, is avoided by sending the other point to infinity. */
+static ga_vec3 perp_unit(ga_vec3 w)
+{
+    ga_vec3 x = ga__v3_cross(w, fabs(w.x) < 0.5 ? ga__v3(1, 0, 0) : ga__v3(0, 1, 0));
+    return ga__v3_div(x, ga__v3_norm(x));
+}
+
+/* the grade of X's largest part */
+static int main_grade(ga_mv X)
+{
+    int g = 0;
+    double best = -1.0;
+    for (int k = 0; k <= 5; k++) {
+        double n = ga_mv_norm2(ga_mv_grade(X, k));
+        if (n > best) {
+            best = n;
+            g = k;
+        }
+    }
+    return g;
+}
+
+static int round_to_flat(ga_mv A, ga_mv B, const ga_object *a, const ga_object *b, ga_mv *out)
+{
+    double r = sqrt(a->r2);
+    ga_vec3 u, t = ga__v3(0, 0, 0);
+    if (a->kind == GA_OBJECT_SPHERE)
+        u = b->direction;
+    else if (a->kind == GA_OBJECT_CIRCLE) {
+        /* u in the circle's plane, chosen so that w x u is B's direction
+           where B's direction is not along w */
+        ga_vec3 x = ga__v3_cross(b->direction, a->direction);
+        double nx = ga__v3_norm(x);
+        u = nx > 0.5 ? ga__v3_div(x, nx) : perp_unit(a->direction);
+        t = ga__v3_cross(a->direction, u);
+    } else
+        u = a->direction;
+    /* a flat point's orientation is its weight's sign, against F(cB) ^ n */
+    double sb = 1.0;
+    if (a->kind == GA_OBJECT_POINTPAIR) {
+        ga_mv G = ga_mv_op(ga_point_up(b->centre), ga_mv_n());
+        if (main_grade(B) != main_grade(G))
+            G = ga_mv_dual(G);
+        sb = 0.0;
+        for (int i = 0; i < 32; i++) sb += B.c[i] * G.c[i];
+    }
+    for (int attempt = 0; attempt < 2; attempt++) {
+        ga_vec3 p = ga__v3_axpy(-r, u, a->centre), q = ga__v3_scale(u, -2.0 * r);
+        ga_mv V0 = ga_mv_scale(ga_mv_gp(ga_mv_gp(ga_versor_reflection(u, 0.0),
+                                                 ga_versor_inversion(ga__v3(0, 0, 0), 2.0 * r)),
+                                        ga_versor_translation(ga__v3_scale(p, -1.0))),
+                               0.5 / r);
+        ga_mv F, X;
+        if (a->kind == GA_OBJECT_SPHERE) {
+            ga_vec3 e1 = perp_unit(u), e2 = ga__v3_cross(u, e1);
+            F = ga_plane_from_points(q, ga__v3_add(q, e1), ga__v3_add(q, e2));
+        } else if (a->kind == GA_OBJECT_CIRCLE)
+            F = ga_line_from_points(q, ga__v3_add(q, t));
+        else
+            F = ga_mv_op(ga_point_up(q), ga_mv_n());
+        if (main_grade(A) != main_grade(F))
+            F = ga_mv_dual(F); /* A held as a dual (or direct) blade */
+        int st = ga_versor_apply(V0, A, &X);
+        if (st != GA_OK)
+            return st;
+        double k = 0.0;
+        for (int i = 0; i < 32; i++) k += X.c[i] * F.c[i];
+        ga_object f;
+        if ((st = gao_read_real(F, &f)) != GA_OK)
+            return st;
+        if (!(k * sb > 0.0) && a->kind == GA_OBJECT_POINTPAIR) {
+            u = ga__v3_scale(u, -1.0); /* the other point to infinity */
+            continue;
+        }
+        if (!(k != 0.0))
+            return GA_ERR_DOMAIN;
+        ga_vec3 d = k > 0.0 ? f.direction : ga__v3_scale(f.direction, -1.0);
+        ga_rotor R = a->kind == GA_OBJECT_POINTPAIR ? ga_rotor_identity() : turn(d, b->direction);
+        ga_rotor M = ga_rotor_mul(ga_rotor_translation(b->centre),
+                                  ga_rotor_mul(R, ga_rotor_translation(ga__v3_scale(f.centre, -1.0))));
+        *out = ga_mv_gp(ga_rotor_to_mv(M), V0);
+        return ga_mv_isfinite(*out) ? GA_OK : GA_ERR_DOMAIN;
+    }
+    return GA_ERR_DOMAIN;
+}
+
+/* ga_versor_between for a round and a flat of one grade, either way round
+   (a flat to a round: the reverse of the round to the flat). */
+static int between_kinds(ga_mv A, ga_mv B, const ga_object *a, const ga_object *b, ga_mv *out)
+{
+    int ra = a->kind >= GA_OBJECT_POINTPAIR, rb = b->kind >= GA_OBJECT_POINTPAIR;
+    if (ra == rb || a->kind == GA_OBJECT_EMPTY || b->kind == GA_OBJECT_EMPTY ||
+        (ra ? a->kind - 3 != b->kind : b->kind - 3 != a->kind))
+        return GA_ERR_ARG;
+    const ga_object *o = ra ? a : b;
+    if (o->reality == GA_REALITY_TANGENT)
+        return GA_ERR_DOMAIN; /* a round of radius 0 is no flat's image */
+    if (ra)
+        return round_to_flat(A, B, a, b, out);
+    ga_mv W;
+    int st = round_to_flat(B, A, b, a, &W);
+    if (st == GA_OK)
+        *out = ga_mv_reverse(W);
+    return st;
+}
+
 ga_status ga_versor_between(ga_mv A, ga_mv B, ga_mv *out)
 {
     if (!out)
         return GA_ERR_ARG;
+    ga_object a, b;
+    int st = gao_read_real_pair(A, B, &a, &b);
+    if (st != GA_OK)
+        return st;
+    if (a.kind != b.kind)
+        return between_kinds(A, B, &a, &b, out);
     ga_rotor head, tail;
     double s;
-    int st = between_parts(A, B, &head, &s, &tail);
-    if (st != GA_OK)
+    if ((st = between_parts(A, B, &head, &s, &tail)) != GA_OK)
         return st;
     ga_mv V = s == 1.0
                 ? ga_rotor_to_mv(head)

@@ -168,7 +168,8 @@ static void section_refusals(void)
 {
     ga_vec3 o = {0, 0, 0}, ex = {1, 0, 0}, ez = {0, 0, 1};
     ga_mv V = ga_mv_zero(), W, S1 = ga_mv_dual(ga_sphere_dual(o, 1)), P = ga_mv_dual(ga_plane_dual(ez, 1));
-    tk_expect_status("kinds differ: sphere, plane", ga_versor_between(S1, P, &V), GA_ERR_ARG);
+    tk_expect_status("grades differ: sphere, line", ga_versor_between(S1, ga_line_from_points(o, ex), &V),
+                     GA_ERR_ARG);
     tk_expect_status("a point (radius 0) and a sphere",
                      ga_versor_between(ga_mv_dual(ga_sphere_dual(ex, 0)), S1, &V), GA_ERR_DOMAIN);
     tk_expect_status("a sphere and a point", ga_versor_between(S1, ga_mv_dual(ga_sphere_dual(ex, 0)), &V),

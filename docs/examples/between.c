@@ -70,8 +70,8 @@ int main(void)
     }
     ga_mv P = ga_mv_dual(ga_sphere_dual((ga_vec3){5, 0, 0}, 0));
     printf("%-22s %s\n", "sphere to a point", ga_status_string(ga_versor_between(S1, P, &V)));
-    printf("%-22s %s\n", "sphere to a plane",
-           ga_status_string(ga_versor_between(
-               S1, ga_plane_from_points((ga_vec3){0, 0, 0}, (ga_vec3){1, 0, 0}, (ga_vec3){0, 1, 0}), &V)));
+    printf("%-22s %s\n", "sphere to a line",
+           ga_status_string(ga_versor_between(S1, ga_line_from_points((ga_vec3){0, 0, 0}, (ga_vec3){1, 0, 0}),
+                                              &V)));
     return 0;
 }

@@ -307,11 +307,29 @@ GA_API GA_NODISCARD ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
  *  coefficients know), for scenes up to 1e2 from the
  *  origin and sizes 1e-2 to 1e2 (beyond, the sandwich's rounding grows like
  *  u |c|^2, as for every round held about the origin: object.h, "Accuracy").
+ *  A real round and a flat of the same grade (a sphere and a plane, a
+ *  circle and a line, a point pair and a flat point), either way round:
+ *  V = M V0 takes the round to the flat, V0 = N I T(-p) / (2r) the
+ *  translation of p = c - r u (a point of the round, c and r its centre and
+ *  radius, u B's normal for a sphere, a unit vector in the circle's plane,
+ *  the point pair's direction) to the origin, the inversion I in the sphere
+ *  of radius 2r about it and the reflection N in the plane of normal u
+ *  through it, which leave the flat through -2r u; M a rigid motion taking
+ *  that flat to B with the orientation of the image of A (for a point pair,
+ *  the other point is sent to infinity where the flat point's weight has
+ *  the wrong sign). A flat to a round is the reverse ~V of the round to the
+ *  flat. V A V^-1 is a positive multiple of B to the rounding of the
+ *  sandwich: points x of A moved by V (ga_point_up, ga_versor_apply,
+ *  ga_point_down) lie on B to about u max(L, |y|) |V|^2 max(1, |x|)^2, |V|
+ *  the largest coefficient of V, and more near the point sent to infinity,
+ *  where the map magnifies the rounding of x. The image of a round is a flat
+ *  only to that rounding: ga_object_from_mv may refuse it
+ *  (GA_ERR_PRECISION, round and flat not told apart).
  *  Statuses of ga_rotor_between's read-back (GA_ERR_IMAGINARY,
  *  GA_ERR_NOTBLADE for empty objects, GA_ERR_PRECISION beyond
- *  GA_OBJECT_TOL, ...), GA_ERR_ARG for different kinds, GA_ERR_DOMAIN where
- *  no such rotor exists (a tangent round, radius 0, and a real one) or it
- *  overflows. */
+ *  GA_OBJECT_TOL, ...), GA_ERR_ARG for objects of different grades,
+ *  GA_ERR_DOMAIN where no such rotor exists (a tangent round, radius 0, and
+ *  a real one or a flat) or it overflows. */
 GA_API GA_NODISCARD ga_status ga_versor_between(ga_mv A, ga_mv B, ga_mv *out);
 
 /** The object at t along the rotor V = ga_versor_between(A, B):
@@ -322,7 +340,8 @@ GA_API GA_NODISCARD ga_status ga_versor_between(ga_mv A, ga_mv B, ga_mv *out);
  *  Where V is rigid (s = 1 above) the power is the screw exp(t log V) of
  *  ga_rotor_log and ga_rotor_exp, applied with ga_rotor_apply_mv, so that a
  *  flat stays a flat to the bit; otherwise ga_mv_pow and ga_versor_apply.
- *  Statuses of ga_versor_between and ga_mv_pow; GA_ERR_NOTFINITE for a NaN
+ *  Statuses of ga_versor_between and ga_mv_pow (GA_ERR_ARG for different
+ *  kinds, a round and a flat included); GA_ERR_NOTFINITE for a NaN
  *  or infinite t, GA_ERR_DOMAIN where the result overflows. */
 GA_API GA_NODISCARD ga_status ga_object_interp(ga_mv A, ga_mv B, double t, ga_mv *out);
 

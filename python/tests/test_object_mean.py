@@ -157,7 +157,10 @@ def test_errors():
         garotor.object_mean(S, [0, 0])
     assert e.value.status == GA_ERR_ARG
     with pytest.raises(garotor.Error) as e:
-        S[0].between(P)
+        S[0].between(M.up([0, 0, 0]) ^ M.up([1, 0, 0]) ^ garotor.n)  # a sphere to a line: grades differ
+    assert e.value.status == GA_ERR_ARG
+    with pytest.raises(garotor.Error) as e:
+        S[0].interp(P, 0.5)  # a sphere and a plane: a rotor, but no interpolation across kinds
     assert e.value.status == GA_ERR_ARG
     with pytest.raises(garotor.Error) as e:
         S[0].between(M.up([3, 0, 0]))  # a sphere to a point: no dilation from radius 0
