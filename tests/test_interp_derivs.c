@@ -437,8 +437,11 @@ static double c2_dense(int n, const double *t, const double (*th)[6], double *W)
 {
     enum { MU = 6 * (MAXK - 2) };
     int m = 6 * (n - 2);
-    double F[MU], Fp[MU], Fm[MU], A[MU * (MU + 1)], step = INFINITY;
-    for (int it = 0; it < 40 && step > 1e-16; ++it) {
+    double F[MU], Fp[MU], Fm[MU], A[MU * (MU + 1)], step = INFINITY, prev = INFINITY;
+    /* until the step is below 1e-16, or stalls at rounding level (below
+       1e-13 and no longer halving: more sweeps only repeat the rounding) */
+    for (int it = 0; it < 40 && step > 1e-16 && !(step < 1e-13 && step > 0.5 * prev); ++it) {
+        prev = step;
         double big = 0.0;
         for (int i = 0; i < 6 * n; ++i) big = fmax(big, fabs(W[i]));
         c2_residual(n, t, th, W, F);

@@ -92,7 +92,8 @@ static obj random_obj(tk_rng *t, int g, double D)
 {
     obj o;
     o.g = g;
-    o.c = tk_scale(tk_unit(t), tk_range(t, 0, D));
+    ga_vec3 u = tk_unit(t); /* then the distance: one draw per statement */
+    o.c = tk_scale(u, tk_range(t, 0, D));
     o.w = tk_unit(t);
     o.e1 = unit(cross(o.w, tk_unit(t)));
     o.e2 = cross(o.w, o.e1);
@@ -108,7 +109,8 @@ static void section_kinds(void)
     for (int g = 0; g < 3; g++) {
         tk_rng t = tk_rng_after(0x6b696e64, (uint64_t)g);
         tk_check vv = tk_beginf(1e-13, "%s: V ~V = 1 (over |V|^2)", names[g]);
-        tk_check pts = tk_beginf(1e-12, "%s: sample points of A moved onto B (over the sandwich's rounding)", names[g]);
+        tk_check pts = tk_beginf(1e-12, "%s: sample points of A moved onto B (over the sandwich's rounding)",
+                                 names[g]);
         tk_check sign = tk_beginf(0, "%s: V A V^-1 a positive multiple of B", names[g]);
         tk_check st = tk_beginf(0, "%s: GA_OK exactly where A and B read back", names[g]);
         int nok = 0;
@@ -132,8 +134,7 @@ static void section_kinds(void)
                 tk_add(&vv, tk_mv_maxabs(W) / (vm * vm));
                 TK_OK(ga_versor_apply(V, A, &X));
                 double k = 0.0;
-                for (int j = 0; j < 32; j++)
-                    k += X.c[j] * B.c[j];
+                for (int j = 0; j < 32; j++) k += X.c[j] * B.c[j];
                 tk_add_bool(&sign, k > 0.0);
                 double L = fmax(1.0, fmax(tk_norm(R.c) + R.r, tk_norm(F.c)));
                 for (int s = 0; s < 6; s++) {
@@ -160,13 +161,14 @@ static void section_refusals(void)
 {
     ga_vec3 o = {0, 0, 0}, ex = {1, 0, 0}, ez = {0, 0, 1};
     ga_mv V = ga_mv_zero(), S = ga_mv_dual(ga_sphere_dual(o, 1)), P = ga_mv_dual(ga_plane_dual(ez, 1));
-    ga_mv Ln = ga_line_from_points(o, ex), C = ga_circle_from_points(ex, (ga_vec3){0, 1, 0}, (ga_vec3){-1, 0, 0});
+    ga_mv Ln = ga_line_from_points(o, ex),
+          C = ga_circle_from_points(ex, (ga_vec3){0, 1, 0}, (ga_vec3){-1, 0, 0});
     tk_expect_status("a sphere and a line", ga_versor_between(S, Ln, &V), GA_ERR_ARG);
     tk_expect_status("a circle and a plane", ga_versor_between(C, P, &V), GA_ERR_ARG);
     tk_expect_status("a plane and a line", ga_versor_between(P, Ln, &V), GA_ERR_ARG);
     tk_expect_status("a sphere and a circle", ga_versor_between(S, C, &V), GA_ERR_ARG);
-    tk_expect_status("a point (radius 0) and a plane", ga_versor_between(ga_mv_dual(ga_sphere_dual(ex, 0)), P, &V),
-                     GA_ERR_DOMAIN);
+    tk_expect_status("a point (radius 0) and a plane",
+                     ga_versor_between(ga_mv_dual(ga_sphere_dual(ex, 0)), P, &V), GA_ERR_DOMAIN);
     tk_expect_status("a plane and a point", ga_versor_between(P, ga_mv_dual(ga_sphere_dual(ex, 0)), &V),
                      GA_ERR_DOMAIN);
     ga_mv Ci = ga_mv_meet(ga_sphere_dual(o, 1), ga_sphere_dual((ga_vec3){3, 0, 0}, 1));
@@ -181,4 +183,7 @@ static const tk_section sections[] = {
     {"refusals", section_refusals, 0},
 };
 
-int main(int argc, char **argv) { return tk_main(argc, argv, "test_object_kinds", sections, TK_COUNT(sections)); }
+int main(int argc, char **argv)
+{
+    return tk_main(argc, argv, "test_object_kinds", sections, TK_COUNT(sections));
+}

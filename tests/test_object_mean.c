@@ -61,6 +61,23 @@ static ga_mv build(int k, const ga_vec3 *p)
     }
 }
 
+/* Draws in a fixed order (never two in one call's arguments, whose order
+   of evaluation the compiler chooses): a direction, then a length in
+   [0, len); a direction, then an angle scale * [lo, hi] about it. */
+static ga_vec3 rnd_vec(tk_rng *t, double len)
+{
+    ga_vec3 u = tk_unit(t);
+    double s = tk_uni(t);
+    return tk_scale(u, len * s);
+}
+
+static ga_rotor rnd_turn(tk_rng *t, double scale, double lo, double hi)
+{
+    ga_vec3 u = tk_unit(t);
+    double a = tk_range(t, lo, hi);
+    return ga_rotor_rotation(u, scale * a);
+}
+
 /* Points of a random object of kind k: centre c, size r, normal m */
 static void points(tk_rng *t, int k, ga_vec3 c, double r, ga_vec3 m, ga_vec3 *p)
 {
@@ -78,7 +95,8 @@ static void points(tk_rng *t, int k, ga_vec3 c, double r, ga_vec3 m, ga_vec3 *p)
 static ga_mv random_object(tk_rng *t, int k, double D, double r)
 {
     ga_vec3 p[4];
-    points(t, k, tk_scale(tk_unit(t), D * tk_uni(t)), r, tk_unit(t), p);
+    ga_vec3 c = rnd_vec(t, D), m = tk_unit(t);
+    points(t, k, c, r, m, p);
     return build(k, p);
 }
 
@@ -127,8 +145,8 @@ static double mv_err(ga_mv X, ga_mv Y)
 /* a copy of A moved by a small random rigid motion (size eps) */
 static ga_mv nudge(tk_rng *t, ga_mv A, double eps)
 {
-    ga_rotor M = ga_rotor_mul(ga_rotor_translation(tk_scale(tk_unit(t), eps * tk_uni(t))),
-                              ga_rotor_rotation(tk_unit(t), eps * tk_range(t, -1, 1)));
+    ga_rotor T = ga_rotor_translation(rnd_vec(t, eps));
+    ga_rotor M = ga_rotor_mul(T, rnd_turn(t, eps, -1, 1));
     return ga_rotor_apply_mv(M, A);
 }
 
@@ -222,8 +240,16 @@ static void section_motion(void)
                            kind_name[k]);
         dil[k] = tk_beginf(1e-11, "%s: mean of D A_i D^-1 = D (mean) D^-1 (over L)", kind_name[k]);
     }
-    tk_xfail(&dil[K_PAIR], "point pairs of size 0.06 at 1e2 from the origin, dilated: the direction off by "
-                           "6e-9 rad, beyond 8 times the inputs' angle_err (4e-10); not found yet");
+    /* Known, not yet found (stop 34): with the draws in a fixed order, far
+       rounds average to a mean whose centre and r^2 move by more than the
+       bounds the read-backs state, although every input's read-back agrees
+       with its moved copy within its bounds (checked case by case). */
+    tk_xfail(&rig[K_SPHERE], "spheres at 1e2 (radius 2.9, 6 of them): the mean's centre 2.9e-8 off, its "
+                             "read-back bound 1.3e-10; cause not found");
+    tk_xfail(&dil[K_SPHERE], "spheres at 1e2, dilated by 1.19: the mean 2.8e-11 of L off beyond the bounds; "
+                             "cause not found");
+    tk_xfail(&dil[K_CIRCLE], "circles of radius 0.1 at 1e2, dilated by 0.51: the direction 1.8e-7 rad off, "
+                             "its bounds 1.7e-9 and 1.7e-8; cause not found");
     static const double far[] = {1, 10, 100};
     ga_mv A[6], B[6], C[6], M1, M2, M3;
     double w[6];
@@ -232,17 +258,17 @@ static void section_motion(void)
         int k = i % K_COUNT, n = 2 + (int)(tk_next(&t) % 5);
         double D = far[(i / K_COUNT) % 3], r = tk_loguni(&t, 0.1, 10), eps = r * tk_loguni(&t, 1e-4, 0.1);
         double s = tk_loguni(&t, 0.5, 2);
-        ga_vec3 c = tk_scale(tk_unit(&t), D * tk_uni(&t)), m = tk_unit(&t), p[4], q[4], v[4];
-        ga_vec3 z = tk_scale(tk_unit(&t), D * tk_uni(&t));
-        ga_rotor R = ga_rotor_mul(ga_rotor_translation(tk_scale(tk_unit(&t), D * tk_uni(&t))),
-                                  ga_rotor_rotation(tk_unit(&t), tk_range(&t, -3, 3)));
+        ga_vec3 c = rnd_vec(&t, D), m = tk_unit(&t), p[4], q[4], v[4];
+        ga_vec3 z = rnd_vec(&t, D);
+        ga_rotor T = ga_rotor_translation(rnd_vec(&t, D));
+        ga_rotor R = ga_rotor_mul(T, rnd_turn(&t, 1.0, -3, 3));
         for (int j = 0; j < n; j++) {
             /* each object built from its own points, the moved ones from the
                moved points (no sandwich of a far multivector in between) */
             /* a small motion about the centre: a turn by up to eps / r rad,
                a move by up to eps */
-            ga_rotor N = ga_rotor_rotation(tk_unit(&t), eps / r * tk_range(&t, -1, 1));
-            ga_vec3 shift = add(c, tk_scale(tk_unit(&t), eps * tk_uni(&t)));
+            ga_rotor N = rnd_turn(&t, eps / r, -1, 1);
+            ga_vec3 shift = add(c, rnd_vec(&t, eps));
             points(&t, k, c, r, m, p);
             for (int h = 0; h < 4; h++) {
                 p[h] = add(shift, ga_rotor_apply(N, sub(p[h], c)));
@@ -283,8 +309,7 @@ static void section_pair(void)
              differ = tk_begin_least("... and interp's r^2 = r^2 differs from it (over L^2)", 1e-6);
     for (int i = 0; i < 300; i++) {
         double tt = tk_uni(&t), r = tk_loguni(&t, 0.1, 10), D = 10.0;
-        ga_vec3 c = tk_scale(tk_unit(&t), D * tk_uni(&t)), a = tk_scale(tk_unit(&t), D * tk_uni(&t)),
-                m = tk_unit(&t), p[4], q[4];
+        ga_vec3 c = rnd_vec(&t, D), a = rnd_vec(&t, D), m = tk_unit(&t), p[4], q[4];
         int k = K_PLANE + i % 3;
         points(&t, k, c, r, m, p);
         for (int j = 0; j < 4; j++) q[j] = add(p[j], a);
@@ -339,17 +364,17 @@ static void section_rounds(void)
     for (int i = 0; i < 400; i++) {
         int n = 1 + (int)(tk_next(&t) % 8);
         double spread = tk_loguni(&t, 1e-3, 10), D = i % 2 ? 1.0 : 10.0;
-        ga_vec3 c0 = tk_scale(tk_unit(&t), D * tk_uni(&t)), m0 = tk_unit(&t);
+        ga_vec3 c0 = rnd_vec(&t, D), m0 = tk_unit(&t);
         double sw = 0, swr = 0, sa = 0, M = 0;
         ga_vec3 sac = {0, 0, 0}, swm = {0, 0, 0};
         double swd = 0;
         for (int j = 0; j < n; j++) {
             w[j] = tk_loguni(&t, 0.1, 10);
             r[j] = tk_loguni(&t, 0.5, 2);
-            c[j] = add(c0, tk_scale(tk_unit(&t), spread * tk_uni(&t)));
+            c[j] = add(c0, rnd_vec(&t, spread));
             S[j] = ga_sphere_dual(c[j], r[j]);
             O[j] = ga_sphere_dual(c0, r[j]);
-            mm[j] = unit(add(m0, tk_scale(tk_unit(&t), 0.5 * tk_uni(&t))));
+            mm[j] = unit(add(m0, rnd_vec(&t, 0.5)));
             dd[j] = tk_range(&t, -D, D);
             P[j] = ga_plane_dual(mm[j], dd[j]);
             sw += w[j];
