@@ -384,9 +384,8 @@ GA_API GA_NODISCARD ga_status ga_object_interp(ga_mv A, ga_mv B, double t, ga_mv
  *  of V A_i V^-1 (V a rigid motion or a dilation) is V (mean) V^-1, each to
  *  a few times the bounds ga_object_from_mv states for the mean and the
  *  inputs (the normalisation and the projection are invariant under V;
- *  docs/conformal.md has the figures), except for a known defect: far
- *  rounds (1e2 out) have been seen to break it, by up to 200 times those
- *  bounds (tests/test_object_mean.c marks the cases). It does not depend on the order of
+ *  docs/conformal.md has the figures), except for a known defect: far rounds (1e2 out)
+ *  can break it by more than those bounds (docs/conformal.md). It does not depend on the order of
  *  the objects, bit for bit: every sum is exact (a fixed-point accumulator),
  *  rounded once.
  *  Statuses: GA_ERR_ARG for n = 0, a negative weight, weights all 0, objects
