@@ -26,7 +26,11 @@ the generalized ufuncs garotor.ufunc.exp and .log (rows "exp ufunc", "log
 ufunc"); interpolation of --n samples through --keys key poses (garotor:
 Path(scheme='screw').sample); the geometric product of --n pairs of dense
 multivectors, MultivectorArray's * ("gp") and garotor.ufunc.gp ("gp ufunc"),
-against ga_mv_gp in a plain C loop (no scipy column).
+against ga_mv_gp in a plain C loop (no scipy column); one versor on --n
+points, Multivector.apply ("apply": V's inverse once, ga_versor_apply_many,
+against that call in C) and the same per element ("apply each":
+MultivectorArray.apply with V broadcast, against ga_versor_apply in a C
+loop), no scipy column.
 
 Then Path.sample at the same --n times sorted and shuffled (--keys and 100
 times as many keys; CPU time), and with --dask N: N poses sampled through --keys keys
@@ -129,6 +133,20 @@ def main():
     put("gp ufunc", "garotor", median_time(lambda: garotor.ufunc.gp(X, Y), a.repeat))
     put("gp ufunc", "c_loop", ns["gp"]["c_loop"] * n / 1e9)
     del X, Y, A, B
+
+    # one versor (a rigid motion) on n points: Multivector.apply takes V's
+    # checks and inverse once (ga_versor_apply_many); "apply each" gives
+    # MultivectorArray.apply V broadcast to (n, 32) (a view), so the sandwich
+    # runs per element (ga_versor_apply), as Multivector.apply did before
+    V = garotor.Multivector.translation([1.0, 2.0, 3.0]) * garotor.Multivector.rotation([0.0, 0.6, 0.8], 0.7)
+    P = garotor.MultivectorArray.up(rng.normal(size=(n, 3)))
+    Pn, Vn = np.asarray(P), np.asarray(V)
+    VB = garotor.MultivectorArray(np.broadcast_to(Vn, (n, 32)))
+    put("apply", "garotor", median_time(lambda: V.apply(P), a.repeat))
+    put("apply", "c_loop", median_c(lambda: c_loop("apply_many", Pn, Vn, None, cpu), a.repeat))
+    put("apply each", "garotor", median_time(lambda: VB.apply(P), a.repeat))
+    put("apply each", "c_loop", median_c(lambda: c_loop("apply", Pn, Vn, None, cpu), a.repeat))
+    del V, P, Pn, Vn, VB
 
     if Rotation is not None:
         w, v = xi[:, :3], xi[:, 3:]

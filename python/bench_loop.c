@@ -32,7 +32,10 @@ static PyArrayObject *doubles(PyObject *o)
  * library calls that exp ("exp": x (n, 6) twists), log ("log": x (n, 4, 4)
  * motions), Path(keytimes, keys, scheme="screw").sample ("sample": x (n,)
  * times, keys (m, 4, 4)) make per element on group cga, or that
- * MultivectorArray's * makes ("gp": x and keytimes (n, 32), ga_mv_gp), in a plain C loop into a scratch
+ * MultivectorArray's * makes ("gp": x and keytimes (n, 32), ga_mv_gp), or
+ * one versor's apply on n multivectors ("apply": x (n, 32), keytimes the
+ * versor (32,), ga_versor_apply per element; "apply_many": the one call
+ * ga_versor_apply_many that Multivector.apply makes), in a plain C loop into a scratch
  * buffer whose pages are touched before the clock starts: no numpy, no
  * broadcasting, no kernel pointer, no check of the numbers beyond the
  * library's own. A bad element raises ValueError naming its index. */
@@ -44,11 +47,13 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     int cpu = 0;
     if (!PyArg_ParseTuple(args, "sO|OOp:c_loop", &kind, &xo, &to, &ko, &cpu))
         return NULL;
-    int k = strcmp(kind, "exp") == 0    ? 0
-          : strcmp(kind, "log") == 0    ? 1
-          : strcmp(kind, "sample") == 0 ? 2
-          : strcmp(kind, "gp") == 0     ? 3
-                                        : -1;
+    int k = strcmp(kind, "exp") == 0        ? 0
+          : strcmp(kind, "log") == 0        ? 1
+          : strcmp(kind, "sample") == 0     ? 2
+          : strcmp(kind, "gp") == 0         ? 3
+          : strcmp(kind, "apply") == 0      ? 4
+          : strcmp(kind, "apply_many") == 0 ? 5
+                                            : -1;
     PyArrayObject *x = doubles(xo), *kt = NULL, *kk = NULL;
     PyObject *ret = NULL;
     double *buf = NULL;
@@ -57,15 +62,21 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     if (!x)
         return NULL;
     npy_intp n = PyArray_NDIM(x) ? PyArray_DIM(x, 0) : 0;
-    npy_intp width = k == 0 ? 6 : k == 1 ? 16 : k == 3 ? 32 : 1, owidth = k == 3 ? 32 : 16;
+    npy_intp width = k == 0 ? 6 : k == 1 ? 16 : k >= 3 ? 32 : 1, owidth = k >= 3 ? 32 : 16;
     if (k < 0 || PyArray_SIZE(x) != n * width) {
-        PyErr_SetString(PyExc_ValueError,
-                        "c_loop: kind exp (n, 6), log (n, 4, 4), sample (n,) or gp (n, 32)");
+        PyErr_SetString(
+            PyExc_ValueError,
+            "c_loop: kind exp (n, 6), log (n, 4, 4), sample (n,), gp, apply or apply_many (n, 32)");
         goto done;
     }
     if (k == 3 && (!(kt = doubles(to)) || PyArray_SIZE(kt) != n * width)) {
         if (kt)
             PyErr_SetString(PyExc_ValueError, "c_loop: gp needs the second factors (n, 32)");
+        goto done;
+    }
+    if (k >= 4 && (!(kt = doubles(to)) || PyArray_SIZE(kt) != 32)) {
+        if (kt)
+            PyErr_SetString(PyExc_ValueError, "c_loop: apply needs the versor (32,)");
         goto done;
     }
     const ga_group *g = &ga_group_cga;
@@ -100,9 +111,15 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     memset(buf, 0, bytes); /* the pages, before the clock starts */
     double t0 = now_seconds(cpu);
     Py_BEGIN_ALLOW_THREADS;
+    if (k == 5) { /* one call; a failure is reported at index 0 */
+        ga_mv V;
+        memcpy(V.c, PyArray_DATA(kt), sizeof V.c);
+        if ((st = ga_versor_apply_many(V, (const ga_mv *)in, (size_t)n, (ga_mv *)buf)) != GA_OK)
+            bad = 0;
+    }
     /* a failed call writes nothing to e (the library's rule): e is read only
        after a success, and the loop stops at the first failure */
-    for (npy_intp i = 0; i < n; i++) {
+    for (npy_intp i = 0; k != 5 && i < n; i++) {
         double e[GA_GROUP_MAX_ELEM];
         if (k == 0) {
             if ((st = g->exp(in + 6 * i, e)) == GA_OK) {
@@ -120,6 +137,12 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
             memcpy(b.c, (const double *)PyArray_DATA(kt) + 32 * i, sizeof b.c);
             ga_mv c = ga_mv_gp(a, b);
             memcpy(buf + 32 * i, c.c, sizeof c.c);
+        } else if (k == 4) {
+            ga_mv V, X, Y;
+            memcpy(V.c, PyArray_DATA(kt), sizeof V.c);
+            memcpy(X.c, in + 32 * i, sizeof X.c);
+            if ((st = ga_versor_apply(V, X, &Y)) == GA_OK)
+                memcpy(buf + 32 * i, Y.c, sizeof Y.c);
         } else if ((st = ga_path_sample(&path, GA_EVAL_DIRECT, 1.0, 1, in + i, e)) == GA_OK) {
             ga_mat4 M = g->to_mat4(e);
             memcpy(buf + 16 * i, M.m, sizeof M.m);

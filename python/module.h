@@ -295,6 +295,10 @@ GPY_MV_KERNEL(mv_sqrt);
 GPY_MV_KERNEL(mv_pow);
 GPY_MV_KERNEL(norm2);
 GPY_MV_KERNEL(object);
+/* versor_apply of one versor V (32 numbers) on n multivectors X (n x 32, C
+ * order) into out (out may be X), as gpy_kernel_call.many: ga_versor_apply_many,
+ * each result gpy_k_versor_apply's bit for bit */
+int gpy_versor_apply_many(void *ctx, const double *V, const double *X, npy_intp n, double *out);
 
 /* ---- generalized ufuncs (ufuncs.c) ------------------------------------------ */
 

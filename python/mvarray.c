@@ -73,6 +73,15 @@ K_BINARY_STATUS(meet_rel, ga_mv_meet_rel)
 K_BINARY_STATUS(project, ga_mv_project)
 K_BINARY_STATUS(reject, ga_mv_reject)
 K_BINARY_STATUS(versor_apply, ga_versor_apply)
+
+/* One versor V, n multivectors (gpy_kernel_call.many): ga_versor_apply_many,
+   V's checks and inverse once, each result what gpy_k_versor_apply gives, bit
+   for bit (versor.h). X and out are n ga_mv in C order (out may be X). */
+int gpy_versor_apply_many(void *ctx, const double *V, const double *X, npy_intp n, double *out)
+{
+    (void)ctx;
+    return ga_versor_apply_many(mv_at(V), (const ga_mv *)X, (size_t)n, (ga_mv *)out);
+}
 K_UNARY(reverse, ga_mv_reverse)
 K_UNARY(involute, ga_mv_involute)
 K_UNARY(conjugate, ga_mv_conjugate)
@@ -190,6 +199,8 @@ static PyObject *run(const char *what, gpy_kernel_fn kernel, void *ctx, int nin,
                      gpy_core out, PyObject *const *objs)
 {
     gpy_kernel_call kc = {.what = what, .nin = nin, .out = out, .kernel = kernel, .ctx = ctx};
+    if (kernel == gpy_k_versor_apply) /* one versor on many: its inverse once */
+        kc.many = gpy_versor_apply_many;
     for (int j = 0; j < nin; j++) kc.in[j] = in[j];
     PyObject *r = gpy_run_kernel(&kc, objs, NULL);
     return out.ncore == 1 && out.core[0] == 32 ? mva_wrap(r) : r;

@@ -287,7 +287,9 @@ static void loop(char **args, npy_intp const *dims, npy_intp const *steps, void 
        the loop below does them one by one (NaN for each failed one) */
     const npy_intp w = (npy_intp)sizeof(double);
     int (*many)(void *, const double *, const double *, npy_intp,
-                double *) = d->kernel == gpy_k_apply ? gpy_apply_many : NULL; /* gpy_kernel_call.many */
+                double *) = d->kernel == gpy_k_apply        ? gpy_apply_many
+                          : d->kernel == gpy_k_versor_apply ? gpy_versor_apply_many
+                                                            : NULL; /* gpy_kernel_call.many */
     if (many && d->nin == 2 && dims[0] > 1 && direct && steps[0] == 0 && plain(&d->in[0], cs[0]) &&
         plain(&d->in[1], cs[1]) && steps[1] == core_count(&d->in[1]) * w && steps[2] == osize * w &&
         (uintptr_t)args[0] % sizeof(double) == 0 && (uintptr_t)args[1] % sizeof(double) == 0 &&

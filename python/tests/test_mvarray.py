@@ -270,3 +270,44 @@ def test_exp_log_apply_points_objects(rng, C):
     with pytest.raises(garotor.Error, match="^MultivectorArray.project: index 5: ") as e:
         MA(Ob).project(MA(Z))
     assert e.value.index == (5,)
+
+
+EVEN = np.isin(np.arange(32), [0, *range(6, 16), *range(26, 31)])  # grades 0, 2, 4
+
+
+def test_one_versor_on_many_is_the_batch_bit_for_bit(rng, C):
+    """One versor on many multivectors runs ga_versor_apply_many (V's inverse
+    once): each element is ga_versor_apply's answer bit for bit, through
+    Multivector.apply, MultivectorArray.apply of one element and the ufunc
+    mv_apply (with out= too, past its 48-element chunk), for even and odd
+    versors, on points and on dense multivectors; a V that C refuses names
+    the first element."""
+    n = 130
+    x = rng.normal(size=(n, 3))
+    X = [np.asarray(MA.up(x)), blades(rng, n, scale=3.0), rng.normal(size=(n, 32))]
+    V = [rotors(rng, 1)[0], np.asarray(M.reflection(rng.normal(size=3), 0.7)),
+         np.asarray(M.inversion(rng.normal(size=3), 1.3)), rng.normal(size=32) * EVEN]
+    for v in V:
+        for xs in X:
+            want = np.empty_like(xs)
+            for i in range(n):
+                out = CMV()
+                assert C.ga_versor_apply(cmv(v), cmv(xs[i]), ctypes.byref(out)) == 0
+                want[i] = out.c[:]
+            assert same(np.asarray(M(v).apply(MA(xs))), want)
+            assert same(np.asarray(MA(v).apply(MA(xs))), want)
+            # per element (V broadcast, not one element): the same numbers
+            assert same(np.asarray(MA(np.broadcast_to(v, (n, 32))).apply(MA(xs))), want)
+            got = MA(v).apply(MA(xs.reshape(10, 13, 32)))
+            assert got.shape == (10, 13) and same(np.asarray(got), want.reshape(10, 13, 32))
+            assert same(garotor.ufunc.mv_apply(v, xs), want)
+            o = np.full((n, 32), np.nan)
+            assert garotor.ufunc.mv_apply(v, xs, out=o) is o and same(o, want)
+    mixed = np.zeros(32)
+    mixed[0], mixed[1] = 1.0, 0.5  # even and odd parts: GA_ERR_ARG
+    with pytest.raises(garotor.Error, match=r"^Multivector.apply: index 0: ") as e:
+        M(mixed).apply(MA(X[0]))
+    assert e.value.index == (0,)
+    with pytest.warns(RuntimeWarning, match="invalid value encountered in mv_apply"):
+        r = garotor.ufunc.mv_apply(mixed, X[0])
+    assert r.shape == (n, 32) and np.isnan(r).all()

@@ -107,3 +107,10 @@ def test_bench_c_loop(rng):
     assert b.c_loop("sample", np.array([0.5, 1.5]), np.arange(3.0), K) >= 0
     with pytest.raises(ValueError, match=r"^c_loop: index 1: invalid argument"):
         b.c_loop("sample", np.array([0.5, 9.0]), np.arange(3.0), K)
+    P, V = np.asarray(garotor.up(rng.normal(size=(4, 3)))), np.asarray(garotor.Multivector.translation([1, 2, 3]))
+    assert b.c_loop("apply", P, V) >= 0 and b.c_loop("apply_many", P, V) >= 0
+    V[1] = 1.0  # even and odd parts
+    with pytest.raises(ValueError, match=r"^c_loop: index 0: invalid argument"):
+        b.c_loop("apply", P, V)
+    with pytest.raises(ValueError, match=r"^c_loop: index 0: invalid argument"):
+        b.c_loop("apply_many", P, V)
