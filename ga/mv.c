@@ -77,30 +77,9 @@ ga_mv ga_mv_scale(ga_mv a, double s)
     return a;
 }
 
-/* x - x is +0 for every finite x and NaN for NaN and +-Inf: the sum is 0
-   exactly when all 32 are finite (one test, in partial sums that share vector
-   lanes, as ga__mat4_isfinite) */
-int ga_mv_isfinite(ga_mv a)
-{
-    double z[4] = {0.0, 0.0, 0.0, 0.0};
-    for (int i = 0; i < 32; i += 4)
-        for (int j = 0; j < 4; j++) z[j] += a.c[i + j] - a.c[i + j];
-    return (z[0] + z[1]) + (z[2] + z[3]) == 0.0;
-}
+int ga_mv_isfinite(ga_mv a) { return gak_isfinite(a.c); }
 
-double ga_mv_maxabs(ga_mv a)
-{
-    /* v > m ? v : m is fmax(m, v) for m never NaN: a NaN v is passed over;
-       four running maxima (in vectors, no chain of 32), then theirs */
-    double m[4] = {0.0, 0.0, 0.0, 0.0};
-    for (int i = 0; i < 32; i += 4)
-        for (int j = 0; j < 4; j++) {
-            double v = fabs(a.c[i + j]);
-            m[j] = v > m[j] ? v : m[j];
-        }
-    double x = m[0] > m[1] ? m[0] : m[1], y = m[2] > m[3] ? m[2] : m[3];
-    return x > y ? x : y;
-}
+double ga_mv_maxabs(ga_mv a) { return gak_maxabs(a.c); }
 
 /* The products, every term written out by gen/generate.py from the blade rule
  * above (`python3 gen/generate.py` rewrites ga/mv_products.inc). Each

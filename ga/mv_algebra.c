@@ -28,6 +28,8 @@
 #include "internal/object.h"
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #define U DBL_EPSILON
 
@@ -164,36 +166,63 @@ static ga_status general_inverse(ga_mv a, ga_mv *out)
    its steps on arrays, fused: the same operations on each coefficient, in
    the same order (so the same bits), without copying 256-byte values from
    call to call. Where a ~a is not a scalar to its rounding, or 2^-e is not a
-   normal double, ga_mv_inverse itself. */
+   normal double, ga_mv_inverse itself.
+   Three shortcuts keep those bits:
+   - sbar sums the squares of a's parity alone: the others are +0, and
+     adding +0 leaves a sum of squares as it is;
+   - of a ~a only the scalar and grade 4 are formed: a ~a is its own reverse,
+     so its grades 2 and 3 are 0 but for rounding, and a ~a of one parity has
+     no odd grade. That rounding is below the tolerance: each coefficient
+     sums 16 products +-as_i as_j, j running over a permutation of i, so
+     sum |as_i as_j| <= sbar (Cauchy-Schwarz) and the error is at most
+     ~16 u sbar, against GA_MV_INVERSE_TOL U sbar = 128 u sbar: leaving grade 2
+     out of the test never changes its outcome;
+   - frexp of a normal amax and 2^-e are read and made from the bits. */
 ga_status gak_inverse_one_parity(const ga_mv *a, unsigned g, ga_mv *out)
 {
-    double amax = ga_mv_maxabs(*a);
+    double amax = gak_maxabs(a->c);
     int e = 0;
-    if (amax > 0.0)
+    if (amax >= DBL_MIN) {
+        uint64_t bits;
+        memcpy(&bits, &amax, sizeof bits);
+        e = (int)(bits >> 52) - 1022; /* amax = m 2^e, m in [1/2, 1) */
+    } else if (amax > 0.0) {
         frexp(amax, &e);
+    }
     if (e < -1023 || e > 1022)
         return ga_mv_inverse(*a, out);
-    double p = ldexp(1.0, -e), sbar = 0.0;
+    uint64_t pbits = (uint64_t)(1023 - e) << 52; /* 2^-e, -e in [-1022, 1023]: normal */
+    double p, sbar = 0.0;
+    memcpy(&p, &pbits, sizeof p);
     /* ga_mv_reverse's sign of each blade: grades 0, 1 +, 2, 3 -, 4, 5 + */
     static const double rev_sign[32] = {1,  1,  1,  1,  1,  1,  -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
                                         -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 1,  1,  1,  1,  1,  1};
-    ga_mv as, rev, aa;
+    /* the blades of each parity, in the canonical order */
+    static const unsigned char parity_blades[2][16] = {
+        {0, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 26, 27, 28, 29, 30},
+        {1, 2, 3, 4, 5, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 31}};
+    int odd = (g & 0x2au) != 0;
+    ga_mv as, rev;
     for (int i = 0; i < 32; i++) {
         as.c[i] = a->c[i] * p;
-        sbar += as.c[i] * as.c[i];
         rev.c[i] = as.c[i] * rev_sign[i];
     }
-    gak_gp_g(as.c, g, rev.c, g, aa.c);
-    double s = aa.c[GA_BLADE_SCALAR];
-    aa.c[GA_BLADE_SCALAR] = 0.0;
-    if (!(ga_mv_maxabs(aa) <= GA_MV_INVERSE_TOL * U * sbar))
+    for (int j = 0; j < 16; j++) {
+        double x = as.c[parity_blades[odd][j]];
+        sbar += x * x;
+    }
+    double aa[32];
+    gak_gp_same_parity_g04(as.c, rev.c, odd, aa);
+    double s = aa[GA_BLADE_SCALAR], a4 = 0.0;
+    for (int i = 26; i < 31; i++) a4 = fabs(aa[i]) > a4 ? fabs(aa[i]) : a4;
+    if (!(a4 <= GA_MV_INVERSE_TOL * U * sbar))
         return ga_mv_inverse(*a, out);
     if (!(fabs(s) > GA_MV_INVERSE_TOL * U * sbar))
         return GA_ERR_SINGULAR;
     double k = 1.0 / s;
     ga_mv r;
     for (int i = 0; i < 32; i++) r.c[i] = rev.c[i] * k * p;
-    if (!ga_mv_isfinite(r))
+    if (!gak_isfinite(r.c))
         return GA_ERR_SINGULAR;
     *out = r;
     return GA_OK;

@@ -137,6 +137,14 @@ ga_status ga_mv_gp_even_vector_sparse(const double *even, const double *vec, dou
     return GA_OK;
 }
 
+void gak_gp_same_parity_g04(const double *a, const double *b, int odd, double *r)
+{
+    if (odd)
+        mv_gp_oo_g04(a, b, r);
+    else
+        mv_gp_ee_g04(a, b, r);
+}
+
 void gak_dot_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { gak_dot_blocks(a->c, b->c, r->c); }
 void gak_dot_dense(const double *a, const double *b, double *r) { mv_dot_dense(a, b, r); }
 void gak_gp_even_vector_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_eg1(a->c, b->c, r->c); }

@@ -58,7 +58,7 @@ ga_status ga_versor_apply(ga_mv V, ga_mv X, ga_mv *out)
 {
     if (!out)
         return GA_ERR_ARG;
-    if (!ga_mv_isfinite(V) || !ga_mv_isfinite(X))
+    if (!gak_isfinite(V.c) || !gak_isfinite(X.c))
         return GA_ERR_NOTFINITE;
     /* V X^ before V^-1: it does not need it, and runs beside it */
     versor_prep p;
@@ -79,10 +79,10 @@ ga_status ga_versor_apply_many(ga_mv V, const ga_mv *in, size_t n, ga_mv *out)
 {
     if (!in || !out)
         return GA_ERR_ARG;
-    if (!ga_mv_isfinite(V))
+    if (!gak_isfinite(V.c))
         return GA_ERR_NOTFINITE;
     for (size_t i = 0; i < n; i++)
-        if (!ga_mv_isfinite(in[i]))
+        if (!gak_isfinite(in[i].c))
             return GA_ERR_NOTFINITE;
     versor_prep p;
     p.V = V;

@@ -157,6 +157,31 @@ def gen_sparse():
             lines, c = _function('mv_gp_%s%s' % (pname, qname), what, P, vars_.names)
             out += lines
             counts['mv_gp_%s%s' % (pname, qname)] = c
+    # a b for a and b of one parity, both even or both odd: its scalar and
+    # grade-4 coefficients alone (r[0], r[26..30]; the others not written).
+    # a ~a has no other grade but grade 2's rounding (it is its own reverse),
+    # which ga/mv_algebra.c's versor inverse does not need
+    for pname, par in PARITY:
+        vars_ = Vars()
+        A = _sparse_vars(vars_, 'a', lambda m: popcount(m) % 2 == par)
+        B = _sparse_vars(vars_, 'b', lambda m: popcount(m) % 2 == par)
+        P = ALG.product(A, B)
+        lines, mul, add = [], 0, 0
+        for i, m in enumerate(ALG.masks):
+            if popcount(m) not in (0, 4):
+                continue
+            p = P.get(m, Poly())
+            lines += emit_sum('r[%d]' % i, p, vars_.names, a_major)
+            dm, da = p.ops()
+            mul, add = mul + dm, add + da
+        name = 'mv_gp_%s%s_g04' % (pname, pname)
+        counts[name] = (mul, add)
+        out += ['', '/* r[0], r[26..30] = the scalar and grade-4 coefficients of a b, a and b %s (their' % (
+                    'even' if par == 0 else 'odd'),
+                '   other blades not read; r\'s other coefficients not written): %d multiplications,' % mul,
+                '   %d additions (mv_gp_%s%s\'s sums). */' % (add, pname, pname),
+                'static void %s(const double *restrict a, const double *restrict b, double *restrict r)' % name,
+                '{'] + lines + ['}']
     # an even multivector times a vector on their coefficients alone (the
     # public ga_mv_gp_even_vector_sparse): e[j] the j-th even blade, v[j] the
     # j-th vector, o[j] the j-th odd blade of the result, in the canonical

@@ -6,6 +6,32 @@
 #define GA_INTERNAL_MV_KERNELS_H
 
 #include <garotor/mv.h>
+#include <math.h>
+
+/* ga_mv_isfinite and ga_mv_maxabs of the 32 coefficients x[0..31], inline
+   (ga/mv.c's exported ones call these): x - x is +0 for every finite x and
+   NaN for NaN and +-Inf, so the sum is 0 exactly when all 32 are finite (one
+   test, in partial sums that share vector lanes, as ga__mat4_isfinite). */
+static inline int gak_isfinite(const double *x)
+{
+    double z[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 32; i += 4)
+        for (int j = 0; j < 4; j++) z[j] += x[i + j] - x[i + j];
+    return (z[0] + z[1]) + (z[2] + z[3]) == 0.0;
+}
+static inline double gak_maxabs(const double *x)
+{
+    /* v > m ? v : m is fmax(m, v) for m never NaN: a NaN v is passed over;
+       four running maxima (in vectors, no chain of 32), then theirs */
+    double m[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 32; i += 4)
+        for (int j = 0; j < 4; j++) {
+            double v = fabs(x[i + j]);
+            m[j] = v > m[j] ? v : m[j];
+        }
+    double p = m[0] > m[1] ? m[0] : m[1], q = m[2] > m[3] ? m[2] : m[3];
+    return p > q ? p : q;
+}
 
 /* The grades of x that have a coefficient other than 0 (a NaN counts): bit k
    for grade k. */
@@ -22,6 +48,12 @@ void gak_gp(const double *a, const double *b, double *r);
 /* The same with the grades of a and b given (ga, gb as gak_grades gives
    them, or any masks with more grades: a kernel is picked for those). */
 void gak_gp_g(const double *a, unsigned ga, const double *b, unsigned gb, double *r);
+
+/* r[0] and r[26..30]: the scalar and grade-4 coefficients of a b, a and b
+   both even (odd = 0) or both odd (odd = 1), their other blades not read;
+   ga_mv_gp's numbers for them (but the sign of a zero). r's other
+   coefficients are not written. */
+void gak_gp_same_parity_g04(const double *a, const double *b, int odd, double *r);
 
 /* ga_mv_inverse(*a, out) for a finite a whose grades are within g, and of
    one parity (ga/mv_algebra.c): the same statuses and bits, faster. */
