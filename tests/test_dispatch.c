@@ -1,10 +1,11 @@
 /* tests/test_dispatch.c: the kernels that ga/dispatch.c picks per CPU at
- * load time (ga/internal/dispatch.h), each in both its forms, baseline and
- * AVX2, compiled here from the same source with the same attributes as the
- * library compiles them, against each other bit for bit; and the public
- * calls, whichever form the loader picked, against the baseline form. The
- * AVX2 form runs only where the CPU has AVX2 (and only with gcc or clang on
- * x86-64); elsewhere the public calls are checked against the baseline.
+ * load time (ga/internal/dispatch.h), each in its forms, baseline, AVX2 and
+ * AVX-512F, compiled here from the same source with the same attributes (and
+ * the build's -ffp-contract=off) as the library compiles them, against the
+ * baseline bit for bit; and the public calls, whichever form the loader
+ * picked, against the baseline form. A form runs only where the CPU has its
+ * instructions (and only with gcc or clang on x86-64); elsewhere the public
+ * calls are checked against the baseline.
  *
  * Inputs: 4x4 matrices and points with coefficients of either sign from
  * 1e-300 to 1e300, subnormals, zeros of both signs, and some infinities and
@@ -20,10 +21,17 @@
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define TD_AVX2 1
-__attribute__((target("avx2"))) static void apply_avx2(const double *a, const ga_vec3 *in, size_t n, ga_vec3 *out)
+__attribute__((target("avx2"))) static void apply_avx2(const double *a, const ga_vec3 *in, size_t n,
+                                                       ga_vec3 *out)
 {
     gad_mat4_apply_kernel(a, in, n, out);
 }
+__attribute__((target("avx512f"))) static void apply_avx512f(const double *a, const ga_vec3 *in, size_t n,
+                                                             ga_vec3 *out)
+{
+    gad_mat4_apply_kernel(a, in, n, out);
+}
+typedef void (*apply_fn)(const double *, const ga_vec3 *, size_t, ga_vec3 *);
 #endif
 static void apply_base(const double *a, const ga_vec3 *in, size_t n, ga_vec3 *out)
 {
@@ -62,15 +70,23 @@ static void section_mat4(void)
     tk_rng r = {29};
 #ifdef TD_AVX2
     __builtin_cpu_init();
-    int has = __builtin_cpu_supports("avx2");
-    tk_check c_form = tk_begin(has ? "AVX2 form = baseline form, bit for bit (finite inputs, 2e4 batches)"
-                                   : "AVX2 form: no AVX2 on this CPU, not run",
-                               0);
-    tk_check c_inplace =
-        tk_begin(has ? "AVX2 form in place (in == out) = baseline form" : "AVX2 form in place: not run", 0);
-    tk_check c_special = tk_begin(has ? "AVX2 form = baseline form with NaN and infinities in (equal or both NaN)"
-                                      : "AVX2 form with NaN and infinities: not run",
-                                  0);
+    static const char *const name[2] = {"AVX2", "AVX-512F"};
+    const apply_fn form[2] = {apply_avx2, apply_avx512f};
+    const int has[2] = {__builtin_cpu_supports("avx2"), __builtin_cpu_supports("avx512f")};
+    tk_check c_form[2], c_inplace[2], c_special[2];
+    for (int f = 0; f < 2; f++) {
+        if (has[f]) {
+            c_form[f] = tk_beginf(0, "%s form = baseline form, bit for bit (finite inputs)", name[f]);
+            c_inplace[f] = tk_beginf(0, "%s form in place (in == out) = baseline form", name[f]);
+            c_special[f] = tk_beginf(0,
+                                     "%s form = baseline form with NaN and infinities in (equal or both NaN)",
+                                     name[f]);
+        } else {
+            c_form[f] = tk_beginf(0, "%s form: not on this CPU, not run", name[f]);
+            c_inplace[f] = tk_beginf(0, "%s form in place: not on this CPU, not run", name[f]);
+            c_special[f] = tk_beginf(0, "%s form with NaN and infinities: not on this CPU, not run", name[f]);
+        }
+    }
 #endif
     tk_check c_pub = tk_begin("ga_mat4_apply_many (the picked form) = baseline form, bit for bit", 0);
     tk_check c_rot = tk_begin("ga_rotor_apply_many = baseline form on ga_rotor_to_mat4, bit for bit", 0);
@@ -90,14 +106,15 @@ static void section_mat4(void)
         TK_OK(ga_mat4_apply_many(m, in, n, got));
         tk_add_bool(&c_pub, same(got, want, n, special));
 #ifdef TD_AVX2
-        if (has) {
-            memset(got, 0x55, sizeof got);
-            apply_avx2(m.m, in, n, got);
-            tk_add_bool(special ? &c_special : &c_form, same(got, want, n, special));
-            memcpy(got, in, n * sizeof *in);
-            apply_avx2(m.m, got, n, got);
-            tk_add_bool(&c_inplace, same(got, want, n, special));
-        }
+        for (int f = 0; f < 2; f++)
+            if (has[f]) {
+                memset(got, 0x55, sizeof got);
+                form[f](m.m, in, n, got);
+                tk_add_bool(special ? &c_special[f] : &c_form[f], same(got, want, n, special));
+                memcpy(got, in, n * sizeof *in);
+                form[f](m.m, got, n, got);
+                tk_add_bool(&c_inplace[f], same(got, want, n, special));
+            }
 #endif
         if (!special && k % 8 == 0) {
             ga_rotor R = ga_rotor_exp(ga_twist_to_generator(tk_twist(&r, k / 8 % TK_FAMILIES)));
@@ -111,9 +128,11 @@ static void section_mat4(void)
         }
     }
 #ifdef TD_AVX2
-    tk_end(&c_form);
-    tk_end(&c_inplace);
-    tk_end(&c_special);
+    for (int f = 0; f < 2; f++) {
+        tk_end(&c_form[f]);
+        tk_end(&c_inplace[f]);
+        tk_end(&c_special[f]);
+    }
 #endif
     tk_end(&c_pub);
     tk_end(&c_rot);

@@ -1,6 +1,7 @@
 /* ga/internal/dispatch.h (internal, not installed): the kernels that
- * ga/dispatch.c compiles twice, for baseline x86-64 and for AVX2, and picks
- * once per process, when the library is loaded. Prefix gad_.
+ * ga/dispatch.c compiles three times, for baseline x86-64 (SSE2), AVX2 and
+ * AVX-512F, and picks once per process, when the library is loaded. Prefix
+ * gad_.
  *
  * GAD_IFUNC is 1 where the pick is made: x86-64, glibc (its loader runs the
  * resolvers of IRELATIVE relocations; musl has none), a compiler with the
@@ -10,10 +11,12 @@
  * ga/mv.c picks the width of ga_mv_gp's vectors under the same condition.
  *
  * Each kernel is written once, here, as an always-inline function: compiled
- * into a function with target("avx2"), it runs in 256-bit vectors; the AVX2
- * form is not allowed FMA (no "fma" in its target), so it rounds each
- * multiplication and each addition as the baseline does, and both forms give
- * the same bits for every input (tests/test_dispatch.c checks it).
+ * into a function with target("avx2") or target("avx512f"), it runs in 256-
+ * or 512-bit vectors. No product is fused into a sum: the build passes
+ * -ffp-contract=off to every file (and the AVX2 form's target has no "fma"),
+ * so every form rounds each multiplication and each addition as the baseline
+ * does, and all give the same bits for every input (tests/test_dispatch.c
+ * checks it).
  */
 #ifndef GA_INTERNAL_DISPATCH_H
 #define GA_INTERNAL_DISPATCH_H
@@ -22,7 +25,8 @@
 #include <stddef.h>
 #include <stdint.h> /* a C library header: glibc's defines __GLIBC__ */
 
-#if defined(GA_HAVE_IFUNC) && defined(__GLIBC__) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if defined(GA_HAVE_IFUNC) && defined(__GLIBC__) && defined(__x86_64__) &&                                   \
+    (defined(__GNUC__) || defined(__clang__))
 #define GAD_IFUNC 1
 #else
 #define GAD_IFUNC 0
