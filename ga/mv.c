@@ -91,13 +91,14 @@ double ga_mv_maxabs(ga_mv a) { return gak_maxabs(a.c); }
  * a subset of b's), so each sum is rounded as that loop rounds it. */
 /* With gcc on x86-64 (GA_DENSE_BLOCKS), ga_mv_gp is the same product in
  * vectors, compiled for SSE2 (2 doubles), AVX2 (4) and AVX-512F (8); where the
- * C library resolves ifuncs (glibc) and the compiler has the attribute
- * (GA_HAVE_IFUNC, from meson), the dynamic loader picks the widest the CPU
- * runs. Elsewhere (musl, which has no IRELATIVE relocations) the SSE2 form
- * serves every CPU. All give mv_gp_dense's bits (docs/benchmarks.md has the
- * speeds). */
+ * C library resolves ifuncs (glibc), the compiler has the attribute and the
+ * build asks for it (GAD_IFUNC of internal/dispatch.h: -Ddispatch=auto), the
+ * dynamic loader picks the widest the CPU runs. Elsewhere (musl, which has
+ * no IRELATIVE relocations; -Ddispatch=off) the SSE2 form serves every
+ * CPU. All give mv_gp_dense's bits (docs/benchmarks.md has the speeds). */
+#include "internal/dispatch.h"
 #include "internal/gp_dense.h"
-#if defined(GA_DENSE_BLOCKS) && defined(__GLIBC__) && defined(GA_HAVE_IFUNC)
+#if defined(GA_DENSE_BLOCKS) && GAD_IFUNC
 #define GA_GP_IFUNC 1
 #endif
 
@@ -121,7 +122,7 @@ static ga_mv gp_sse2(ga_mv a, ga_mv b)
     return r;
 }
 typedef ga_mv (*gp_fn)(ga_mv, ga_mv);
-static gp_fn gp_resolve(void)
+GAD_RESOLVER static gp_fn gp_resolve(void)
 {
     __builtin_cpu_init(); /* a resolver runs before the constructors that would */
     return __builtin_cpu_supports("avx512f") ? gp_avx512f
@@ -159,7 +160,7 @@ __attribute__((target("avx2"))) static void gp_p_avx2(const ga_mv *a, const ga_m
 }
 static void gp_p_sse2(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_gp_blocks2(a->c, b->c, r->c); }
 typedef void (*gp_p_fn)(const ga_mv *, const ga_mv *, ga_mv *);
-static gp_p_fn gp_p_resolve(void)
+GAD_RESOLVER static gp_p_fn gp_p_resolve(void)
 {
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx512f") ? gp_p_avx512f
@@ -190,7 +191,7 @@ void gak_op_p(const ga_mv *a, const ga_mv *b, ga_mv *r) { mv_op_dense(a->c, b->c
         kernel##4(a, b, r);                                                                                  \
     }                                                                                                        \
     static void fn##_sse2(const double *a, const double *b, double *r) { kernel##2(a, b, r); }               \
-    static gak_kernel_fn fn##_resolve(void)                                                                  \
+    GAD_RESOLVER static gak_kernel_fn fn##_resolve(void)                                                     \
     {                                                                                                        \
         __builtin_cpu_init();                                                                                \
         return __builtin_cpu_supports("avx512f") ? fn##_avx512f                                              \
@@ -222,7 +223,7 @@ static ga_mv dot_sse2(ga_mv a, ga_mv b)
     mv_dot_blocks2(a.c, b.c, r.c);
     return r;
 }
-static gp_fn dot_resolve(void)
+GAD_RESOLVER static gp_fn dot_resolve(void)
 {
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx512f") ? dot_avx512f

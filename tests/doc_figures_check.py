@@ -50,7 +50,8 @@ without FMA) it prints other last digits in three of its lines, two of them
 in docs/numerics.md's tables; soak_c2_keys and figures_matrices print the
 same either way.
 ga_mv_gp's own code paths (SSE2, AVX2, AVX-512F) give the same bits
-(tests/test_gp_blocks.c).
+(tests/test_gp_blocks.c), and so do the two forms of each kernel of
+ga/dispatch.c (tests/test_dispatch.c).
 
 Before the docs, the checker runs on a page and an output of its own
 (self_test): a figure that differs, a tolerance, a line not printed, a table
