@@ -519,7 +519,7 @@ typedef long long rotor_v2i __attribute__((vector_size(16)));
 #endif
 
 /* gcc's SLP vectorizer packed the rotor's doubles in pairs and out again
- * (205 instructions a call against 185, and in one build of garotor-bench
+ * (205 instructions a call against 191, and in one build of garotor-bench
  * twice the time), and math-errno kept a call to libm's sqrt for a negative
  * argument (never here) with its spills: the functions of the common case
  * are built without both (the same operations, the same bits). */
