@@ -347,6 +347,18 @@ static inline double atan2_quadrant(double y, double x)
     return a[j] + z * poly;
 }
 
+#if defined(__GNUC__)
+#define ROTOR_COLD __attribute__((noinline, cold))
+#define ROTOR_UNLIKELY(x) __builtin_expect(!!(x), 0)
+#else
+#define ROTOR_COLD
+#define ROTOR_UNLIKELY(x) (x)
+#endif
+
+/* Every case of ga_rotor_log and ga_rotor_log_literal: the rare ones (far
+ * from the group, not finite, |b| < 2^-450, a full turn) and the literal log
+ * of s < 0 (through rotor_log_cold); the principal log's common case is
+ * rotor_log_principal below. */
 static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
 {
     if (!rotor_near_group(r)) { /* rare: decide as ga_rotor_check does */
@@ -456,10 +468,127 @@ static inline int rotor_log(ga_rotor r, int principal, ga_generator *out)
     return GA_OK;
 }
 
-ga_status ga_rotor_log(ga_rotor r, ga_generator *out) { return out ? rotor_log(r, 1, out) : GA_ERR_ARG; }
-ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out)
+/* rotor_log out of line; r by pointer, so that the hot path's caller does
+ * not copy the rotor for a call it rarely makes */
+static ROTOR_COLD int rotor_log_cold(const ga_rotor *r, int principal, ga_generator *out)
 {
-    return out ? rotor_log(r, 0, out) : GA_ERR_ARG;
+    return rotor_log(*r, principal, out);
+}
+
+/* The principal log's common case, s >= 0 taken as it is and s < 0 as -R:
+ * r near the group (the test of rotor_near_group, the same operations) and
+ * |b| >= 2^-450; anything else goes to rotor_log. Its steps
+ * (docs/numerics.md, "The rotor logarithm"):
+ *  - |q| = (1 + d)^(1/2), d = |q|^2 - 1, |d| <= GA_ROTOR_DRIFT_MAX: 1/|q| and
+ *    1/|q|^2 from their series to d^2 (the first omitted term below 4e-19);
+ *  - the half angle phi = atan2(|b|, |s|) in [0, pi/2] as a + asin(sigma):
+ *    a = j pi/16 (rounded) the multiple nearest phi (j counts the k with
+ *    |b|^2 > tan^2((2k+1) pi/32) s^2: no sqrt, no division), and
+ *    sigma = sin(phi - a) = (|b| cos a - |s| sin a) / |q|, |sigma| <= sin(pi/32)
+ *    (a little more where the comparisons round); asin by its Taylor series to
+ *    sigma^15, whose first omitted term is below 1e-18 of sigma. For j = 0,
+ *    sigma = |b| / |q| and small angles keep their relative accuracy; a
+ *    rotor made from the angle a itself (cos a, sin a: 45 or 90 degrees) has
+ *    sigma = 0 and phi = a;
+ *  - beta = phi u, u = b / |b|, and with F = phi / |b|,
+ *    c = F p + H b with H b = (c.u - F p.u) u (step 5 of numerics.md:
+ *    c.u = (s p.u + |b| p4) / |q|^2): c_perp = F p_perp and c_par, without
+ *    forming p_perp. Every term is finite: |p| <= 1e150 and F <= pi 2^449.
+ * One sqrt and one division (1/|b|), the sector found while the sqrt runs. */
+static const double log_sector_t2[8] = {0.009700556535263626, 0.09201921045557308, 0.28570215445540564,
+                                        0.673513677715992,    1.4847508418703281,  3.5001486142313527,
+                                        10.867296024918627,   103.08686891981746}; /* tan^2((2k+1) pi/32) */
+static const struct {
+    double c, s, a; /* a = j pi/16 rounded, cos a and sin a rounded (libm's) */
+} log_sector[9] = {{1.0, 0.0, 0.0},
+                   {0.9807852804032304, 0.19509032201612825, 0.19634954084936207},
+                   {0.9238795325112867, 0.3826834323650898, 0.39269908169872414},
+                   {0.8314696123025452, 0.5555702330196022, 0.5890486225480862},
+                   {0.7071067811865476, 0.7071067811865475, 0.7853981633974483},
+                   {0.5555702330196023, 0.8314696123025452, 0.9817477042468103},
+                   {0.38268343236508984, 0.9238795325112867, 1.1780972450961724},
+                   {0.19509032201612833, 0.9807852804032304, 1.3744467859455345},
+                   {6.123233995736766e-17, 1.0, 1.5707963267948966}};
+/* asin(x) / x = sum_k (2k)! / (4^k (k!)^2 (2k + 1)) x^(2k) */
+static const double asin_taylor[8] = {1.0,           1.0 / 6,       3.0 / 40,        5.0 / 112,
+                                      35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0};
+
+#if defined(__GNUC__)
+typedef double rotor_v2d __attribute__((vector_size(16)));
+typedef long long rotor_v2i __attribute__((vector_size(16)));
+#endif
+
+/* gcc's SLP vectorizer packed the rotor's doubles in pairs and out again
+ * (205 instructions a call against 191, and in one build of garotor-bench
+ * twice the time), and math-errno kept a call to libm's sqrt for a negative
+ * argument (never here) with its spills: the functions of the common case
+ * are built without both (the same operations, the same bits). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define ROTOR_LOG_FLAGS __attribute__((optimize("no-tree-slp-vectorize", "no-math-errno")))
+#else
+#define ROTOR_LOG_FLAGS
+#endif
+
+/* j: how many of tan^2((2k+1) pi/32) s2 lie below nb2 (the same
+ * comparisons in pairs where the compiler has vectors) */
+ROTOR_LOG_FLAGS static inline int log_sector_of(double nb2, double s2)
+{
+#if defined(__GNUC__)
+    rotor_v2d n = {nb2, nb2}, q = {s2, s2}, t[4];
+    for (int k = 0; k < 4; k++) t[k] = (rotor_v2d){log_sector_t2[2 * k], log_sector_t2[2 * k + 1]};
+    rotor_v2i m = ((n > t[0] * q) + (n > t[1] * q)) + ((n > t[2] * q) + (n > t[3] * q));
+    return (int)-(m[0] + m[1]);
+#else
+    int j = 0;
+    for (int k = 0; k < 8; k++) j += nb2 > log_sector_t2[k] * s2;
+    return j;
+#endif
+}
+
+ROTOR_LOG_FLAGS static inline ga_status rotor_log_principal(const ga_rotor *rp, ga_generator *out)
+{
+    double rs = rp->s;
+    double bx = rp->e23, e13 = rp->e13, bz = rp->e12; /* b = (bx, -e13, bz) */
+    double px = rp->e1n, py = rp->e2n, pz = rp->e3n, p4 = rp->e123n;
+    const double tol = GA_ROTOR_DRIFT_MAX;
+    /* rotor_near_group's test, operation for operation */
+    double s2 = rs * rs, q2 = s2 + bz * bz + e13 * e13 + bx * bx;
+    double p2 = px * px + py * py + pz * pz + p4 * p4;
+    double pb = px * bx - py * e13 + pz * bz, pq3 = rs * p4 - pb;
+    double nb2 = bx * bx + e13 * e13 + bz * bz, d = q2 - 1.0;
+    if (ROTOR_UNLIKELY(!(p2 <= 1e300 && fabs(d) <= tol &&
+                         4.0 * pq3 * pq3 <= tol * tol * (p2 > 1.0 ? p2 : 1.0) && nb2 >= 0x1p-900)))
+        return rotor_log_cold(rp, 1, out);
+    int j = log_sector_of(nb2, s2);
+    double iq = 1.0 + d * (-0.5 + d * 0.375), iq2 = 1.0 + d * (d - 1.0); /* 1/|q|, 1/|q|^2 */
+    double nb = sqrt(nb2), inv = 1.0 / nb;
+    double sg = copysign(1.0, rs + 0.0); /* -0.0 counts as +0.0 */
+    double sig = (nb * log_sector[j].c - fabs(rs) * log_sector[j].s) * iq, x = sig * sig, x2 = x * x,
+           x4 = x2 * x2;
+    const double *c = asin_taylor;
+    double asn = ((c[0] + c[1] * x) + x2 * (c[2] + c[3] * x)) +
+                 x4 * ((c[4] + c[5] * x) + x2 * (c[6] + c[7] * x));
+    /* phi with the sign of s (-R for s < 0); beta = phi u with u = b / |b|
+     * (u rounds to exactly +-1 for most rotations about a basis axis, and
+     * then beta = phi) */
+    double phi = sg * (log_sector[j].a + sig * asn), F = phi * inv;
+    double pu = pb * inv, H = ((rs * pu + nb * p4) * iq2 - F * pu) * inv;
+    ga_generator g = {(bz * inv) * phi, (e13 * inv) * phi, (bx * inv) * phi,
+                      F * px + H * bx,  F * py - H * e13,  F * pz + H * bz};
+    *out = g;
+    return GA_OK;
+}
+
+ROTOR_LOG_FLAGS ga_status ga_rotor_log(ga_rotor r, ga_generator *out)
+{
+    return out ? rotor_log_principal(&r, out) : GA_ERR_ARG;
+}
+ROTOR_LOG_FLAGS ga_status ga_rotor_log_literal(ga_rotor r, ga_generator *out)
+{
+    if (!out)
+        return GA_ERR_ARG;
+    /* for s >= 0 the literal log is the principal one */
+    return r.s >= 0.0 ? rotor_log_principal(&r, out) : rotor_log_cold(&r, 0, out);
 }
 
 /* ---- screws ---------------------------------------------------------------- */
