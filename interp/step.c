@@ -284,7 +284,7 @@ ga_status ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size
  * load in turn. The segments and u are ga_path_locate's exactly (the same
  * segment, u by the same expression), so the samples are ga_path_eval's bit
  * for bit in any order. */
-#define SAMPLE_BLOCK 32
+#define SAMPLE_BLOCK 64
 #define SAMPLE_AHEAD 8
 
 #if defined(__GNUC__) || defined(__clang__)

@@ -154,7 +154,7 @@ static void test_exact(void)
  * samples are ga_path_eval's bit for bit whatever the order of the times,
  * sorted, shuffled, repeated, at the knots and the range's ends, on every
  * scheme and on a group of rotors and one of matrices, across several blocks
- * (SAMPLE_BLOCK 32); a time outside the range (or NaN) gives
+ * (SAMPLE_BLOCK 64); a time outside the range (or NaN) gives
  * ga_path_locate's status with the samples before it written. */
 enum { ORDER_KEYS = 37, ORDER_N = 300 };
 static double order_work[1 << 15];
@@ -238,7 +238,8 @@ static void test_order(void)
             st = ga_path_sample(&p, GA_EVAL_EXACT, 0, ORDER_N, T, out); /* at times EXACT is DIRECT */
             tk_add_bool(&c_shuf, st == GA_OK && sample_matches(&p, ORDER_N, T, out));
             const double bad[3] = {nextafter(t1, INFINITY), t0 - 1.0, NAN};
-            const size_t where[3] = {150, 31, 77}; /* in a later block, a block's last, the second block */
+            const size_t where[3] = {
+                150, 63, 64}; /* inside a later block, the first block's last, the second's first */
             for (int b = 0; b < 3; ++b) {
                 memcpy(B, S, sizeof S);
                 B[where[b]] = bad[b];
