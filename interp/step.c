@@ -273,22 +273,140 @@ ga_status ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size
     return st;
 }
 
+/* ---- samples at given times ------------------------------------------------------ */
+
+/* ga_path_sample takes its times in blocks: each block is located first, then
+ * evaluated with the data of a later sample prefetched. A time in the segment
+ * of the time before it (sorted times) needs no search; the others are
+ * searched in lockstep, a level of every search at a time, without branches
+ * on the knots: at random times the loads of the searches overlap and no
+ * branch is mispredicted, where one search at a time waits for each level's
+ * load in turn. The segments and u are ga_path_locate's exactly (the same
+ * segment, u by the same expression), so the samples are ga_path_eval's bit
+ * for bit in any order. */
+#define SAMPLE_BLOCK 64
+#define SAMPLE_AHEAD 8
+
+#if defined(__GNUC__) || defined(__clang__)
+#define STEP_PREFETCH(x) __builtin_prefetch(x)
+#else
+#define STEP_PREFETCH(x) ((void)(x))
+#endif
+
+/* In ga_path_range: NaN is not. */
+static int in_range(const ga_path *p, double t)
+{
+    return t >= gip_knot(p, 0) && t <= gip_knot(p, gip_nseg(p));
+}
+
+/* 1 if t is in segment seg (< m, else 0) as ga_path_locate finds it: the
+ * segment's start up to its end excluded, the last segment's included; the
+ * comparisons combined without branches (at random times each is a toss) */
+static int in_segment(const ga_path *p, size_t seg, double t)
+{
+    size_t m = gip_nseg(p);
+    if (seg >= m)
+        return 0;
+    int last = seg + 1 == m;
+    return (gip_knot(p, seg) <= t) & ((t < gip_knot(p, seg + 1)) | (last & (t == gip_knot(p, m))));
+}
+
+/* Segments and u of times[0..n) (n <= SAMPLE_BLOCK, all in range), as
+ * ga_path_locate gives them; *hint is a segment found before (SIZE_MAX for
+ * none), and becomes the last one's. */
+static void locate_block(const ga_path *p, size_t n, const double *times, size_t *hint, size_t *seg,
+                         double *u)
+{
+    size_t m = gip_nseg(p), h = *hint, todo[SAMPLE_BLOCK], nt = 0;
+    if (m == 0) { /* the constant path: "segment 0" at u = 0 */
+        for (size_t k = 0; k < n; ++k) seg[k] = 0, u[k] = 0.0;
+        return;
+    }
+    for (size_t k = 0; k < n; ++k) { /* the last segment found, or the one after it */
+        if (in_segment(p, h, times[k]))
+            seg[k] = h;
+        else if (h < m && in_segment(p, h + 1, times[k]))
+            seg[k] = ++h;
+        else
+            todo[nt++] = k;
+    }
+    /* the largest i <= m - 1 with knot i <= t, as ga_path_locate's search,
+       for all of todo at once, the next level's candidates asked for ahead */
+    size_t lo[SAMPLE_BLOCK] = {0};
+    double tt[SAMPLE_BLOCK];
+    const double *knot = p->t + gip_knot_off(p);
+    for (size_t j = 0; j < nt; ++j) tt[j] = times[todo[j]];
+    for (size_t w = m; w > 1;) {
+        size_t half = w / 2, next = (w - half) / 2;
+        for (size_t j = 0; j < nt; ++j) {
+            lo[j] += (size_t)(knot[lo[j] + half] <= tt[j]) * half;
+            STEP_PREFETCH(knot + lo[j] + next);
+        }
+        w -= half;
+    }
+    for (size_t j = 0; j < nt; ++j) seg[todo[j]] = lo[j];
+    for (size_t k = 0; k < n; ++k) u[k] = (times[k] - gip_knot(p, seg[k])) / gip_seg_len(p, seg[k]);
+    *hint = seg[n - 1];
+}
+
+/* Ask for the lines of what evaluating on segment seg reads first: its
+ * key, its coefficients (SCREW, Li-Hao: B_i[, C_i[, D_i]]), from the first
+ * byte to the last. A macro: gcc 12 deletes the prefetches of a function
+ * that does nothing else before it is inlined. */
+#define PREFETCH_BYTES(a, n)                                                                                 \
+    do {                                                                                                     \
+        const char *a_ = (const char *)(a), *z_ = a_ + (n)-1;                                                \
+        STEP_PREFETCH(a_);                                                                                   \
+        if (((uintptr_t)a_ ^ (uintptr_t)z_) >= 64)                                                           \
+            STEP_PREFETCH(z_);                                                                               \
+    } while (0)
+#define PREFETCH_SEGMENT(p, seg)                                                                             \
+    do {                                                                                                     \
+        PREFETCH_BYTES(gip_key_of(p, seg), (p)->group->elem_size);                                           \
+        if (gip_nfac((p)->scheme) > 0 && (p)->scheme != GA_SCHEME_BSPLINE)                                   \
+            PREFETCH_BYTES(gip_seg_coef(p, seg), gip_nfac((p)->scheme) * (p)->group->dim * sizeof(double));  \
+    } while (0)
+
 ga_status ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n, const double *times, void *out)
 {
     if (!p || !times || !out || (unsigned)ev > GA_EVAL_EXACT)
         return GA_ERR_ARG;
     if (ev == GA_EVAL_EULER && !(step >= EULER_MIN_STEP && step <= 1.0))
         return GA_ERR_ARG;
-    size_t cur = SIZE_MAX, grid = 0;
-    double A[GIP_MAXE];
+    /* times [0, end) are located, into the ring seg, u (two blocks: the one
+       evaluated and the next, whose data is asked for ahead); at end, where
+       stop, a time outside the range */
+    size_t cur = SIZE_MAX, grid = 0, hint = SIZE_MAX, end = 0, seg[2 * SAMPLE_BLOCK];
+    double A[GIP_MAXE], u[2 * SAMPLE_BLOCK];
+    int stop = 0;
     for (size_t k = 0; k < n; ++k) {
+        /* the blocks of k and the next (end is a whole number of blocks) */
+        while (!stop && end < n && end < k - k % SAMPLE_BLOCK + 2 * SAMPLE_BLOCK) {
+            size_t nb = n - end < SAMPLE_BLOCK ? n - end : SAMPLE_BLOCK, good = 0,
+                   r = end % (2 * SAMPLE_BLOCK);
+            while (good < nb && in_range(p, times[end + good])) ++good;
+            if (good > 0)
+                locate_block(p, good, times + end, &hint, seg + r, u + r);
+            if (end == 0 && gip_nseg(p) > 0)
+                for (size_t j = 0; j < good && j < SAMPLE_AHEAD; ++j) PREFETCH_SEGMENT(p, seg[j]);
+            stop = good < nb;
+            end += good;
+        }
         void *o = (unsigned char *)out + k * p->group->elem_size;
-        size_t seg;
-        double u;
-        int st = ga_path_locate(p, times[k], &seg, &u);
+        size_t s;
+        double uk;
+        int st;
+        if (k < end) {
+            if (k + SAMPLE_AHEAD < end && gip_nseg(p) > 0)
+                PREFETCH_SEGMENT(p, seg[(k + SAMPLE_AHEAD) % (2 * SAMPLE_BLOCK)]);
+            s = seg[k % (2 * SAMPLE_BLOCK)];
+            uk = u[k % (2 * SAMPLE_BLOCK)];
+            st = GA_OK;
+        } else /* outside the range or NaN: ga_path_locate's status */
+            st = ga_path_locate(p, times[k], &s, &uk);
         if (st == GA_OK)
-            st = ev == GA_EVAL_EULER ? euler_sample(p, step, &cur, &grid, A, seg, u, o)
-                                     : gip_eval_direct(p, seg, u, o); /* both checked */
+            st = ev == GA_EVAL_EULER ? euler_sample(p, step, &cur, &grid, A, s, uk, o)
+                                     : gip_eval_direct(p, s, uk, o); /* both checked */
         if (st)
             return st;
     }

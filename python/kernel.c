@@ -412,16 +412,17 @@ PyObject *gpy_run_kernel(gpy_kernel_call *kc, PyObject *const *objs, PyObject *o
     /* a new result is written in place (discarded on an error); out= through
        a buffer, so that an element that fails leaves it untouched */
     double *direct = out ? NULL : (double *)PyArray_DATA(res);
-    npy_intp k0 = 0; /* the elements before k0 done by kc->many */
-    int whole1 = kc->many && kc->nin == 2 && nl[0] == 0 && nl[1] == kc->nlead;
-    for (int d = 0; whole1 && d < nl[1]; d++) whole1 = PyArray_DIM(a[1], d) == kc->lead[d];
+    npy_intp k0 = 0;        /* the elements before k0 done by kc->many */
+    int last = kc->nin - 1; /* the input of many elements */
+    int whole1 = kc->many && (kc->nin == 1 || (kc->nin == 2 && nl[0] == 0)) && nl[last] == kc->nlead;
+    for (int d = 0; whole1 && d < nl[last]; d++) whole1 = PyArray_DIM(a[last], d) == kc->lead[d];
     if (whole1) {
         double chunk[1536]; /* out=: results through here, checked before they are written */
         npy_intp room = (npy_intp)(sizeof chunk / sizeof *chunk) / (osize > 0 ? osize : 1);
         while (k0 < total) {
             npy_intp m = direct || total - k0 < room ? total - k0 : room;
             double *o = direct ? direct + k0 * osize : chunk;
-            if (kc->many(kc->ctx, base[0], base[1] + k0 * csize[1], m, o) != GA_OK ||
+            if (kc->many(kc->ctx, last ? base[0] : NULL, base[last] + k0 * csize[last], m, o) != GA_OK ||
                 !gpy_all_finite(o, m * osize))
                 break;
             if (!direct)

@@ -116,8 +116,9 @@ typedef struct {
        and the results' in C order (in1, out; out may be in1 itself): the
        numbers kernel gives element by element. Run where input 0 has no
        leading dimensions and input 1 the whole broadcast shape (one motion,
-       many points); any status or result not finite, and the elements from
-       there on are run one by one, which names the error */
+       many points), or where the one input (nin = 1: in0 NULL, in1 input
+       0's elements) has that shape; any status or result not finite, and the
+       elements from there on are run one by one, which names the error */
     int (*many)(void *ctx, const double *in0, const double *in1, npy_intp n, double *out);
     /* or NULL: held over the loop (taken with the GIL released), for a
        context that another thread may change (a Path's) */

@@ -45,6 +45,30 @@ static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
     return GA_OK;
 }
 
+/* k_sample's numbers for n times t in C order (gpy_kernel_call.many):
+ * ga_path_sample on blocks of times, which locates them in the library
+ * (its search skipped for times in order, the searches of times in any
+ * order run side by side) and evaluates each as one ga_path_sample call
+ * does, bit for bit. On a status the loop runs the chunk's elements one by
+ * one through k_sample, which names the time. */
+enum { SAMPLE_MANY = 128 };
+static int m_sample(void *ctx, const double *unused, const double *t, npy_intp n, double *out)
+{
+    (void)unused;
+    const ga_path *p = ((path_ctx *)ctx)->path;
+    size_t es = p->group->elem_size;
+    double e[SAMPLE_MANY * GA_GROUP_MAX_ELEM]; /* m elements of es bytes, contiguous */
+    for (npy_intp k = 0; k < n; k += SAMPLE_MANY) {
+        size_t m = n - k < SAMPLE_MANY ? (size_t)(n - k) : SAMPLE_MANY;
+        int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, m, t + k, e);
+        if (st != GA_OK)
+            return st;
+        for (size_t i = 0; i < m; i++)
+            gpy_mat_put(p->group->to_mat4((const unsigned char *)e + i * es), out + (k + (npy_intp)i) * 16);
+    }
+    return GA_OK;
+}
+
 /* The derivative of order o (1 velocity, 2 acceleration, 3 jerk) in the
  * context's frame, computed alone (ga_path_derivatives: the tool's --with
  * columns bit for bit; the body velocity is ga_path_velocity's). */
@@ -142,6 +166,7 @@ static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, c
                           .kernel = kernel,
                           .ctx = &c,
                           .explain = explain_time,
+                          .many = kernel == k_sample ? m_sample : NULL,
                           .lock = self->lock};
     PyObject *rel = gpy_path_rel_times(self, t, &c.given);
     PyObject *r = rel ? gpy_run_kernel(&kc, &rel, out) : NULL;

@@ -147,6 +147,127 @@ static void test_exact(void)
                      GA_OK);
 }
 
+/* ---- samples at times in any order ------------------------------------------------ */
+
+/* ga_path_sample locates its times in blocks (interp/step.c: the segment of
+ * the time before tried first, the others searched side by side): its
+ * samples are ga_path_eval's bit for bit whatever the order of the times,
+ * sorted, shuffled, repeated, at the knots and the range's ends, on every
+ * scheme and on a group of rotors and one of matrices, across several blocks
+ * (SAMPLE_BLOCK 64); a time outside the range (or NaN) gives
+ * ga_path_locate's status with the samples before it written. */
+enum { ORDER_KEYS = 37, ORDER_N = 300 };
+static double order_work[1 << 15];
+
+static int sample_matches(const ga_path *p, size_t n, const double *times, const unsigned char *got)
+{
+    size_t es = p->group->elem_size;
+    unsigned char want[16 * sizeof(double)];
+    for (size_t j = 0; j < n; ++j)
+        if (ga_path_eval(p, times[j], want) != GA_OK || memcmp(want, got + j * es, es) != 0)
+            return 0;
+    return 1;
+}
+
+static void test_order(void)
+{
+    stream = tk_rng_after(INTERP_SEED, 0x5a3030);
+    const ga_group *gs[2] = {&ga_group_cga, &ga_group_affine};
+    static double T[ORDER_N], S[ORDER_N], B[ORDER_N];
+    static unsigned char out[ORDER_N * 16 * sizeof(double)];
+    ga_mat4 keys[ORDER_KEYS];
+    double kt[ORDER_KEYS];
+    tk_check c_init = tk_begin("order: paths built (schemes defined on the group)", 0);
+    tk_check c_shuf = tk_begin("order: shuffled, repeated, knots, ends == ga_path_eval, bit for bit", 0);
+    tk_check c_sort = tk_begin("order: the same times sorted == ga_path_eval, bit for bit", 0);
+    tk_check c_bad =
+        tk_begin("order: a time outside (above, below, NaN) -> GA_ERR_ARG, samples before written", 0);
+    tk_check c_one = tk_begin("order: one key: its time -> the key, another -> GA_ERR_ARG", 0);
+    for (int i = 0; i < ORDER_KEYS; ++i) {
+        keys[i] = rand_rigid(r, 0.1, 2.0, 2.0);
+        kt[i] = i == 0 ? 1.25 : kt[i - 1] + tk_range(r, 0.2, 1.8);
+    }
+    for (int gi = 0; gi < 2; ++gi)
+        for (int si = 0; si < GA_SCHEME_COUNT; ++si) {
+            ga_scheme sc = (ga_scheme)si;
+            double t[ORDER_KEYS];
+            for (int i = 0; i < ORDER_KEYS; ++i) t[i] = sc == GA_SCHEME_BSPLINE ? 1.25 + 0.5 * i : kt[i];
+            size_t nkeys = sc == GA_SCHEME_QUADRATIC ? 3 : ORDER_KEYS; /* QUADRATIC: exactly 3 */
+            size_t ws = ga_path_workspace_size(gs[gi], sc, nkeys);
+            if (ws == 0 || ws > sizeof order_work)
+                continue;
+            ga_path p;
+            int st = ga_path_init_mat4(gs[gi], sc, nkeys, t, keys, NULL, order_work, ws, &p);
+            tk_add_status(&c_init, st, GA_OK);
+            if (st)
+                continue;
+            double t0, t1;
+            TK_OK(ga_path_range(&p, &t0, &t1));
+            size_t nk = 0; /* the knots and the ends, then times inside, then repeats */
+            for (size_t i = 0; i < nkeys; ++i)
+                if (t[i] >= t0 && t[i] <= t1)
+                    T[nk++] = t[i];
+            T[nk++] = t0;
+            T[nk++] = t1;
+            T[nk++] = nextafter(t1, 0.0);
+            T[nk++] = nextafter(t0, INFINITY);
+            for (size_t j = nk; j < ORDER_N; ++j) {
+                if (j % 5 == 0) {
+                    size_t from = (size_t)(tk_uni(r) * (double)j);
+                    T[j] = T[from];
+                } else
+                    T[j] = tk_range(r, t0, t1);
+            }
+            for (size_t j = ORDER_N - 1; j > 0; --j) { /* shuffle */
+                size_t q = (size_t)(tk_uni(r) * (double)(j + 1));
+                double x = T[j];
+                T[j] = T[q];
+                T[q] = x;
+            }
+            memcpy(S, T, sizeof T); /* sorted by insertion: 300 times */
+            for (size_t j = 1; j < ORDER_N; ++j)
+                for (size_t q = j; q > 0 && S[q - 1] > S[q]; --q) {
+                    double x = S[q];
+                    S[q] = S[q - 1];
+                    S[q - 1] = x;
+                }
+            st = ga_path_sample(&p, GA_EVAL_DIRECT, 0, ORDER_N, T, out);
+            tk_add_bool(&c_shuf, st == GA_OK && sample_matches(&p, ORDER_N, T, out));
+            st = ga_path_sample(&p, GA_EVAL_DIRECT, 0, ORDER_N, S, out);
+            tk_add_bool(&c_sort, st == GA_OK && sample_matches(&p, ORDER_N, S, out));
+            st = ga_path_sample(&p, GA_EVAL_EXACT, 0, ORDER_N, T, out); /* at times EXACT is DIRECT */
+            tk_add_bool(&c_shuf, st == GA_OK && sample_matches(&p, ORDER_N, T, out));
+            const double bad[3] = {nextafter(t1, INFINITY), t0 - 1.0, NAN};
+            const size_t where[3] = {
+                150, 63, 64}; /* inside a later block, the first block's last, the second's first */
+            for (int b = 0; b < 3; ++b) {
+                memcpy(B, S, sizeof S);
+                B[where[b]] = bad[b];
+                memset(out, 0, sizeof out);
+                st = ga_path_sample(&p, GA_EVAL_DIRECT, 0, ORDER_N, B, out);
+                tk_add_bool(&c_bad, st == GA_ERR_ARG && sample_matches(&p, where[b], B, out));
+                memcpy(B, T, sizeof T);
+                B[where[b]] = bad[b];
+                st = ga_path_sample(&p, GA_EVAL_EULER, 1e-2, ORDER_N, B, out);
+                tk_add_bool(&c_bad, st == GA_ERR_ARG);
+            }
+        }
+    /* one key: the constant path */
+    ga_path p1;
+    TK_OK(ga_path_init_mat4(&ga_group_cga, GA_SCHEME_SCREW, 1, kt, keys, NULL, order_work, sizeof order_work,
+                            &p1));
+    for (size_t j = 0; j < 40; ++j) T[j] = kt[0];
+    tk_add_bool(&c_one, ga_path_sample(&p1, GA_EVAL_DIRECT, 0, 40, T, out) == GA_OK &&
+                            sample_matches(&p1, 40, T, out));
+    T[35] = kt[0] + 1.0;
+    tk_add_bool(&c_one, ga_path_sample(&p1, GA_EVAL_DIRECT, 0, 40, T, out) == GA_ERR_ARG);
+    tk_end(&c_init);
+    tk_end(&c_shuf);
+    tk_end(&c_sort);
+    tk_end(&c_bad);
+    tk_end(&c_one);
+}
+
 /* ---- appending keys ------------------------------------------------------------ */
 
 /* The path grown key by key by ga_path_append equals the path built from all
@@ -311,8 +432,8 @@ static void test_errors(void)
 }
 
 static const tk_section sections[] = {
-    {"euler", test_euler, TK_STREAM}, {"exact", test_exact, TK_STREAM}, {"append", test_append, 0},
-    {"errors", test_errors, 0},       {"time", tk_cpu_time, TK_SETUP},
+    {"euler", test_euler, TK_STREAM}, {"exact", test_exact, TK_STREAM}, {"order", test_order, 0},
+    {"append", test_append, 0},       {"errors", test_errors, 0},       {"time", tk_cpu_time, TK_SETUP},
 };
 
 int main(int argc, char **argv)

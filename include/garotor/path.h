@@ -461,9 +461,13 @@ GA_API GA_NODISCARD ga_status ga_path_stepper_next(ga_path_stepper *s, void *out
  *  g->elem_size bytes, contiguous). */
 GA_API GA_NODISCARD ga_status ga_path_sample_uniform(const ga_path *p, ga_eval ev, double step, size_t n,
                                                      double t0, double t1, void *out);
-/** Samples at n given times (any order; EULER is fastest with increasing
- *  times, as it continues from the previous sample within a segment). EXACT
- *  needs even spacing, so here it is DIRECT. */
+/** Samples at n given times, in any order (repeats allowed): DIRECT gives
+ *  at each time what ga_path_eval gives there, bit for bit, whatever the
+ *  order. Increasing times cost least (a time in the segment of the one
+ *  before, or the next segment, needs no search; EULER continues from the
+ *  previous sample within a segment). EXACT needs even spacing, so here it
+ *  is DIRECT. A time outside ga_path_range (or NaN): GA_ERR_ARG, the samples
+ *  before it written. */
 GA_API GA_NODISCARD ga_status ga_path_sample(const ga_path *p, ga_eval ev, double step, size_t n,
                                              const double *times, void *out);
 
