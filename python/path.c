@@ -136,13 +136,13 @@ static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme,
 
 static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"times",      "poses",    "scheme",    "group",
-                             "velocities", "capacity", "time_unit", NULL};
+    static char *kwlist[] = {"times",    "poses",     "scheme",    "group", "velocities",
+                             "capacity", "time_unit", "normalize", NULL};
     PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None;
     const char *sname = "screw", *gname = "cga", *unit = NULL;
-    int ns;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$Oz:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
-                                     &cobj, &unit) ||
+    int ns, normalize = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$Ozp:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
+                                     &cobj, &unit, &normalize) ||
         gpy_path_unit("Path", unit, &ns))
         return -1;
     if (self->work) {
@@ -187,6 +187,10 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     }
     if (pose && !g->rigid) {
         PyErr_Format(PyExc_ValueError, "Path: group '%s' takes keys as (n, 4, 4) matrices", g->name);
+        goto done;
+    }
+    if (normalize && !g->rigid) { /* the tool's --normalize, as its message says */
+        PyErr_SetString(PyExc_ValueError, "Path: normalize applies to the groups 'cga' and 'matrix'");
         goto done;
     }
     size_t min = ga_scheme_min_keys(scheme);
@@ -257,9 +261,9 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     Py_BEGIN_ALLOW_THREADS; /* C only, on this call's arrays */
     for (npy_intp i = 0; i < n && badk < 0; i++) {
         double e[GA_GROUP_MAX_ELEM];
-        int st = pose ? gpy_pose_to_mat(pv + 7 * i, &keys[i]) : GA_OK;
+        int st = pose ? gpy_key_pose(pv + 7 * i, normalize, &keys[i]) : GA_OK;
         if (!pose)
-            keys[i] = gpy_mat_get(pv + 16 * i);
+            keys[i] = gpy_key_mat(g, pv + 16 * i, normalize);
         if (st == GA_OK)
             st = g->from_mat4(keys[i], e);
         if (st != GA_OK)
@@ -267,7 +271,9 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     }
     Py_END_ALLOW_THREADS;
     if (badk >= 0) {
-        gpy_raise_status("Path: poses", 1, &n, badk, kst);
+        char why[200];
+        gpy_key_why(g, pose ? pv + 7 * badk : pv + 16 * badk, pose, normalize, badk, why, sizeof why);
+        gpy_raise_status_why("Path: poses", 1, &n, badk, kst, why[0] ? why : NULL);
         goto done;
     }
     if (vobj != Py_None) {
@@ -287,6 +293,8 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
             goto done;
     }
     rc = path_build(self, g, scheme, (size_t)n, rel, keys, 1, &vel, nvel, &stamp, ns, wbytes);
+    if (rc == 0)
+        rc = gpy_path_warn_growth(self);
 done:
     PyMem_Free(keys);
     PyMem_Free(stamp);
@@ -492,22 +500,31 @@ done:
 
 static PyMethodDef Path_methods[] = {
     {"sample", (PyCFunction)(void (*)(void))gpy_path_sample, METH_VARARGS | METH_KEYWORDS,
-     "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
+     "sample(t, *, extrapolate=None, out=None): the poses at the times t (any shape ...), as (..., 4, 4) "
+     "matrices; extrapolate: outside the range 'error' (None), 'hold', 'extend' or 'constant-velocity' "
+     "(garotor interp --extrapolate)."},
     {"sample_pose", (PyCFunction)(void (*)(void))gpy_path_sample_pose, METH_VARARGS | METH_KEYWORDS,
-     "sample_pose(t, *, out=None): the poses at the times t as (..., 7) rows x y z qx qy qz qw, from the "
+     "sample_pose(t, *, extrapolate=None, out=None): the poses at the times t as (..., 7) rows x y z qx qy "
+     "qz qw, from the "
      "group's rotation and translation (garotor interp --format pose, bit for bit); the quaternion's sign "
      "follows the previous sample's along t's last axis (cga and matrix)."},
     {"velocity", (PyCFunction)(void (*)(void))gpy_path_velocity, METH_VARARGS | METH_KEYWORDS,
-     "velocity(t, *, frame='body', out=None): the velocity per unit time at the times t: (..., 6) twists "
+     "velocity(t, *, frame='body', extrapolate=None, out=None): the velocity per unit time at the times t: "
+     "(..., 6) twists "
      "(affine: (..., 4, 4)); frame 'body' A(t)^-1 dA/dt, 'spatial' dA/dt A(t)^-1, 'world' (rigid groups) "
      "the angular rate in world axes and dp/dt."},
     {"acceleration", (PyCFunction)(void (*)(void))gpy_path_acceleration, METH_VARARGS | METH_KEYWORDS,
-     "acceleration(t, *, frame='body', out=None): the derivative of the velocity in that frame per unit "
+     "acceleration(t, *, frame='body', extrapolate=None, out=None): the derivative of the velocity in that "
+     "frame per unit "
      "time^2 at the times t: (..., 6) (affine: (..., 4, 4)); 'world': the angular acceleration in world axes "
      "and d2p/dt2."},
     {"jerk", (PyCFunction)(void (*)(void))gpy_path_jerk, METH_VARARGS | METH_KEYWORDS,
-     "jerk(t, *, frame='body', out=None): the derivative of the acceleration in that frame per unit time^3 "
+     "jerk(t, *, frame='body', extrapolate=None, out=None): the derivative of the acceleration in that frame "
+     "per unit time^3 "
      "at the times t: (..., 6) (affine: (..., 4, 4)); 'world': d3p/dt3 for the position."},
+    {"clip", (PyCFunction)(void (*)(void))gpy_path_clip, METH_VARARGS | METH_KEYWORDS,
+     "clip(t): the times of t (read in C order) in the path's range, as given and in their order: the "
+     "times `garotor interp --clip` keeps."},
     {"append", (PyCFunction)(void (*)(void))gpy_path_append, METH_VARARGS | METH_KEYWORDS,
      "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
      "building one "
@@ -538,13 +555,14 @@ PyTypeObject gpy_PathType = {
     .tp_repr = (reprfunc)gpy_path_repr,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc =
-        "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None): a path through "
-        "key "
-        "poses.\n\n"
+        "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None, time_unit='s', "
+        "normalize=False): a path through key poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
         "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline, c2;\n"
         "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
-        "capacity: room for keys to come (append), for the schemes that can append.",
+        "capacity: room for keys to come (append), for the schemes that can append;\n"
+        "normalize: keys up to 1e-3 off a rigid motion projected onto it (garotor interp --normalize).\n"
+        "A path whose velocity breaks the growth rule warns (RuntimeWarning) as the tool does.",
     .tp_methods = Path_methods,
     .tp_getset = Path_getset,
     .tp_init = (initproc)Path_init,
