@@ -96,6 +96,13 @@ void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, np
 /* the growth rule's warning (RuntimeWarning) where self's path breaks it,
  * in the tool's words; -1 when the warning is raised as an error */
 int gpy_path_warn_growth(gpy_PathObject *self);
+/* min_gap= and dedup= (the tool's --min-gap, --dedup): keys closer than the
+ * gap an error naming the later one, or with dedup each run merged into one
+ * key (ga_path_merge_keys), stamp, rel and keys compacted and *n the keys
+ * left; ref: the first key's stamp, which the times are relative to. -1
+ * with an exception. */
+int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, gpy_stamp ref, npy_intp *n,
+                       gpy_stamp *stamp, double *rel, ga_mat4 *keys);
 /* Path.clip(t) */
 PyObject *gpy_path_clip(gpy_PathObject *self, PyObject *args, PyObject *kw);
 

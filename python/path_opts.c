@@ -133,3 +133,140 @@ done:
     Py_XDECREF(given);
     return r;
 }
+
+/* a + b exactly as a stamp, where it fits (an int64 at the smaller
+ * exponent): 0, else -1 */
+static int stamp_add(gpy_stamp a, gpy_stamp b, gpy_stamp *out)
+{
+    int at = a.e < b.e ? a.e : b.e;
+    int64_t ma = a.m, mb = b.m;
+    for (int e = a.e; e > at; e--)
+        if (ma > INT64_MAX / 10 || ma < INT64_MIN / 10)
+            return -1;
+        else
+            ma *= 10;
+    for (int e = b.e; e > at; e--)
+        if (mb > INT64_MAX / 10 || mb < INT64_MIN / 10)
+            return -1;
+        else
+            mb *= 10;
+    if ((mb > 0 && ma > INT64_MAX - mb) || (mb < 0 && ma < INT64_MIN - mb))
+        return -1;
+    out->m = ma + mb;
+    out->e = at;
+    return 0;
+}
+
+/* min_gap=: None (no check unless dedup), 'auto' (the tool's default: 1% of
+ * the median spacing), or a number >= 0 in the keys' unit. *check 0: none;
+ * *dflt 1: the default. -1 with a ValueError. */
+static int min_gap_arg(PyObject *obj, int dedup, int ns, int *check, int *dflt, double *gap)
+{
+    *check = *dflt = 0;
+    *gap = 0.0;
+    if (obj == Py_None) {
+        *check = *dflt = dedup;
+        return 0;
+    }
+    if (PyUnicode_Check(obj)) {
+        const char *s = PyUnicode_AsUTF8(obj);
+        if (s && strcmp(s, "auto") == 0) {
+            *check = *dflt = 1;
+            return 0;
+        }
+    } else {
+        double x = PyFloat_AsDouble(obj);
+        if (x == -1.0 && PyErr_Occurred())
+            PyErr_Clear();
+        else if (x >= 0.0 && isfinite(x)) {
+            *check = x > 0.0;
+            *gap = x * (ns ? 1e-9 : 1.0);
+            return 0;
+        }
+    }
+    PyErr_SetString(PyExc_ValueError, "Path: min_gap must be None, 'auto' or a number >= 0");
+    return -1;
+}
+
+int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, gpy_stamp ref, npy_intp *np,
+                       gpy_stamp *stamp, double *rel, ga_mat4 *keys)
+{
+    int check, dflt;
+    double gap, median = 0.0;
+    npy_intp n = *np;
+    if (min_gap_arg(min_gap, dedup, ns, &check, &dflt, &gap))
+        return -1;
+    if (dedup && !g->rigid) { /* the tool's --dedup, as its message says */
+        PyErr_SetString(PyExc_ValueError, "Path: dedup applies to the groups 'cga' and 'matrix'");
+        return -1;
+    }
+    if (!check || n < 2)
+        return 0;
+    if (dflt) {
+        double *scratch = PyMem_Malloc((size_t)(n - 1) * sizeof *scratch);
+        if (!scratch) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        int st = ga_times_min_gap((size_t)n, rel, scratch, &median, &gap);
+        PyMem_Free(scratch);
+        if (st != GA_OK) {
+            gpy_status_error("Path: min_gap", st);
+            return -1;
+        }
+    }
+    const double unit = ns ? 1e-9 : 1.0;
+    const char *u = ns ? "ns" : "s";
+    npy_intp out = 0;
+    for (npy_intp i = 0; i < n;) {
+        npy_intp j = (npy_intp)ga_times_gap_run((size_t)n, rel, gap, (size_t)i);
+        char why[400], a[32], b[32], d[96] = "";
+        if (j > i && !dedup) { /* the tool's words (interp_read.c), the keys named by index */
+            if (dflt)
+                snprintf(d, sizeof d, " (1%% of the median spacing, %.6g %s)", median / unit, u);
+            snprintf(why, sizeof why,
+                     "key at t = %s is %.3g %s after the key at t = %s (index %zd), closer than min_gap %.6g "
+                     "%s%s: pass dedup=True to merge such keys, or min_gap=0 to keep them",
+                     gpy_stamp_text(stamp[i + 1], ns, a), (rel[i + 1] - rel[i]) / unit, u,
+                     gpy_stamp_text(stamp[i], ns, b), (Py_ssize_t)i, gap / unit, u, d);
+            gpy_raise_status_why("Path: times", 1, np, i + 1, GA_ERR_ARG, why);
+            return -1;
+        }
+        if (j > i) { /* merged into key i: ga_path_merge_keys, as the tool's --dedup */
+            double t;
+            ga_mat4 mean;
+            int st = j - i + 1 > GA_PATH_MERGE_MAX
+                       ? GA_ERR_ARG
+                       : ga_path_merge_keys((size_t)(j - i + 1), rel + i, keys + i, ns, &t, &mean);
+            if (st != GA_OK) {
+                snprintf(why, sizeof why, "cannot merge the keys of indices %zd to %zd%s", (Py_ssize_t)i,
+                         (Py_ssize_t)j,
+                         j - i + 1 > GA_PATH_MERGE_MAX ? ": more than 64 in a row (is min_gap too large?)"
+                                                       : "");
+                gpy_raise_status_why("Path: times", 1, np, i, st, why);
+                return -1;
+            }
+            /* its time: the first key's stamp plus the shortest decimal of
+               the mean (whole ns with time_unit='ns'), exactly, as the tool
+               stamps it; relative, that is the mean itself */
+            gpy_stamp o = {(int64_t)t, 0}, sum;
+            if (!ns)
+                gpy_stamp_of_double(t, 0, &o);
+            if (stamp_add(ref, o, &sum) == 0) {
+                stamp[i] = sum;
+                rel[i] = gpy_stamp_rel(sum, ref, ns);
+            } else { /* more digits than an int64 holds: the stamp rounded, the time kept */
+                gpy_stamp_of_double(gpy_stamp_double(ref) + t, 0, &stamp[i]);
+                rel[i] = t;
+            }
+            keys[i] = mean;
+        }
+        stamp[out] = stamp[i];
+        rel[out] = rel[i];
+        keys[out] = keys[i];
+        out++;
+        i = j + 1;
+    }
+    *np = out;
+    return 0;
+}

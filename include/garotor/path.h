@@ -494,6 +494,36 @@ typedef struct {
 GA_API GA_NODISCARD ga_status ga_path_growth_describe(const ga_path *p, const ga_path_growth *gr,
                                                       ga_path_growth_words *out);
 
+/** Near-duplicate keys (`garotor interp --min-gap, --dedup`, garotor.Path's
+ *  min_gap=, dedup=): keys closer in time than a minimum gap, by default
+ *  GA_PATH_MIN_GAP_FRACTION of the median spacing of the keys, make a steep,
+ *  meaningless path (the velocity between them is their difference over a
+ *  tiny time). A run of them can be merged into one key at their mean time
+ *  with their mean pose (ga_rotor_mean), at most GA_PATH_MERGE_MAX keys. */
+#define GA_PATH_MIN_GAP_FRACTION 0.01
+#define GA_PATH_MERGE_MAX 64
+
+/** The default minimum gap of n increasing times: *median their median
+ *  spacing (of an even count of spacings, the mean of the two middle ones),
+ *  *gap GA_PATH_MIN_GAP_FRACTION of it; both 0 for n < 2. scratch: room for
+ *  n - 1 doubles (overwritten). GA_ERR_NOTFINITE for a spacing that is not
+ *  finite. */
+GA_API GA_NODISCARD ga_status ga_times_min_gap(size_t n, const double *times, double *scratch, double *median,
+                                               double *gap);
+/** The last key j >= i such that each spacing times[k + 1] - times[k],
+ *  i <= k < j, is below gap: the run of near-duplicates that starts at key i
+ *  ends at j (j = i: none). i itself for i >= n or times NULL. */
+GA_API size_t ga_times_gap_run(size_t n, const double *times, double gap, size_t i);
+/** The m keys (rigid 4x4 matrices at the given times, 1 <= m <=
+ *  GA_PATH_MERGE_MAX) merged into one: *t the mean of the times (each divided
+ *  by m, added in order), with ns the whole number nearest to it times 1e9
+ *  (a time in nanoseconds, for times in seconds relative to a stamp of whole
+ *  nanoseconds); *key the mean of the poses (ga_rotor_mean, equal weights).
+ *  GA_ERR_ARG for m out of range; a key that is no rigid motion, or a mean
+ *  that does not converge, passes its status on. */
+GA_API GA_NODISCARD ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys, int ns,
+                                                 double *t, ga_mat4 *key);
+
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 12
 typedef struct {

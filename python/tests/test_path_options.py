@@ -233,3 +233,91 @@ def test_growth_warning_equals_tool(tmp_path):
         # warnings as errors: the Path is not built
         with pytest.raises(RuntimeWarning, match="grows past 3 times the fastest chord"):
             garotor.Path(times, P, scheme="lihao2")
+
+
+def near_dup_keys():
+    # a pose logged twice 100 us apart in a 30 Hz log (docs/tool.md), and
+    # the first key twice too
+    times = np.array([0.0, 0.0001, 0.0333, 0.0334, 0.0666, 0.1, 0.1333])
+    P = np.zeros((7, 7))
+    P[:, 0] = [0.0, 0.00012, 0.1, 0.1001, 0.2, 0.3, 0.4]
+    P[:, 1] = [0.0, 0.0, 0.01, 0.0101, 0.03, 0.02, 0.0]
+    P[:, 5] = np.sin([0.0, 0.00005, 0.05, 0.05001, 0.1, 0.12, 0.1])
+    P[:, 6] = np.sqrt(1 - P[:, 5] ** 2)
+    return times, P
+
+
+@pytest.mark.parametrize("ns", [False, True])
+@pytest.mark.parametrize("scheme", ["screw", "c2", "lihao3"])
+def test_dedup_equals_tool(tmp_path, ns, scheme):
+    times, P = near_dup_keys()
+    if ns:  # epoch nanoseconds: the merged stamps in whole ns, exact
+        T0 = 1_305_031_102_175_800_000
+        tk = T0 + np.round(times * 1e9).astype(np.int64)
+        texts = [str(x) for x in tk]
+        args = ["--time-unit", "ns"]
+    else:  # epoch seconds: the merged times' stamps exact in decimal
+        T0 = 1305031102.1758
+        tk = np.array([T0 + x for x in [0.0, 0.0001, 0.0333, 0.0334, 0.0666, 0.1, 0.1333]])
+        texts = [repr(x) for x in tk]
+        args = []
+    f = tmp_path / "keys.txt"
+    f.write_text("\n".join(" ".join([texts[i]] + [repr(float(x)) for x in P[i]]) for i in range(7)) + "\n")
+    tool = [_tool_path(), "interp", "--in", os.fspath(f), "--format", "pose", "--scheme", scheme] + args
+    # without dedup: refused, naming the later key of the first pair, as the tool does
+    r = subprocess.run(tool + ["--samples", "5"], capture_output=True, text=True)
+    assert r.returncode == 2
+    tool_why = r.stderr.strip().split(": ", 2)[2]
+    with pytest.raises(garotor.Error) as e:
+        garotor.Path(tk, P, scheme=scheme, time_unit="ns" if ns else "s", min_gap="auto")
+    msg = str(e.value)
+    assert msg.startswith("Path: times: index 1: invalid argument: ")
+    py_why = msg.split("invalid argument: ", 1)[1]
+    assert py_why == tool_why.replace("(line 1)", "(index 0)").replace("or --min-gap 0", "or min_gap=0").replace(
+        "--min-gap", "min_gap").replace("pass --dedup", "pass dedup=True")
+    # with dedup: the same keys, times and samples, bit for bit
+    r = subprocess.run(tool + ["--samples", "9", "--dedup", "--with", "velocity"], capture_output=True, text=True,
+                       check=True)
+    lines = [line.split() for line in r.stdout.splitlines()]
+    p = garotor.Path(tk, P, scheme=scheme, time_unit="ns" if ns else "s", dedup=True)
+    assert len(p.times) == 5
+    # the first and last samples are at the first and last key: stamped as the keys
+    assert lines[0][0] == (str(p.times[0]) if ns else repr(p.times[0]))
+    assert lines[-1][0] == texts[-1]
+    out = np.array([[float(x) for x in line[1:]] for line in lines])
+    # the sample times: the tool's stamps, read back as Path reads them
+    st = np.array([int(x[0]) for x in lines]) if ns else np.array([float(x[0]) for x in lines])
+    if not ns:  # a computed stamp of more digits than a double: the samples at the keys only
+        keep = [i for i, x in enumerate(lines) if repr(float(x[0])) == x[0]]
+        st, out = st[keep], out[keep]
+    assert np.array_equal(p.sample_pose(st), out[:, :7])
+    assert np.array_equal(p.velocity(st), out[:, 7:13])
+    # min_gap given in the keys' unit: a gap below every spacing keeps them all
+    assert len(garotor.Path(tk, P, scheme=scheme, time_unit="ns" if ns else "s", min_gap=0).times) == 7
+    assert len(garotor.Path(tk, P, scheme=scheme, time_unit="ns" if ns else "s",
+                            min_gap=50 if ns else 5e-8, dedup=True).times) == 7
+
+
+def test_dedup_pickles_and_errors(rng):
+    import pickle
+    times, P = near_dup_keys()
+    p = garotor.Path(times + 7.25, P, scheme="c2", dedup=True)  # the first key merged: its reference kept
+    q = pickle.loads(pickle.dumps(p))
+    t = np.linspace(*p.range, 13)
+    assert np.array_equal(q.times, p.times) and np.array_equal(q.sample(t), p.sample(t))
+    # the doc's keys: the merged key at the mean time, the mean pose
+    d = garotor.Path([0, 0.0333, 0.0334, 0.0666], [[0, 0, 0, 0, 0, 0, 1], [0.1, 0, 0, 0, 0, 0, 1],
+                                                   [0.1001, 0, 0, 0, 0, 0, 1], [0.2, 0, 0, 0, 0, 0, 1]], dedup=True)
+    assert d.times.tolist() == [0.0, 0.0333 / 2 + 0.0334 / 2, 0.0666]
+    with pytest.raises(ValueError, match="min_gap must be None, 'auto' or a number >= 0"):
+        garotor.Path(times, P, min_gap=-1.0)
+    with pytest.raises(ValueError, match="min_gap must be"):
+        garotor.Path(times, P, min_gap="median")
+    K = garotor.from_pose(P)
+    with pytest.raises(ValueError, match="dedup applies to the groups 'cga' and 'matrix'"):
+        garotor.Path(times, K, group="affine", dedup=True)
+    # the affine group is checked all the same
+    with pytest.raises(garotor.Error, match="closer than min_gap"):
+        garotor.Path(times, K, group="affine", min_gap="auto")
+    with pytest.raises(ValueError, match="needs one key or at least 3, got 2 after dedup"):
+        garotor.Path([0, 1e-6, 1, 1 + 1e-6], P[:4], scheme="smooth", min_gap=0.01, dedup=True)
