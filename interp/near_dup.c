@@ -37,7 +37,8 @@ size_t ga_times_gap_run(size_t n, const double *times, double gap, size_t i)
     return j;
 }
 
-ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys, int ns, double *t, ga_mat4 *key)
+ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys, int ns, double *t,
+                             ga_mat4 *key)
 {
     if (!times || !keys || !t || !key || m == 0 || m > GA_PATH_MERGE_MAX)
         return GA_ERR_ARG;
