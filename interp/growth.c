@@ -5,6 +5,8 @@
  * not set the bound.
  */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <garotor/path.h>
@@ -64,5 +66,71 @@ ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
             r.first = i;
     }
     *out = r;
+    return GA_OK;
+}
+
+/* x in dig significant digits as "%.*g" writes it under the C locale, made
+ * from "%.*e"'s digits and exponent so that no locale's decimal point gets
+ * in (buf: 32 bytes); returns its value, read back from the digits. */
+static double g_digits(double x, int dig, char *buf)
+{
+    char e[48], d[24];
+    snprintf(e, sizeof e, "%.*e", dig - 1, x);
+    int n = 0;
+    const char *c = e;
+    for (; *c && *c != 'e'; c++)
+        if (*c >= '0' && *c <= '9' && n < 20)
+            d[n++] = *c;
+    int ex = *c == 'e' ? (int)strtol(c + 1, NULL, 10) : 0;
+    char r[48];
+    snprintf(r, sizeof r, "%.*sE%d", n, d, ex - (n - 1)); /* no decimal point: any locale */
+    double v = strtod(r, NULL);
+    while (n > 1 && d[n - 1] == '0') n--; /* %g drops trailing zeros */
+    char *o = buf;
+    if (ex < -4 || ex >= dig) {
+        *o++ = d[0];
+        if (n > 1) {
+            *o++ = '.';
+            memcpy(o, d + 1, (size_t)n - 1);
+            o += n - 1;
+        }
+        snprintf(o, 16, "e%c%02d", ex < 0 ? '-' : '+', ex < 0 ? -ex : ex);
+        return v;
+    }
+    if (ex < 0) {
+        *o++ = '0';
+        *o++ = '.';
+        for (int k = -1; k > ex; k--) *o++ = '0';
+        memcpy(o, d, (size_t)n);
+        o += n;
+    } else {
+        for (int k = 0; k <= ex; k++) *o++ = k < n ? d[k] : '0';
+        if (n > ex + 1) {
+            *o++ = '.';
+            memcpy(o, d + ex + 1, (size_t)(n - ex - 1));
+            o += n - ex - 1;
+        }
+    }
+    *o = '\0';
+    return v;
+}
+
+ga_status ga_path_growth_describe(const ga_path *p, const ga_path_growth *gr, ga_path_growth_words *out)
+{
+    if (!p || !gr || !out || gr->first >= p->n || !isfinite(gr->ratio))
+        return GA_ERR_ARG;
+    ga_path_growth_words w;
+    w.a = gr->first ? gr->first - 1 : 0;
+    w.b = gr->first ? gr->first : 1;
+    /* 3 digits, or as many as show it past the bound (3.0004, not 3) */
+    for (int dig = 3; dig <= 17; dig++)
+        if (g_digits(gr->ratio, dig, w.ratio) > GA_PATH_GROWTH_MAX)
+            break;
+    /* lihao2 carries its velocity along; any other scheme breaks the rule
+       through keys much closer than the others (near-duplicates) */
+    w.advice = p->scheme == GA_SCHEME_LIHAO2 ? "--scheme lihao3 or c2 follow the chords"
+                                             : "keys much closer together than the others (near-duplicates?) "
+                                               "make any scheme fast there";
+    *out = w;
     return GA_OK;
 }

@@ -220,6 +220,10 @@ typedef struct {
        minus stamp[0], in seconds (gpy_stamp_rel), as the tool's are */
     gpy_stamp *stamp;
     int ns;
+    /* the reference the path's times are relative to: stamp[0], or after
+       Path(dedup=True) merged the first keys, the first key's as given */
+    gpy_stamp ref;
+    int merged; /* dedup merged keys: a pickle keeps ref and the relative times */
 } gpy_PathObject;
 
 extern PyTypeObject gpy_PathType;

@@ -100,7 +100,7 @@ static int read_velocities(const ga_group *g, PyObject *obj, size_t count, doubl
  * capacity's) does with ns. 0, or -1 with an exception. */
 static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme, size_t n, const double *t,
                       const void *keys, int mat4, double **vel, size_t nvel, gpy_stamp **stamp, int ns,
-                      size_t wbytes)
+                      gpy_stamp ref, size_t wbytes)
 {
     void *work = PyMem_Malloc(wbytes);
     if (!work) {
@@ -130,19 +130,20 @@ static int path_build(gpy_PathObject *self, const ga_group *g, ga_scheme scheme,
     *vel = NULL;
     self->stamp = *stamp;
     self->ns = ns;
+    self->ref = ref;
     *stamp = NULL;
     return 0;
 }
 
 static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"times",      "poses",    "scheme",    "group",
-                             "velocities", "capacity", "time_unit", NULL};
-    PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None;
+    static char *kwlist[] = {"times",     "poses",     "scheme",  "group", "velocities", "capacity",
+                             "time_unit", "normalize", "min_gap", "dedup", NULL};
+    PyObject *tobj, *pobj, *vobj = Py_None, *cobj = Py_None, *gobj = Py_None;
     const char *sname = "screw", *gname = "cga", *unit = NULL;
-    int ns;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$Oz:Path", kwlist, &tobj, &pobj, &sname, &gname, &vobj,
-                                     &cobj, &unit) ||
+    int ns, normalize = 0, dedup = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|ssO$OzpOp:Path", kwlist, &tobj, &pobj, &sname, &gname,
+                                     &vobj, &cobj, &unit, &normalize, &gobj, &dedup) ||
         gpy_path_unit("Path", unit, &ns))
         return -1;
     if (self->work) {
@@ -189,6 +190,10 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
         PyErr_Format(PyExc_ValueError, "Path: group '%s' takes keys as (n, 4, 4) matrices", g->name);
         goto done;
     }
+    if (normalize && !g->rigid) { /* the tool's --normalize, as its message says */
+        PyErr_SetString(PyExc_ValueError, "Path: normalize applies to the groups 'cga' and 'matrix'");
+        goto done;
+    }
     size_t min = ga_scheme_min_keys(scheme);
     if (n != 1 && ((size_t)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) { /* 1: constant */
         PyErr_Format(PyExc_ValueError, "Path: scheme '%s' needs one key or %s %zu, got %zd", sname,
@@ -231,15 +236,6 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     }
     if (gpy_path_key_times("Path", t, ns, stamp, rel))
         goto done;
-    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, rel) : 0;
-    if (bad) {
-        PyErr_Format(
-            PyExc_ValueError,
-            "Path: scheme 'bspline' needs evenly spaced times (to 1e-9 of the spacing): index %zu is off "
-            "the even grid of the first and last",
-            bad);
-        goto done;
-    }
     npy_intp badp = gpy_first_nonfinite(pv, PyArray_SIZE(p));
     if (badp >= 0) {
         char why[160];
@@ -257,9 +253,9 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     Py_BEGIN_ALLOW_THREADS; /* C only, on this call's arrays */
     for (npy_intp i = 0; i < n && badk < 0; i++) {
         double e[GA_GROUP_MAX_ELEM];
-        int st = pose ? gpy_pose_to_mat(pv + 7 * i, &keys[i]) : GA_OK;
+        int st = pose ? gpy_key_pose(pv + 7 * i, normalize, &keys[i]) : GA_OK;
         if (!pose)
-            keys[i] = gpy_mat_get(pv + 16 * i);
+            keys[i] = gpy_key_mat(g, pv + 16 * i, normalize);
         if (st == GA_OK)
             st = g->from_mat4(keys[i], e);
         if (st != GA_OK)
@@ -267,7 +263,28 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     }
     Py_END_ALLOW_THREADS;
     if (badk >= 0) {
-        gpy_raise_status("Path: poses", 1, &n, badk, kst);
+        char why[200];
+        gpy_key_why(g, pose ? pv + 7 * badk : pv + 16 * badk, pose, normalize, badk, why, sizeof why);
+        gpy_raise_status_why("Path: poses", 1, &n, badk, kst, why[0] ? why : NULL);
+        goto done;
+    }
+    /* keys closer than min_gap: an error, or with dedup merged (as the tool's
+       --min-gap, --dedup, before its count of keys and bspline's grid) */
+    gpy_stamp ref = stamp[0]; /* the first key's time as given, before any merge */
+    if (gpy_path_near_dups(g, gobj, dedup, ns, ref, &n, stamp, rel, keys))
+        goto done;
+    if (n != 1 && ((size_t)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
+        PyErr_Format(PyExc_ValueError, "Path: scheme '%s' needs one key or %s %zu, got %zd after dedup",
+                     sname, scheme == GA_SCHEME_QUADRATIC ? "exactly" : "at least", min, (Py_ssize_t)n);
+        goto done;
+    }
+    size_t bad = scheme == GA_SCHEME_BSPLINE ? ga_times_uneven((size_t)n, rel) : 0;
+    if (bad) {
+        PyErr_Format(
+            PyExc_ValueError,
+            "Path: scheme 'bspline' needs evenly spaced times (to 1e-9 of the spacing): index %zu is off "
+            "the even grid of the first and last",
+            bad);
         goto done;
     }
     if (vobj != Py_None) {
@@ -286,7 +303,11 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
         if (read_velocities(g, vobj, count, vel))
             goto done;
     }
-    rc = path_build(self, g, scheme, (size_t)n, rel, keys, 1, &vel, nvel, &stamp, ns, wbytes);
+    rc = path_build(self, g, scheme, (size_t)n, rel, keys, 1, &vel, nvel, &stamp, ns, ref, wbytes);
+    if (rc == 0)
+        self->merged = n < PyArray_DIM(t, 0);
+    if (rc == 0)
+        rc = gpy_path_warn_growth(self);
 done:
     PyMem_Free(keys);
     PyMem_Free(stamp);
@@ -357,9 +378,23 @@ static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
     if (newobj && v) {
         state_copy sc = {n, PyArray_DATA(k)};
         gpy_path_locked(self, copy_state, &sc);
-        r = Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
-                          ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                          (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
+        /* where dedup merged keys, an eighth item: (the reference, the
+           relative times), as a merged key's stamp may have more digits
+           than its float in times */
+        PyObject *ref = NULL;
+        if (self->merged) {
+            npy_intp nn = (npy_intp)n;
+            PyObject *ra = PyArray_SimpleNew(1, &nn, NPY_DOUBLE);
+            if (ra)
+                memcpy(PyArray_DATA((PyArrayObject *)ra), self->path.t, n * sizeof(double));
+            ref = ra ? Py_BuildValue("(NN)", gpy_stamp_value(self->ref, self->ns), ra) : NULL;
+        }
+        r = ref ? Py_BuildValue("O(O)(ssOOOnsN)", newobj, (PyObject *)Py_TYPE(self), g->name,
+                                ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
+                                (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s", ref)
+                : Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
+                                ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
+                                (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
     }
     Py_XDECREF(t);
     Py_XDECREF(k);
@@ -386,12 +421,12 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         return NULL;
     }
     /* a state of 6, of before time_unit: seconds */
-    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 7 ||
+    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 8 ||
         !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)) ||
-        (PyTuple_GET_SIZE(state) == 7 && !PyUnicode_Check(PyTuple_GET_ITEM(state, 6))))
+        (PyTuple_GET_SIZE(state) >= 7 && !PyUnicode_Check(PyTuple_GET_ITEM(state, 6))))
         return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity, time_unit)");
     int ns = 0;
-    if (PyTuple_GET_SIZE(state) == 7) {
+    if (PyTuple_GET_SIZE(state) >= 7) {
         const char *unit = PyUnicode_AsUTF8(PyTuple_GET_ITEM(state, 6));
         if (!unit || gpy_path_unit("Path: state", unit, &ns))
             return NULL;
@@ -476,7 +511,30 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
     }
     if (gpy_path_key_times("Path: state", t, ns, stamp, rel))
         goto done;
-    if (path_build(self, g, scheme, (size_t)n, rel, kv, 0, &vel, nvel, &stamp, ns, wbytes) == 0) {
+    gpy_stamp ref = stamp[0];
+    int merged = PyTuple_GET_SIZE(state) == 8;
+    if (merged) { /* (reference, relative times) of a path whose keys dedup merged */
+        PyObject *m = PyTuple_GET_ITEM(state, 7);
+        PyArrayObject *ra = PyTuple_Check(m) && PyTuple_GET_SIZE(m) == 2
+                              ? gpy_path_times_in(PyTuple_GET_ITEM(m, 0))
+                              : NULL;
+        PyArrayObject *rr = ra ? gpy_as_doubles(PyTuple_GET_ITEM(m, 1)) : NULL;
+        int bad = !rr || PyArray_SIZE(ra) != 1 || PyArray_NDIM(ra) != 0 ||
+                  gpy_path_stamp_at(ra, 0, ns, &ref) || PyArray_NDIM(rr) != 1 || PyArray_DIM(rr, 0) != n;
+        for (npy_intp i = 0; !bad && i < n; i++) {
+            rel[i] = ((const double *)PyArray_DATA(rr))[i];
+            bad = !isfinite(rel[i]) || (i > 0 && !(rel[i] > rel[i - 1]));
+        }
+        Py_XDECREF(ra);
+        Py_XDECREF(rr);
+        if (bad) {
+            if (!PyErr_Occurred())
+                state_error("the merged keys' item must be (a time, n increasing relative times)");
+            goto done;
+        }
+    }
+    if (path_build(self, g, scheme, (size_t)n, rel, kv, 0, &vel, nvel, &stamp, ns, ref, wbytes) == 0) {
+        self->merged = merged;
         Py_INCREF(Py_None);
         ret = Py_None;
     }
@@ -492,22 +550,31 @@ done:
 
 static PyMethodDef Path_methods[] = {
     {"sample", (PyCFunction)(void (*)(void))gpy_path_sample, METH_VARARGS | METH_KEYWORDS,
-     "sample(t, *, out=None): the poses at the times t (any shape ...), as (..., 4, 4) matrices."},
+     "sample(t, *, extrapolate=None, out=None): the poses at the times t (any shape ...), as (..., 4, 4) "
+     "matrices; extrapolate: outside the range 'error' (None), 'hold', 'extend' or 'constant-velocity' "
+     "(garotor interp --extrapolate)."},
     {"sample_pose", (PyCFunction)(void (*)(void))gpy_path_sample_pose, METH_VARARGS | METH_KEYWORDS,
-     "sample_pose(t, *, out=None): the poses at the times t as (..., 7) rows x y z qx qy qz qw, from the "
+     "sample_pose(t, *, extrapolate=None, out=None): the poses at the times t as (..., 7) rows x y z qx qy "
+     "qz qw, from the "
      "group's rotation and translation (garotor interp --format pose, bit for bit); the quaternion's sign "
      "follows the previous sample's along t's last axis (cga and matrix)."},
     {"velocity", (PyCFunction)(void (*)(void))gpy_path_velocity, METH_VARARGS | METH_KEYWORDS,
-     "velocity(t, *, frame='body', out=None): the velocity per unit time at the times t: (..., 6) twists "
+     "velocity(t, *, frame='body', extrapolate=None, out=None): the velocity per unit time at the times t: "
+     "(..., 6) twists "
      "(affine: (..., 4, 4)); frame 'body' A(t)^-1 dA/dt, 'spatial' dA/dt A(t)^-1, 'world' (rigid groups) "
      "the angular rate in world axes and dp/dt."},
     {"acceleration", (PyCFunction)(void (*)(void))gpy_path_acceleration, METH_VARARGS | METH_KEYWORDS,
-     "acceleration(t, *, frame='body', out=None): the derivative of the velocity in that frame per unit "
+     "acceleration(t, *, frame='body', extrapolate=None, out=None): the derivative of the velocity in that "
+     "frame per unit "
      "time^2 at the times t: (..., 6) (affine: (..., 4, 4)); 'world': the angular acceleration in world axes "
      "and d2p/dt2."},
     {"jerk", (PyCFunction)(void (*)(void))gpy_path_jerk, METH_VARARGS | METH_KEYWORDS,
-     "jerk(t, *, frame='body', out=None): the derivative of the acceleration in that frame per unit time^3 "
+     "jerk(t, *, frame='body', extrapolate=None, out=None): the derivative of the acceleration in that frame "
+     "per unit time^3 "
      "at the times t: (..., 6) (affine: (..., 4, 4)); 'world': d3p/dt3 for the position."},
+    {"clip", (PyCFunction)(void (*)(void))gpy_path_clip, METH_VARARGS | METH_KEYWORDS,
+     "clip(t): the times of t (read in C order) in the path's range, as given and in their order: the "
+     "times `garotor interp --clip` keeps."},
     {"append", (PyCFunction)(void (*)(void))gpy_path_append, METH_VARARGS | METH_KEYWORDS,
      "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
      "building one "
@@ -538,13 +605,14 @@ PyTypeObject gpy_PathType = {
     .tp_repr = (reprfunc)gpy_path_repr,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc =
-        "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None): a path through "
-        "key "
-        "poses.\n\n"
+        "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None, time_unit='s', "
+        "normalize=False): a path through key poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
         "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline, c2;\n"
         "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
-        "capacity: room for keys to come (append), for the schemes that can append.",
+        "capacity: room for keys to come (append), for the schemes that can append;\n"
+        "normalize: keys up to 1e-3 off a rigid motion projected onto it (garotor interp --normalize).\n"
+        "A path whose velocity breaks the growth rule warns (RuntimeWarning) as the tool does.",
     .tp_methods = Path_methods,
     .tp_getset = Path_getset,
     .tp_init = (initproc)Path_init,

@@ -6,6 +6,7 @@
  *   path_sample.c  sample, sample_pose, velocity, acceleration, jerk
  *   path_keys.c    append and the attributes
  *   path_times.c   the times: stamps as given, relative seconds
+ *   path_opts.c    the tool's options: normalize=, the growth warning, clip
  */
 #ifndef GAROTOR_PYTHON_PATH_H
 #define GAROTOR_PYTHON_PATH_H
@@ -80,5 +81,29 @@ int gpy_path_key_times(const char *what, PyArrayObject *t, int ns, gpy_stamp *st
 PyObject *gpy_path_rel_times(gpy_PathObject *self, PyObject *t, PyArrayObject **given);
 /* the index of the key at the relative time t (the first at or after it) */
 size_t gpy_path_key_index(const ga_path *p, double t);
+
+/* ---- the tool's options (path_opts.c) ---- */
+
+/* key i given as a pose row (7) or a 4x4 (16): with normalize projected onto
+ * the group as `garotor interp --normalize` does (ga_quat_normalize,
+ * ga_se3_normalize to GA_SE3_NORMALIZE_TOL); C only (no Python API) */
+int gpy_key_pose(const double *v, int normalize, ga_mat4 *m);
+ga_mat4 gpy_key_mat(const ga_group *g, const double *v, int normalize);
+/* why key i (v, a pose row or a 4x4) was refused, naming normalize= where
+ * it decides; "" when the status says it all */
+void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, npy_intp i, char *why,
+                 size_t size);
+/* the growth rule's warning (RuntimeWarning) where self's path breaks it,
+ * in the tool's words; -1 when the warning is raised as an error */
+int gpy_path_warn_growth(gpy_PathObject *self);
+/* min_gap= and dedup= (the tool's --min-gap, --dedup): keys closer than the
+ * gap an error naming the later one, or with dedup each run merged into one
+ * key (ga_path_merge_keys), stamp, rel and keys compacted and *n the keys
+ * left; ref: the first key's stamp, which the times are relative to. -1
+ * with an exception. */
+int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, gpy_stamp ref, npy_intp *n,
+                       gpy_stamp *stamp, double *rel, ga_mat4 *keys);
+/* Path.clip(t) */
+PyObject *gpy_path_clip(gpy_PathObject *self, PyObject *args, PyObject *kw);
 
 #endif

@@ -151,7 +151,7 @@ PyObject *gpy_path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
             return NULL;
         }
     }
-    op.t = gpy_stamp_rel(op.at, self->stamp[0], self->ns);
+    op.t = gpy_stamp_rel(op.at, self->ref, self->ns);
     gpy_path_locked(self, append_step, &op);
     if (op.refused)
         return append_refused(self, &op);

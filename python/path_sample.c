@@ -21,7 +21,21 @@ typedef struct {
     PyArrayObject *given;
     npy_intp k;
     gpy_stamp at0, at1;
+    /* extrapolate= other than 'error': the path with its mode, set up at the
+       first element (under the lock, so on the path the loop reads) */
+    ga_extrap mode;
+    int xready, xfailed;
+    ga_path_extrap xp;
 } path_ctx;
+
+#define PATH_CTX(path, stamp, ns, given)                                                                     \
+    {                                                                                                        \
+        (path), GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY, (stamp), (ns), (given), -1, {0, 0}, {0, 0},             \
+            GA_EXTRAP_ERROR, 0, 0,                                                                           \
+        {                                                                                                    \
+            0                                                                                                \
+        }                                                                                                    \
+    }
 
 static int path_failed(path_ctx *c, int status, npy_intp k)
 {
@@ -34,11 +48,34 @@ static int path_failed(path_ctx *c, int status, npy_intp k)
     return status;
 }
 
+/* The extrapolation's ends, once (ga_path_extrap_init): GA_OK or its status */
+static int extrap_ready(path_ctx *c)
+{
+    if (c->xready)
+        return GA_OK;
+    int st = ga_path_extrap_init(c->path, c->mode, &c->xp);
+    if (st != GA_OK)
+        c->xfailed = 1;
+    else
+        c->xready = 1;
+    return st;
+}
+
+/* The pose at t: with extrapolate= 'error' ga_path_sample's (as before),
+ * else ga_path_extrap_eval's (garotor interp --extrapolate's) */
+static int pose_at(path_ctx *c, const double *t, void *e)
+{
+    if (c->mode == GA_EXTRAP_ERROR)
+        return ga_path_sample(c->path, GA_EVAL_DIRECT, 1.0, 1, t, e);
+    int st = extrap_ready(c);
+    return st != GA_OK ? st : ga_path_extrap_eval(&c->xp, t[0], e);
+}
+
 static int k_sample(void *ctx, const double *const *in, double *out, npy_intp k)
 {
     const ga_path *p = ((path_ctx *)ctx)->path;
     double e[GA_GROUP_MAX_ELEM];
-    int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
+    int st = pose_at(ctx, in[0], e);
     if (st != GA_OK)
         return path_failed(ctx, st, k);
     gpy_mat_put(p->group->to_mat4(e), out);
@@ -77,8 +114,13 @@ static int k_derivative(void *ctx, const double *const *in, double *out, npy_int
     path_ctx *c = ctx;
     const ga_path *p = c->path;
     double x[GA_GROUP_MAX_DIM];
-    int st = ga_path_derivatives(p, in[0][0], c->frame, o == 1 ? x : NULL, o == 2 ? x : NULL,
+    int st = c->mode == GA_EXTRAP_ERROR ? GA_OK : extrap_ready(c);
+    if (st == GA_OK && c->mode == GA_EXTRAP_ERROR)
+        st = ga_path_derivatives(p, in[0][0], c->frame, o == 1 ? x : NULL, o == 2 ? x : NULL,
                                  o == 3 ? x : NULL);
+    else if (st == GA_OK)
+        st = ga_path_extrap_derivatives(&c->xp, in[0][0], c->frame, o == 1 ? x : NULL, o == 2 ? x : NULL,
+                                        o == 3 ? x : NULL);
     if (st != GA_OK)
         return path_failed(c, st, k);
     if (p->group->rigid)
@@ -106,6 +148,11 @@ static void explain_time(void *ctx, const double *const *in, int status, char *w
 {
     const path_ctx *pc = ctx;
     double t0 = pc->t0, t1 = pc->t1, t = in[0][0];
+    if (pc->xfailed) {
+        snprintf(why, size, "no velocity at the end of the path (extrapolate='%s')",
+                 ga_extrap_name(pc->mode));
+        return;
+    }
     if (status == GA_ERR_NOTFINITE || pc->range_status != GA_OK)
         return;
     char a[32], b[32], c[32];
@@ -116,9 +163,26 @@ static void explain_time(void *ctx, const double *const *in, int status, char *w
         else
             gpy_repr_text(((const double *)PyArray_DATA(pc->given))[pc->k], a);
     }
-    if (t < t0 || t > t1)
+    if ((t < t0 || t > t1) && pc->mode == GA_EXTRAP_ERROR)
         snprintf(why, size, "t = %s is outside the path's range [%s, %s] (Path.range)", given,
                  gpy_stamp_text(pc->at0, pc->ns, b), gpy_stamp_text(pc->at1, pc->ns, c));
+    else if (t < t0 || t > t1)
+        snprintf(why, size, "t = %s, outside the path's range [%s, %s], extrapolated (extrapolate='%s')",
+                 given, gpy_stamp_text(pc->at0, pc->ns, b), gpy_stamp_text(pc->at1, pc->ns, c),
+                 ga_extrap_name(pc->mode));
+}
+
+/* extrapolate= "error" (or None), "hold", "extend", "constant-velocity" */
+static int parse_extrap(const char *what, const char *name, ga_extrap *x)
+{
+    *x = GA_EXTRAP_ERROR;
+    if (name && ga_extrap_by_name(name, x) != GA_OK) {
+        PyErr_Format(PyExc_ValueError,
+                     "%s: extrapolate must be 'error', 'hold', 'extend' or 'constant-velocity', not '%s'",
+                     what, name);
+        return -1;
+    }
+    return 0;
 }
 
 /* frame= of velocity, acceleration, jerk: "body", "spatial" or "world" */
@@ -146,18 +210,19 @@ static int parse_frame(const char *what, const ga_group *g, const char *name, ga
 static PyObject *path_call(gpy_PathObject *self, PyObject *args, PyObject *kw, const char *what,
                            gpy_kernel_fn kernel, gpy_core outcore)
 {
-    static char *kwlist[] = {"t", "out", NULL};
-    static char *kwlist_frame[] = {"t", "frame", "out", NULL};
+    static char *kwlist[] = {"t", "extrapolate", "out", NULL};
+    static char *kwlist_frame[] = {"t", "frame", "extrapolate", "out", NULL};
     PyObject *t, *out = NULL;
-    const char *frame = NULL;
+    const char *frame = NULL, *extrap = NULL;
     int derivative = kernel != k_sample;
-    if (!(derivative ? PyArg_ParseTupleAndKeywords(args, kw, "O|$zO", kwlist_frame, &t, &frame, &out)
-                     : PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out)) ||
+    if (!(derivative
+              ? PyArg_ParseTupleAndKeywords(args, kw, "O|$zzO", kwlist_frame, &t, &frame, &extrap, &out)
+              : PyArg_ParseTupleAndKeywords(args, kw, "O|$zO", kwlist, &t, &extrap, &out)) ||
         !gpy_path_ready(self))
         return NULL;
-    path_ctx c = {&self->path, GA_ERR_ARG, 0.0, 0.0,    GA_FRAME_BODY, self->stamp,
-                  self->ns,    NULL,       -1,  {0, 0}, {0, 0}};
-    if (derivative && parse_frame(what, self->group, frame, &c.frame))
+    path_ctx c = PATH_CTX(&self->path, self->stamp, self->ns, NULL);
+    if ((derivative && parse_frame(what, self->group, frame, &c.frame)) ||
+        parse_extrap(what, extrap, &c.mode))
         return NULL;
     gpy_kernel_call kc = {.what = what,
                           .nin = 1,
@@ -216,7 +281,7 @@ static int k_sample_pose(void *ctx, const double *const *in, double *out, npy_in
     pose_path_ctx *c = ctx;
     const ga_path *p = c->pc.path;
     double e[GA_GROUP_MAX_ELEM], q[4], t[3];
-    int st = ga_path_sample(p, GA_EVAL_DIRECT, 1.0, 1, in[0], e);
+    int st = pose_at(&c->pc, in[0], e);
     if (st != GA_OK)
         return path_failed(&c->pc, st, k);
     p->group->to_qt(e, q, t);
@@ -234,9 +299,12 @@ static int k_sample_pose(void *ctx, const double *const *in, double *out, npy_in
 
 PyObject *gpy_path_sample_pose(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"t", "out", NULL};
+    static char *kwlist[] = {"t", "extrapolate", "out", NULL};
     PyObject *t, *out = NULL;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$O", kwlist, &t, &out) || !gpy_path_ready(self))
+    const char *extrap = NULL;
+    ga_extrap mode;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$zO", kwlist, &t, &extrap, &out) || !gpy_path_ready(self) ||
+        parse_extrap("Path.sample_pose", extrap, &mode))
         return NULL;
     if (!self->group->to_qt) {
         PyErr_Format(PyExc_ValueError, "Path.sample_pose: group '%s' has no poses (sample gives matrices)",
@@ -247,10 +315,8 @@ PyObject *gpy_path_sample_pose(gpy_PathObject *self, PyObject *args, PyObject *k
     PyArrayObject *a = (PyArrayObject *)gpy_path_rel_times(self, t, &given);
     if (!a)
         return NULL;
-    pose_path_ctx c = {
-        {&self->path, GA_ERR_ARG, 0.0, 0.0, GA_FRAME_BODY, self->stamp, self->ns, given, -1, {0, 0}, {0, 0}},
-        0,
-        {1, 0, 0, 0}};
+    pose_path_ctx c = {PATH_CTX(&self->path, self->stamp, self->ns, given), 0, {1, 0, 0, 0}};
+    c.pc.mode = mode;
     if (PyArray_NDIM(a) >= 1)
         c.run = PyArray_DIM(a, PyArray_NDIM(a) - 1);
     gpy_kernel_call kc = {.what = "Path.sample_pose",

@@ -207,7 +207,7 @@ int gpy_path_stamp_at(PyArrayObject *a, npy_intp i, int ns, gpy_stamp *s)
 PyObject *gpy_path_rel_times(gpy_PathObject *self, PyObject *t, PyArrayObject **given)
 {
     *given = NULL;
-    gpy_stamp ref = self->stamp[0]; /* never changes after the build */
+    gpy_stamp ref = self->ref; /* never changes after the build */
     PyArrayObject *a = gpy_path_times_in(t);
     if (!a)
         return NULL;

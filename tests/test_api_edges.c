@@ -253,6 +253,20 @@ static int c_path_derivatives_segment(void)
                                        &buf[3].d);
 }
 static int c_path_measure_growth(void) { return ga_path_measure_growth(IN(0, &path), OUT(1)); }
+static const ga_path_growth growth_past = {4.25, 1, 1}; /* a growth past the rule, for its words */
+static int c_path_growth_describe(void)
+{
+    return ga_path_growth_describe(IN(0, &path), IN(1, &growth_past), OUT(2));
+}
+static ga_path_extrap xpath; /* path, extrapolated at constant velocity (setup_inputs) */
+static int c_extrap_by_name(void) { return ga_extrap_by_name(IN(0, "constant-velocity"), OUT(1)); }
+static int c_path_extrap_init(void) { return ga_path_extrap_init(IN(0, &path), GA_EXTRAP_EXTEND, OUT(1)); }
+static int c_path_extrap_eval(void) { return ga_path_extrap_eval(IN(0, &xpath), 2.5, OUT(1)); }
+/* v, a and j may be NULL (path.h, as ga_path_derivatives) */
+static int c_path_extrap_derivatives(void)
+{
+    return ga_path_extrap_derivatives(IN(0, &xpath), 2.5, GA_FRAME_WORLD, &buf[1].d, &buf[2].d, &buf[3].d);
+}
 static int c_path_stepper_init(void)
 {
     return ga_path_stepper_init(IN(0, &path), GA_EVAL_EULER, 0.1, 5, 0.25, 1.75, OUT(1));
@@ -381,6 +395,11 @@ static const api_case cases[] = {
     CASE(path_derivatives, 1, 14),
     CASE(path_derivatives_segment, 1, 14),
     CASE(path_measure_growth, 2, 2),
+    CASE(path_growth_describe, 3, 4),
+    CASE(extrap_by_name, 2, 2),
+    CASE(path_extrap_init, 2, 2),
+    CASE(path_extrap_eval, 2, 2),
+    CASE(path_extrap_derivatives, 1, 14),
     CASE(path_stepper_init, 2, 2),
     CASE(path_stepper_next, 2, 2),
     CASE(path_sample_uniform, 2, 2),
@@ -444,6 +463,8 @@ static void setup_inputs(void)
                      GA_OK);
     tk_expect_status("setup: the stepper",
                      ga_path_stepper_init(&path, GA_EVAL_EULER, 0.1, 5, 0.25, 1.75, &stepper), GA_OK);
+    tk_expect_status("setup: the path extrapolated",
+                     ga_path_extrap_init(&path, GA_EXTRAP_CONSTANT_VELOCITY, &xpath), GA_OK);
 }
 
 static int untouched(unsigned out, int skip)

@@ -36,30 +36,20 @@ static int build_path(const ic_opts *io, const ic_input *in, void **work, ga_pat
 }
 
 /* The growth rule (path.h, docs/schemes.md "lihao2"): a warning, the
- * samples are written all the same (exit status 0). */
+ * samples are written all the same (exit status 0). Its words are the
+ * library's (ga_path_growth_describe), as garotor.Path's warning. */
 static void warn_growth(const ic_opts *io, const ic_input *in, const ga_path *path)
 {
     const tio_items *f = &in->in;
     ga_path_growth gr;
-    if (ga_path_measure_growth(path, &gr) != GA_OK || gr.first >= in->n)
+    ga_path_growth_words w;
+    if (ga_path_measure_growth(path, &gr) != GA_OK || ga_path_growth_describe(path, &gr, &w) != GA_OK)
         return;
-    size_t a = gr.first ? gr.first - 1 : 0, b = gr.first ? gr.first : 1;
-    char ratio[32]; /* 3 digits, or as many as show it past the bound (3.0004, not 3) */
-    for (int dig = 3; dig <= 17; dig++) {
-        snprintf(ratio, sizeof ratio, "%.*g", dig, gr.ratio);
-        if (strtod(ratio, NULL) > GA_PATH_GROWTH_MAX)
-            break;
-    }
-    /* lihao2 carries its velocity along; any other scheme breaks the rule
-       through keys much closer than the others (near-duplicates) */
     fprintf(stderr,
             "garotor interp: warning: %s: the %s path's velocity grows past %g times the fastest chord on "
             "the segment t = %s to %s (lines %ld to %ld), up to %s times at t = %s; %s (docs/schemes.md)\n",
-            f->name, ga_scheme_name(io->scheme), GA_PATH_GROWTH_MAX, f->first[a], f->first[b],
-            f->item[a].line, f->item[b].line, ratio, f->first[gr.key],
-            io->scheme == GA_SCHEME_LIHAO2 ? "--scheme lihao3 or c2 follow the chords"
-                                           : "keys much closer together than the others (near-duplicates?) "
-                                             "make any scheme fast there");
+            f->name, ga_scheme_name(io->scheme), GA_PATH_GROWTH_MAX, f->first[w.a], f->first[w.b],
+            f->item[w.a].line, f->item[w.b].line, w.ratio, f->first[gr.key], w.advice);
 }
 
 int cmd_interp(const cli_opts *o)

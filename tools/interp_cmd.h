@@ -30,10 +30,10 @@ typedef struct {
     ga_scheme scheme;
     ga_eval ev;
     svg_view view;
-    int pose;                   /* --format pose */
-    int kitti;                  /* --format kitti: 12 numbers a key, no t */
-    int extrap;                 /* --extrapolate: 0 error, 1 hold, 2 extend, 3 constant-velocity */
-    int clip;                   /* --clip: given times outside the range dropped */
+    int pose;   /* --format pose */
+    int kitti;  /* --format kitti: 12 numbers a key, no t */
+    int extrap; /* --extrapolate: a ga_extrap (0 error, 1 hold, 2 extend, 3 constant-velocity) */
+    int clip;   /* --clip: given times outside the range dropped */
     int with_v, with_a, with_j; /* --with velocity,acceleration,jerk (any of them) */
     ga_frame frame;             /* --frame */
     int ns;                     /* --time-unit ns */
@@ -115,11 +115,9 @@ typedef struct {
     char *const *at_text; /* IC_GIVEN: as written */
     uint64_t rp;          /* IC_RATE: HZ = rp 10^rq when rexact */
     int rq, rexact;
-    size_t k0;     /* IC_RATE: the first k in the range */
-    double s0, sp; /* IC_NS_SAMPLES: the range's start and span in nanoseconds */
-    /* --extrapolate constant-velocity: the pose and body velocity at the
-       range's start [0] and end [1] (ic_write sets them) */
-    double cv_pose[2][GA_GROUP_MAX_ELEM], cv_vel[2][GA_GROUP_MAX_DIM];
+    size_t k0;         /* IC_RATE: the first k in the range */
+    double s0, sp;     /* IC_NS_SAMPLES: the range's start and span in nanoseconds */
+    ga_path_extrap xp; /* the path with --extrapolate's mode (ic_write sets it) */
 } ic_sampler;
 /* The sample times of --samples, --rate, --at or --times (path and widths
  * are set once the path is built). */

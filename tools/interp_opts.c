@@ -70,15 +70,14 @@ static int sample_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: give one of --samples N, --at t1,t2,..., --rate HZ, --times FILE\n");
         return -1;
     }
-    static const char *const extrap[] = {"error", "hold", "extend", "constant-velocity"};
-    io->extrap = 0;
-    while (o->extrapolate && io->extrap < 4 && strcmp(o->extrapolate, extrap[io->extrap]) != 0) io->extrap++;
-    if (io->extrap == 4) {
+    ga_extrap x = GA_EXTRAP_ERROR; /* the names of ga_extrap_by_name, as garotor.Path's */
+    if (o->extrapolate && ga_extrap_by_name(o->extrapolate, &x) != GA_OK) {
         fprintf(stderr,
                 "garotor interp: --extrapolate must be error, hold, extend or constant-velocity, not '%s'\n",
                 o->extrapolate);
         return -1;
     }
+    io->extrap = (int)x;
     io->clip = o->clip;
     if (o->clip && o->extrapolate) {
         fprintf(stderr, "garotor interp: --clip drops the times --extrapolate %s would sample: give one\n",

@@ -196,31 +196,20 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
              : cli_check_motion(io->g, in->keys[i], f, i);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* Keys i0..i1 (closer than --min-gap) merged into key i0: the mean of their
- * times, stamped as the tool stamps a computed time, and the mean of their
- * poses (ga_rotor_mean). 0, or -1 after a message. */
+ * times and poses (ga_path_merge_keys, as garotor.Path's dedup=), the mean
+ * time stamped as the tool stamps a computed time. 0, or -1 after a
+ * message. */
 static int merge_keys(const ic_timebase *tb, ic_input *in, size_t i0, size_t i1)
 {
     tio_items *f = &in->in;
     size_t m = i1 - i0 + 1;
-    ga_rotor r[64], mean;
-    double w[64], t = 0.0;
-    if (m > 64)
-        return tio_error(f, i0, "more than 64 keys closer than --min-gap in a row: is --min-gap too large?");
-    int st = GA_OK;
-    for (size_t k = 0; k < m && st == GA_OK; k++) {
-        st = ga_rotor_from_mat4(in->keys[i0 + k], &r[k]);
-        w[k] = 1.0;
-        t += in->times[i0 + k] / (double)m;
-    }
-    if (st == GA_OK)
-        st = ga_rotor_mean(r, w, m, &mean);
+    double t;
+    ga_mat4 mean;
+    if (m > GA_PATH_MERGE_MAX)
+        return tio_error(f, i0, "more than %d keys closer than --min-gap in a row: is --min-gap too large?",
+                         GA_PATH_MERGE_MAX);
+    int st = ga_path_merge_keys(m, in->times + i0, in->keys + i0, tb->ns, &t, &mean);
     if (st != GA_OK)
         return tio_error(f, i0, "cannot merge the keys of lines %ld to %ld: %s", f->item[i0].line,
                          f->item[i1].line, ga_status_string(st));
@@ -232,7 +221,7 @@ static int merge_keys(const ic_timebase *tb, ic_input *in, size_t i0, size_t i1)
         return ic_oom();
     if (tb->ns) {
         char b[400];
-        snprintf(b, sizeof b, "%.0f", floor(t * 1e9 + 0.5));
+        snprintf(b, sizeof b, "%.0f", t);
         tt_parse(b, &o);
     } else
         tt_shortest(t, &o);
@@ -244,13 +233,13 @@ static int merge_keys(const ic_timebase *tb, ic_input *in, size_t i0, size_t i1)
     free(f->first[i0]);
     f->first[i0] = text;
     in->times[i0] = ic_rel_time(tb, text);
-    in->keys[i0] = ga_rotor_to_mat4(mean);
+    in->keys[i0] = mean;
     return 0;
 }
 
-/* Keys closer than --min-gap (default: 1% of the median spacing): an error
- * naming the pair, or with --dedup merged (the keys, their times, texts and
- * lines compacted). 0, or -1 after a message. */
+/* Keys closer than --min-gap (default: 1% of the median spacing,
+ * ga_times_min_gap): an error naming the pair, or with --dedup merged (the
+ * keys, their times, texts and lines compacted). 0, or -1 after a message. */
 static int near_duplicates(const ic_opts *io, const ic_timebase *tb, ic_input *in)
 {
     const cli_opts *o = io->o;
@@ -264,16 +253,14 @@ static int near_duplicates(const ic_opts *io, const ic_timebase *tb, ic_input *i
         double *g = malloc((n - 1) * sizeof *g);
         if (!g)
             return ic_oom();
-        for (size_t i = 1; i < n; i++) g[i - 1] = in->times[i] - in->times[i - 1];
-        qsort(g, n - 1, sizeof *g, cmp_double);
-        median = (n - 1) % 2 ? g[(n - 1) / 2] : 0.5 * (g[(n - 1) / 2 - 1] + g[(n - 1) / 2]);
+        int st = ga_times_min_gap(n, in->times, g, &median, &gap);
         free(g);
-        gap = 0.01 * median;
+        if (st != GA_OK) /* cannot happen: the times are finite and increasing */
+            return ic_oom();
     }
     size_t out = 0;
     for (size_t i = 0; i < n;) {
-        size_t j = i;
-        while (j + 1 < n && in->times[j + 1] - in->times[j] < gap) j++;
+        size_t j = ga_times_gap_run(n, in->times, gap, i);
         if (j > i && !o->dedup) {
             char dflt[96] = "";
             if (!(o->given & OPT_MIN_GAP))

@@ -52,134 +52,29 @@ static void put_algebra(const ga_group *g, int vw, const double *x, double *row)
     memcpy(row, h.m, sizeof h.m);
 }
 
-/* Where a time outside the path's range (ga_path_range: the keys' times,
- * bspline [t_1, t_{n-2}]) goes (--extrapolate): hold, the pose at the range's
- * end (segment SIZE_MAX, u 0 before, 1 after); extend, the end segment at its
- * u outside [0, 1]; constant-velocity, segment SIZE_MAX - 1 and *u the time
- * past the end (negative before the start). 0 for a time inside, 1 outside. */
-static int outside(const ga_path *p, int extrap, double t, size_t *seg, double *u)
-{
-    size_t m = ga_path_segments(p);
-    double r0, r1, s0, s1;
-    if (ga_path_range(p, &r0, &r1) != GA_OK || (t >= r0 && t <= r1))
-        return 0; /* a built path has a range: ga_path_sample reports the rest */
-    int after = t > r1;
-    if (extrap == 3) {
-        *seg = SIZE_MAX - 1;
-        *u = after ? t - r1 : t - r0;
-    } else if (extrap == 1 || m == 0) {
-        *seg = SIZE_MAX;
-        *u = after;
-    } else {
-        *seg = after ? m - 1 : 0;
-        if (ga_path_segment_range(p, *seg, &s0, &s1) != GA_OK) {
-            *seg = SIZE_MAX; /* cannot happen for a built path: hold the end */
-            *u = after;
-        } else
-            *u = (t - s0) / (s1 - s0);
-    }
-    return 1;
-}
-
-/* The pose at t, extrapolated as --extrapolate says: constant-velocity is the
- * end pose E moved by its body velocity V for the time past the end, exactly
- * E exp(dt V). */
+/* The pose at t: inside the path's range by the evaluator of --eval, outside
+ * as --extrapolate says (ga_path_extrap_eval, as garotor.Path's
+ * extrapolate=). */
 static int sample_at(const ic_sampler *s, double t, void *o)
 {
-    const ga_path *p = s->path;
-    size_t seg;
-    double u;
-    if (!outside(p, s->extrap, t, &seg, &u))
-        return ga_path_sample(p, s->ev, s->step, 1, &t, o);
-    if (seg == SIZE_MAX - 1) {
-        const ga_group *g = p->group;
-        int end = u > 0;
-        double x[GA_GROUP_MAX_DIM], e[GA_GROUP_MAX_ELEM];
-        for (size_t i = 0; i < g->dim; i++) x[i] = u * s->cv_vel[end][i];
-        int st = g->exp(x, e);
-        if (st == GA_OK)
-            g->compose(s->cv_pose[end], e, o);
-        return st;
-    }
-    if (seg == SIZE_MAX) { /* the range's end: the end key, or bspline's end pose */
-        double r0, r1;
-        int st = ga_path_range(p, &r0, &r1);
-        return st != GA_OK ? st : ga_path_eval(p, u > 0 ? r1 : r0, o);
-    }
-    return ga_path_eval_segment(p, seg, u, o);
-}
-
-/* The derivatives past the end under --extrapolate constant-velocity: the
- * body velocity V of the end (end: 0 first, 1 last) held, at the pose e. In
- * the body frame V, in the spatial frame Ad(e) V, and neither changes; in the
- * world frame (rotation R of e, V = (w, v)) the rate R w, which stays, and the
- * position's derivatives R v, R (w x v), R (w x (w x v)). */
-static void constant_velocity_derivs(const ic_sampler *s, int end, const void *e, double *v, double *a,
-                                     double *j)
-{
-    const ga_group *g = s->path->group;
-    const double *vb = s->cv_vel[end];
-    double *x[3] = {v, a, j};
-    for (int k = 0; k < 3; k++)
-        if (x[k])
-            memset(x[k], 0, g->dim * sizeof *x[k]);
-    if (s->frame == GA_FRAME_WORLD) { /* a rigid group (checked with the options) */
-        ga_mat4 M = g->to_mat4(e);
-        double d[3][3]; /* v, w x v, w x (w x v) */
-        memcpy(d[0], vb + 3, sizeof d[0]);
-        for (int k = 1; k < 3; k++) {
-            d[k][0] = vb[1] * d[k - 1][2] - vb[2] * d[k - 1][1];
-            d[k][1] = vb[2] * d[k - 1][0] - vb[0] * d[k - 1][2];
-            d[k][2] = vb[0] * d[k - 1][1] - vb[1] * d[k - 1][0];
-        }
-        for (int r = 0; r < 3; r++) {
-            const double *R = M.m + 4 * r;
-            if (v)
-                v[r] = R[0] * vb[0] + R[1] * vb[1] + R[2] * vb[2];
-            for (int k = 0; k < 3; k++)
-                if (x[k])
-                    x[k][3 + r] = R[0] * d[k][0] + R[1] * d[k][1] + R[2] * d[k][2];
-        }
-    } else if (v && s->frame == GA_FRAME_SPATIAL)
-        g->adjoint(e, vb, v);
-    else if (v)
-        memcpy(v, vb, g->dim * sizeof *v);
+    double r0, r1;
+    if (s->ev != GA_EVAL_DIRECT && ga_path_range(s->path, &r0, &r1) == GA_OK && t >= r0 && t <= r1)
+        return ga_path_sample(s->path, s->ev, s->step, 1, &t, o);
+    return ga_path_extrap_eval(&s->xp, t, o);
 }
 
 /* Velocity, acceleration and jerk at t (those not NULL: only they are
- * computed; the pose there: e), extrapolated as the samples are. */
-static int differentiate(const ic_sampler *s, double t, const void *e, double *v, double *a, double *j)
+ * computed), extrapolated as the samples are (ga_path_extrap_derivatives). */
+static int differentiate(const ic_sampler *s, double t, double *v, double *a, double *j)
 {
-    const ga_path *p = s->path;
-    size_t seg;
-    double u;
-    if (!s->extrap || !outside(p, s->extrap, t, &seg, &u))
-        return ga_path_derivatives(p, t, s->frame, v, a, j);
-    if (seg == SIZE_MAX - 1) {
-        constant_velocity_derivs(s, u > 0, e, v, a, j);
-        return GA_OK;
-    }
-    if (seg == SIZE_MAX) { /* held: nothing moves */
-        double *x[3] = {v, a, j};
-        for (int k = 0; k < 3; k++)
-            if (x[k])
-                memset(x[k], 0, p->group->dim * sizeof *x[k]);
-        return GA_OK;
-    }
-    return ga_path_derivatives_segment(p, seg, u, s->frame, v, a, j);
+    return ga_path_extrap_derivatives(&s->xp, t, s->frame, v, a, j);
 }
 
-/* --extrapolate constant-velocity: the pose and body velocity at both ends
- * of the range, once. 0, or -1 after a message. */
-static int constant_velocity_ends(ic_sampler *s)
+/* The path with --extrapolate's mode, once (constant-velocity: the pose and
+ * body velocity at both ends of the range). 0, or -1 after a message. */
+static int extrap_ends(ic_sampler *s)
 {
-    double r[2];
-    int st = ga_path_range(s->path, &r[0], &r[1]);
-    for (int i = 0; i < 2 && st == GA_OK; i++) {
-        st = ga_path_eval(s->path, r[i], s->cv_pose[i]);
-        if (st == GA_OK)
-            st = ga_path_differentiate(s->path, r[i], GA_FRAME_BODY, s->cv_vel[i], NULL);
-    }
+    int st = ga_path_extrap_init(s->path, (ga_extrap)s->extrap, &s->xp);
     if (st != GA_OK) {
         fprintf(stderr, "garotor interp: %s: no velocity at the end of the path: %s\n", s->in->name,
                 ga_status_string(st));
@@ -214,7 +109,7 @@ static int put_row(const ic_sampler *s, tio_out *out, size_t k, double t, double
         element_pose(g, e, s->wxyz && s->out_fmt != IC_OUT_TUM, prev, row + 1);
     if (s->with_v || s->with_a || s->with_j) {
         double dv[GA_GROUP_MAX_DIM], da[GA_GROUP_MAX_DIM], dj[GA_GROUP_MAX_DIM];
-        int st = differentiate(s, t, e, s->with_v ? dv : NULL, s->with_a ? da : NULL, s->with_j ? dj : NULL);
+        int st = differentiate(s, t, s->with_v ? dv : NULL, s->with_a ? da : NULL, s->with_j ? dj : NULL);
         if (st != GA_OK) {
             fprintf(stderr, "garotor interp: %s: sample %zu at t = %s: no velocity: %s\n", s->in->name, k + 1,
                     ic_stamp(s, k, t, off, stamp), ga_status_string(st));
@@ -358,7 +253,7 @@ int ic_write(const ic_opts *io, const ic_input *in, ic_sampler *smp)
     double *key_t = NULL;
     picture_keep pk = {NULL, 1, 0};
     tio_out out = TIO_OUT_NONE, svg = TIO_OUT_NONE, html = TIO_OUT_NONE;
-    if (smp->extrap == 3 && constant_velocity_ends(smp))
+    if (extrap_ends(smp))
         goto done;
     if (drawn) { /* the picture labels the keys with their times as read */
         key_t = malloc(n * sizeof *key_t);

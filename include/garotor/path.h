@@ -401,6 +401,51 @@ GA_API GA_NODISCARD ga_status ga_path_derivatives(const ga_path *p, double t, ga
 GA_API GA_NODISCARD ga_status ga_path_derivatives_segment(const ga_path *p, size_t seg, double u, ga_frame f,
                                                           double *v, double *a, double *j);
 
+/** Where a time outside the path's range (ga_path_range) goes
+ *  (`garotor interp --extrapolate`, garotor.Path's extrapolate=): ERROR, as
+ *  the path's own functions (GA_ERR_ARG); HOLD, the pose at the range's end
+ *  (the end key; BSPLINE the range's end pose), velocity, acceleration and
+ *  jerk zero; EXTEND, the end segment's formula continued
+ *  (ga_path_eval_segment at its u outside [0, 1], with its derivatives; one
+ *  key: HOLD); CONSTANT_VELOCITY, the end pose E moved on by its body
+ *  velocity V there for the time d past the end, E exp(d V), in closed form:
+ *  the body velocity stays V, the acceleration and jerk are zero in the
+ *  body and spatial frames, and in the world frame the position's are
+ *  R v, R (w x v), R (w x (w x v)) (E's rotation R, V = (w, v)). */
+typedef enum { GA_EXTRAP_ERROR, GA_EXTRAP_HOLD, GA_EXTRAP_EXTEND, GA_EXTRAP_CONSTANT_VELOCITY } ga_extrap;
+
+/** "error", "hold", "extend", "constant-velocity". */
+GA_API const char *ga_extrap_name(ga_extrap x);
+/** The extrapolation called name; GA_ERR_ARG if there is none. */
+GA_API GA_NODISCARD ga_status ga_extrap_by_name(const char *name, ga_extrap *out);
+
+/** A path with its extrapolation: what ga_path_extrap_init reads once (the
+ *  range, and for CONSTANT_VELOCITY the pose and body velocity at both of
+ *  its ends). It holds a pointer to the path and is valid while the path is
+ *  unchanged (after ga_path_append, init it again). */
+typedef struct {
+    const ga_path *path;
+    ga_extrap mode;
+    double r0, r1;                     /**< ga_path_range */
+    double pose[2][GA_GROUP_MAX_ELEM]; /**< CONSTANT_VELOCITY: the pose at r0 [0] and r1 [1] */
+    double vel[2][GA_GROUP_MAX_DIM];   /**< CONSTANT_VELOCITY: the body velocity there */
+} ga_path_extrap;
+
+/** Prepare p's samples with extrapolation mode into *out. GA_ERR_ARG for a
+ *  bad mode; CONSTANT_VELOCITY: a failing pose or velocity at an end is
+ *  passed on. */
+GA_API GA_NODISCARD ga_status ga_path_extrap_init(const ga_path *p, ga_extrap mode, ga_path_extrap *out);
+/** The pose at t: inside the range ga_path_eval's (the same bits), outside
+ *  as x's mode says (ERROR: GA_ERR_ARG). A NaN t is GA_ERR_ARG; a time so
+ *  far out that the pose overflows, GA_ERR_DOMAIN or GA_ERR_NOTFINITE. */
+GA_API GA_NODISCARD ga_status ga_path_extrap_eval(const ga_path_extrap *x, double t, void *out);
+/** Velocity, acceleration and jerk at t in frame f (any of them NULL, as
+ *  ga_path_derivatives): inside the range ga_path_derivatives' (the same
+ *  bits), outside as x's mode says (ERROR: GA_ERR_ARG). GA_ERR_ARG for
+ *  GA_FRAME_WORLD on a group that is not rigid. */
+GA_API GA_NODISCARD ga_status ga_path_extrap_derivatives(const ga_path_extrap *x, double t, ga_frame f,
+                                                         double *v, double *a, double *j);
+
 /** The growth rule (docs/schemes.md, "lihao2: growth"): a path whose
  *  velocity at some key exceeds GA_PATH_GROWTH_MAX times the fastest chord of
  *  the path. The chord speed from key j is the screw velocity
@@ -432,6 +477,52 @@ typedef struct {
 /** Measure the growth rule on p (any scheme); GA_ERR_ARG for NULL; a failing
  *  log or velocity is passed on. */
 GA_API GA_NODISCARD ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out);
+
+/** The words of the growth rule's warning (`garotor interp`, garotor.Path),
+ *  where ga_path_measure_growth found a key past the rule. */
+typedef struct {
+    size_t a, b;        /**< the keys of the segment that carried the velocity past the bound: first - 1
+                             and first (key 0: 0 and 1) */
+    char ratio[32];     /**< the largest ratio in 3 significant digits, or as many as show it past
+                             GA_PATH_GROWTH_MAX (3.0004, not 3), as C's "%.*g" writes it in the C locale */
+    const char *advice; /**< what to do: for LIHAO2 another scheme, for the others near-duplicate keys */
+} ga_path_growth_words;
+
+/** The words of gr, measured on p (ga_path_measure_growth), for its warning.
+ *  GA_ERR_ARG for NULL, or where gr found no key past the rule
+ *  (gr->first >= p->n). */
+GA_API GA_NODISCARD ga_status ga_path_growth_describe(const ga_path *p, const ga_path_growth *gr,
+                                                      ga_path_growth_words *out);
+
+/** Near-duplicate keys (`garotor interp --min-gap, --dedup`, garotor.Path's
+ *  min_gap=, dedup=): keys closer in time than a minimum gap, by default
+ *  GA_PATH_MIN_GAP_FRACTION of the median spacing of the keys, make a steep,
+ *  meaningless path (the velocity between them is their difference over a
+ *  tiny time). A run of them can be merged into one key at their mean time
+ *  with their mean pose (ga_rotor_mean), at most GA_PATH_MERGE_MAX keys. */
+#define GA_PATH_MIN_GAP_FRACTION 0.01
+#define GA_PATH_MERGE_MAX 64
+
+/** The default minimum gap of n increasing times: *median their median
+ *  spacing (of an even count of spacings, the mean of the two middle ones),
+ *  *gap GA_PATH_MIN_GAP_FRACTION of it; both 0 for n < 2. scratch: room for
+ *  n - 1 doubles (overwritten). GA_ERR_NOTFINITE for a spacing that is not
+ *  finite. */
+GA_API GA_NODISCARD ga_status ga_times_min_gap(size_t n, const double *times, double *scratch, double *median,
+                                               double *gap);
+/** The last key j >= i such that each spacing times[k + 1] - times[k],
+ *  i <= k < j, is below gap: the run of near-duplicates that starts at key i
+ *  ends at j (j = i: none). i itself for i >= n or times NULL. */
+GA_API size_t ga_times_gap_run(size_t n, const double *times, double gap, size_t i);
+/** The m keys (rigid 4x4 matrices at the given times, 1 <= m <=
+ *  GA_PATH_MERGE_MAX) merged into one: *t the mean of the times (each divided
+ *  by m, added in order), with ns the whole number nearest to it times 1e9
+ *  (a time in nanoseconds, for times in seconds relative to a stamp of whole
+ *  nanoseconds); *key the mean of the poses (ga_rotor_mean, equal weights).
+ *  GA_ERR_ARG for m out of range; a key that is no rigid motion, or a mean
+ *  that does not converge, passes its status on. */
+GA_API GA_NODISCARD ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys, int ns,
+                                                 double *t, ga_mat4 *key);
 
 /** Stepping state for N evenly spaced samples; caller-owned, no allocation. */
 #define GA_PATH_STEP_SLOTS 12
