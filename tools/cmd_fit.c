@@ -97,7 +97,7 @@ int cmd_fit_main(int argc, char **argv)
         if (end == val[3] || *end || !(lambda >= 0) || !isfinite(lambda))
             return usage("--smooth needs a number >= 0, not", val[3]);
     }
-    ev_read_opts ro = {flag[1], flag[0], 0};
+    ev_read_opts ro = {flag[1], flag[0], 0, 0, 0, NULL}; /* fit: no --time-unit, no guess */
     static tt_dec t0, zero;
     int have0 = 0;
     tt_parse("0", &zero);
@@ -108,7 +108,7 @@ int cmd_fit_main(int argc, char **argv)
     double *res = NULL;
     void *work = NULL;
     tio_out out = TIO_OUT_NONE, cout = TIO_OUT_NONE;
-    if (ev_traj_read(val[0], &ro, &t0, &have0, &zero, &z))
+    if (ev_traj_read(val[0], &ro, &t0, &have0, &zero, &z, NULL))
         goto done;
     size_t n;
     if (ga_traj_fit_count(z.t[z.n - 1], h, &n) != GA_OK) {
