@@ -36,7 +36,9 @@ int st_whole_ns(const tio_items *f, size_t i)
 {
     static tt_dec t;
     tt_parse(f->first[i], &t);
-    return tt_is_integer(&t) ? 0 : tio_error(f, i, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[i]);
+    return tt_is_integer(&t)
+             ? 0
+             : tio_error(f, i, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[i]);
 }
 
 int st_kitti_stamps(const char *path, size_t max_line, int ns, int guess, tio_items *poses)
@@ -63,7 +65,8 @@ int st_kitti_stamps(const char *path, size_t max_line, int ns, int guess, tio_it
         a = b;
     }
     if (s.n > poses->n) {
-        tio_error(&s, poses->n, "stamp %zu has no pose: %s has %zu poses, %s %zu stamps (one a pose, in order)",
+        tio_error(&s, poses->n,
+                  "stamp %zu has no pose: %s has %zu poses, %s %zu stamps (one a pose, in order)",
                   poses->n + 1, poses->name, poses->n, s.name, s.n);
         goto done;
     }
@@ -72,7 +75,8 @@ int st_kitti_stamps(const char *path, size_t max_line, int ns, int guess, tio_it
             fprintf(stderr, "garotor: %s: no stamps (--stamps: one a pose of %s, in order)\n", s.name,
                     poses->name);
         else
-            tio_error(poses, s.n, "pose %zu has no stamp: %s has %zu stamps, %s %zu poses (one a pose, in order)",
+            tio_error(poses, s.n,
+                      "pose %zu has no stamp: %s has %zu stamps, %s %zu poses (one a pose, in order)",
                       s.n + 1, s.name, s.n, poses->name, poses->n);
         goto done;
     }
