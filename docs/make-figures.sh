@@ -5,7 +5,8 @@
 #
 # GAROTOR is the built tool (default: build/garotor beside docs/), OUTDIR where
 # the figures go (default: docs/figures). The inputs are the committed files
-# docs/figures/*.keys, *.twist and *.csv; everything else is computed here by
+# docs/figures/*.keys, *.twist and *.csv (but ros-gt.csv and ros-est.csv,
+# written here with docs/ros-export.awk); everything else is computed here by
 # garotor (exp, log, interp --svg) and a little POSIX awk, and the pictures of
 # the conformal model (cga-*.svg) by docs/examples/figures.c, which the build
 # compiles beside the tool as conformal-figures. It takes well under a second. tests/figures_test.sh runs it into a temporary directory and checks
@@ -117,6 +118,20 @@ awk '/^#/ { next } { $1 = n++; print }' "$src/schemes.keys" >"$tmp/even.keys"
 "$G" interp --header --format pose --scheme lihao3 --samples 51 --in "$src/tool-poses.csv" \
     --out "$tmp/samples" --svg "$out/tool-poses-xy.svg" --view xy
 "$G" demo --svg "$out/demo.svg" >"$tmp/report"
+
+# ---- the tutorial's ROS export pair: one c2 path through ros-motion.keys --
+# ground truth at 100 Hz as `rostopic echo -p` writes it (ros-gt.csv); an
+# estimate at about 30 Hz, jittered stamps, in another frame with a yaw
+# drift and noise, as pandas writes a CSV, quoted (ros-est.csv). Positions
+# are written to the micrometre and quaternions with 12 digits, so that the
+# last digits of the tool's output do not reach the files.
+"$G" interp --format pose --time-unit ns --scheme c2 --rate 100 --in "$src/ros-motion.keys" \
+    --output-format tum --out "$tmp/gt"
+awk -v what=gt -v seed=20261203 -f "$here/ros-export.awk" "$tmp/gt" >"$out/ros-gt.csv"
+awk -v what=stamps -v seed=20261204 -f "$here/ros-export.awk" >"$tmp/est.times"
+"$G" interp --format pose --time-unit ns --scheme c2 --times "$tmp/est.times" --in "$src/ros-motion.keys" \
+    --output-format tum --out "$tmp/est"
+awk -v what=est -v seed=20261205 -f "$here/ros-export.awk" "$tmp/est" >"$out/ros-est.csv"
 
 # ---- the conformal model: objects, meets, an inversion, a dilation ----------
 # docs/examples/figures.c builds each object with the library, reads it back

@@ -284,6 +284,13 @@ TOOL = {
                          "1.3e18 %s\n1300000000000000100 %s\n" % (M1, M2),
     "interp-ns-not-whole": "interp --format pose --time-unit ns --samples 3\n0.5 %s\n1 %s\n" % (P1, P2),
     "interp-time-unit-bad": "interp --format pose --time-unit ms --samples 3\n" + POSES,
+    # --columns on quoted CSV fields (RFC 4180), and its three quoting errors
+    "interp-columns-quoted": "interp --columns header --samples 3\n"
+                             '"t","frame","x","y","z","qx","qy","qz","qw"\n'
+                             '0,"map, ""a""",0,0,0,0,0,0,1\n1,"odom" ,"1",0,0,0,0,0,1\n',
+    "interp-columns-quote-open": "interp --columns header --samples 3\nt,x,y,z,qx,qy,qz,qw\n0,\"0,0,0,0,0,0,1\n",
+    "interp-columns-quote-after": "interp --columns t,x,y,z,qx,qy,qz,qw --samples 3\n0,\"0\"x,0,0,0,0,0,1\n",
+    "interp-columns-quote-inside": "interp --columns t,x,y,z,qx,qy,qz,qw --samples 3\n0,0\"0,0,0,0,0,0,1\n",
     "interp-long-decimal": "interp --format pose --samples 3\n1e-700 %s\n0.%s1 %s\n1e300 %s\n"
                            % (P1, "0" * 500, P2, P3),
     # versor (docs/tool.md, "garotor versor"): 10 numbers, 32, 32 + 3

@@ -18,7 +18,9 @@ geometry.py, trajectory.py) and written anew:
   - statistics: numpy's max, mean, median, min, sqrt(mean(e^2)), sum(e^2),
     std (population).
 Cases: Sim(3), SE(3) and no alignment; delta 3 over all pairs, radians; an
-offset; an estimate with more poses than the reference; epoch stamps. Then
+offset; an estimate with more poses than the reference; epoch stamps; the
+same stamps in nanoseconds with --time-unit ns (the same report byte for
+byte; refused without it); a KITTI reference with --stamps times.txt. Then
 the errors: exit 2, the file and line named, no --out file left.
 Usage: eval_check.py GAROTOR
 """
@@ -209,6 +211,87 @@ def main():
             offset=-0.25, align="se3")
     rc, out, err = run(["--ref", ref, "--est", est2])
     check(rc == 2 and "no pose of" in err and "--max-diff" in err, "no association: exit 2 naming --max-diff")
+
+    # --time-unit ns: the same stamps in whole nanoseconds (written from the
+    # seconds' text, exactly) give the same report byte for byte, --offset
+    # and --max-diff staying in seconds; without --time-unit they are refused
+    def to_ns(path_s, path_ns):
+        with open(path_ns, "w") as f:
+            for line in open(path_s):
+                if line.startswith("#"):
+                    f.write(line)
+                    continue
+                t, rest = line.split(" ", 1)
+                whole, frac = t.split(".")
+                f.write("%d %s" % (int(whole + (frac + "000000000")[:9]), rest))
+    ref_ns, est_ns, est2_ns = (os.path.join(d, n) for n in ("ref.ns", "est.ns", "est2.ns"))
+    to_ns(ref, ref_ns)
+    to_ns(est, est_ns)
+    to_ns(est2, est2_ns)
+    for name, r, e, e_ns, args in [("se3", ref, est, est_ns, ["--align", "se3"]),
+                                   ("--offset -0.25", ref, est2, est2_ns, ["--offset", "-0.25", "--align", "sim3"])]:
+        rc, out_s, err_s = run(["--ref", r, "--est", e] + args)
+        rc2, out_ns, err_ns = run(["--ref", ref_ns, "--est", e_ns, "--time-unit", "ns"] + args)
+        check(rc == 0 and rc2 == 0 and out_s == out_ns and len(out_s) > 500,
+              "--time-unit ns, %s: the report of the same stamps in seconds (%s)" % (name, (err_s + err_ns).strip()))
+    rc, out, err = run(["--ref", ref_ns, "--est", est_ns, "--time-unit", "s", "--align", "se3"])
+    check(rc == 2 and "no pose of" in err, "--time-unit s on nanoseconds: read as seconds, nothing associated")
+    rc, out, err = run(["--ref", ref_ns, "--est", est_ns], out=os.path.join(d, "report.ns"))
+    check(rc == 2 and "ref.ns:2: the time %s looks like nanoseconds (a whole number of 19 digits): pass --time-unit ns"
+          % open(ref_ns).read().splitlines()[1].split()[0] in err and not os.path.exists(os.path.join(d, "report.ns")),
+          "nanoseconds without --time-unit: refused, the line named (%s)" % err.strip())
+    rc, out, err = run(["--ref", ref, "--est", est_ns])
+    check(rc == 2 and "est.ns:2: the time" in err and "looks like nanoseconds" in err,
+          "an estimate in nanoseconds against a reference in seconds: refused (%s)" % err.strip())
+    rc, out, err = run(["--ref", ref, "--est", est, "--time-unit", "ns"])
+    check(rc == 2 and "ref.txt:2: --time-unit ns takes whole nanoseconds, not '%s'"
+          % open(ref).read().splitlines()[1].split()[0] in err, "--time-unit ns on seconds: refused (%s)" % err.strip())
+    rc, out, err = run(["--ref", ref, "--est", est, "--time-unit", "us"])
+    check(rc == 2 and "garotor eval: --time-unit must be s or ns, not 'us'" in err, "bad --time-unit named")
+
+    outp = os.path.join(d, "report.txt")
+    # --stamps FILE: the reference as KITTI poses (3x4 [R t], 12 numbers a
+    # line) with its stamps in a times.txt: evo's numbers as from the TUM file
+    ref_rows = [l.split() for l in open(ref) if not l.startswith("#")]
+    kitti, times = os.path.join(d, "ref.kitti"), os.path.join(d, "times.txt")
+    with open(kitti, "w") as f, open(times, "w") as ft:
+        for r in ref_rows:
+            M = np.eye(4)
+            M[:3, :3] = Rot.from_quat([float(x) for x in r[4:8]]).as_matrix()
+            M[:3, 3] = [float(x) for x in r[1:4]]
+            f.write(" ".join("%.17g" % x for x in M[:3].ravel()) + "\n")
+            ft.write(r[0] + "\n")
+    for name, args, kw in [("sim3", ["--align", "sim3"], dict(align="sim3")),
+                           ("not aligned, delta 4", ["--delta", "4"], dict(delta=4))]:
+        rc, out, err = run(["--ref", kitti, "--stamps", times, "--est", est] + args)
+        check(rc == 0, "KITTI reference with --stamps, %s: exit 0 (%s)" % (name, err.strip()))
+        if rc == 0:
+            want = evo(ref, est, **kw)
+            pairs, scale, got = parse(out)
+            worst = max(abs(got[k][st] - v) / max(abs(v), 1e-3) for k in want if k in got for st, v in want[k].items())
+            check(pairs == want["pairs"] and worst <= 1e-10,
+                  "KITTI reference with --stamps, %s: %d pairs, every statistic within 1e-10 of evo's on the TUM "
+                  "file: worst %.2e" % (name, pairs, worst))
+    short = os.path.join(d, "short.txt")
+    open(short, "w").write("".join(r[0] + "\n" for r in ref_rows[:-3]))
+    rc, _, err = run(["--ref", kitti, "--stamps", short, "--est", est], out=outp)
+    check(rc == 2 and "ref.kitti:%d: pose %d has no stamp: " % (len(ref_rows) - 2, len(ref_rows) - 2) in err
+          and not os.path.exists(outp), "--stamps too short: the first pose without a stamp named (%s)" % err.strip())
+    rc, _, err = run(["--ref", kitti, "--est", est], out=outp)
+    check(rc == 2 and "ref.kitti:1: expected 8 numbers (t x y z qx qy qz qw), found 12: a KITTI pose (3x4, no t)? "
+          "give its stamps with --stamps FILE" in err, "a KITTI file without --stamps: named (%s)" % err.strip())
+    rc, _, err = run(["--ref", ref, "--est", est, "--stamps", times], out=outp)
+    check(rc == 2 and "--stamps gives KITTI poses (12 numbers a line) their stamps, but" in err,
+          "--stamps with two TUM files: refused (%s)" % err.strip())
+    bent = os.path.join(d, "bent.kitti")
+    kl = open(kitti).read().splitlines()
+    v = kl[4].split()
+    v[0] = repr(float(v[0]) * 1.01)
+    kl[4] = " ".join(v)
+    open(bent, "w").write("\n".join(kl) + "\n")
+    rc, _, err = run(["--ref", bent, "--stamps", times, "--est", est], out=outp)
+    check(rc == 2 and "bent.kitti:5: columns 1-12 (a KITTI 3x4 [R t]): not a rigid motion" in err,
+          "a KITTI pose that is not rigid: named (%s)" % err.strip())
 
     # errors: the file and the line named, exit 2, no --out file
     lines = open(est).read().splitlines()

@@ -11,6 +11,7 @@ stamps), each position and rotation disturbed by noise of 0.01 per axis.
     give the fitted poses again (1e-12), and its velocity (--with
     velocity) follows the true body velocity, better with more keys;
   - --smooth lowers the smoothing term of the controls;
+  - --time-unit ns: the same keys in whole nanoseconds give the same fit;
   - errors: exit 2, the line named, no --out file left.
 Usage: fit_check.py GAROTOR
 """
@@ -134,10 +135,40 @@ def main():
     r1 = roughness(ctl)
     check(r1 < 0.5 * r0, "--smooth 100 halves the controls' roughness at least: %.3e -> %.3e" % (r0, r1))
 
+    outp = os.path.join(d, "out.txt")
+    # --time-unit ns: the same keys stamped in whole nanoseconds give the same
+    # fitted poses, residuals and controls, the stamps in nanoseconds (the
+    # knots t0 + (j - 1) H with H, in seconds, read exactly); without it refused
+    ns_keys = os.path.join(d, "keys.ns")
+    with open(ns_keys, "w") as f:
+        for l in open(keys):
+            t, rest = l.split(" ", 1)
+            whole, frac = t.split(".")
+            f.write("%d %s" % (int(whole + (frac + "000000000")[:9]), rest))
+    outs, outn = os.path.join(d, "fit.s"), os.path.join(d, "fit.ns")
+    ctls, ctln = os.path.join(d, "ctl.s"), os.path.join(d, "ctl.ns")
+    r1 = subprocess.run([TOOL, "fit", "--in", keys, "--spacing", "0.5", "--out", outs, "--controls", ctls],
+                        capture_output=True, text=True)
+    r2 = subprocess.run([TOOL, "fit", "--in", ns_keys, "--spacing", "0.5", "--time-unit", "ns", "--out", outn,
+                         "--controls", ctln], capture_output=True, text=True)
+    def body(path):
+        return [l.split(" ", 1)[1] for l in open(path)] if os.path.exists(path) else None
+    def stamps(path):
+        return [l.split(" ", 1)[0] for l in open(path)] if os.path.exists(path) else []
+    check(r1.returncode == 0 and r2.returncode == 0 and body(outs) == body(outn) and body(ctls) == body(ctln)
+          and len(body(outs)) > 10, "--time-unit ns: the same fit as in seconds, byte for byte (%s)" % r2.stderr[:200])
+    to_ns = [int(t.split(".")[0] + (t.split(".")[1] + "000000000")[:9]) if "." in t else int(t) * 10**9
+             for t in stamps(ctls)]
+    check(to_ns == [int(t) for t in stamps(ctln)] and len(to_ns) > 5,
+          "--time-unit ns: the controls' knots are the seconds' knots in whole nanoseconds")
+    r = subprocess.run([TOOL, "fit", "--in", ns_keys, "--spacing", "0.5", "--out", outp], capture_output=True,
+                       text=True)
+    check(r.returncode == 2 and "keys.ns:1: the time" in r.stderr and "looks like nanoseconds" in r.stderr
+          and not os.path.exists(outp), "nanoseconds without --time-unit: refused, line 1 named (%s)" % r.stderr[:200])
+
     # errors
     lines = open(keys).read().splitlines()
     bad = os.path.join(d, "bad.txt")
-    outp = os.path.join(d, "out.txt")
     l2 = list(lines)
     l2[5] = l2[5].rsplit(" ", 1)[0]
     open(bad, "w").write("\n".join(l2) + "\n")

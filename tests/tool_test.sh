@@ -301,8 +301,44 @@ expect_error "interp: kitti count" "k3:1: expected 12 numbers (a KITTI pose: the
     "$G" interp --format kitti --in "$d/k3" --samples 3 --out "$d/out"
 expect_error "interp: kitti read as pose" "k3.kitti:1: expected 8 numbers (t, then x y z qx qy qz qw), found 12: is this a KITTI file (3x4, no t)? pass --format kitti" \
     "$G" interp --format pose --in "$d/k3.kitti" --samples 3 --out "$d/out"
-expect_error "interp: kitti with --time-unit" "--format kitti has no times (key k is at t = k): drop --time-unit" \
+expect_error "interp: kitti with --time-unit" "--format kitti has no times (key k is at t = k): drop --time-unit, or give the times with --stamps FILE" \
     "$G" interp --format kitti --in "$d/k3.kitti" --samples 3 --time-unit ns --out "$d/out"
+# --stamps FILE (KITTI's times.txt): the keys at those times, the same
+# samples as the pose file they came from (written as times.txt writes them,
+# 0.000000e+00, and in nanoseconds with --time-unit ns)
+printf '0.000000e+00\n1.000000e+00\n2.500000e+00\n' >"$d/k3.times"
+"$G" interp --format kitti --stamps "$d/k3.times" --in "$d/k3.kitti" --at 0.5,1.75,2.5 --output-format pose \
+    --with velocity >"$d/kst" || fail "--format kitti --stamps"
+"$G" interp --format pose --in "$d/k3" --at 0.5,1.75,2.5 --with velocity | sed 's/^2.5 /2.500000e+00 /' | cmp -s - "$d/kst" ||
+    fail "--format kitti --stamps: not the samples of the pose keys: $(cat "$d/kst")"
+printf '1305031102000000000\n1305031103000000000\n1305031104500000000\n' >"$d/k3.ns"
+"$G" interp --format kitti --stamps "$d/k3.ns" --time-unit ns --in "$d/k3.kitti" --samples 3 --output-format pose \
+    --with velocity | cut -d' ' -f2- >"$d/kns" || fail "--format kitti --stamps --time-unit ns"
+"$G" interp --format pose --in "$d/k3" --samples 3 --with velocity | cut -d' ' -f2- | cmp -s - "$d/kns" ||
+    fail "--stamps in nanoseconds: not the samples of the pose keys in seconds"
+[ "$("$G" interp --format kitti --stamps "$d/k3.times" --in "$d/k3.kitti" --samples 2 --output-format pose | cut -d' ' -f1 | tr '\n' ' ')" = "0.000000e+00 2.500000e+00 " ] ||
+    fail "--stamps: samples at the keys not stamped as times.txt writes them"
+head -n 2 "$d/k3.times" >"$d/k2.times"
+expect_error "interp: --stamps too few" "k3.kitti:3: pose 3 has no stamp: .*k2.times has 2 stamps, .*k3.kitti 3 poses (one a pose, in order)" \
+    "$G" interp --format kitti --stamps "$d/k2.times" --in "$d/k3.kitti" --samples 3 --out "$d/out"
+printf '0\n1\n2.5\n3\n' >"$d/k4.times"
+expect_error "interp: --stamps too many" "k4.times:4: stamp 4 has no pose: .*k3.kitti has 3 poses, .*k4.times 4 stamps (one a pose, in order)" \
+    "$G" interp --format kitti --stamps "$d/k4.times" --in "$d/k3.kitti" --samples 3 --out "$d/out"
+: >"$d/k0.times"
+expect_error "interp: --stamps empty" "k0.times: no stamps (--stamps: one a pose of .*k3.kitti, in order)" \
+    "$G" interp --format kitti --stamps "$d/k0.times" --in "$d/k3.kitti" --samples 3 --out "$d/out"
+printf '0\n1 2\n2.5\n' >"$d/kx.times"
+expect_error "interp: --stamps two numbers" "kx.times:2: expected 1 number (a stamp of --stamps: KITTI's times.txt), found 2" \
+    "$G" interp --format kitti --stamps "$d/kx.times" --in "$d/k3.kitti" --samples 3 --out "$d/out"
+printf '0\n2.5\n1\n' >"$d/kd.times"
+expect_error "interp: --stamps decreasing" "kd.times:3: stamps must increase strictly: 1 after 2.5" \
+    "$G" interp --format kitti --stamps "$d/kd.times" --in "$d/k3.kitti" --samples 3 --out "$d/out"
+expect_error "interp: --stamps in ns unflagged" "k3.ns:1: the time 1305031102000000000 looks like nanoseconds (a whole number of 19 digits): pass --time-unit ns" \
+    "$G" interp --format kitti --stamps "$d/k3.ns" --in "$d/k3.kitti" --samples 3 --out "$d/out"
+expect_error "interp: --stamps ns not whole" "k3.times:3: --time-unit ns takes whole nanoseconds, not '2.500000e+00'" \
+    "$G" interp --format kitti --stamps "$d/k3.times" --time-unit ns --in "$d/k3.kitti" --samples 3 --out "$d/out"
+expect_error "interp: --stamps without kitti" "--stamps gives KITTI poses their times: it needs --format kitti" \
+    "$G" interp --format pose --stamps "$d/k3.times" --in "$d/k3" --samples 3 --out "$d/out"
 # --twist-order vw reads --velocities v first too
 printf '0 0 0.5 1 0 0\n0 0 0.3 0.5 0.5 0\n0 0 0.1 0 1 0\n' >"$d/vel.wv"
 awk '{ print $4, $5, $6, $1, $2, $3 }' "$d/vel.wv" >"$d/vel.vw"
@@ -378,6 +414,25 @@ expect_error "interp: --columns with --format mat" "--columns reads poses: drop 
     "$G" interp --columns header --format mat --samples 3 --in "$d/k3" --out "$d/out"
 expect_error "interp: --columns with --quat-order" "--columns names the quaternion's columns: drop --quat-order" \
     "$G" interp --columns header --quat-order wxyz --samples 3 --in "$d/k3" --out "$d/out"
+# quoted CSV fields (RFC 4180, as pandas and ROS 2 bag exports write them):
+# a quoted header, a quoted frame id holding a comma and a quote, a quoted
+# number, spaces around a field; the same samples as the plain file
+awk -F, 'NR == 1 { gsub(/[^,]+/, "\"&\""); print; next }
+         { $4 = "\"map, \"\"base\"\"\""; $5 = "\"" $5 "\""; $6 = " " $6 " "; print }' OFS=, "$ros" >"$d/rosq.csv"
+"$G" interp --columns header,t=field.header.stamp --time-unit ns --samples 5 --in "$d/rosq.csv" | cmp -s - "$d/ros.out" ||
+    fail "--columns: quoted fields not read as the plain file: $(head -n 2 "$d/rosq.csv")"
+printf '"t" "x" y z qx qy qz qw\n"0" 0 0 0 0 0 0 "1"\n1 "1"  0 0 0 0 0 1\n' >"$d/q.ws"
+[ "$("$G" interp --columns header --at 0.5 --in "$d/q.ws")" = "0.5 0.5 0 0 0 0 0 1" ] ||
+    fail "--columns: quoted fields separated by spaces"
+printf 't,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,"1,0,0,0,0,0,1\n' >"$d/q1.csv"
+expect_error "interp: --columns unclosed quote" "q1.csv:3: column 2: a quoted field with no closing quote (a field is quoted on one line)" \
+    "$G" interp --columns header --samples 3 --in "$d/q1.csv" --out "$d/out"
+printf 't,x,y,z,"qx"x,qy,qz,qw\n0,0,0,0,0,0,0,1\n' >"$d/q2.csv"
+expect_error "interp: --columns text after quote" "q2.csv:1: column 5: text after the closing quote of a quoted field (a '\"' inside one is written '\"\"')" \
+    "$G" interp --columns header --samples 3 --in "$d/q2.csv" --out "$d/out"
+printf 't,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,1,0,0,0,0,0 "x",1\n' >"$d/q3.csv"
+expect_error "interp: --columns quote in a field" "q3.csv:3: column 7: a '\"' inside a field that is not quoted (quote the whole field: \"a\"\"b\")" \
+    "$G" interp --columns header --samples 3 --in "$d/q3.csv" --out "$d/out"
 # ---- near-duplicate keys: closer than 1% of the median spacing an error;
 # --dedup merges them into their mean (time and pose), --min-gap 0 keeps them ----
 printf '0 0 0 0 0 0 0 1\n0.0333 0.1 0 0 0 0 0 1\n0.0334 0.1001 0 0 0 0 0 1\n0.0666 0.2 0 0 0 0 0 1\n0.1 0.3 0 0 0 0 0 1\n' >"$d/dup"

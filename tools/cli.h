@@ -37,6 +37,7 @@ typedef unsigned long long opt_bits;
 #define OPT_MIN_GAP (1ULL << 29)
 #define OPT_DEDUP (1ULL << 30)
 #define OPT_TEXT (1ULL << 31)
+#define OPT_STAMPS (1ULL << 32)
 
 #include <stddef.h>
 
@@ -47,6 +48,7 @@ typedef struct {
     const char *rate_text, *time_unit; /* --rate as written (read exactly), --time-unit */
     const char *verb;                  /* `versor exp`: the operation word */
     const char *quat_order, *output_format, *twist_order, *columns;
+    const char *stamps; /* --stamps FILE: the times of KITTI poses */
     int clip, dedup;
     double min_gap; /* --min-gap, in the keys' time unit */
     double rate;

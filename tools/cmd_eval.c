@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "stamps.h"
 #include "textio.h"
 #include "timetext.h"
 
@@ -37,15 +38,20 @@ static const char eval_help[] =
     "  --angle deg|rad     the unit of rotation angles (default deg)\n"
     "  --normalize         accept quaternions up to 1e-3 from unit norm, normalised\n"
     "  --out FILE          the report (default standard output)\n"
+    "  --time-unit s|ns    the stamps in seconds or whole nanoseconds (read exactly;\n"
+    "                      --max-diff and --offset stay in seconds). Without it,\n"
+    "                      whole numbers of 12 digits or more are an error (ms, us, ns?)\n"
+    "  --stamps FILE       the stamps of a file of KITTI poses (12 numbers a line,\n"
+    "                      the 3x4 [R t]): KITTI's times.txt, one a line\n"
     "  --header            skip the first line of each file (a CSV header)\n"
     "  --max-line N        a line of more than N bytes is an error (default 1048576)\n";
 
 typedef struct {
     const char *ref, *est, *out, *align_name, *angle_name, *max_line_text;
-    const char *max_diff_text, *offset_text, *delta_text;
+    const char *max_diff_text, *offset_text, *delta_text, *time_unit, *stamps;
     double max_diff;
     long delta;
-    int all_pairs, header, normalize, align, scale, degrees;
+    int all_pairs, header, normalize, align, scale, degrees, ns;
     size_t max_line;
 } ev_opts;
 
@@ -58,28 +64,29 @@ static int usage(const char *what, const char *arg)
 
 static int parse(int argc, char **argv, ev_opts *o)
 {
-    static const char *const names[] = {"--ref",      "--est",       "--out",    "--max-diff",
-                                        "--offset",   "--align",     "--delta",  "--angle",
-                                        "--max-line", "--all-pairs", "--header", "--normalize"};
-    const char **slot[9] = {&o->ref,           &o->est,         &o->out,
-                            &o->max_diff_text, &o->offset_text, &o->align_name,
-                            &o->delta_text,    &o->angle_name,  &o->max_line_text};
+    static const char *const names[] = {"--ref",    "--est",       "--out",    "--max-diff", "--offset",
+                                        "--align",  "--delta",     "--angle",  "--max-line", "--time-unit",
+                                        "--stamps", "--all-pairs", "--header", "--normalize"};
+    enum { NVALUED = 11, NNAMES = 14 };
+    const char **slot[NVALUED] = {&o->ref,           &o->est,        &o->out,        &o->max_diff_text,
+                                  &o->offset_text,   &o->align_name, &o->delta_text, &o->angle_name,
+                                  &o->max_line_text, &o->time_unit,  &o->stamps};
     int *flag[3] = {&o->all_pairs, &o->header, &o->normalize};
     unsigned seen = 0;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i], *eq = strchr(a, '=');
         size_t len = eq ? (size_t)(eq - a) : strlen(a);
         int k = 0;
-        while (k < 12 && !(strlen(names[k]) == len && strncmp(a, names[k], len) == 0)) k++;
-        if (k == 12)
+        while (k < NNAMES && !(strlen(names[k]) == len && strncmp(a, names[k], len) == 0)) k++;
+        if (k == NNAMES)
             return usage("unknown option", a);
         if (seen >> k & 1)
             return usage("option given twice", names[k]);
         seen |= 1u << k;
-        if (k >= 9) {
+        if (k >= NVALUED) {
             if (eq)
                 return usage("takes no value:", a);
-            *flag[k - 9] = 1;
+            *flag[k - NVALUED] = 1;
             continue;
         }
         if (eq)
@@ -133,7 +140,7 @@ static int parse(int argc, char **argv, ev_opts *o)
     if (strcmp(an, "deg") != 0 && strcmp(an, "rad") != 0)
         return usage("--angle must be deg or rad, not", an);
     o->degrees = strcmp(an, "deg") == 0;
-    return 0;
+    return st_time_unit("eval", o->time_unit, &o->ns) ? 2 : 0;
 }
 
 /* ---- reading ------------------------------------------------------------------ */
@@ -145,8 +152,40 @@ void ev_traj_free(ev_traj *tr)
     free(tr->m);
 }
 
+/* Pose i of a KITTI file: 12 numbers, the 3x4 [R t] row by row, a rigid
+ * motion to 1e-9 (or within GA_SE3_NORMALIZE_TOL with normalize: projected
+ * onto SE(3)). 0, or -1 after a message naming the line. */
+static int kitti_pose(const tio_items *f, size_t i, int normalize, ga_mat4 *m)
+{
+    int c = f->item[i].count;
+    if (c != 12)
+        return tio_error(f, i, "expected 12 numbers (a KITTI pose: the 3x4 [R t] row by row), found %d%s", c,
+                         c == 8 ? ": the first line of this file has 12: one file is TUM or KITTI, not both"
+                                : "");
+    memcpy(m->m, f->value + f->item[i].first, 12 * sizeof *m->m);
+    m->m[12] = m->m[13] = m->m[14] = 0.0;
+    m->m[15] = 1.0;
+    ga_mat4 r;
+    if (ga_se3_check(*m, 1e-9) == GA_OK)
+        return 0;
+    if (ga_se3_normalize(*m, GA_SE3_NORMALIZE_TOL, &r) != GA_OK)
+        return tio_error(f, i, "columns 1-12 (a KITTI 3x4 [R t]): not a rigid motion%s",
+                         normalize ? ", not even to 1e-3 (--normalize)"
+                                   : " (to 1e-9; --normalize accepts up to 1e-3)");
+    if (!normalize) {
+        double off = 0.0;
+        for (int k = 0; k < 16; k++) off = fmax(off, fabs(m->m[k] - r.m[k]));
+        return tio_error(f, i,
+                         "columns 1-12 (a KITTI 3x4 [R t]): not a rigid motion to 1e-9 (it is %.3g from the "
+                         "nearest one); --normalize accepts up to 1e-3",
+                         off);
+    }
+    *m = r;
+    return 0;
+}
+
 int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0, const tt_dec *shift,
-                 ev_traj *tr)
+                 ev_traj *tr, int *kitti)
 {
     tio_read_opts ro = {o->header, 1, o->max_line};
     if (tio_read_first(path, &ro, &tr->in))
@@ -157,6 +196,11 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
         fprintf(stderr, "garotor: %s: no poses\n", f->name);
         return -1;
     }
+    int is_kitti = o->stamps && f->item[0].count == 12;
+    if (kitti)
+        *kitti = is_kitti;
+    if (is_kitti && st_kitti_stamps(o->stamps, o->max_line, o->ns, o->guess_unit, &tr->in))
+        return -1;
     tr->t = malloc(f->n * sizeof *tr->t);
     tr->m = malloc(f->n * sizeof *tr->m);
     if (!tr->t || !tr->m) {
@@ -166,11 +210,16 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
     static tt_dec a, b, d;
     for (size_t i = 0; i < f->n; i++) {
         int c = f->item[i].count;
-        if (c != 8)
+        if (!is_kitti && c != 8)
             return tio_error(f, i, "expected 8 numbers (t x y z qx qy qz qw), found %d%s", c,
                              c == 7    ? ": is t missing?"
                              : c == 17 ? ": a 4x4 matrix? eval reads TUM poses"
+                             : c == 12 ? ": a KITTI pose (3x4, no t)? give its stamps with --stamps FILE"
                                        : "");
+        if (i == 0 && o->guess_unit && st_guess_unit(f, 0))
+            return -1;
+        if (o->ns && st_whole_ns(f, i))
+            return -1;
         const double *v = f->value + f->item[i].first;
         tt_parse(f->first[i], &a);
         if (!*have0) {
@@ -179,15 +228,19 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
         }
         tt_add(&a, shift, 0, &b);
         tt_add(&b, t0, 1, &d);
-        tr->t[i] = tt_to_double(&d, 0);
+        tr->t[i] = tt_to_double(&d, o->ns ? -9 : 0);
+        const char *col = is_kitti ? "the stamp (--stamps)" : "column 1";
         if (i > 0 && !(tr->t[i] > tr->t[i - 1]))
-            return tio_error(f, i, "column 1: times must increase strictly: %s after %s (%s)", f->first[i],
+            return tio_error(f, i, "%s: times must increase strictly: %s after %s (%s)", col, f->first[i],
                              f->first[i - 1],
                              !(tr->t[i] < tr->t[i - 1])
                                  ? "a repeated stamp: keep one of the two lines"
                                  : "out of order: evo sorts by time, garotor reads the file as given: sort "
                                    "it by its first column, `sort -g -k1,1`");
-        if (ga_traj_pose_from_tum(v + 1, o->normalize, &tr->m[i]) != GA_OK) {
+        if (is_kitti) {
+            if (kitti_pose(f, i, o->normalize, &tr->m[i]))
+                return -1;
+        } else if (ga_traj_pose_from_tum(v + 1, o->normalize, &tr->m[i]) != GA_OK) {
             double norm = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
             return tio_error(f, i,
                              "columns 5-8 (qx qy qz qw): the quaternion has norm %.17g, not 1 (to 1e-9; "
@@ -217,14 +270,23 @@ static void put_stats(FILE *fp, const char *title, const char *align, double *er
 
 static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
 {
-    ev_read_opts ro = {o->header, o->normalize, o->max_line};
+    ev_read_opts ro = {o->header, o->normalize, o->max_line, o->ns, !o->time_unit, o->stamps};
     static tt_dec t0, zero, off;
-    int have0 = 0;
+    int have0 = 0, kr = 0, ke = 0;
     tt_parse("0", &zero);
     tt_parse(o->offset_text ? o->offset_text : "0", &off);
-    if (ev_traj_read(o->ref, &ro, &t0, &have0, &zero, ref) ||
-        ev_traj_read(o->est, &ro, &t0, &have0, &off, est))
+    if (o->ns && off.n) /* --offset is in seconds: in nanoseconds, exactly */
+        off.exp += 9;
+    if (ev_traj_read(o->ref, &ro, &t0, &have0, &zero, ref, &kr) ||
+        ev_traj_read(o->est, &ro, &t0, &have0, &off, est, &ke))
         return 2;
+    if (o->stamps && !kr && !ke) {
+        fprintf(stderr,
+                "garotor eval: --stamps gives KITTI poses (12 numbers a line) their stamps, but %s and %s "
+                "are TUM (t and 7 numbers): drop --stamps\n",
+                ref->in.name, est->in.name);
+        return 2;
+    }
     size_t cap = ref->n < est->n ? ref->n : est->n, n = 0;
     size_t *ir = malloc(cap * sizeof *ir), *ie = malloc(cap * sizeof *ie);
     ga_mat4 *R = malloc(cap * sizeof *R), *E = malloc(cap * sizeof *E);

@@ -10,6 +10,7 @@
  * checks and writes.
  */
 #include "eval.h"
+#include "stamps.h"
 
 #include <errno.h>
 #include <math.h>
@@ -30,6 +31,9 @@ static const char fit_help[] =
     "                      `garotor interp --scheme bspline --format pose` reads them\n"
     "                      (velocity, acceleration: --with velocity,acceleration)\n"
     "  --normalize         accept quaternions up to 1e-3 from unit norm, normalised\n"
+    "  --time-unit s|ns    t in seconds or whole nanoseconds (--spacing stays in\n"
+    "                      seconds); without it, whole numbers of 12 digits or more\n"
+    "                      are an error (ms, us, ns?)\n"
     "  --in FILE, --out FILE   input and output (default standard input and output)\n"
     "  --header            skip the first line of the input (a CSV header)\n";
 
@@ -59,25 +63,26 @@ int cmd_fit_main(int argc, char **argv)
             fputs(fit_help, stdout);
             return 0;
         }
-    static const char *const names[] = {"--in",       "--out",       "--spacing", "--smooth",
-                                        "--controls", "--normalize", "--header"};
-    const char *val[5] = {NULL, NULL, NULL, NULL, NULL};
+    static const char *const names[] = {"--in",       "--out",       "--spacing",   "--smooth",
+                                        "--controls", "--time-unit", "--normalize", "--header"};
+    enum { NVALUED = 6, NNAMES = 8 };
+    const char *val[NVALUED] = {NULL, NULL, NULL, NULL, NULL, NULL};
     int flag[2] = {0, 0};
     unsigned seen = 0;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i], *eq = strchr(a, '=');
         size_t len = eq ? (size_t)(eq - a) : strlen(a);
         int k = 0;
-        while (k < 7 && !(strlen(names[k]) == len && strncmp(a, names[k], len) == 0)) k++;
-        if (k == 7)
+        while (k < NNAMES && !(strlen(names[k]) == len && strncmp(a, names[k], len) == 0)) k++;
+        if (k == NNAMES)
             return usage("unknown option", a);
         if (seen >> k & 1)
             return usage("option given twice", names[k]);
         seen |= 1u << k;
-        if (k >= 5) {
+        if (k >= NVALUED) {
             if (eq)
                 return usage("takes no value:", a);
-            flag[k - 5] = 1;
+            flag[k - NVALUED] = 1;
         } else if (eq)
             val[k] = eq + 1;
         else if (i + 1 < argc)
@@ -97,7 +102,10 @@ int cmd_fit_main(int argc, char **argv)
         if (end == val[3] || *end || !(lambda >= 0) || !isfinite(lambda))
             return usage("--smooth needs a number >= 0, not", val[3]);
     }
-    ev_read_opts ro = {flag[1], flag[0], 0};
+    int ns;
+    if (st_time_unit("fit", val[5], &ns))
+        return 2;
+    ev_read_opts ro = {flag[1], flag[0], 0, ns, !val[5], NULL};
     static tt_dec t0, zero;
     int have0 = 0;
     tt_parse("0", &zero);
@@ -108,7 +116,7 @@ int cmd_fit_main(int argc, char **argv)
     double *res = NULL;
     void *work = NULL;
     tio_out out = TIO_OUT_NONE, cout = TIO_OUT_NONE;
-    if (ev_traj_read(val[0], &ro, &t0, &have0, &zero, &z))
+    if (ev_traj_read(val[0], &ro, &t0, &have0, &zero, &z, NULL))
         goto done;
     size_t n;
     if (ga_traj_fit_count(z.t[z.n - 1], h, &n) != GA_OK) {
@@ -148,6 +156,8 @@ int cmd_fit_main(int argc, char **argv)
         static tt_dec hd, tj, tn;
         char stamp[TT_DIG + 32];
         tt_parse(val[2], &hd);
+        if (ns && hd.n) /* --spacing is in seconds: in nanoseconds, exactly */
+            hd.exp += 9;
         tt_add(&t0, &hd, 1, &tj);
         prev = (ga_quat){1, 0, 0, 0};
         for (size_t j = 0; j < n; j++) {

@@ -23,19 +23,28 @@ typedef struct {
     size_t n;
 } ev_traj;
 
-/** How a TUM file is read: --header, --normalize, --max-line (0: default). */
+/** How a TUM file is read: --header, --normalize, --max-line (0: default),
+ *  --time-unit ns, whether a stamp that looks like ms, us or ns is refused
+ *  (no --time-unit given: stamps.h), --stamps FILE (NULL: none). */
 typedef struct {
     int header, normalize;
     size_t max_line;
+    int ns, guess_unit;
+    const char *stamps;
 } ev_read_opts;
 
 /** Read a TUM file (t x y z qx qy qz qw a line, times strictly increasing,
- *  quaternions unit to 1e-9, or to 1e-3 with normalize, then normalised).
- *  The times are taken relative to *t0, which is set to this file's first
- *  stamp when *have0 is 0; shift is added to each (exactly: timetext.h).
- *  0, or -1 after a message naming the file, the line and the columns. */
+ *  quaternions unit to 1e-9, or to 1e-3 with normalize, then normalised),
+ *  or with o->stamps a file of KITTI poses when its first line has 12
+ *  numbers (the 3x4 [R t], rigid to 1e-9, or projected onto SE(3) from
+ *  1e-3 with normalize; its stamps from o->stamps: stamps.h). The times
+ *  are taken relative to *t0, which is set to this file's first stamp when
+ *  *have0 is 0; shift is added to each (exactly: timetext.h; in the file's
+ *  unit); with o->ns they are whole nanoseconds, converted to seconds once
+ *  relative. *kitti is set to 1 for a KITTI file. 0, or -1 after a message
+ *  naming the file, the line and the columns. */
 int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0, const tt_dec *shift,
-                 ev_traj *tr);
+                 ev_traj *tr, int *kitti);
 void ev_traj_free(ev_traj *tr);
 
 /** The command: argv holds its arguments after the word `eval`; returns the

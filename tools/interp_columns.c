@@ -99,20 +99,56 @@ static int parse_spec(char *buf, col_spec *cs)
     return 0;
 }
 
-/* The fields of a line, in place: split at commas when it has one, else at
- * runs of spaces and tabs; each trimmed of spaces, tabs and '\r'. */
-static size_t split(char *s, char **f)
+/* The fields of a line, in place: split at the commas outside quotes when
+ * it has one, else at runs of spaces and tabs; each trimmed of spaces, tabs
+ * and '\r'. A field may be quoted as CSV quotes it (RFC 4180: "a,b" is one
+ * field, "" inside is one '"'); the quotes are removed. The count, or -1
+ * with *bad the field (from 1) and *why what is wrong with its quoting. */
+static long split(char *s, char **f, size_t *bad, const char **why)
 {
     size_t n = 0;
-    int comma = strchr(s, ',') != NULL;
+    int comma = 0, quoted = 0;
+    for (const char *c = s; *c && !comma; c++) {
+        quoted ^= *c == '"';
+        comma = *c == ',' && !quoted;
+    }
     for (;;) {
         while (*s == ' ' || *s == '\t' || *s == '\r') s++;
         if (!comma && !*s)
             break;
-        char *e = comma ? s + strcspn(s, ",") : s + strcspn(s, " \t\r");
+        char *e, *t;
+        *bad = n + 1;
+        if (*s == '"') { /* quoted: up to the closing quote, "" is one quote */
+            char *r = s + 1, *w = s;
+            for (;;) {
+                if (!*r) {
+                    *why = "a quoted field with no closing quote (a field is quoted on one line)";
+                    return -1;
+                }
+                if (*r == '"' && r[1] != '"')
+                    break;
+                r += *r == '"';
+                *w++ = *r++;
+            }
+            t = w;
+            e = r + 1;
+            while (*e == ' ' || *e == '\t' || *e == '\r') e++;
+            if (*e && !(comma && *e == ',') && !(!comma && e > r + 1)) {
+                *why = "text after the closing quote of a quoted field (a '\"' inside one is written '\"\"')";
+                return -1;
+            }
+            if (!comma && *e) /* the blank after the quote is the separator */
+                e--;
+        } else {
+            e = comma ? s + strcspn(s, ",") : s + strcspn(s, " \t\r");
+            if (memchr(s, '"', (size_t)(e - s))) {
+                *why = "a '\"' inside a field that is not quoted (quote the whole field: \"a\"\"b\")";
+                return -1;
+            }
+            t = e;
+            while (t > s && (t[-1] == ' ' || t[-1] == '\t' || t[-1] == '\r')) t--;
+        }
         int last = *e == '\0';
-        char *t = e;
-        while (t > s && (t[-1] == ' ' || t[-1] == '\t' || t[-1] == '\r')) t--;
         *t = '\0';
         if (n < MAX_FIELDS)
             f[n++] = s;
@@ -120,6 +156,18 @@ static size_t split(char *s, char **f)
             break;
         s = e + 1;
     }
+    return (long)n;
+}
+
+/* The fields of line i of L, or -1 after a message naming the line and the
+ * field whose quoting is wrong. */
+static long fields(const tio_lines_text *L, size_t i, char *s, char **f)
+{
+    size_t bad = 0;
+    const char *why = "";
+    long n = split(s, f, &bad, &why);
+    if (n < 0)
+        fprintf(stderr, "garotor: %s:%ld: column %zu: %s\n", L->name, L->line[i], bad, why);
     return n;
 }
 
@@ -149,7 +197,10 @@ static int resolve(const tio_lines_text *L, char *hdr, col_spec *cs)
     static char *f[MAX_FIELDS];
     if (hdr[0] == '#' && strchr(hdr, ',')) /* "#timestamp,..." (EuRoC): the '#' is no part of the name */
         hdr++;
-    size_t n = split(hdr, f);
+    long nf = fields(L, 0, hdr, f);
+    if (nf < 0)
+        return -1;
+    size_t n = (size_t)nf;
     for (int r = 0; r < NROLE; r++) {
         if (cs->col[r] >= 0)
             continue;
@@ -219,7 +270,10 @@ int ic_read_columns(const ic_opts *io, tio_items *out)
         char *s = L.text[i] + strspn(L.text[i], " \t");
         if (*s == '#')
             continue;
-        size_t n = split(s, f), k = it.n;
+        long nf = fields(&L, i, s, f);
+        if (nf < 0)
+            goto done;
+        size_t n = (size_t)nf, k = it.n;
         it.item[k] = (tio_item){k * NROLE, NROLE, L.line[i]};
         it.n++;
         for (int r = 0; r < NROLE; r++) {

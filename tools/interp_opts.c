@@ -3,6 +3,7 @@
  * fixed order, so a command line with several mistakes is told the first. */
 #include "html.h"
 #include "interp_cmd.h"
+#include "stamps.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -151,20 +152,17 @@ static int row_options(const cli_opts *o, ic_opts *io)
         fprintf(stderr, "garotor interp: --frame world needs a rigid group (--group cga or matrix)\n");
         return -1;
     }
-    if (o->time_unit && io->kitti) {
-        fprintf(stderr,
-                "garotor interp: --format kitti has no times (key k is at t = k): drop --time-unit\n");
+    if (o->stamps && !io->kitti) {
+        fprintf(stderr, "garotor interp: --stamps gives KITTI poses their times: it needs --format kitti\n");
         return -1;
     }
-    io->ns = 0;
+    if (o->time_unit && io->kitti && !o->stamps) {
+        fprintf(stderr, "garotor interp: --format kitti has no times (key k is at t = k): drop --time-unit, "
+                        "or give the times with --stamps FILE\n");
+        return -1;
+    }
     io->unit_given = o->time_unit != NULL;
-    if (o->time_unit && strcmp(o->time_unit, "ns") == 0)
-        io->ns = 1;
-    else if (o->time_unit && strcmp(o->time_unit, "s") != 0) {
-        fprintf(stderr, "garotor interp: --time-unit must be s or ns, not '%s'\n", o->time_unit);
-        return -1;
-    }
-    return 0;
+    return st_time_unit("interp", o->time_unit, &io->ns);
 }
 
 /* The layout of a row written (--output-format, --quat-order,

@@ -3,6 +3,7 @@
  * numbers with --format mat, 7 with --format pose), the given times (--at
  * t1,t2,... or --times FILE) and the velocities (--v0, --velocities FILE). */
 #include "interp_cmd.h"
+#include "stamps.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -103,8 +104,8 @@ int ic_parse_at(const char *s, ic_input *in)
     return 0;
 }
 
-/* A KITTI key: 12 numbers, the 3x4 [R t] row by row, at time i (its text
- * made "i", so that samples there are stamped so). */
+/* A KITTI key: 12 numbers, the 3x4 [R t] row by row. Without --stamps it
+ * is at time i (its text made "i", so that samples there are stamped so). */
 static int read_kitti(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
 {
     tio_items *f = &in->in;
@@ -114,16 +115,18 @@ static int read_kitti(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i
                          m == 8               ? ": is this a pose file? pass --format pose"
                          : m == 17 || m == 16 ? ": is this a file of 4x4 matrices? drop --format kitti"
                                               : "");
-    char b[32], *t;
-    int len = snprintf(b, sizeof b, "%zu", i);
-    if (!(t = malloc((size_t)len + 1)))
-        return ic_oom();
-    memcpy(t, b, (size_t)len + 1);
-    free(f->first[i]);
-    f->first[i] = t;
-    if (i == 0)
-        tt_parse(t, &tb->ref);
-    in->times[i] = (double)i;
+    if (!io->o->stamps) {
+        char b[32], *t;
+        int len = snprintf(b, sizeof b, "%zu", i);
+        if (!(t = malloc((size_t)len + 1)))
+            return ic_oom();
+        memcpy(t, b, (size_t)len + 1);
+        free(f->first[i]);
+        f->first[i] = t;
+        if (i == 0)
+            tt_parse(t, &tb->ref);
+        in->times[i] = (double)i;
+    }
     ga_mat4 *k = &in->keys[i];
     memcpy(k->m, f->value + f->item[i].first, 12 * sizeof *k->m);
     k->m[12] = k->m[13] = k->m[14] = 0.0;
@@ -132,41 +135,25 @@ static int read_kitti(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i
     return normalize_key(io->g, io->o->normalize, f, i, k, &krc) ? krc : cli_check_motion(io->g, *k, f, i);
 }
 
-/* Whole-number key times of 12 digits or more, with no --time-unit: epoch
- * milliseconds, microseconds or nanoseconds, which read as seconds would give
- * velocities per ms, us or ns. An error naming what they look like. */
-static int guess_unit(const ic_opts *io, const ic_input *in)
-{
-    const tio_items *f = &in->in;
-    if (io->unit_given || io->kitti || f->n == 0)
-        return 0;
-    tt_dec t;
-    tt_parse(f->first[0], &t);
-    int digits = t.n + t.exp; /* of a whole number */
-    if (!tt_is_integer(&t) || digits < 12)
-        return 0;
-    const char *unit = digits >= 18 ? "nanoseconds" : digits >= 15 ? "microseconds" : "milliseconds";
-    return tio_error(f, 0, "the time %s looks like %s (a whole number of %d digits): %s", f->first[0], unit,
-                     digits,
-                     digits >= 18 ? "pass --time-unit ns (or --time-unit s if it is seconds)"
-                                  : "--time-unit takes s or ns: convert the times (or pass --time-unit s if "
-                                    "they are seconds)");
-}
-
 /* Key i: its number of numbers, its time (the first key's is the
- * reference), after the one before, and its pose an element of the group. */
+ * reference; with no --time-unit, a whole number of 12 digits or more is
+ * refused: st_guess_unit), after the one before, and its pose an element of
+ * the group. A KITTI key's time is its --stamps line's (st_kitti_stamps
+ * made it the key's text), or i. */
 static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
 {
     const tio_items *f = &in->in;
     int want = io->pose ? 8 : 17;
-    if (io->kitti)
+    if (io->kitti && !io->o->stamps)
         return read_kitti(io, tb, in, i);
+    if (io->kitti && read_kitti(io, tb, in, i))
+        return -1;
     /* a line of separators only is an item of no numbers, and with no
        number in the whole input value is NULL: no pointer arithmetic on
        it (undefined; found by fuzz/fuzz_tool under UBSan:
        fuzz/regress/tool/interp-comma-line-no-numbers) */
     const double *v = f->item[i].count ? f->value + f->item[i].first : NULL;
-    if (f->item[i].count != want) {
+    if (!io->kitti && f->item[i].count != want) {
         /* the count says what the line probably is: a pose (t and 7) read as
            a matrix, a matrix (t and 16) read as a pose, a key without its t */
         int m = f->item[i].count;
@@ -178,15 +165,17 @@ static int read_key(const ic_opts *io, ic_timebase *tb, ic_input *in, size_t i)
         return tio_error(f, i, "expected %d numbers (t, then %s), found %d%s", want,
                          io->pose ? "x y z qx qy qz qw" : "a 4x4 matrix", m, hint);
     }
-    if (i == 0 && guess_unit(io, in))
+    if (i == 0 && !io->unit_given && st_guess_unit(f, 0))
         return -1;
-    if (tb->ns && !ic_whole(f->first[i]))
-        return tio_error(f, i, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[i]);
+    if (tb->ns && st_whole_ns(f, i))
+        return -1;
     if (i == 0)
         tt_parse(f->first[0], &tb->ref);
     in->times[i] = ic_rel_time(tb, f->first[i]);
     if (i > 0 && !(in->times[i] > in->times[i - 1]))
         return tio_error(f, i, "key times must increase strictly: %s after %s", f->first[i], f->first[i - 1]);
+    if (io->kitti)
+        return 0;
     if (io->pose)
         return pose_to_mat4(io, f, i, v + 1, &in->keys[i]);
     int krc;
@@ -295,6 +284,8 @@ int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
     tio_read_opts ro = cli_input(io->o);
     if (io->o->columns ? ic_read_columns(io, &in->in) : tio_read_first(io->o->in, &ro, &in->in))
         return -1;
+    if (io->o->stamps && st_kitti_stamps(io->o->stamps, io->o->max_line, io->ns, !io->unit_given, &in->in))
+        return -1;
     size_t n = in->n = in->in.n;
     in->times = malloc((n ? n : 1) * sizeof *in->times);
     in->keys = malloc((n ? n : 1) * sizeof *in->keys);
@@ -341,8 +332,8 @@ int ic_read_times(const ic_opts *io, const ic_timebase *tb, ic_input *in)
         for (size_t k = 0; k < in->nat; k++)
             if (f->item[k].count != 1)
                 return tio_error(f, k, "expected 1 number (a time), found %d", f->item[k].count);
-            else if (tb->ns && !ic_whole(f->first[k]))
-                return tio_error(f, k, "--time-unit ns takes whole nanoseconds, not '%s'", f->first[k]);
+            else if (tb->ns && st_whole_ns(f, k))
+                return -1;
         if (in->nat == 0) {
             fprintf(stderr, "garotor interp: %s: no times\n", f->name);
             return -1;

@@ -263,7 +263,7 @@ int ic_write(const ic_opts *io, const ic_input *in, ic_sampler *smp)
             ic_oom();
             goto done;
         }
-        for (size_t i = 0; i < n; i++) key_t[i] = io->kitti ? (double)i : strtod(in->in.first[i], NULL);
+        for (size_t i = 0; i < n; i++) key_t[i] = strtod(in->in.first[i], NULL); /* KITTI: i, or its stamp */
     }
     if (tio_out_open(&out, o->out))
         goto done;

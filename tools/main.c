@@ -57,7 +57,8 @@ static const command commands[] = {
      OPT_IN | OPT_OUT | OPT_HEADER | OPT_GROUP | OPT_SCHEME | OPT_SAMPLES | OPT_AT | OPT_FORMAT | OPT_EVAL |
          OPT_STEP | OPT_V0 | OPT_VELOCITIES | OPT_SVG | OPT_VIEW | OPT_NORMALIZE | OPT_WITH | OPT_FRAME |
          OPT_RATE | OPT_TIMES | OPT_EXTRAPOLATE | OPT_HTML | OPT_TIME_UNIT | OPT_MAX_LINE | OPT_CLIP |
-         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER | OPT_COLUMNS | OPT_MIN_GAP | OPT_DEDUP,
+         OPT_QUAT_ORDER | OPT_OUTPUT_FORMAT | OPT_TWIST_ORDER | OPT_COLUMNS | OPT_MIN_GAP | OPT_DEDUP |
+         OPT_STAMPS,
      "usage: garotor interp [--scheme S] (--samples N | --at T1,T2,... | --rate HZ |\n"
      "                      --times FILE) [OPTIONS]\n"
      "Read keyframes, one a line: t, then the pose (t strictly increasing), and\n"
@@ -100,6 +101,7 @@ static const command commands[] = {
      "                      numbers of 12 digits or more are an error (ms, us, ns?)\n"
      "  --format mat|pose|kitti   a key is t and 16 numbers (4x4, default), t x y z\n"
      "                      qx qy qz qw, or 12 numbers (KITTI's 3x4, key k at t = k)\n"
+     "  --stamps FILE       kitti: key k at the k-th time of FILE (times.txt)\n"
      "  --quat-order xyzw|wxyz   the quaternion's order in a pose (default xyzw)\n"
      "  --columns LIST      pose keys in any layout: the file's columns in order\n"
      "                      (t,x,y,z,qw,qx,qy,qz; - skips one), or ROLE=COLUMN pairs\n"
@@ -227,6 +229,7 @@ static const struct {
     {"--columns", OPT_COLUMNS, 1},
     {"--min-gap", OPT_MIN_GAP, 1},
     {"--dedup", OPT_DEDUP, 0},
+    {"--stamps", OPT_STAMPS, 1},
 };
 
 /* A usage error of command cmd (NULL: the demo, no command named), with a
@@ -421,6 +424,7 @@ static int parse_options(const command *c, const char *cmd, int argc, char **arg
         case OPT_OUTPUT_FORMAT: o->output_format = v; break;
         case OPT_TWIST_ORDER: o->twist_order = v; break;
         case OPT_COLUMNS: o->columns = v; break;
+        case OPT_STAMPS: o->stamps = v; break;
         case OPT_DEDUP: o->dedup = 1; break;
         case OPT_MIN_GAP:
             if (parse_double(v, &o->min_gap) || !(o->min_gap >= 0.0))
