@@ -27,7 +27,7 @@ static void dump(const char *name, double D, ga_mv X)
 int main(void)
 {
     static const double dists[] = {1, 1e2, 1e4, 1e6, 1e8};
-    tk_rng t = {2828};
+    tk_rng t = {tk_seed(2828)};
     for (int k = 0; k < 5; k++) {
         double D = dists[k];
         for (int i = 0; i < 60; i++) {

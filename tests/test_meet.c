@@ -621,7 +621,7 @@ static const double dists[] = {1, 1e2, 1e4, 1e6, 1e8};
 /* the scenes, per distance D from the origin */
 static void section_scenes(void)
 {
-    tk_rng t = {14}, ta = {1414};
+    tk_rng t = {tk_seed(14)}, ta = {tk_seed(1414)};
     tk_note("worst error per kind, per distance D from the origin (lengths / L, r^2 / L^2; read-backs: over\n"
             "the larger of that and their stated bound, times 1e-12)\n");
     for (int k = 0; k < 5; k++) {
@@ -634,7 +634,7 @@ static void section_scenes(void)
 /* join and meet_rel of the scenes, per distance D */
 static void section_join(void)
 {
-    tk_rng tj = {2222};
+    tk_rng tj = {tk_seed(2222)};
     status_check = "join, meet_rel: results read back with GA_OK";
     tk_note("join and meet_rel, worst error per kind, per distance D\n");
     for (int k = 0; k < 5; k++) {

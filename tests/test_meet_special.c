@@ -71,7 +71,7 @@ static void scene_exact(tk_rng *t, double D)
 
 static void section_special(void)
 {
-    tk_rng t = {2525}, te = {2552};
+    tk_rng t = {tk_seed(2525)}, te = {tk_seed(2552)};
     for (int k = 0; k < 5; k++) {
         double D = dists[k];
         for (int i = 0; i < 200; i++) {
@@ -170,7 +170,7 @@ static void general(tk_check *c, tk_check *nz, ga_mv A, ga_mv B)
 
 static void section_general(void)
 {
-    tk_rng t = {2626};
+    tk_rng t = {tk_seed(2626)};
     tk_check cl = tk_begin("sphere ^ line against the exact dual wedge (max diff / max)", 1e-15),
              cp = tk_begin("sphere ^ plane against the exact dual wedge", 1e-15),
              cs = tk_begin("sphere ^ sphere against the exact dual wedge", 1e-15),
@@ -198,7 +198,7 @@ static void section_general(void)
    refused, as its local form would claim digits it does not hold. */
 static void section_rel(void)
 {
-    tk_rng t = {2727};
+    tk_rng t = {tk_seed(2727)};
     for (int k = 0; k < 5; k++) {
         double D = dists[k];
         char name[96];
@@ -235,9 +235,15 @@ static void section_rel(void)
    rotation alone and a translation alone against their closed forms. */
 static void section_apply(void)
 {
-    tk_rng t = {2929};
-    tk_check far = tk_begin("apply_mv of a point, translations up to 1e6, against apply (rel)",
-                            8 * DBL_EPSILON),
+    tk_rng t = {tk_seed(2929)};
+    /* ga_rotor_apply is the same motion in another order of arithmetic, of
+       a rotor on the group only to its rounding: rotor.h bounds such orders
+       (ga_rotor_apply_many against it) per coordinate by 32 u (|x|_1 +
+       |t|_inf), t the translation; the check is that bound (was 8 u of |y|,
+       which 31 of 200 seeds broke, worst 24 u of |y|, against the 32 u
+       (|x|_1 + |t|_inf) that ga_rotor_apply itself is bounded to) */
+    tk_check far = tk_begin(
+                 "apply_mv of a point, translations up to 1e6, against apply: 32 u (|x|_1 + |t|_inf)", 0),
              sc = tk_begin("apply_mv(2 R, X) = 4 apply_mv(R, X) (rel to max)", 8 * DBL_EPSILON),
              rot = tk_begin("apply_mv of a rotation: F(q x ~q) (rel to max)", 8 * DBL_EPSILON),
              tr = tk_begin("apply_mv of a translation: F(x + a) (rel to max)", 8 * DBL_EPSILON);
@@ -247,8 +253,11 @@ static void section_apply(void)
         ga_rotor q = ga_rotor_rotation(tk_unit(&t), tk_range(&t, -3, 3));
         ga_rotor R = ga_rotor_mul(ga_rotor_translation(a), q);
         ga_vec3 y, want = ga_rotor_apply(R, x);
+        ga_vec3 tt = ga_rotor_to_translation(R);
+        double tol = 32 * DBL_EPSILON *
+                     (fabs(x.x) + fabs(x.y) + fabs(x.z) + fmax(fabs(tt.x), fmax(fabs(tt.y), fabs(tt.z))));
         if (ga_point_down(ga_rotor_apply_mv(R, ga_point_up(x)), &y) == GA_OK)
-            tk_add(&far, tk_norm((ga_vec3){y.x - want.x, y.y - want.y, y.z - want.z}) / tk_norm(want));
+            tk_add_tol(&far, fmax(fabs(y.x - want.x), fmax(fabs(y.y - want.y), fabs(y.z - want.z))), tol);
         ga_mv X = ga_pointpair_from_points(x, add(x, tk_unit(&t)));
         ga_rotor R2 = {2 * R.s,   2 * R.e12, 2 * R.e13, 2 * R.e23,
                        2 * R.e1n, 2 * R.e2n, 2 * R.e3n, 2 * R.e123n};

@@ -6,16 +6,18 @@
  *             origin and a size 1e-2 to 1e2, and a copy moved by a random
  *             similarity (a rotation, a dilation by 0.1 to 10, a
  *             translation), built from the moved points: V A V^-1
- *             (ga_versor_apply) read back is B to 1e-12 of the scene (the
- *             centre, r^2 over L^2, the direction in radians, with its
- *             orientation), and V ~V = 1; the same with the copy of the same
- *             size, against ga_rotor_between's motion
+ *             (ga_versor_apply) read back is B to max(1e-12, 64 u L) of
+ *             the scene, L of A and B (the centre, r^2 over L^2, the
+ *             direction in radians, with its orientation), and V ~V = 1 to
+ *             1e-14 |V|^2; the same with the copy of the same size, against
+ *             ga_rotor_between's motion
  *   refusals  what has no such rotor: kinds that differ, a point (tangent
  *             round) and a real round, an imaginary round, an empty flat
  *   interp    ga_object_interp at t = 0 and 1 is A and B (a round far out
  *             and small refused as by ga_versor_between); a sphere's radius
  *             goes geometrically (r_A (r_B / r_A)^t), a translated copy's
  *             centre linearly; NaN t refused
+ * GAROTOR_TEST_SEED=N draws other inputs (testkit.h; tests/seed_sweep.sh).
  */
 #include "testkit.h"
 
@@ -63,23 +65,42 @@ static double angle(ga_vec3 a, ga_vec3 b)
     return atan2(tk_norm(cross(a, b)), a.x * b.x + a.y * b.y + a.z * b.z);
 }
 
+/* The scale of a scene: L = max(1, |c| + |r|) over its objects */
+static double scene_L(const ga_object *o, int n)
+{
+    double L = 1.0;
+    for (int i = 0; i < n; i++) L = fmax(L, tk_norm(o[i].centre) + sqrt(fabs(o[i].r2)));
+    return L;
+}
+
 /* How far the object of X is from o beyond what their read-backs know: the
    largest of the centres' distance / L, the r^2 difference / L^2 and the
    directions' angle, each less the bounds (err, r2_err, angle_err) that
-   ga_object_from_mv states for the two, L = max(1, |c| + |r|) of either. B
-   is built from the moved points, rounded: a thin line or a small round far
-   out is known only to its bound (a line through two points 0.01 apart at
-   200 to ~u 200 / 0.01 rad), which no V can beat. For a plane and a line
-   the centre is the point nearest the origin. */
-static double object_err(ga_object x, ga_object o)
+   ga_object_from_mv states for the two, L the scene's (scene_L of A, B and
+   x). B is built from the moved points, rounded: a thin line or a small round
+   far out is known only to its bound (a line through two points 0.01 apart at
+   200 to ~u 200 / 0.01 rad), which no V can beat. For a plane and a line the
+   centre is the point nearest the origin. */
+static double object_err(ga_object x, ga_object o, double L)
 {
-    double L = fmax(1.0, fmax(tk_norm(x.centre) + sqrt(fabs(x.r2)), tk_norm(o.centre) + sqrt(fabs(o.r2))));
     double e = tk_max(fmax(0.0, tk_norm(sub(x.centre, o.centre)) - x.err - o.err) / L,
                       fmax(0.0, fabs(x.r2 - o.r2) - x.r2_err - o.r2_err) / (L * L));
     if (o.kind != GA_OBJECT_SPHERE)
         e = tk_max(e, fmax(0.0, angle(x.direction, o.direction) - x.angle_err - o.angle_err));
     return x.kind == o.kind ? e : INFINITY;
 }
+
+/* What object.h promises for V A V^-1 computed with ga_versor_apply, relative
+   to the scene (object_err): max(1e-12, 64 u L). The sandwich is two
+   geometric products of up to 32 terms each (64 roundings of u on a path),
+   and a V that moves A by ~L has coefficients ~L/2: its terms are ~L^2 times
+   A's weight where the result is ~L times it, so the centre is known to
+   ~64 u L^2, 64 u L of the scene. It is L of A and B together: a plane 54
+   from the origin moved to 0.8 from it is not known to 1e-12 of 1 (its
+   centre 3.2e-12 off: 1.4e4 u, 6e-14 of 54), nor, the sandwich's rounding
+   growing like L^2, a line moved 630 from the origin to 1e-12 of 630 (1.9e-9
+   off, 1.1e-12 of 630; 21 u L^2: within 64 u L of it). */
+static double sandwich_tol(double L) { return fmax(1e-12, 64.0 * 0x1p-53 * L); }
 
 /* V ~V - 1, largest coefficient, relative to |V|^2 (max coefficient) */
 static double unit_err(ga_mv V)
@@ -102,14 +123,14 @@ static int known(ga_mv X)
 
 static void section_between(void)
 {
-    tk_rng t = {2025};
+    tk_rng t = {tk_seed(2025)};
     tk_check sim[K_COUNT],
         rig = tk_begin("same size: V = ga_rotor_between's motion (max coefficient)", 1e-13),
         un = tk_begin("V ~V = 1 (max coefficient of V ~V - 1, over |V|^2)", 1e-14),
         st = tk_begin("GA_OK exactly where both read back to GA_OBJECT_TOL", 0);
     int refused = 0, resized = 0;
     for (int k = 0; k < K_COUNT; k++)
-        sim[k] = tk_beginf(1e-12, "%s to a similar copy: V A V^-1 = B", kind_name[k]);
+        sim[k] = tk_beginf(1e-12, "%s to a similar copy: V A V^-1 = B (max(1e-12, 64 u L))", kind_name[k]);
     static const double far[] = {1, 10, 100};
     for (int i = 0; i < 600; i++) {
         int k = i % K_COUNT;
@@ -132,8 +153,10 @@ static void section_between(void)
         int answer = known(A) && known(B);
         refused += !answer;
         tk_add(&st, (s1 == GA_OK) != answer || (answer && (s3 != GA_OK || s4 != GA_OK)));
-        if (answer && s3 == GA_OK && s4 == GA_OK) {
-            tk_add(&sim[k], object_err(ox, ob));
+        ga_object oab[3] = {ob, ox};
+        if (answer && s3 == GA_OK && s4 == GA_OK && ga_object_from_mv(A, &oab[2]) == GA_OK) {
+            double L = scene_L(oab, 3);
+            tk_add_tol(&sim[k], object_err(ox, ob, L), sandwich_tol(L));
             tk_add(&un, unit_err(V));
         }
         /* B1 is built from the moved points, rounded: a small sphere through
@@ -191,7 +214,7 @@ static void section_refusals(void)
 
 static void section_interp(void)
 {
-    tk_rng t = {77};
+    tk_rng t = {tk_seed(77)};
     tk_check ends = tk_begin("t = 0 gives A, t = 1 gives B (read back, rel)", 1e-12),
              geo = tk_begin("sphere at t: r^2 = (r_A (r_B/r_A)^t)^2 (over L^2, beyond r2_err)", 1e-12),
              lin = tk_begin("translated sphere at t: centre c_A + t a (over L, beyond err)", 1e-12),
@@ -213,7 +236,10 @@ static void section_interp(void)
         if (answer && s0 == GA_OK && s1 == GA_OK) {
             int r0 = ga_object_from_mv(X0, &o0), r1 = ga_object_from_mv(X1, &o1);
             int ra = ga_object_from_mv(A, &oa), rb = ga_object_from_mv(B, &ob);
-            tk_add(&ends, r0 || r1 || ra || rb ? INFINITY : tk_max(object_err(o0, oa), object_err(o1, ob)));
+            ga_object all[4] = {oa, ob, o0, o1};
+            double L = scene_L(all, 4);
+            tk_add(&ends,
+                   r0 || r1 || ra || rb ? INFINITY : tk_max(object_err(o0, oa, L), object_err(o1, ob, L)));
         }
         /* spheres about one centre: the radius; a translated copy: the centre */
         ga_mv S = ga_mv_dual(ga_sphere_dual(c, r)), Ss = ga_mv_dual(ga_sphere_dual(c, s * r)),

@@ -107,7 +107,7 @@ static void section_kinds(void)
 {
     static const double D[3] = {1, 10, 100};
     for (int g = 0; g < 3; g++) {
-        tk_rng t = tk_rng_after(0x6b696e64, (uint64_t)g);
+        tk_rng t = tk_rng_after(tk_seed(0x6b696e64), (uint64_t)g);
         tk_check vv = tk_beginf(1e-13, "%s: V ~V = 1 (over |V|^2)", names[g]);
         tk_check pts = tk_beginf(1e-12, "%s: sample points of A moved onto B (over the sandwich's rounding)",
                                  names[g]);

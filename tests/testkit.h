@@ -55,6 +55,7 @@
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -81,6 +82,30 @@ static inline tk_rng tk_rng_after(uint64_t seed, uint64_t n)
 {
     return (tk_rng){seed + n * 0x9E3779B97F4A7C15ull};
 }
+/* ---- the seed sweep ------------------------------------------------------------
+ * A test seeds its streams with fixed numbers, so that every run is the same.
+ * The environment variable GAROTOR_TEST_SEED=N (N >= 1; unset, empty or 0:
+ * the fixed seeds) moves every stream a test seeds through tk_seed to another
+ * one, the same for every def and N on every machine, so that a sweep over N
+ * (tests/seed_sweep.sh, the soak suite's object-seeds) tries other inputs
+ * and any failure it finds reproduces with its N. tk_finish names N where it
+ * is set. */
+static inline uint64_t tk_seed_n(void)
+{
+    const char *s = getenv("GAROTOR_TEST_SEED");
+    return s && *s ? strtoull(s, NULL, 0) : 0;
+}
+/** The seed def, or, under GAROTOR_TEST_SEED=N, def moved by a mix of N
+ *  (distinct defs stay distinct). */
+static inline uint64_t tk_seed(uint64_t def)
+{
+    uint64_t n = tk_seed_n();
+    if (n == 0)
+        return def;
+    tk_rng m = {n};
+    return def ^ tk_next(&m);
+}
+
 /** Uniform in [0, 1). */
 static inline double tk_uni(tk_rng *r) { return (double)(tk_next(r) >> 11) * 0x1p-53; }
 /** Uniform in [lo, hi). */
@@ -486,6 +511,8 @@ static inline void tk_end_named(void)
 static inline int tk_finish(const char *test)
 {
     tk_end_named();
+    if (tk_seed_n())
+        printf("(GAROTOR_TEST_SEED=%llu)\n", (unsigned long long)tk_seed_n());
     if (tk_failures)
         printf("%s: %d check(s) FAILED\n", test, tk_failures);
     else

@@ -301,12 +301,16 @@ GA_API GA_NODISCARD ga_status ga_rotor_between(ga_mv A, ga_mv B, ga_rotor *out);
  *  then V is ga_rotor_between's motion, bit for bit). V A V^-1 is a
  *  multiple of B, positive with the orientation where the kind has one (lines,
  *  planes, circles, point pairs): computed with ga_versor_apply, its centre
- *  and r^2 are B's to 1e-12 of the scene (L = max(1, |c| + |r|) of both, L^2
- *  for r^2) and its direction to 1e-12 rad, beyond the bounds err, r2_err
- *  and angle_err that ga_object_from_mv states for the two (what their
- *  coefficients know), for scenes up to 1e2 from the
- *  origin and sizes 1e-2 to 1e2 (beyond, the sandwich's rounding grows like
- *  u |c|^2, as for every round held about the origin: object.h, "Accuracy").
+ *  and r^2 are B's to max(1e-12, 64 u L) of the scene (L = max(1, |c| + |r|)
+ *  of A and B, L^2 for r^2) and its direction to as many radians, beyond the
+ *  bounds err, r2_err and angle_err that ga_object_from_mv states for the
+ *  two (what their coefficients know), for A up to 1e2 from the origin and
+ *  of size 1e-2 to 1e2 and B a copy moved and dilated by 0.1 to 10: the
+ *  sandwich by a V that moves A by ~L rounds terms ~L^2 times A's weight
+ *  (further out that u L^2 grows on, as for every round held about the
+ *  origin: object.h, "Accuracy"). V ~V = 1 to a few
+ *  u |V|^2 (V is one product of a rigid rotor and D(s):
+ *  T(cB - s R cA) R D(s)).
  *  A real round and a flat of the same grade (a sphere and a plane, a
  *  circle and a line, a point pair and a flat point), either way round:
  *  V = M V0 takes the round to the flat, V0 = N I T(-p) / (2r) the
