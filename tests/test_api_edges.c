@@ -184,6 +184,12 @@ static int c_object_mean(void)
     ga_mv two[2] = {S, ga_sphere_dual(va, 2.0)};
     return ga_object_mean(IN(0, two), w, 2, OUT(1));
 }
+static int c_object_mean_read(void)
+{
+    static const double w[2] = {1.0, 0.5};
+    ga_mv two[2] = {S, ga_sphere_dual(va, 2.0)};
+    return ga_object_mean_read(IN(0, two), w, 2, OUT(1), OUT(2));
+}
 static int c_versor_apply(void) { return ga_versor_apply(ga_versor_translation(va), X, OUT(0)); }
 static ga_vec3 pts_in[2] = {{0.3, -0.2, 0.7}, {1.1, 0.4, -0.5}};
 static ga_mv mvs_in[2];
@@ -347,6 +353,7 @@ static const api_case cases[] = {
     CASE(rotor_from_mat4, 1, 1),
     CASE(rotor_mean, 3, 4),
     CASE(object_mean, 2, 2),
+    CASE(object_mean_read, 3, 6),
     CASE(twist_jr_inverse, 1, 1),
     CASE(twist_jl_inverse, 1, 1),
     CASE(rotor_jac_compose, 2, 3),

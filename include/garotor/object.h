@@ -381,17 +381,26 @@ GA_API GA_NODISCARD ga_status ga_object_interp(ga_mv A, ga_mv B, double t, ga_mv
  *      (two spheres of one radius apart average to a smaller sphere through
  *      their common circle, interp moves one rigidly to the other).
  *  Rounds are normalised about their own centres, and summed, projected and
- *  normalised about c0, the a-weighted mean of their centres (moved there and
- *  back exactly, gao_translate's rounding once), so that a far scene keeps
- *  what its objects' coefficients hold ("Accuracy" above); flats about the
- *  origin. The mean of n copies of one object is that object, and the mean
- *  of V A_i V^-1 (V a rigid motion or a dilation) is V (mean) V^-1, each to
- *  a few times the bounds ga_object_from_mv states for the mean and the
- *  inputs (the normalisation and the projection are invariant under V;
- *  docs/conformal.md has the figures), except for a known defect: far rounds (1e2 out)
- *  can break it by more than those bounds (docs/conformal.md). It does not depend on the order of
- *  the objects, bit for bit: every sum is exact (a fixed-point accumulator),
- *  rounded once.
+ *  normalised about c0, the a-weighted mean of their centres, in units of a
+ *  power of two near their a-weighted mean radius (moved there and back
+ *  exactly, gao_translate's rounding once), so that a far scene keeps what
+ *  its objects' coefficients hold ("Accuracy" above); flats about the
+ *  origin.
+ *  Accuracy: GA_OK means the object of out is, to first order, within the
+ *  bounds ga_object_mean_read states of the mean of any inputs within their
+ *  own rounding (object.h's model): those of out's read-back plus the
+ *  change of the mean's centre, r^2 and direction with each coefficient of
+ *  the sum times that coefficient's uncertainty (the inputs' and the
+ *  computation's), doubled. These can be far above the bounds
+ *  ga_object_from_mv states for out: where the weighted objects cancel
+ *  (spheres of both orientations) or the projection magnifies the inputs'
+ *  rounding (small rounds far out), the definition itself is ill-conditioned
+ *  and out's coefficients do not show it. The mean of n copies of one object
+ *  is that object, and the mean of V A_i V^-1 (V a rigid motion or a
+ *  dilation) is V (mean) V^-1, each within those bounds and a few times the
+ *  inputs' (docs/conformal.md has the figures). It does not depend on the
+ *  order of the objects, bit for bit: every sum is exact (a fixed-point
+ *  accumulator), rounded once.
  *  Statuses: GA_ERR_ARG for n = 0, a negative weight, weights all 0, objects
  *  of different kinds; GA_ERR_NOTFINITE for NaN/Inf in an object or weight;
  *  ga_object_from_mv's statuses for each object; GA_ERR_NOTBLADE for an empty
@@ -400,9 +409,19 @@ GA_API GA_NODISCARD ga_status ga_object_interp(ga_mv A, ga_mv B, double t, ga_mv
  *  k) or whose object is of another kind (planes whose normals cancel: the
  *  plane at infinity; spheres of opposite orientation: a plane), and on
  *  overflow; GA_ERR_SINGULAR where the weighted objects cancel to within
- *  16 u of the largest term. The result may be a tangent or imaginary round
+ *  16 u of the largest term; GA_ERR_PRECISION where the mean's object is
+ *  not known to first order (a small change of the sum changes its kind or
+ *  leaves no blade). The result may be a tangent or imaginary round
  *  (ga_object_from_mv reads it so). Not iterative. */
 GA_API GA_NODISCARD ga_status ga_object_mean(const ga_mv *A, const double *w, size_t n, ga_mv *out);
+
+/** ga_object_mean, and in obj the read-back of out with the bounds the mean
+ *  is known to (see ga_object_mean): ga_object_from_mv's of out plus the
+ *  first-order effect of the inputs' uncertainty and of the computation;
+ *  reality decided with that r2_err. The same statuses, and GA_ERR_ARG for a
+ *  NULL obj; out and obj are written together, or neither. */
+GA_API GA_NODISCARD ga_status ga_object_mean_read(const ga_mv *A, const double *w, size_t n, ga_mv *out,
+                                                  ga_object *obj);
 
 #ifdef __cplusplus
 }
