@@ -81,6 +81,21 @@ def test_extrapolate_equals_tool(rng, tmp_path, scheme, mode):
     assert np.array_equal(p.velocity(inside, extrapolate=mode, frame="world"), p.velocity(inside, frame="world"))
 
 
+@pytest.mark.parametrize("mode", MODES)
+def test_extrapolate_in_long_arrays_is_each_time_alone(rng, mode):
+    # sample() takes arrays in blocks through ga_path_sample, which refuses a
+    # time outside the range; from that block on the times go one by one
+    # through the extrapolation: the same numbers as each time alone
+    times, P = pose_keys(rng, 7)
+    p = garotor.Path(times, P, scheme="c2")
+    r0, r1 = p.range
+    t = rng.uniform(r0, r1, size=700)
+    t[[300, 301, 555]] = [r1 + 0.4, r0 - 1.1, r1 + 2.0]
+    each = np.stack([p.sample(t[i:i + 1], extrapolate=mode)[0] for i in range(t.size)])
+    assert np.array_equal(p.sample(t, extrapolate=mode), each)
+    assert np.array_equal(p.sample(t[:300], extrapolate=mode), p.sample(t[:300]))
+
+
 def test_extrapolate_modes_mean_what_they_say(rng):
     times, P = pose_keys(rng, 5)
     p = garotor.Path(times, P, scheme="c2")
