@@ -147,7 +147,7 @@ static void section_between(void)
             q1[j] = add(y, a);
         }
         ga_mv A = build(k, p), B = build(k, q), B1 = build(k, q1), V, X, V1;
-        ga_object ox, ob;
+        ga_object ox = {0}, ob = {0};
         int s1 = ga_versor_between(A, B, &V), s2 = s1 == GA_OK ? ga_versor_apply(V, A, &X) : s1;
         int s3 = s2 == GA_OK ? ga_object_from_mv(X, &ox) : s2, s4 = ga_object_from_mv(B, &ob);
         int answer = known(A) && known(B);
