@@ -25,7 +25,8 @@ Tasks: exp and log of --n twists / motions, by the module's calls and by
 the generalized ufuncs garotor.ufunc.exp and .log (rows "exp ufunc", "log
 ufunc"); compose of --n pairs of motions, by garotor.compose and
 garotor.ufunc.compose ("compose ufunc"; no scipy column); interpolation
-of --n samples through --keys key poses (garotor: Path(scheme='screw').sample); the geometric product of --n pairs of dense
+of --n samples through --keys key poses (garotor:
+Path(scheme='screw').sample); the geometric product of --n pairs of dense
 multivectors, MultivectorArray's * ("gp") and garotor.ufunc.gp ("gp ufunc"),
 against ga_mv_gp in a plain C loop (no scipy column); one versor on --n
 points, Multivector.apply ("apply": V's inverse once, ga_versor_apply_many,
