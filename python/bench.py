@@ -23,7 +23,9 @@ shared machine disturbs less (the module's loops run in the calling thread):
                  positions, assembled into (n, 4, 4) matrices
 Tasks: exp and log of --n twists / motions, by the module's calls and by
 the generalized ufuncs garotor.ufunc.exp and .log (rows "exp ufunc", "log
-ufunc"); interpolation of --n samples through --keys key poses (garotor:
+ufunc"); compose of --n pairs of motions, by garotor.compose and
+garotor.ufunc.compose ("compose ufunc"; no scipy column); interpolation
+of --n samples through --keys key poses (garotor:
 Path(scheme='screw').sample); the geometric product of --n pairs of dense
 multivectors, MultivectorArray's * ("gp") and garotor.ufunc.gp ("gp ufunc"),
 against ga_mv_gp in a plain C loop (no scipy column); one versor on --n
@@ -118,6 +120,12 @@ def main():
     put("exp ufunc", "c_loop", ns["exp"]["c_loop"] * n / 1e9)
     put("log ufunc", "garotor", median_time(lambda: garotor.ufunc.log(T), a.repeat))
     put("log ufunc", "c_loop", ns["log"]["c_loop"] * n / 1e9)
+    T2 = T[::-1].copy()  # other motions, so that no pair is a motion with itself
+    put("compose", "garotor", median_time(lambda: garotor.compose(T, T2), a.repeat))
+    put("compose", "c_loop", median_c(lambda: c_loop("compose", T, T2, None, cpu), a.repeat))
+    put("compose ufunc", "garotor", median_time(lambda: garotor.ufunc.compose(T, T2), a.repeat))
+    put("compose ufunc", "c_loop", ns["compose"]["c_loop"] * n / 1e9)
+    del T2
 
     times = np.cumsum(rng.uniform(0.5, 1.5, size=a.keys))
     K = garotor.exp(rng.normal(size=(a.keys, 6)))
@@ -179,10 +187,10 @@ def main():
         print(json.dumps(res, indent=1))
         return
     print(f"{n} elements, median of {a.repeat} runs, ns per element ({a.clock} time)")
-    print(f"{'task':9} {'garotor':>9} {'C loop':>9} {'C/garotor':>10} {'scipy':>9} {'scipy/garotor':>14}")
+    print(f"{'task':13} {'garotor':>9} {'C loop':>9} {'C/garotor':>10} {'scipy':>9} {'scipy/garotor':>14}")
     for task, r in ns.items():
         sc = r.get("scipy")
-        print(f"{task:9} {r['garotor']:9.1f} {r['c_loop']:9.1f} {r['c_loop'] / r['garotor']:10.2f} "
+        print(f"{task:13} {r['garotor']:9.1f} {r['c_loop']:9.1f} {r['c_loop'] / r['garotor']:10.2f} "
               + (f"{sc:9.1f} {sc / r['garotor']:14.2f}" if sc else ""))
     print(f"Path.sample, CPU ns/sample:  {'keys':>7} {'sorted':>8} {'shuffled':>9} {'ratio':>6}")
     for keys, r in res["sample_order"].items():

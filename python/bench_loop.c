@@ -31,7 +31,8 @@ static PyArrayObject *doubles(PyObject *o)
 /* c_loop(kind, x, keytimes=None, keys=None, cpu=False): seconds for the
  * library calls that exp ("exp": x (n, 6) twists), log ("log": x (n, 4, 4)
  * motions), Path(keytimes, keys, scheme="screw").sample ("sample": x (n,)
- * times, keys (m, 4, 4)) make per element on group cga, or that
+ * times, keys (m, 4, 4)) and compose ("compose": x and keytimes (n, 4, 4))
+ * make per element on group cga, or that
  * MultivectorArray's * makes ("gp": x and keytimes (n, 32), ga_mv_gp), or
  * one versor's apply on n multivectors ("apply": x (n, 32), keytimes the
  * versor (32,), ga_versor_apply per element; "apply_many": the one call
@@ -53,6 +54,7 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
           : strcmp(kind, "gp") == 0         ? 3
           : strcmp(kind, "apply") == 0      ? 4
           : strcmp(kind, "apply_many") == 0 ? 5
+          : strcmp(kind, "compose") == 0    ? 6
                                             : -1;
     PyArrayObject *x = doubles(xo), *kt = NULL, *kk = NULL;
     PyObject *ret = NULL;
@@ -62,11 +64,10 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
     if (!x)
         return NULL;
     npy_intp n = PyArray_NDIM(x) ? PyArray_DIM(x, 0) : 0;
-    npy_intp width = k == 0 ? 6 : k == 1 ? 16 : k >= 3 ? 32 : 1, owidth = k >= 3 ? 32 : 16;
+    npy_intp width = k == 0 ? 6 : k == 1 || k == 6 ? 16 : k >= 3 ? 32 : 1, owidth = k >= 3 && k < 6 ? 32 : 16;
     if (k < 0 || PyArray_SIZE(x) != n * width) {
-        PyErr_SetString(
-            PyExc_ValueError,
-            "c_loop: kind exp (n, 6), log (n, 4, 4), sample (n,), gp, apply or apply_many (n, 32)");
+        PyErr_SetString(PyExc_ValueError, "c_loop: kind exp (n, 6), log or compose (n, 4, 4), sample (n,), "
+                                          "gp, apply or apply_many (n, 32)");
         goto done;
     }
     if (k == 3 && (!(kt = doubles(to)) || PyArray_SIZE(kt) != n * width)) {
@@ -74,7 +75,12 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
             PyErr_SetString(PyExc_ValueError, "c_loop: gp needs the second factors (n, 32)");
         goto done;
     }
-    if (k >= 4 && (!(kt = doubles(to)) || PyArray_SIZE(kt) != 32)) {
+    if (k == 6 && (!(kt = doubles(to)) || PyArray_SIZE(kt) != n * width)) {
+        if (kt)
+            PyErr_SetString(PyExc_ValueError, "c_loop: compose needs the second motions (n, 4, 4)");
+        goto done;
+    }
+    if ((k == 4 || k == 5) && (!(kt = doubles(to)) || PyArray_SIZE(kt) != 32)) {
         if (kt)
             PyErr_SetString(PyExc_ValueError, "c_loop: apply needs the versor (32,)");
         goto done;
@@ -137,6 +143,16 @@ static PyObject *c_loop(PyObject *self, PyObject *args)
             memcpy(b.c, (const double *)PyArray_DATA(kt) + 32 * i, sizeof b.c);
             ga_mv c = ga_mv_gp(a, b);
             memcpy(buf + 32 * i, c.c, sizeof c.c);
+        } else if (k == 6) {
+            double a[GA_GROUP_MAX_ELEM], b[GA_GROUP_MAX_ELEM];
+            ga_mat4 A, B;
+            memcpy(A.m, in + 16 * i, sizeof A.m);
+            memcpy(B.m, (const double *)PyArray_DATA(kt) + 16 * i, sizeof B.m);
+            if ((st = g->from_mat4(A, a)) == GA_OK && (st = g->from_mat4(B, b)) == GA_OK) {
+                g->compose(a, b, e);
+                ga_mat4 M = g->to_mat4(e);
+                memcpy(buf + 16 * i, M.m, sizeof M.m);
+            }
         } else if (k == 4) {
             ga_mv V, X, Y;
             memcpy(V.c, PyArray_DATA(kt), sizeof V.c);

@@ -252,15 +252,22 @@ static void scatter(char *p, const gpy_core *c, const npy_intp *cs, const double
         for (npy_intp j = 0; j < n1; j++) memcpy(p + i * s0 + j * s1, v + i * n1 + j, sizeof *v);
 }
 
+static void nan_fill(double *o, npy_intp osize)
+{
+    for (npy_intp m = 0; m < osize; m++) o[m] = NAN;
+}
+
 /* One element: the kernel, and NaN for a failed one; 1 if it failed. */
 static int element(const ufdef *d, void *ctx, const double *const *in, double *o, npy_intp osize, npy_intp k)
 {
     int st = d->kernel(ctx, in, o, k);
     if (st == GA_OK && gpy_all_finite(o, osize))
         return 0;
-    for (npy_intp m = 0; m < osize; m++) o[m] = NAN;
+    nan_fill(o, osize);
     return 1;
 }
+
+#define FAST_BLOCK 64 /* elements checked for NaN and infinity together */
 
 /* The loop of every ufunc but to_pose: dims[0] elements; steps: the
  * operands' outer strides, then their core strides, operand by operand. */
@@ -299,7 +306,34 @@ static void loop(char **args, npy_intp const *dims, npy_intp const *steps, void 
         fesetexceptflag(&saved, FE_ALL_EXCEPT);
         return;
     }
-    for (npy_intp i = 0; i < dims[0]; i++) {
+    /* every operand's elements in C order and aligned, the results one after
+       the other: the kernels write straight to the result, which is checked
+       for NaN and infinity a block at a time (one pass of vector code), an
+       element at a time only in a block that holds one; the numbers of the
+       loop below, bit for bit (issue 30: per element within 1.2 times the
+       plain C loop's time) */
+    int contiguous = direct && steps[d->nin] == osize * w;
+    for (int j = 0; contiguous && j < d->nin; j++)
+        contiguous = plain(&d->in[j], cs[j]) && (uintptr_t)args[j] % sizeof(double) == 0 && steps[j] % w == 0;
+    for (npy_intp i0 = 0; contiguous && i0 < dims[0]; i0 += FAST_BLOCK) {
+        npy_intp m = dims[0] - i0 < FAST_BLOCK ? dims[0] - i0 : FAST_BLOCK;
+        double *o0 = (double *)args[d->nin] + i0 * osize;
+        for (npy_intp i = 0; i < m; i++) {
+            const double *in[GPY_MAX_IN];
+            for (int j = 0; j < d->nin; j++) in[j] = (const double *)(args[j] + (i0 + i) * steps[j]);
+            if (d->kernel((void *)d->ctx, in, o0 + i * osize, 0) != GA_OK) {
+                nan_fill(o0 + i * osize, osize);
+                failed = 1;
+            }
+        }
+        if (!gpy_all_finite(o0, m * osize))
+            for (npy_intp i = 0; i < m; i++)
+                if (!gpy_all_finite(o0 + i * osize, osize)) {
+                    nan_fill(o0 + i * osize, osize);
+                    failed = 1;
+                }
+    }
+    for (npy_intp i = 0; !contiguous && i < dims[0]; i++) {
         double buf[GPY_MAX_IN][GPY_MAX_OUT], obuf[GPY_MAX_OUT];
         const double *in[GPY_MAX_IN];
         char *op = args[d->nin] + i * steps[d->nin];

@@ -103,6 +103,9 @@ def test_bench_c_loop(rng):
     T[3, 0, 0] = 2
     with pytest.raises(ValueError, match=r"^c_loop: index 3: not a rigid motion"):
         b.c_loop("log", T)
+    assert b.c_loop("compose", T[:3], T[2::-1]) >= 0
+    with pytest.raises(ValueError, match=r"^c_loop: index 2: not a rigid motion"):
+        b.c_loop("compose", T[1:], T[:3])
     K = garotor.exp(rng.normal(size=(3, 6)))
     assert b.c_loop("sample", np.array([0.5, 1.5]), np.arange(3.0), K) >= 0
     with pytest.raises(ValueError, match=r"^c_loop: index 1: invalid argument"):

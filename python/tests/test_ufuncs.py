@@ -255,6 +255,37 @@ def test_bad_elements_are_nan_and_invalid(rng):
             getattr(U, name)(*args)
 
 
+def test_blocks_of_contiguous_elements(rng):
+    """Contiguous operands take the loop's fast path (results straight to
+    the output, checked for NaN and infinity 64 elements at a time): the
+    numbers of the element-by-element path (a strided out=), bit for bit,
+    bad elements in several blocks and at a block's edges."""
+    n = 200
+    T = motions(rng, (n,))
+    for i in (0, 63, 64, 130):
+        T[i, 0, 0] = 3.0  # not rigid: a status
+    T[199, 1, 2] = np.nan
+    X = rng.normal(size=(n, 3))
+    X[[5, 127, 128]] = 1e200  # up: a result that would not be finite
+    with np.errstate(invalid="ignore"):
+        for name, args in [("log", (T,)), ("compose", (T, T[::-1])), ("up", (X,)),
+                           ("exp", (rng.normal(size=(n, 6)),)), ("gp", (mvs(rng, n), mvs(rng, n)))]:
+            fast = getattr(U, name)(*args)
+            slow = np.full(fast.shape + (2,), 7.0)[..., 0]  # every number 16 bytes apart
+            getattr(U, name)(*args, out=slow)
+            assert same(fast, np.ascontiguousarray(slow)), name
+    with np.errstate(invalid="ignore"):
+        r = U.log(T)
+    assert np.flatnonzero(np.isnan(r).all(axis=1)).tolist() == [0, 63, 64, 130, 199]
+    good = np.setdiff1d(np.arange(n), [0, 63, 64, 130, 199])
+    assert same(r[good], garotor.log(T[good]))
+    with np.errstate(invalid="ignore"):
+        r = U.up(X)
+    assert np.flatnonzero(np.isnan(r).all(axis=1)).tolist() == [5, 127, 128]
+    with pytest.warns(RuntimeWarning, match="invalid value encountered in compose"):
+        U.compose(T, T)
+
+
 def test_pickle_and_import():
     import garotor.ufunc as u2
     assert u2 is U
