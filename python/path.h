@@ -5,7 +5,9 @@
  *                  type's tables
  *   path_sample.c  sample, sample_pose, velocity, acceleration, jerk
  *   path_keys.c    append and the attributes
- *   path_times.c   the times: stamps as given, relative seconds
+ *   path_times.c   the times: stamps as given, relative seconds (also read
+ *                  by trajectory.c: evaluate, ape, rpe and fit take their
+ *                  stamps as Path does)
  *   path_opts.c    the tool's options: normalize=, the growth warning, clip
  */
 #ifndef GAROTOR_PYTHON_PATH_H
@@ -54,6 +56,10 @@ PyArrayObject *gpy_path_times_array(gpy_PathObject *self, size_t count);
 /* (a - ref) x 10^-9 (ns) or x 1 in seconds, the exact difference rounded
  * once to a double: the tool's relative time (ic_rel_time) */
 double gpy_stamp_rel(gpy_stamp a, gpy_stamp ref, int ns);
+/* (a + k c - ref) x 10^-9 (ns) or x 1, exact and rounded once: a stamp
+ * shifted by k times c (an offset, a knot spacing) relative to ref, as the
+ * tool's decimal sums (tt_add) are; |k| < 2^59 */
+double gpy_stamp_rel_plus(gpy_stamp a, int64_t k, gpy_stamp c, gpy_stamp ref, int ns);
 /* x as its shortest decimal (with ns, whole nanoseconds, e = 0): 0, or -1
  * for a NaN or an infinity, -2 (ns) not whole, -3 (ns) beyond an int64 */
 int gpy_stamp_of_double(double x, int ns, gpy_stamp *s);
