@@ -100,15 +100,23 @@ ga_mat4 gpy_key_mat(const ga_group *g, const double *v, int normalize);
 void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, npy_intp i, char *why,
                  size_t size);
 /* the growth rule's warning (RuntimeWarning) where self's path breaks it,
- * in the tool's words; -1 when the warning is raised as an error */
-int gpy_path_warn_growth(gpy_PathObject *self);
+ * in the tool's words, what ("Path", "Path.append") first; measured under
+ * the lock; -1 when the warning is raised as an error */
+int gpy_path_warn_growth(gpy_PathObject *self, const char *what);
 /* min_gap= and dedup= (the tool's --min-gap, --dedup): keys closer than the
  * gap an error naming the later one, or with dedup each run merged into one
  * key (ga_path_merge_keys), stamp, rel and keys compacted and *n the keys
- * left; ref: the first key's stamp, which the times are relative to. -1
- * with an exception. */
-int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, gpy_stamp ref, npy_intp *n,
-                       gpy_stamp *stamp, double *rel, ga_mat4 *keys);
+ * left; ref: the first key's stamp, which the times are relative to. The
+ * gap used (relative seconds; 0: none), and for 'auto' (the default, as the
+ * tool's) the median spacing, into self->gap, gap_median, gap_auto, for
+ * append. -1 with an exception. */
+int gpy_path_near_dups(gpy_PathObject *self, const ga_group *g, PyObject *min_gap, int dedup, int ns,
+                       gpy_stamp ref, npy_intp *n, gpy_stamp *stamp, double *rel, ga_mat4 *keys);
+/* why a key appended at relative time t, stamped at, is closer than
+ * self->gap to the last key (at relative time last, stamped last_at, index
+ * i): the tool's words; 0 when it is not, else 1 and why filled */
+int gpy_path_append_gap(const gpy_PathObject *self, double t, gpy_stamp at, double last, gpy_stamp last_at,
+                        size_t i, char *why, size_t size);
 /* Path.clip(t) */
 PyObject *gpy_path_clip(gpy_PathObject *self, PyObject *args, PyObject *kw);
 

@@ -20,8 +20,8 @@ enum { COL_ROLES = 8 };
  *  not NULL, receives each role's column in the file (from 0), to name them
  *  in later messages. 0, or -1 after a message naming the file, the line
  *  and the column. */
-int col_read_poses(const char *cmd, const char *path, const char *list, const tio_read_opts *ro, tio_items *out,
-                   long col[COL_ROLES]);
+int col_read_poses(const char *cmd, const char *path, const char *list, const tio_read_opts *ro,
+                   tio_items *out, long col[COL_ROLES]);
 
 /** Check the list of --columns alone (its words, no role twice, every role
  *  given or header), before any file is read: 0, or -1 after the message
