@@ -3,9 +3,13 @@
 
     python3 fuzz/make_corpus.py        (from the repository root)
 
+    python3 fuzz/make_corpus.py --check  (the committed corpus is what it writes)
+
 The seeds are committed; this script says what each one is, and rewrites them
-all (it first removes the files it owns, so a renamed seed leaves no stale
-copy). Each seed is one meaningful call: every numeric operation on ordinary,
+all, byte for byte. A file in fuzz/corpus/ that it does not write (a seed
+added by hand, or the old name of a renamed one) is kept and listed, never
+deleted: add such a seed here, or `git rm` it; --check fails on it (the test
+fuzz-corpus runs --check). Each seed is one meaningful call: every numeric operation on ordinary,
 edge and invalid values, every scheme on every group for the path target, and
 every input format and option of the tool (docs/tool.md). The fuzzers start
 from these instead of from nothing.
@@ -16,8 +20,8 @@ for the values that have one and the raw form for the rest.
 """
 import math
 import os
-import shutil
 import struct
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 NAN, INF = float("nan"), float("inf")
@@ -52,15 +56,12 @@ def doubles(xs):
     return b"".join(enc(x) for x in xs)
 
 
+SEEDS = {}  # (target, name) -> bytes, written (or checked) at the end
+
+
 def write(target, name, data):
-    d = os.path.join(HERE, "corpus", target)
-    os.makedirs(d, exist_ok=True)
-    with open(os.path.join(d, name), "wb") as f:
-        f.write(data if isinstance(data, bytes) else data.encode())
-
-
-for target in ("numeric", "path", "tool"):
-    shutil.rmtree(os.path.join(HERE, "corpus", target), ignore_errors=True)
+    assert (target, name) not in SEEDS, "two seeds named %s/%s" % (target, name)
+    SEEDS[target, name] = data if isinstance(data, bytes) else data.encode()
 
 # ---- numeric: fuzz_numeric.c, first byte the operation -----------------------
 OPS = {"exp-log": 0, "rotor": 1, "rotor-drift": 2, "mat": 3, "mat-near": 4, "se3": 5,
@@ -322,6 +323,53 @@ TOOL = {
     "interp-nul-velocities": "interp --scheme lihao3 --samples 3 --velocities v\n" + KEYS + "%%\n" + VEL[:20]
                              + "\0" + VEL[20:],
     "versor-max-line": "versor apply --max-line=100\n%s 1 2 3\n" % ROT,
+    # the layouts fuzz_tool.c checks (its commit 28e09c4 added these by hand):
+    # KITTI's 3 x 4 rows, --output-format csv after its header with --with
+    # jerk's widths, and versor --text (blade names, not numbers)
+    "interp-kitti": "interp --format kitti --samples 5\n1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 1 0 1 0 0 0 0 1 0\n",
+    "interp-output-csv-jerk-world": "interp --format pose --output-format csv --with velocity,acceleration,jerk "
+                                    "--frame world\n0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n",
+    "versor-exp-text": "versor exp --text\n1e12 + 0.5e45\n",
 }
 for name, text in TOOL.items():
     write("tool", name, text)
+
+
+def on_disk():
+    """(target, name) of every file now in fuzz/corpus/{numeric,path,tool}"""
+    found = set()
+    for target in ("numeric", "path", "tool"):
+        d = os.path.join(HERE, "corpus", target)
+        if os.path.isdir(d):
+            found |= {(target, name) for name in os.listdir(d)}
+    return found
+
+
+def path_of(key):
+    return os.path.join(HERE, "corpus", key[0], key[1])
+
+
+others = sorted(on_disk() - set(SEEDS))
+if sys.argv[1:] == ["--check"]:
+    bad = []
+    for key, data in sorted(SEEDS.items()):
+        if not os.path.exists(path_of(key)):
+            bad.append("missing: %s/%s" % key)
+        else:
+            with open(path_of(key), "rb") as f:
+                if f.read() != data:
+                    bad.append("differs from what this script writes: %s/%s" % key)
+    bad += ["not written by this script (add it here, or git rm it): %s/%s" % key for key in others]
+    for line in bad:
+        print("fuzz/make_corpus.py --check: " + line)
+    print("fuzz/make_corpus.py --check: %d seeds, %s" % (len(SEEDS), "%d problems" % len(bad) if bad else "all equal"))
+    sys.exit(1 if bad else 0)
+elif sys.argv[1:]:
+    sys.exit("usage: python3 fuzz/make_corpus.py [--check]")
+for key, data in SEEDS.items():
+    os.makedirs(os.path.dirname(path_of(key)), exist_ok=True)
+    with open(path_of(key), "wb") as f:
+        f.write(data)
+print("fuzz/make_corpus.py: wrote %d seeds" % len(SEEDS))
+for key in others:
+    print("fuzz/make_corpus.py: kept %s/%s, which this script does not write (add it here, or git rm it)" % key)

@@ -224,6 +224,10 @@ typedef struct {
        Path(dedup=True) merged the first keys, the first key's as given */
     gpy_stamp ref;
     int merged; /* dedup merged keys: a pickle keeps ref and the relative times */
+    /* min_gap= for the keys append adds (path_opts.c): the gap in relative
+       seconds (0: none), and for 'auto' the median spacing it is 1% of */
+    double gap, gap_median;
+    int gap_auto;
 } gpy_PathObject;
 
 extern PyTypeObject gpy_PathType;

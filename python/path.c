@@ -271,7 +271,7 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     /* keys closer than min_gap: an error, or with dedup merged (as the tool's
        --min-gap, --dedup, before its count of keys and bspline's grid) */
     gpy_stamp ref = stamp[0]; /* the first key's time as given, before any merge */
-    if (gpy_path_near_dups(g, gobj, dedup, ns, ref, &n, stamp, rel, keys))
+    if (gpy_path_near_dups(self, g, gobj, dedup, ns, ref, &n, stamp, rel, keys))
         goto done;
     if (n != 1 && ((size_t)n < min || (scheme == GA_SCHEME_QUADRATIC && n != 3))) {
         PyErr_Format(PyExc_ValueError, "Path: scheme '%s' needs one key or %s %zu, got %zd after dedup",
@@ -307,7 +307,7 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
     if (rc == 0)
         self->merged = n < PyArray_DIM(t, 0);
     if (rc == 0)
-        rc = gpy_path_warn_growth(self);
+        rc = gpy_path_warn_growth(self, "Path");
 done:
     PyMem_Free(keys);
     PyMem_Free(stamp);
@@ -353,7 +353,10 @@ static void copy_state(gpy_PathObject *self, void *arg)
  * constructor in the group's coordinates ((count, dim), or None). Built from
  * these by ga_path_init, the path is the one pickled, bit for bit: the same
  * keys, times, velocities and room, and an appended path equals the one built
- * from all its keys (ga_path_append). Nothing in it is a pointer. */
+ * from all its keys (ga_path_append). Nothing in it is a pointer. Two
+ * items may follow: (the reference, the relative times) where dedup merged
+ * keys, else None, and (gap, median, auto), the min_gap append checks, where
+ * there is one and room to append. */
 static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
 {
     (void)unused;
@@ -389,12 +392,27 @@ static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
                 memcpy(PyArray_DATA((PyArrayObject *)ra), self->path.t, n * sizeof(double));
             ref = ra ? Py_BuildValue("(NN)", gpy_stamp_value(self->ref, self->ns), ra) : NULL;
         }
-        r = ref ? Py_BuildValue("O(O)(ssOOOnsN)", newobj, (PyObject *)Py_TYPE(self), g->name,
-                                ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                                (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s", ref)
-                : Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
-                                ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                                (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
+        /* where append checks a gap (min_gap=), a ninth item: (the gap in
+           relative seconds, the median spacing, 1 for 'auto'); the eighth
+           is then None where no keys were merged */
+        int gap = self->gap > 0.0 && self->path.cap > n;
+        if (gap && !ref) {
+            Py_INCREF(Py_None);
+            ref = Py_None;
+        }
+        if (ref && gap)
+            r = Py_BuildValue("O(O)(ssOOOnsN(ddi))", newobj, (PyObject *)Py_TYPE(self), g->name,
+                              ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
+                              (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s", ref, self->gap,
+                              self->gap_median, self->gap_auto);
+        else if (ref)
+            r = Py_BuildValue("O(O)(ssOOOnsN)", newobj, (PyObject *)Py_TYPE(self), g->name,
+                              ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
+                              (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s", ref);
+        else
+            r = Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
+                              ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
+                              (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
     }
     Py_XDECREF(t);
     Py_XDECREF(k);
@@ -421,7 +439,7 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         return NULL;
     }
     /* a state of 6, of before time_unit: seconds */
-    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 8 ||
+    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 9 ||
         !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)) ||
         (PyTuple_GET_SIZE(state) >= 7 && !PyUnicode_Check(PyTuple_GET_ITEM(state, 6))))
         return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity, time_unit)");
@@ -512,7 +530,18 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
     if (gpy_path_key_times("Path: state", t, ns, stamp, rel))
         goto done;
     gpy_stamp ref = stamp[0];
-    int merged = PyTuple_GET_SIZE(state) == 8;
+    int merged = PyTuple_GET_SIZE(state) >= 8 && PyTuple_GET_ITEM(state, 7) != Py_None;
+    double gap = 0.0, gap_median = 0.0;
+    int gap_auto = 0;
+    if (PyTuple_GET_SIZE(state) == 9 &&
+        (!PyArg_ParseTuple(PyTuple_GET_ITEM(state, 8), "ddi", &gap, &gap_median, &gap_auto) ||
+         !(gap >= 0.0) || !isfinite(gap) || !isfinite(gap_median))) {
+        if (!PyErr_Occurred() || PyErr_ExceptionMatches(PyExc_TypeError)) {
+            PyErr_Clear();
+            state_error("the gap's item must be (gap >= 0, median spacing, auto)");
+        }
+        goto done;
+    }
     if (merged) { /* (reference, relative times) of a path whose keys dedup merged */
         PyObject *m = PyTuple_GET_ITEM(state, 7);
         PyArrayObject *ra = PyTuple_Check(m) && PyTuple_GET_SIZE(m) == 2
@@ -535,6 +564,9 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
     }
     if (path_build(self, g, scheme, (size_t)n, rel, kv, 0, &vel, nvel, &stamp, ns, ref, wbytes) == 0) {
         self->merged = merged;
+        self->gap = gap;
+        self->gap_median = gap_median;
+        self->gap_auto = gap_auto != 0;
         Py_INCREF(Py_None);
         ret = Py_None;
     }
@@ -576,10 +608,10 @@ static PyMethodDef Path_methods[] = {
      "clip(t): the times of t (read in C order) in the path's range, as given and in their order: the "
      "times `garotor interp --clip` keeps."},
     {"append", (PyCFunction)(void (*)(void))gpy_path_append, METH_VARARGS | METH_KEYWORDS,
-     "append(t, pose): add a key after the last (schemes screw, bivector, lihao2, decoupled, bspline), "
-     "building one "
-     "new segment; the Path then equals one built from all the keys, bit for bit. Room: Path(..., "
-     "capacity=m)."},
+     "append(t, pose, *, warn_growth=False): add a key after the last (schemes screw, bivector, lihao2, "
+     "decoupled, bspline), building one new segment; the Path then equals one built from all the keys, bit "
+     "for bit. Room: Path(..., capacity=m). A key closer to the last than the Path's min_gap is an error "
+     "(the tool's words); warn_growth: the growth rule measured over every key, warned as Path(...) does."},
     {"__reduce__", (PyCFunction)Path_reduce, METH_NOARGS,
      "pickling and copying: (copyreg.__newobj__, (Path,), state), state = (group, scheme, times, keys, "
      "velocities, capacity)"},
@@ -606,12 +638,14 @@ PyTypeObject gpy_PathType = {
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc =
         "Path(times, poses, scheme='screw', group='cga', velocities=None, *, capacity=None, time_unit='s', "
-        "normalize=False): a path through key poses.\n\n"
+        "normalize=False, min_gap='auto', dedup=False): a path through key poses.\n\n"
         "times: (n,) strictly increasing; poses: (n, 4, 4) matrices or (n, 7) rows x y z qx qy qz qw;\n"
         "scheme: screw, bivector, quadratic, smooth, lihao2, lihao3, decoupled, decoupled-c2, bspline, c2;\n"
         "group: cga, matrix, affine; velocities: lihao2 the first key's (6,), lihao3 one per key (n, 6);\n"
         "capacity: room for keys to come (append), for the schemes that can append;\n"
-        "normalize: keys up to 1e-3 off a rigid motion projected onto it (garotor interp --normalize).\n"
+        "normalize: keys up to 1e-3 off a rigid motion projected onto it (garotor interp --normalize);\n"
+        "min_gap: keys closer are an error, 'auto' (or None: the tool's default) 1% of the median spacing,\n"
+        "0 none (--min-gap); dedup: such keys merged into their mean (--dedup).\n"
         "A path whose velocity breaks the growth rule warns (RuntimeWarning) as the tool does.",
     .tp_methods = Path_methods,
     .tp_getset = Path_getset,

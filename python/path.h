@@ -5,7 +5,9 @@
  *                  type's tables
  *   path_sample.c  sample, sample_pose, velocity, acceleration, jerk
  *   path_keys.c    append and the attributes
- *   path_times.c   the times: stamps as given, relative seconds
+ *   path_times.c   the times: stamps as given, relative seconds (also read
+ *                  by trajectory.c: evaluate, ape, rpe and fit take their
+ *                  stamps as Path does)
  *   path_opts.c    the tool's options: normalize=, the growth warning, clip
  */
 #ifndef GAROTOR_PYTHON_PATH_H
@@ -54,6 +56,10 @@ PyArrayObject *gpy_path_times_array(gpy_PathObject *self, size_t count);
 /* (a - ref) x 10^-9 (ns) or x 1 in seconds, the exact difference rounded
  * once to a double: the tool's relative time (ic_rel_time) */
 double gpy_stamp_rel(gpy_stamp a, gpy_stamp ref, int ns);
+/* (a + k c - ref) x 10^-9 (ns) or x 1, exact and rounded once: a stamp
+ * shifted by k times c (an offset, a knot spacing) relative to ref, as the
+ * tool's decimal sums (tt_add) are; |k| < 2^59 */
+double gpy_stamp_rel_plus(gpy_stamp a, int64_t k, gpy_stamp c, gpy_stamp ref, int ns);
 /* x as its shortest decimal (with ns, whole nanoseconds, e = 0): 0, or -1
  * for a NaN or an infinity, -2 (ns) not whole, -3 (ns) beyond an int64 */
 int gpy_stamp_of_double(double x, int ns, gpy_stamp *s);
@@ -94,15 +100,23 @@ ga_mat4 gpy_key_mat(const ga_group *g, const double *v, int normalize);
 void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, npy_intp i, char *why,
                  size_t size);
 /* the growth rule's warning (RuntimeWarning) where self's path breaks it,
- * in the tool's words; -1 when the warning is raised as an error */
-int gpy_path_warn_growth(gpy_PathObject *self);
+ * in the tool's words, what ("Path", "Path.append") first; measured under
+ * the lock; -1 when the warning is raised as an error */
+int gpy_path_warn_growth(gpy_PathObject *self, const char *what);
 /* min_gap= and dedup= (the tool's --min-gap, --dedup): keys closer than the
  * gap an error naming the later one, or with dedup each run merged into one
  * key (ga_path_merge_keys), stamp, rel and keys compacted and *n the keys
- * left; ref: the first key's stamp, which the times are relative to. -1
- * with an exception. */
-int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, gpy_stamp ref, npy_intp *n,
-                       gpy_stamp *stamp, double *rel, ga_mat4 *keys);
+ * left; ref: the first key's stamp, which the times are relative to. The
+ * gap used (relative seconds; 0: none), and for 'auto' (the default, as the
+ * tool's) the median spacing, into self->gap, gap_median, gap_auto, for
+ * append. -1 with an exception. */
+int gpy_path_near_dups(gpy_PathObject *self, const ga_group *g, PyObject *min_gap, int dedup, int ns,
+                       gpy_stamp ref, npy_intp *n, gpy_stamp *stamp, double *rel, ga_mat4 *keys);
+/* why a key appended at relative time t, stamped at, is closer than
+ * self->gap to the last key (at relative time last, stamped last_at, index
+ * i): the tool's words; 0 when it is not, else 1 and why filled */
+int gpy_path_append_gap(const gpy_PathObject *self, double t, gpy_stamp at, double last, gpy_stamp last_at,
+                        size_t i, char *why, size_t size);
 /* Path.clip(t) */
 PyObject *gpy_path_clip(gpy_PathObject *self, PyObject *args, PyObject *kw);
 

@@ -68,7 +68,9 @@ typedef struct {
     double last; /* the last key's time before it */
     gpy_stamp last_at;
     int refused;  /* the path is full or t is not after last */
+    int close;    /* t is closer to last than min_gap (why says so) */
     ga_status st; /* of ga_path_append_mat4 */
+    char why[400];
 } append_op;
 
 static void append_step(gpy_PathObject *self, void *arg)
@@ -78,6 +80,9 @@ static void append_step(gpy_PathObject *self, void *arg)
     op->last = self->path.t[op->n - 1];
     op->last_at = self->stamp[op->n - 1];
     op->refused = op->n >= self->path.cap || !isfinite(op->t) || !(op->t > op->last);
+    op->close = !op->refused && gpy_path_append_gap(self, op->t, op->at, op->last, op->last_at, op->n - 1,
+                                                    op->why, sizeof op->why);
+    op->refused |= op->close;
     if (op->commit && !op->refused) {
         op->st = ga_path_append_mat4(&self->path, op->t, op->m);
         if (op->st == GA_OK)
@@ -88,6 +93,10 @@ static void append_step(gpy_PathObject *self, void *arg)
 
 static PyObject *append_refused(gpy_PathObject *self, const append_op *op)
 {
+    if (op->close) { /* the tool's near-duplicate keys, as Path(...) finds them */
+        gpy_raise_status_why("Path.append", 0, NULL, 0, GA_ERR_ARG, op->why);
+        return NULL;
+    }
     if (op->n >= self->path.cap) {
         PyErr_Format(PyExc_ValueError,
                      "Path.append: the path is full (capacity %zu; give Path a larger capacity=)",
@@ -109,10 +118,12 @@ static PyObject *append_refused(gpy_PathObject *self, const append_op *op)
  * the key is appended, as another thread may have appended in between. */
 PyObject *gpy_path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"t", "pose", NULL};
+    static char *kwlist[] = {"t", "pose", "warn_growth", NULL};
     append_op op = {0};
     PyObject *tobj, *pobj;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO:append", kwlist, &tobj, &pobj) || !gpy_path_ready(self))
+    int warn_growth = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|$p:append", kwlist, &tobj, &pobj, &warn_growth) ||
+        !gpy_path_ready(self))
         return NULL;
     if (!ga_scheme_can_append(self->scheme)) {
         PyErr_Format(PyExc_ValueError, "Path.append: scheme '%s' cannot append keys (build a new Path)",
@@ -198,6 +209,10 @@ PyObject *gpy_path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
                      ga_status_string(st));
         return NULL;
     }
+    /* warn_growth: the growth rule over every key, as Path(...) measures it
+       (a pass over all the keys: opt-in); the key stays appended */
+    if (warn_growth && gpy_path_warn_growth(self, "Path.append") < 0)
+        return NULL;
     Py_RETURN_NONE;
 }
 PyObject *gpy_path_get_scheme(gpy_PathObject *self, void *c)

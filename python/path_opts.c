@@ -59,22 +59,38 @@ void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, np
              (Py_ssize_t)i, off);
 }
 
-int gpy_path_warn_growth(gpy_PathObject *self)
+/* the growth rule measured under the lock (append may run in another
+ * thread): found, and the warning's text */
+typedef struct {
+    const char *what;
+    int found;
+    char msg[512];
+} growth_read;
+
+static void measure_growth(gpy_PathObject *self, void *arg)
 {
+    growth_read *r = arg;
     ga_path_growth gr;
     ga_path_growth_words w;
     const ga_path *p = &self->path;
-    if (ga_path_measure_growth(p, &gr) != GA_OK || ga_path_growth_describe(p, &gr, &w) != GA_OK)
-        return 0;
-    char a[32], b[32], k[32], msg[512];
+    r->found = ga_path_measure_growth(p, &gr) == GA_OK && ga_path_growth_describe(p, &gr, &w) == GA_OK;
+    if (!r->found)
+        return;
+    char a[32], b[32], k[32];
     /* the tool's words (cmd_interp.c), the keys named by index */
-    snprintf(msg, sizeof msg,
-             "Path: the %s path's velocity grows past %g times the fastest chord on the segment t = %s to %s "
+    snprintf(r->msg, sizeof r->msg,
+             "%s: the %s path's velocity grows past %g times the fastest chord on the segment t = %s to %s "
              "(indices %zu to %zu), up to %s times at t = %s; %s (docs/schemes.md)",
-             ga_scheme_name(p->scheme), GA_PATH_GROWTH_MAX, gpy_stamp_text(self->stamp[w.a], self->ns, a),
-             gpy_stamp_text(self->stamp[w.b], self->ns, b), w.a, w.b, w.ratio,
-             gpy_stamp_text(self->stamp[gr.key], self->ns, k), w.advice);
-    return PyErr_WarnEx(PyExc_RuntimeWarning, msg, 1) < 0 ? -1 : 0;
+             r->what, ga_scheme_name(p->scheme), GA_PATH_GROWTH_MAX,
+             gpy_stamp_text(self->stamp[w.a], self->ns, a), gpy_stamp_text(self->stamp[w.b], self->ns, b),
+             w.a, w.b, w.ratio, gpy_stamp_text(self->stamp[gr.key], self->ns, k), w.advice);
+}
+
+int gpy_path_warn_growth(gpy_PathObject *self, const char *what)
+{
+    growth_read r = {what, 0, ""};
+    gpy_path_locked(self, measure_growth, &r);
+    return r.found && PyErr_WarnEx(PyExc_RuntimeWarning, r.msg, 1) < 0 ? -1 : 0;
 }
 
 /* the path's range, under the lock */
@@ -157,15 +173,15 @@ static int stamp_add(gpy_stamp a, gpy_stamp b, gpy_stamp *out)
     return 0;
 }
 
-/* min_gap=: None (no check unless dedup), 'auto' (the tool's default: 1% of
- * the median spacing), or a number >= 0 in the keys' unit. *check 0: none;
- * *dflt 1: the default. -1 with a ValueError. */
-static int min_gap_arg(PyObject *obj, int dedup, int ns, int *check, int *dflt, double *gap)
+/* min_gap=: 'auto' or None (the tool's default: 1% of the median
+ * spacing), or a number >= 0 in the keys' unit (0: no check). *check 0:
+ * none; *dflt 1: the default. -1 with a ValueError. */
+static int min_gap_arg(PyObject *obj, int ns, int *check, int *dflt, double *gap)
 {
     *check = *dflt = 0;
     *gap = 0.0;
     if (obj == Py_None) {
-        *check = *dflt = dedup;
+        *check = *dflt = 1;
         return 0;
     }
     if (PyUnicode_Check(obj)) {
@@ -188,14 +204,48 @@ static int min_gap_arg(PyObject *obj, int dedup, int ns, int *check, int *dflt, 
     return -1;
 }
 
-int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, gpy_stamp ref, npy_intp *np,
-                       gpy_stamp *stamp, double *rel, ga_mat4 *keys)
+/* the tool's words for key b closer than gap to key a (interp_read.c), the
+ * keys named by index, and the advice */
+static void gap_words(double gap, double median, int dflt, int ns, gpy_stamp at_b, double rel_b,
+                      gpy_stamp at_a, double rel_a, size_t a, const char *advice, char *why, size_t size)
+{
+    const double unit = ns ? 1e-9 : 1.0;
+    const char *u = ns ? "ns" : "s";
+    char x[32], y[32], d[96] = "";
+    if (dflt)
+        snprintf(d, sizeof d, " (1%% of the median spacing, %.6g %s)", median / unit, u);
+    snprintf(
+        why, size,
+        "key at t = %s is %.3g %s after the key at t = %s (index %zu), closer than min_gap %.6g %s%s: %s",
+        gpy_stamp_text(at_b, ns, x), (rel_b - rel_a) / unit, u, gpy_stamp_text(at_a, ns, y), a, gap / unit, u,
+        d, advice);
+}
+
+int gpy_path_append_gap(const gpy_PathObject *self, double t, gpy_stamp at, double last, gpy_stamp last_at,
+                        size_t i, char *why, size_t size)
+{
+    if (!(self->gap > 0.0) || !(t - last < self->gap))
+        return 0;
+    gap_words(
+        self->gap, self->gap_median, self->gap_auto, self->ns, at, t, last_at, last, i,
+        "append does not merge keys (dedup=True merges those given to Path): leave this one out, or build "
+        "the Path with min_gap=0 to keep such keys",
+        why, size);
+    return 1;
+}
+
+int gpy_path_near_dups(gpy_PathObject *self, const ga_group *g, PyObject *min_gap, int dedup, int ns,
+                       gpy_stamp ref, npy_intp *np, gpy_stamp *stamp, double *rel, ga_mat4 *keys)
 {
     int check, dflt;
     double gap, median = 0.0;
     npy_intp n = *np;
-    if (min_gap_arg(min_gap, dedup, ns, &check, &dflt, &gap))
+    self->gap = self->gap_median = 0.0;
+    self->gap_auto = 0;
+    if (min_gap_arg(min_gap, ns, &check, &dflt, &gap))
         return -1;
+    if (check && !dflt)
+        self->gap = gap;
     if (dedup && !g->rigid) { /* the tool's --dedup, as its message says */
         PyErr_SetString(PyExc_ValueError, "Path: dedup applies to the groups 'cga' and 'matrix'");
         return -1;
@@ -215,20 +265,16 @@ int gpy_path_near_dups(const ga_group *g, PyObject *min_gap, int dedup, int ns, 
             return -1;
         }
     }
-    const double unit = ns ? 1e-9 : 1.0;
-    const char *u = ns ? "ns" : "s";
+    self->gap = gap;
+    self->gap_median = median;
+    self->gap_auto = dflt;
     npy_intp out = 0;
     for (npy_intp i = 0; i < n;) {
         npy_intp j = (npy_intp)ga_times_gap_run((size_t)n, rel, gap, (size_t)i);
-        char why[400], a[32], b[32], d[96] = "";
+        char why[400];
         if (j > i && !dedup) { /* the tool's words (interp_read.c), the keys named by index */
-            if (dflt)
-                snprintf(d, sizeof d, " (1%% of the median spacing, %.6g %s)", median / unit, u);
-            snprintf(why, sizeof why,
-                     "key at t = %s is %.3g %s after the key at t = %s (index %zd), closer than min_gap %.6g "
-                     "%s%s: pass dedup=True to merge such keys, or min_gap=0 to keep them",
-                     gpy_stamp_text(stamp[i + 1], ns, a), (rel[i + 1] - rel[i]) / unit, u,
-                     gpy_stamp_text(stamp[i], ns, b), (Py_ssize_t)i, gap / unit, u, d);
+            gap_words(gap, median, dflt, ns, stamp[i + 1], rel[i + 1], stamp[i], rel[i], (size_t)i,
+                      "pass dedup=True to merge such keys, or min_gap=0 to keep them", why, sizeof why);
             gpy_raise_status_why("Path: times", 1, np, i + 1, GA_ERR_ARG, why);
             return -1;
         }

@@ -10,6 +10,7 @@
 #include "path.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,54 +33,74 @@ static double dec_to_double(int64_t m, int p)
     return strtod(b, NULL);
 }
 
-/* digits of |m| x 10^(e - at), right-aligned in d[0..len) (len digits; at <= e) */
+/* |m| x k x 10^(e - at) added into the digits d[0..len), right-aligned
+ * (len digits, at <= e; the caller leaves room for the carries) */
 enum { BIG_DIGITS = 800 };
-static void big_put(int64_t m, int e, int at, unsigned char *d, int len)
+static void big_acc(int64_t m, uint64_t k, int e, int at, unsigned char *d, int len)
 {
-    memset(d, 0, (size_t)len);
     uint64_t u = m < 0 ? (uint64_t)0 - (uint64_t)m : (uint64_t)m;
-    for (int i = len - 1 - (e - at); i >= 0 && u; i--, u /= 10) d[i] = (unsigned char)(u % 10);
+    unsigned char p[48]; /* |m| x k, least significant digit first: at most 20 + 20 digits */
+    int np = 0;
+    for (; u; u /= 10) p[np++] = (unsigned char)(u % 10);
+    uint64_t carry = 0;
+    for (int j = 0; j < np; j++) { /* times k, digit by digit: 9 k + carry < 2^64 for k < 2^59 */
+        uint64_t s = (uint64_t)p[j] * k + carry;
+        p[j] = (unsigned char)(s % 10);
+        carry = s / 10;
+    }
+    for (; carry; carry /= 10) p[np++] = (unsigned char)(carry % 10);
+    int c = 0;
+    for (int j = 0, i = len - 1 - (e - at); i >= 0 && (j < np || c); j++, i--) {
+        int s = d[i] + (j < np ? p[j] : 0) + c;
+        d[i] = (unsigned char)(s % 10);
+        c = s / 10;
+    }
 }
 
-/* (a - b) x 10^shift where m x 10^e does not fit an int64 at the smaller
- * exponent: in decimal digits, then strtod (once rounded) */
-static double big_difference(gpy_stamp a, gpy_stamp b, int shift)
+/* (sum of k[j] x x[j]) x 10^shift, j < count, exactly in decimal digits
+ * and then strtod (once rounded): where the terms do not fit an int64 at
+ * their smallest exponent. |k[j]| < 2^59. */
+static double big_sum(const gpy_stamp *x, const int64_t *k, int count, int shift)
 {
-    int at = a.e < b.e ? a.e : b.e, top = a.e > b.e ? a.e : b.e;
-    int len = top - at + 21;
-    if (len > BIG_DIGITS) /* beyond any double's decimal: not reached */
-        return dec_to_double(a.m, a.e + shift) - dec_to_double(b.m, b.e + shift);
-    unsigned char x[BIG_DIGITS], y[BIG_DIGITS], r[BIG_DIGITS];
-    big_put(a.m, a.e, at, x, len);
-    big_put(b.m, b.e, at, y, len);
-    /* signed: |a| +- |b| */
-    int na = a.m < 0, nb = b.m < 0, neg;
-    if (na != nb) { /* a - b = sign(a) (|a| + |b|) */
-        int carry = 0;
-        for (int i = len - 1; i >= 0; i--) {
-            int s = x[i] + y[i] + carry;
-            r[i] = (unsigned char)(s % 10);
-            carry = s / 10;
+    int at = INT_MAX, top = INT_MIN;
+    for (int j = 0; j < count; j++)
+        if (x[j].m && k[j]) {
+            at = x[j].e < at ? x[j].e : at;
+            top = x[j].e > top ? x[j].e : top;
         }
-        neg = na;
-    } else { /* sign(a) (|a| - |b|) */
-        int cmp = memcmp(x, y, (size_t)len);
-        const unsigned char *p = cmp >= 0 ? x : y, *q = cmp >= 0 ? y : x;
-        int borrow = 0;
-        for (int i = len - 1; i >= 0; i--) {
-            int s = p[i] - q[i] - borrow;
-            borrow = s < 0;
-            r[i] = (unsigned char)(s < 0 ? s + 10 : s);
-        }
-        neg = cmp >= 0 ? na : !na;
+    if (at == INT_MAX)
+        return 0.0;
+    int len = top - at + 44;
+    if (len > BIG_DIGITS) { /* beyond any double's decimal: not reached */
+        double s = 0.0;
+        for (int j = 0; j < count; j++) s += (double)k[j] * dec_to_double(x[j].m, x[j].e + shift);
+        return s;
+    }
+    unsigned char pos[BIG_DIGITS], neg[BIG_DIGITS], r[BIG_DIGITS];
+    memset(pos, 0, (size_t)len);
+    memset(neg, 0, (size_t)len);
+    for (int j = 0; j < count; j++) {
+        if (!x[j].m || !k[j])
+            continue;
+        uint64_t ak = k[j] < 0 ? (uint64_t)0 - (uint64_t)k[j] : (uint64_t)k[j];
+        big_acc(x[j].m, ak, x[j].e, at, (x[j].m < 0) != (k[j] < 0) ? neg : pos, len);
+    }
+    /* pos - neg: the larger less the smaller, the sign of the larger */
+    int cmp = memcmp(pos, neg, (size_t)len), isneg = cmp < 0;
+    const unsigned char *p = cmp >= 0 ? pos : neg, *q = cmp >= 0 ? neg : pos;
+    int borrow = 0;
+    for (int i = len - 1; i >= 0; i--) {
+        int s = p[i] - q[i] - borrow;
+        borrow = s < 0;
+        r[i] = (unsigned char)(s < 0 ? s + 10 : s);
     }
     char text[BIG_DIGITS + 32];
-    int k = 0, i = 0;
-    if (neg)
-        text[k++] = '-';
+    int n = 0, i = 0;
+    if (isneg)
+        text[n++] = '-';
     while (i < len - 1 && r[i] == 0) i++;
-    for (; i < len; i++) text[k++] = (char)('0' + r[i]);
-    snprintf(text + k, sizeof text - (size_t)k, "E%d", at + shift);
+    for (; i < len; i++) text[n++] = (char)('0' + r[i]);
+    snprintf(text + n, sizeof text - (size_t)n, "E%d", at + shift);
     return strtod(text, NULL);
 }
 
@@ -147,7 +168,18 @@ double gpy_stamp_rel(gpy_stamp a, gpy_stamp ref, int ns)
     for (int e = ref.e; e > at && ok; e--) ok = times10(&mb);
     if (ok && !((mb > 0 && ma < INT64_MIN + mb) || (mb < 0 && ma > INT64_MAX + mb)))
         return dec_to_double(ma - mb, at + shift);
-    return big_difference(a, ref, shift);
+    const gpy_stamp x[2] = {a, ref};
+    const int64_t k[2] = {1, -1};
+    return big_sum(x, k, 2, shift);
+}
+
+double gpy_stamp_rel_plus(gpy_stamp a, int64_t k, gpy_stamp c, gpy_stamp ref, int ns)
+{
+    if (k == 0 || c.m == 0)
+        return gpy_stamp_rel(a, ref, ns);
+    const gpy_stamp x[3] = {a, c, ref};
+    const int64_t kk[3] = {1, k, -1};
+    return big_sum(x, kk, 3, ns ? -9 : 0);
 }
 
 int gpy_stamp_of_double(double x, int ns, gpy_stamp *s)

@@ -6,97 +6,215 @@
  * qw (numpy.loadtxt of a TUM file). The table gpy_trajectory_methods is
  * added to the module by PyInit__garotor.
  */
-#include "module.h"
+#include "path.h"
 
 /* ---- reading -------------------------------------------------------------- */
 
-/* A trajectory read from an (n, 8) array: times t - t0 (+ shift) and poses. */
+/* A trajectory read from an (n, 8) array or a pair (times, poses): the
+ * stamps as given, the times relative to the reference stamp, the poses. */
 typedef struct {
-    double *t, *stamp; /* relative times; the stamps as given */
+    double *t;        /* relative times, seconds */
+    gpy_stamp *stamp; /* the stamps as given (whole nanoseconds with ns) */
     ga_mat4 *m;
     npy_intp n;
 } traj;
+
+/* How the times are read: time_unit 's' or 'ns' (ns), or None (guess: a
+ * first stamp that is a whole number of 12 digits or more is refused, as
+ * the tool refuses it without --time-unit); normalize=. */
+typedef struct {
+    int normalize, ns, guess;
+} traj_opts;
 
 static void traj_free(traj *tr)
 {
     PyMem_Free(tr->t);
     PyMem_Free(tr->stamp);
     PyMem_Free(tr->m);
-    tr->t = tr->stamp = NULL;
+    tr->t = NULL;
+    tr->stamp = NULL;
     tr->m = NULL;
 }
 
-/* Read obj as TUM rows; t0 NULL: the first row's time (set into *t0v), else
- * *t0v is subtracted; shift added after. -1 with garotor.Error naming the
- * array (name) and the row. */
-static int traj_read(const char *what, const char *name, PyObject *obj, int normalize, int have_t0,
-                     double *t0v, double shift, npy_intp min_rows, traj *tr)
+/* time_unit= None, 's' or 'ns' into o; -1 with a ValueError */
+static int traj_unit(const char *what, const char *unit, traj_opts *o)
 {
-    char where[96], why[200];
+    o->guess = unit == NULL;
+    return gpy_path_unit(what, unit, &o->ns);
+}
+
+/* The tool's refusal of a first stamp that looks like epoch milliseconds,
+ * microseconds or nanoseconds (tools/stamps.c, st_guess_unit), in Python's
+ * words: why filled and 1, or 0 when s is not such a whole number. */
+static int looks_like_ms_us_ns(gpy_stamp s, int isint, char *why, size_t size)
+{
+    gpy_stamp w = s;
+    while (w.m && w.m % 10 == 0) w.m /= 10, w.e++;
+    if (w.m == 0 || w.e < 0)
+        return 0;
+    int digits = w.e;
+    for (uint64_t u = w.m < 0 ? (uint64_t)0 - (uint64_t)w.m : (uint64_t)w.m; u; u /= 10) digits++;
+    if (digits < 12)
+        return 0;
+    char text[32];
+    const char *unit = digits >= 18 ? "nanoseconds" : digits >= 15 ? "microseconds" : "milliseconds";
+    snprintf(why, size, "the time %s looks like %s (a whole number of %d digits): %s",
+             gpy_stamp_text(s, isint, text), unit, digits,
+             digits >= 18 ? "pass time_unit='ns' (or time_unit='s' if it is seconds)"
+                          : "time_unit takes 's' or 'ns': convert the times (or pass time_unit='s' if they "
+                            "are seconds)");
+    return 1;
+}
+
+/* obj as n >= min_rows rows: an (n, 8) array of TUM rows t x y z qx qy qz
+ * qw, or a tuple (times (n,), poses (n, 7)), the times of an integer dtype
+ * read exactly (python/path_times.c). Each stamp is read as Path reads it
+ * (its exact decimal; whole nanoseconds with o->ns) and its time is
+ * (stamp + shift - *ref) rounded once to seconds, as the tool's; *ref is
+ * set to the first stamp unless have_ref. -1 with an exception naming the
+ * array (name) and the row. */
+static int traj_read(const char *what, const char *name, PyObject *obj, const traj_opts *o, int have_ref,
+                     gpy_stamp *ref, gpy_stamp shift, npy_intp min_rows, traj *tr)
+{
+    char where[96], why[300], tname[64], pname[64];
     snprintf(where, sizeof where, "%s: %s", what, name);
-    PyArrayObject *a = gpy_as_doubles(obj);
-    if (!a)
-        return -1;
-    if (PyArray_NDIM(a) != 2 || PyArray_DIM(a, 1) != 8 || PyArray_DIM(a, 0) < min_rows) {
+    int pair = PyTuple_Check(obj) && PyTuple_GET_SIZE(obj) == 2;
+    PyArrayObject *ta = NULL, *pa = NULL;
+    int rc = -1;
+    if (pair) {
+        ta = gpy_path_times_in(PyTuple_GET_ITEM(obj, 0));
+        pa = ta ? gpy_as_doubles(PyTuple_GET_ITEM(obj, 1)) : NULL;
+    } else {
+        pa = gpy_as_doubles(obj);
+        ta = pa ? gpy_path_times_in(obj) : NULL;
+    }
+    if (!ta || !pa)
+        goto done;
+    int cols = pair ? 7 : 8;
+    npy_intp n = PyArray_NDIM(pa) >= 1 ? PyArray_DIM(pa, 0) : 0;
+    if (PyArray_NDIM(pa) != 2 || PyArray_DIM(pa, 1) != cols || n < min_rows ||
+        (pair && (PyArray_NDIM(ta) != 1 || PyArray_DIM(ta, 0) != n))) {
         char shape[64] = "";
-        for (int d = 0; d < PyArray_NDIM(a) && d < 4; d++)
-            snprintf(shape + strlen(shape), sizeof shape - strlen(shape), "%s%zd", d ? ", " : "",
-                     (Py_ssize_t)PyArray_DIM(a, d));
-        PyErr_Format(
-            PyExc_ValueError,
-            "%s must be an (n, 8) array of TUM rows t x y z qx qy qz qw with n >= %zd (numpy.loadtxt "
-            "of a TUM file), not shape (%s)",
-            where, (Py_ssize_t)min_rows, shape);
-        Py_DECREF(a);
-        return -1;
+        for (PyArrayObject *x = pair ? ta : pa;; x = pa) {
+            if (pair)
+                snprintf(shape + strlen(shape), sizeof shape - strlen(shape), "%s(", x == ta ? "" : " and ");
+            for (int d = 0; d < PyArray_NDIM(x) && d < 4; d++)
+                snprintf(shape + strlen(shape), sizeof shape - strlen(shape), "%s%zd", d ? ", " : "",
+                         (Py_ssize_t)PyArray_DIM(x, d));
+            if (pair)
+                snprintf(shape + strlen(shape), sizeof shape - strlen(shape), ")");
+            if (!pair || x == pa)
+                break;
+        }
+        PyErr_Format(PyExc_ValueError,
+                     "%s must be an (n, 8) array of TUM rows t x y z qx qy qz qw (numpy.loadtxt of a TUM "
+                     "file), or a tuple (times (n,), poses (n, 7)), with n >= %zd, not %s%s%s",
+                     where, (Py_ssize_t)min_rows, pair ? "shapes " : "shape (", shape, pair ? "" : ")");
+        goto done;
     }
-    npy_intp n = PyArray_DIM(a, 0);
-    const double *v = PyArray_DATA(a);
+    snprintf(tname, sizeof tname, pair ? "%s[0]" : "%s", name);
+    snprintf(pname, sizeof pname, pair ? "%s[1]" : "%s", name);
+    const double *v = PyArray_DATA(pa);
     tr->n = n;
-    tr->t = PyMem_Malloc((size_t)n * sizeof *tr->t);
-    tr->stamp = PyMem_Malloc((size_t)n * sizeof *tr->stamp);
-    tr->m = PyMem_Malloc((size_t)n * sizeof *tr->m);
+    tr->t = PyMem_Malloc((size_t)(n ? n : 1) * sizeof *tr->t);
+    tr->stamp = PyMem_Malloc((size_t)(n ? n : 1) * sizeof *tr->stamp);
+    tr->m = PyMem_Malloc((size_t)(n ? n : 1) * sizeof *tr->m);
     if (!tr->t || !tr->stamp || !tr->m) {
-        Py_DECREF(a);
         PyErr_NoMemory();
-        return -1;
+        goto done;
     }
-    npy_intp bad = gpy_first_nonfinite(v, 8 * n);
+    npy_intp bad = gpy_first_nonfinite(v, cols * n);
     if (bad >= 0) {
-        gpy_nonfinite_why(name, a, bad, why, sizeof why);
-        gpy_raise_status_why(where, 1, &n, bad / 8, GA_ERR_NOTFINITE, why);
-        Py_DECREF(a);
-        return -1;
+        gpy_nonfinite_why(pname, pa, bad, why, sizeof why);
+        gpy_raise_status_why(where, 1, &n, bad / cols, GA_ERR_NOTFINITE, why);
+        goto done;
     }
-    if (!have_t0)
-        *t0v = v[0];
+    int isint = PyArray_TYPE(ta) == NPY_INT64;
     for (npy_intp i = 0; i < n; i++) {
-        const double *r = v + 8 * i;
-        tr->stamp[i] = r[0];
-        tr->t[i] = (r[0] - *t0v) + shift;
-        if (i > 0 && !(r[0] > r[-8])) {
-            char x[32], y[32];
-            snprintf(why, sizeof why, "times must increase strictly: %s[%zd, 0] = %s after %s", name,
-                     (Py_ssize_t)i, gpy_repr_text(r[0], x), gpy_repr_text(r[-8], y));
-            gpy_raise_status_why(where, 1, &n, i, GA_ERR_ARG, why);
-            Py_DECREF(a);
-            return -1;
+        const double *r = v + cols * i + (pair ? 0 : 1); /* x y z qx qy qz qw */
+        npy_intp ti = pair ? i : 8 * i;
+        char x[32], y[32], pos[48];
+        snprintf(pos, sizeof pos, pair ? "%s[%zd]" : "%s[%zd, 0]", tname, (Py_ssize_t)i);
+        int st = gpy_path_stamp_at(ta, ti, o->ns, &tr->stamp[i]);
+        if (st == -1) {
+            gpy_nonfinite_why(tname, ta, ti, why, sizeof why);
+            gpy_raise_status_why(where, 1, &n, i, GA_ERR_NOTFINITE, why);
+            goto done;
         }
-        int st = ga_traj_pose_from_tum(r + 1, normalize, &tr->m[i]);
+        if (st) {
+            snprintf(why, sizeof why, "%s = %s is not %s (time_unit='ns' takes whole nanoseconds)", pos,
+                     gpy_repr_text(((const double *)PyArray_DATA(ta))[ti], x),
+                     st == -2 ? "a whole number" : "within an int64");
+            gpy_raise_status_why(where, 1, &n, i, GA_ERR_ARG, why);
+            goto done;
+        }
+        if (i == 0 && o->guess && looks_like_ms_us_ns(tr->stamp[0], isint, why, sizeof why)) {
+            gpy_raise_status_why(where, 1, &n, 0, GA_ERR_ARG, why);
+            goto done;
+        }
+        if (i == 0 && !have_ref)
+            *ref = tr->stamp[0];
+        tr->t[i] = gpy_stamp_rel_plus(tr->stamp[i], 1, shift, *ref, o->ns);
+        if (i > 0 && !(tr->t[i] > tr->t[i - 1])) {
+            snprintf(why, sizeof why, "times must increase strictly: %s = %s after %s (%s)", pos,
+                     gpy_stamp_text(tr->stamp[i], isint || o->ns, x),
+                     gpy_stamp_text(tr->stamp[i - 1], isint || o->ns, y),
+                     !(tr->t[i] < tr->t[i - 1]) ? "a repeated stamp" : "out of order: sort the rows by time");
+            gpy_raise_status_why(where, 1, &n, i, GA_ERR_ARG, why);
+            goto done;
+        }
+        st = ga_traj_pose_from_tum(r, o->normalize, &tr->m[i]);
         if (st != GA_OK) {
-            char x[32];
             snprintf(why, sizeof why,
-                     "%s[%zd, 4:8] (qx qy qz qw): the quaternion has norm %s, not 1 (to 1e-9; normalize=True "
+                     "%s[%zd, %s] (qx qy qz qw): the quaternion has norm %s, not 1 (to 1e-9; normalize=True "
                      "accepts up to 1e-3)",
-                     name, (Py_ssize_t)i,
-                     gpy_repr_text(sqrt(r[4] * r[4] + r[5] * r[5] + r[6] * r[6] + r[7] * r[7]), x));
+                     pname, (Py_ssize_t)i, pair ? "3:7" : "4:8",
+                     gpy_repr_text(sqrt(r[3] * r[3] + r[4] * r[4] + r[5] * r[5] + r[6] * r[6]), x));
             gpy_raise_status_why(where, 1, &n, i, st, why);
-            Py_DECREF(a);
-            return -1;
+            goto done;
         }
     }
-    Py_DECREF(a);
-    return 0;
+    rc = 0;
+done:
+    Py_XDECREF(ta);
+    Py_XDECREF(pa);
+    return rc;
+}
+
+/* x y without overflow into *r: 1, else 0 */
+static int mul_ok(int64_t x, int64_t y, int64_t *r)
+{
+    if (x && y && (x > INT64_MAX / (y < 0 ? -y : y) || x < -(INT64_MAX / (y < 0 ? -y : y))))
+        return 0;
+    *r = x * y;
+    return 1;
+}
+
+/* 1 and *hn the spacing in whole nanoseconds when it is one and every knot
+ * t0 + (j - 1) hn, j < nc, fits an int64; else 0 */
+static int knots_ns(gpy_stamp t0, gpy_stamp h, size_t nc, int64_t *hn)
+{
+    if (h.e < 0 || h.e > 18)
+        return 0;
+    *hn = h.m;
+    for (int e = 0; e < h.e; e++)
+        if (!mul_ok(*hn, 10, hn))
+            return 0;
+    int64_t a, b;
+    if (!mul_ok(-1, *hn, &a) || !mul_ok((int64_t)nc - 2, *hn, &b))
+        return 0; /* the first and last knots' offsets from t0 */
+    return !(t0.m > 0 && b > INT64_MAX - t0.m) && !(t0.m < 0 && a < INT64_MIN - t0.m) &&
+           !(t0.m > 0 && a > INT64_MAX - t0.m) && !(t0.m < 0 && b < INT64_MIN - t0.m);
+}
+
+/* a number of seconds (an offset, a spacing) as an exact stamp in the
+ * unit of the times: its shortest decimal, x 10^9 with ns */
+static gpy_stamp seconds_stamp(double x, int ns)
+{
+    gpy_stamp s = {0, 0};
+    if (gpy_stamp_of_double(x, 0, &s) == 0 && ns && s.m)
+        s.e += 9;
+    return s;
 }
 
 /* ---- results -------------------------------------------------------------- */
@@ -148,17 +266,21 @@ enum { WANT_APE = 1, WANT_RPE = 2 };
 
 static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject *kw)
 {
-    static char *kwlist[] = {"ref",   "est",       "max_diff", "offset",    "align",
-                             "delta", "all_pairs", "angle",    "normalize", NULL};
+    static char *kwlist[] = {"ref",       "est",   "max_diff",  "offset",    "align", "delta",
+                             "all_pairs", "angle", "normalize", "time_unit", NULL};
     PyObject *ref_obj, *est_obj;
     double max_diff = 0.01, offset = 0.0;
     const char *align = "none", *angle = "deg";
     Py_ssize_t delta = 1;
-    int all_pairs = 0, normalize = 0;
+    const char *time_unit = NULL;
+    traj_opts o = {0, 0, 0};
+    int all_pairs = 0;
     char fmt[64];
-    snprintf(fmt, sizeof fmt, "OO|$ddsnpsp:%s", what);
+    snprintf(fmt, sizeof fmt, "OO|$ddsnpspz:%s", what);
     if (!PyArg_ParseTupleAndKeywords(args, kw, fmt, kwlist, &ref_obj, &est_obj, &max_diff, &offset, &align,
-                                     &delta, &all_pairs, &angle, &normalize))
+                                     &delta, &all_pairs, &angle, &o.normalize, &time_unit))
+        return NULL;
+    if (traj_unit(what, time_unit, &o))
         return NULL;
     char num[32], num2[32];
     if (!(max_diff >= 0) || !isfinite(max_diff))
@@ -182,13 +304,13 @@ static PyObject *eval_call(const char *what, int want, PyObject *args, PyObject 
                             delta);
     double unit = strcmp(angle, "deg") == 0 ? 180.0 / 3.14159265358979323846 : 1.0;
     traj ref = {0}, est = {0};
-    double t0 = 0;
+    gpy_stamp t0 = {0, 0}, zero = {0, 0};
     size_t *ir = NULL, *ie = NULL;
     ga_mat4 *R = NULL, *E = NULL;
     double *e1 = NULL, *e2 = NULL;
     PyObject *res = NULL;
-    if (traj_read(what, "ref", ref_obj, normalize, 0, &t0, 0.0, 1, &ref) ||
-        traj_read(what, "est", est_obj, normalize, 1, &t0, offset, 1, &est))
+    if (traj_read(what, "ref", ref_obj, &o, 0, &t0, zero, 1, &ref) ||
+        traj_read(what, "est", est_obj, &o, 1, &t0, seconds_stamp(offset, o.ns), 1, &est))
         goto done;
     size_t cap = (size_t)(ref.n < est.n ? ref.n : est.n), n = 0;
     ir = PyMem_Malloc(cap * sizeof *ir), ie = PyMem_Malloc(cap * sizeof *ie);
@@ -364,11 +486,15 @@ done:
 static PyObject *py_fit(PyObject *self, PyObject *args, PyObject *kw)
 {
     (void)self;
-    static char *kwlist[] = {"poses", "spacing", "smooth", "normalize", NULL};
+    static char *kwlist[] = {"poses", "spacing", "smooth", "normalize", "time_unit", NULL};
     PyObject *obj;
     double h, smooth = 0.0;
-    int normalize = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "Od|$dp:fit", kwlist, &obj, &h, &smooth, &normalize))
+    const char *time_unit = NULL;
+    traj_opts o = {0, 0, 0};
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "Od|$dpz:fit", kwlist, &obj, &h, &smooth, &o.normalize,
+                                     &time_unit))
+        return NULL;
+    if (traj_unit("fit", time_unit, &o))
         return NULL;
     char num[32];
     if (!(h > 0) || !isfinite(h))
@@ -378,12 +504,12 @@ static PyObject *py_fit(PyObject *self, PyObject *args, PyObject *kw)
         return PyErr_Format(PyExc_ValueError, "fit: smooth must be a number >= 0, not %s",
                             gpy_repr_text(smooth, num));
     traj z = {0};
-    double t0 = 0;
+    gpy_stamp t0 = {0, 0}, zero = {0, 0};
     ga_mat4 *X = NULL, *F = NULL;
     double *res = NULL, *rows = NULL;
     void *work = NULL;
     PyObject *out = NULL;
-    if (traj_read("fit", "poses", obj, normalize, 0, &t0, 0.0, 4, &z))
+    if (traj_read("fit", "poses", obj, &o, 0, &t0, zero, 4, &z))
         goto done;
     size_t nc;
     int st = ga_traj_fit_count(z.t[z.n - 1], h, &nc);
@@ -416,28 +542,55 @@ static PyObject *py_fit(PyObject *self, PyObject *args, PyObject *kw)
                                  : NULL);
         goto done;
     }
-    /* the rows: the keys' own stamps, the knots t_0 + (j - 1) spacing; the
+    /* the rows: the keys' own stamps, the knots t_0 + (j - 1) spacing as
+       exact decimals rounded once (the tool writes them exactly); the
        quaternion's sign continuous, as the tool writes them */
     ga_quat prev = {1, 0, 0, 0};
     for (npy_intp k = 0; k < z.n && st == GA_OK; k++) {
-        rows[8 * k] = z.stamp[k];
+        rows[8 * k] = gpy_stamp_double(z.stamp[k]);
         st = ga_traj_pose_to_tum(F[k], &prev, rows + 8 * k + 1);
     }
-    PyObject *fitted = array_of(rows, z.n, 8);
+    PyObject *fitted = array_of(rows, z.n, 8), *times = NULL, *ctimes = NULL;
+    gpy_stamp hs = seconds_stamp(h, o.ns);
     prev = (ga_quat){1, 0, 0, 0};
     for (size_t j = 0; j < nc && st == GA_OK; j++) {
-        rows[8 * j] = t0 + ((double)j - 1) * h;
+        rows[8 * j] = gpy_stamp_rel_plus(t0, (int64_t)j - 1, hs, zero, 0);
         st = ga_traj_pose_to_tum(X[j], &prev, rows + 8 * j + 1);
     }
     PyObject *controls = array_of(rows, (npy_intp)nc, 8), *resid = array_of(res, z.n, 2);
-    if (fitted && controls && resid && st == GA_OK)
+    if (o.ns && st == GA_OK) {
+        /* the stamps as given, int64; the knots in whole nanoseconds where
+           spacing is (9 decimals or fewer), else their nearest doubles */
+        npy_intp nk = z.n, ncn = (npy_intp)nc;
+        times = PyArray_SimpleNew(1, &nk, NPY_INT64);
+        int64_t hn;
+        int whole = knots_ns(t0, hs, nc, &hn);
+        ctimes = PyArray_SimpleNew(1, &ncn, whole ? NPY_INT64 : NPY_DOUBLE);
+        if (times && ctimes) {
+            for (npy_intp k = 0; k < nk; k++)
+                ((int64_t *)PyArray_DATA((PyArrayObject *)times))[k] = z.stamp[k].m;
+            for (size_t j = 0; j < nc; j++) {
+                if (whole)
+                    ((int64_t *)PyArray_DATA((PyArrayObject *)ctimes))[j] = t0.m + ((int64_t)j - 1) * hn;
+                else
+                    ((double *)PyArray_DATA((PyArrayObject *)ctimes))[j] =
+                        gpy_stamp_rel_plus(t0, (int64_t)j - 1, hs, zero, 0);
+            }
+        }
+    }
+    if (fitted && controls && resid && st == GA_OK && (!o.ns || (times && ctimes))) {
         out = Py_BuildValue("{s:N,s:N,s:N,s:d}", "fitted", fitted, "residuals", resid, "controls", controls,
                             "spacing", h);
-    else {
+        if (out && o.ns &&
+            (PyDict_SetItemString(out, "times", times) || PyDict_SetItemString(out, "control_times", ctimes)))
+            Py_CLEAR(out);
+    } else {
         Py_XDECREF(fitted);
         Py_XDECREF(controls);
         Py_XDECREF(resid);
     }
+    Py_XDECREF(times);
+    Py_XDECREF(ctimes);
 done:
     traj_free(&z);
     PyMem_Free(X);
@@ -452,13 +605,16 @@ done:
 #define FN(f) (PyCFunction)(void (*)(void))(f)
 #define EVAL_ARGS                                                                                            \
     "(ref, est, *, max_diff=0.01, offset=0.0, align='none', delta=1, all_pairs=False, angle='deg', "         \
-    "normalize=False)"
+    "normalize=False, time_unit=None)"
 
 PyMethodDef gpy_trajectory_methods[] = {
     {"evaluate", FN(py_evaluate), KW,
      "evaluate" EVAL_ARGS ": `garotor eval` in Python, bit for bit.\n"
-     "ref, est: (n, 8) TUM rows t x y z qx qy qz qw, t increasing (numpy.loadtxt of a TUM file);\n"
-     "times are taken relative to ref[0, 0] (est's plus offset). Associates by time as evo does,\n"
+     "ref, est: (n, 8) TUM rows t x y z qx qy qz qw, t increasing (numpy.loadtxt of a TUM file),\n"
+     "or tuples (times (n,), poses (n, 7)), integer times read exactly; each stamp is read as its\n"
+     "exact decimal (Path's times) and taken relative to ref's first (est's plus offset, in seconds).\n"
+     "time_unit: 's', 'ns' (whole nanoseconds) or None (a first stamp that is a whole number of 12\n"
+     "digits or more is an error, as without --time-unit). Associates by time as evo does,\n"
      "aligns with align 'se3' or 'sim3' (Umeyama), and returns a dict: pairs, ref_index, est_index,\n"
      "scale, transform (4, 4), and ape_trans, ape_rot, rpe_trans, rpe_rot, each a dict of errors\n"
      "(the array, pair by pair) and evo's max, mean, median, min, rmse, sse, std."},
@@ -470,9 +626,12 @@ PyMethodDef gpy_trajectory_methods[] = {
      "poses or (n, 3) positions: (T (4, 4), s) minimising sum |s R p_i + t - q_i|^2 (s = 1 unless\n"
      "scale); est aligned is T @ [R_i, s t_i]."},
     {"fit", FN(py_fit), KW,
-     "fit(poses, spacing, *, smooth=0.0, normalize=False): `garotor fit` in Python, bit for bit.\n"
-     "The least-squares cumulative cubic B-spline on SE(3), knots spacing apart from poses[0, 0],\n"
-     "through (n, 8) TUM rows (n >= 4). Returns a dict: fitted (n, 8) the spline at the keys' times,\n"
+     "fit(poses, spacing, *, smooth=0.0, normalize=False, time_unit=None): `garotor fit` in Python,\n"
+     "bit for bit. The least-squares cumulative cubic B-spline on SE(3), knots spacing (seconds) apart\n"
+     "from the first stamp, through (n, 8) TUM rows or a tuple (times (n,), poses (n, 7)), n >= 4;\n"
+     "time_unit as evaluate's. Returns a dict: fitted (n, 8) the spline at the keys' times,\n"
      "residuals (n, 2) distance and angle (rad) from the fitted pose to the key, controls (m, 8) the\n"
-     "control poses at their knots t_0 + (j - 1) spacing, and spacing."},
+     "control poses at their knots t_0 + (j - 1) spacing, and spacing; with time_unit='ns' also\n"
+     "times (int64, the stamps as given) and control_times (the knots, int64 nanoseconds where\n"
+     "spacing is a whole number of them)."},
     {NULL, NULL, 0, NULL}};

@@ -433,6 +433,45 @@ expect_error "interp: --columns text after quote" "q2.csv:1: column 5: text afte
 printf 't,x,y,z,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,1,0,0,0,0,0 "x",1\n' >"$d/q3.csv"
 expect_error "interp: --columns quote in a field" "q3.csv:3: column 7: a '\"' inside a field that is not quoted (quote the whole field: \"a\"\"b\")" \
     "$G" interp --columns header --samples 3 --in "$d/q3.csv" --out "$d/out"
+# a TUM header "# timestamp tx ty ..." read by name: the '#' is no column
+printf '# t x y z qx qy qz qw\n0 0 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n' >"$d/hash.tum"
+[ "$("$G" interp --columns header --at 0.5 --in "$d/hash.tum")" = "0.5 0.5 0 0 0 0 0 1" ] ||
+    fail "--columns header: a '# t x y ...' header read one column off"
+# ---- eval --columns (--ref-columns, --est-columns): the parser of interp's
+# --columns; the same report as the TUM files, byte for byte ----
+er=$(dirname "$doc")/examples/eval_ref.tum
+ee=$(dirname "$doc")/examples/eval_est.tum
+"$G" eval --ref "$er" --est "$ee" --normalize --align sim3 >"$d/ev.plain" || fail "eval on the TUM files"
+{ echo '"time","frame","qw","qx","qy","qz","x","y","z"'
+  awk '!/^#/ { printf "%s,\"map, base\",%s,%s,%s,%s,%s,%s,%s\n", $1, $8, $5, $6, $7, $2, $3, $4 }' "$er"; } >"$d/evref.csv"
+"$G" eval --ref "$d/evref.csv" --est "$ee" --normalize --align sim3 --ref-columns header,t=time |
+    cmp -s - "$d/ev.plain" || fail "eval --ref-columns header: not the TUM file's report"
+"$G" eval --ref "$d/evref.csv" --est "$ee" --normalize --align sim3 --header \
+    --columns t,-,qw,qx,qy,qz,x,y,z --est-columns t,x,y,z,qx,qy,qz,qw | cmp -s - "$d/ev.plain" ||
+    fail "eval --columns in order, --est-columns over it"
+"$G" eval --ref "$er" --est "$ee" --normalize --align sim3 --columns header | cmp -s - "$d/ev.plain" ||
+    fail "eval --columns header on TUM files (the '# timestamp tx ...' line names the columns)"
+"$G" eval --ref "$ros" --est "$ros" --columns header,t=field.header.stamp --time-unit ns >"$d/ev.ros" ||
+    fail "eval --columns on a rostopic CSV"
+"$G" eval --ref "$d/ros.cut" --est "$d/ros.cut" --time-unit ns | cmp -s - "$d/ev.ros" ||
+    fail "eval --columns on a rostopic CSV: not the cut file's report"
+expect_error "eval: --columns bad word" "^garotor eval: --columns: 'w' is not a column: name t x y z qx qy qz qw" \
+    "$G" eval --ref "$er" --est "$ee" --columns t,x,y,z,qx,qy,qz,w --out "$d/out"
+expect_error "eval: --columns missing role" "^garotor eval: --columns gives no column for z" \
+    "$G" eval --ref "$er" --est "$ee" --est-columns t,x,y --out "$d/out"
+expect_error "eval: --ref-columns no such name" "evref.csv:1: no column named 'stamp' in the header (--columns t=stamp)" \
+    "$G" eval --ref "$d/evref.csv" --est "$ee" --ref-columns header,t=stamp --out "$d/out"
+expect_error "eval: --columns short line" "eval_est.tum:2: 8 columns, but --columns reads column 9 (z)" \
+    "$G" eval --ref "$d/evref.csv" --est "$ee" --header --columns t,-,qw,qx,qy,qz,x,y,z --normalize --out "$d/out"
+expect_error "eval: --columns not a number" "evref.csv:2: column 2 (x): 'map, base' is not a number" \
+    "$G" eval --ref "$d/evref.csv" --est "$ee" --ref-columns t,x,y,z,qx,qy,qz,qw --header --out "$d/out"
+expect_error "eval: --columns quaternion named by its columns" "evref.csv:3: columns 4, 5, 6, 3 (qx qy qz qw): the quaternion has norm 1.0000507187138061, not 1" \
+    "$G" eval --ref "$d/evref.csv" --est "$ee" --ref-columns header,t=time --out "$d/out"
+awk '!/^#/ { print $2, $3, $4, $5, $6, $7, $8, $1 } NR == 3 { print $2, $3, $4, $5, $6, $7, $8, $1 }' "$er" >"$d/evref.tlast"
+expect_error "eval: --columns times named by their column" "evref.tlast:3: column 8: times must increase strictly: 1305031102.2758 after 1305031102.2758 (a repeated stamp" \
+    "$G" eval --ref "$d/evref.tlast" --est "$ee" --ref-columns x,y,z,qx,qy,qz,qw,t --normalize --out "$d/out"
+expect_error "eval: --columns twice" "option given twice '--ref-columns'" \
+    "$G" eval --ref "$er" --est "$ee" --ref-columns header --ref-columns header --out "$d/out"
 # ---- near-duplicate keys: closer than 1% of the median spacing an error;
 # --dedup merges them into their mean (time and pose), --min-gap 0 keeps them ----
 printf '0 0 0 0 0 0 0 1\n0.0333 0.1 0 0 0 0 0 1\n0.0334 0.1001 0 0 0 0 0 1\n0.0666 0.2 0 0 0 0 0 1\n0.1 0.3 0 0 0 0 0 1\n' >"$d/dup"

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "columns.h"
 #include "stamps.h"
 #include "textio.h"
 #include "timetext.h"
@@ -43,12 +44,17 @@ static const char eval_help[] =
     "                      whole numbers of 12 digits or more are an error (ms, us, ns?)\n"
     "  --stamps FILE       the stamps of a file of KITTI poses (12 numbers a line,\n"
     "                      the 3x4 [R t]): KITTI's times.txt, one a line\n"
+    "  --columns LIST      both files' poses in any layout, as interp --columns reads\n"
+    "                      them: the columns in order (t,x,y,z,qw,qx,qy,qz; - skips\n"
+    "                      one), or ROLE=COLUMN pairs and header (names in line 1)\n"
+    "  --ref-columns LIST, --est-columns LIST   one file's layout (over --columns)\n"
     "  --header            skip the first line of each file (a CSV header)\n"
     "  --max-line N        a line of more than N bytes is an error (default 1048576)\n";
 
 typedef struct {
     const char *ref, *est, *out, *align_name, *angle_name, *max_line_text;
     const char *max_diff_text, *offset_text, *delta_text, *time_unit, *stamps;
+    const char *columns, *ref_columns, *est_columns;
     double max_diff;
     long delta;
     int all_pairs, header, normalize, align, scale, degrees, ns;
@@ -64,13 +70,15 @@ static int usage(const char *what, const char *arg)
 
 static int parse(int argc, char **argv, ev_opts *o)
 {
-    static const char *const names[] = {"--ref",    "--est",       "--out",    "--max-diff", "--offset",
-                                        "--align",  "--delta",     "--angle",  "--max-line", "--time-unit",
-                                        "--stamps", "--all-pairs", "--header", "--normalize"};
-    enum { NVALUED = 11, NNAMES = 14 };
+    static const char *const names[] = {
+        "--ref",         "--est",         "--out",       "--max-diff",  "--offset",   "--align",
+        "--delta",       "--angle",       "--max-line",  "--time-unit", "--stamps",   "--columns",
+        "--ref-columns", "--est-columns", "--all-pairs", "--header",    "--normalize"};
+    enum { NVALUED = 14, NNAMES = 17 };
     const char **slot[NVALUED] = {&o->ref,           &o->est,        &o->out,        &o->max_diff_text,
                                   &o->offset_text,   &o->align_name, &o->delta_text, &o->angle_name,
-                                  &o->max_line_text, &o->time_unit,  &o->stamps};
+                                  &o->max_line_text, &o->time_unit,  &o->stamps,     &o->columns,
+                                  &o->ref_columns,   &o->est_columns};
     int *flag[3] = {&o->all_pairs, &o->header, &o->normalize};
     unsigned seen = 0;
     for (int i = 0; i < argc; i++) {
@@ -140,6 +148,10 @@ static int parse(int argc, char **argv, ev_opts *o)
     if (strcmp(an, "deg") != 0 && strcmp(an, "rad") != 0)
         return usage("--angle must be deg or rad, not", an);
     o->degrees = strcmp(an, "deg") == 0;
+    const char *lists[3] = {o->columns, o->ref_columns, o->est_columns};
+    for (int k = 0; k < 3; k++)
+        if (lists[k] && col_check_list("eval", lists[k]))
+            return 2;
     return st_time_unit("eval", o->time_unit, &o->ns) ? 2 : 0;
 }
 
@@ -188,8 +200,17 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
                  ev_traj *tr, int *kitti)
 {
     tio_read_opts ro = {o->header, 1, o->max_line};
-    if (tio_read_first(path, &ro, &tr->in))
+    long col[COL_ROLES] = {0, 1, 2, 3, 4, 5, 6, 7}; /* each role's column, from 0 */
+    if (o->columns ? col_read_poses(o->cmd ? o->cmd : "eval", path, o->columns, &ro, &tr->in, col)
+                   : tio_read_first(path, &ro, &tr->in))
         return -1;
+    char tcol[32], qcols[96];
+    snprintf(tcol, sizeof tcol, "column %ld", col[0] + 1);
+    if (col[5] == col[4] + 1 && col[6] == col[4] + 2 && col[7] == col[4] + 3)
+        snprintf(qcols, sizeof qcols, "columns %ld-%ld", col[4] + 1, col[7] + 1);
+    else
+        snprintf(qcols, sizeof qcols, "columns %ld, %ld, %ld, %ld", col[4] + 1, col[5] + 1, col[6] + 1,
+                 col[7] + 1);
     const tio_items *f = &tr->in;
     tr->n = f->n;
     if (f->n == 0) {
@@ -229,10 +250,9 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
         tt_add(&a, shift, 0, &b);
         tt_add(&b, t0, 1, &d);
         tr->t[i] = tt_to_double(&d, o->ns ? -9 : 0);
-        const char *col = is_kitti ? "the stamp (--stamps)" : "column 1";
         if (i > 0 && !(tr->t[i] > tr->t[i - 1]))
-            return tio_error(f, i, "%s: times must increase strictly: %s after %s (%s)", col, f->first[i],
-                             f->first[i - 1],
+            return tio_error(f, i, "%s: times must increase strictly: %s after %s (%s)",
+                             is_kitti ? "the stamp (--stamps)" : tcol, f->first[i], f->first[i - 1],
                              !(tr->t[i] < tr->t[i - 1])
                                  ? "a repeated stamp: keep one of the two lines"
                                  : "out of order: evo sorts by time, garotor reads the file as given: sort "
@@ -243,9 +263,9 @@ int ev_traj_read(const char *path, const ev_read_opts *o, tt_dec *t0, int *have0
         } else if (ga_traj_pose_from_tum(v + 1, o->normalize, &tr->m[i]) != GA_OK) {
             double norm = sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
             return tio_error(f, i,
-                             "columns 5-8 (qx qy qz qw): the quaternion has norm %.17g, not 1 (to 1e-9; "
+                             "%s (qx qy qz qw): the quaternion has norm %.17g, not 1 (to 1e-9; "
                              "--normalize accepts up to 1e-3)",
-                             norm);
+                             qcols, norm);
         }
     }
     return 0;
@@ -270,7 +290,10 @@ static void put_stats(FILE *fp, const char *title, const char *align, double *er
 
 static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
 {
-    ev_read_opts ro = {o->header, o->normalize, o->max_line, o->ns, !o->time_unit, o->stamps};
+    ev_read_opts ro = {o->header, o->normalize, o->max_line, o->ns, !o->time_unit, o->stamps, NULL, "eval"};
+    ev_read_opts re = ro;
+    ro.columns = o->ref_columns ? o->ref_columns : o->columns;
+    re.columns = o->est_columns ? o->est_columns : o->columns;
     static tt_dec t0, zero, off;
     int have0 = 0, kr = 0, ke = 0;
     tt_parse("0", &zero);
@@ -278,7 +301,7 @@ static int run(const ev_opts *o, ev_traj *ref, ev_traj *est)
     if (o->ns && off.n) /* --offset is in seconds: in nanoseconds, exactly */
         off.exp += 9;
     if (ev_traj_read(o->ref, &ro, &t0, &have0, &zero, ref, &kr) ||
-        ev_traj_read(o->est, &ro, &t0, &have0, &off, est, &ke))
+        ev_traj_read(o->est, &re, &t0, &have0, &off, est, &ke))
         return 2;
     if (o->stamps && !kr && !ke) {
         fprintf(stderr,

@@ -105,7 +105,7 @@ int cmd_fit_main(int argc, char **argv)
     int ns;
     if (st_time_unit("fit", val[5], &ns))
         return 2;
-    ev_read_opts ro = {flag[1], flag[0], 0, ns, !val[5], NULL};
+    ev_read_opts ro = {flag[1], flag[0], 0, ns, !val[5], NULL, NULL, "fit"};
     static tt_dec t0, zero;
     int have0 = 0;
     tt_parse("0", &zero);

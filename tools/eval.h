@@ -25,15 +25,18 @@ typedef struct {
 
 /** How a TUM file is read: --header, --normalize, --max-line (0: default),
  *  --time-unit ns, whether a stamp that looks like ms, us or ns is refused
- *  (no --time-unit given: stamps.h), --stamps FILE (NULL: none). */
+ *  (no --time-unit given: stamps.h), --stamps FILE (NULL: none), --columns
+ *  LIST (NULL: none; columns.h) and the command that reads it, for its
+ *  messages ("eval" when NULL). */
 typedef struct {
     int header, normalize;
     size_t max_line;
     int ns, guess_unit;
-    const char *stamps;
+    const char *stamps, *columns, *cmd;
 } ev_read_opts;
 
-/** Read a TUM file (t x y z qx qy qz qw a line, times strictly increasing,
+/** Read a TUM file (t x y z qx qy qz qw a line, or any layout with o->columns:
+ *  columns.h; times strictly increasing,
  *  quaternions unit to 1e-9, or to 1e-3 with normalize, then normalised),
  *  or with o->stamps a file of KITTI poses when its first line has 12
  *  numbers (the 3x4 [R t], rigid to 1e-9, or projected onto SE(3) from

@@ -2,8 +2,8 @@
  * its files; internal to the tool, every name prefixed ic_.
  *
  *   interp_opts.c    the options, parsed and checked into an ic_opts
- *   interp_columns.c --columns: keys in any column layout, a header read by name
- *   interp_read.c    the inputs: keys (mat or pose), --at, --times, --v0,
+ *   interp_read.c    the inputs: keys (mat or pose, or any layout through
+ *                    --columns: columns.h), --at, --times, --v0,
  *                    --velocities, read and checked into an ic_input
  *   interp_times.c   times relative to the first key, exactly; the sample
  *                    times of each kind (ic_sampler) and their stamps
@@ -83,9 +83,6 @@ int ic_parse_at(const char *s, ic_input *in);
 /* The keys' file: keys in --format, times increasing, enough for --scheme
  * (with no --time-unit, whole-number stamps of 12 digits or more refused). */
 int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in);
-/* --columns: the keys' file in any column layout, read into the items of a
- * pose file (t x y z qx qy qz qw) (interp_columns.c). */
-int ic_read_columns(const ic_opts *io, tio_items *out);
 /* The given times (--times FILE or --at), relative to the first key's. */
 int ic_read_times(const ic_opts *io, const ic_timebase *tb, ic_input *in);
 /* --v0 or --velocities FILE, as elements of the group's algebra. */

@@ -2,6 +2,7 @@
  * before anything is written (docs/tool.md): the keys (t, then a pose: 16
  * numbers with --format mat, 7 with --format pose), the given times (--at
  * t1,t2,... or --times FILE) and the velocities (--v0, --velocities FILE). */
+#include "columns.h"
 #include "interp_cmd.h"
 #include "stamps.h"
 
@@ -282,7 +283,8 @@ int ic_read_keys(const ic_opts *io, ic_timebase *tb, ic_input *in)
 {
     ga_scheme scheme = io->scheme;
     tio_read_opts ro = cli_input(io->o);
-    if (io->o->columns ? ic_read_columns(io, &in->in) : tio_read_first(io->o->in, &ro, &in->in))
+    if (io->o->columns ? col_read_poses("interp", io->o->in, io->o->columns, &ro, &in->in, NULL)
+                       : tio_read_first(io->o->in, &ro, &in->in))
         return -1;
     if (io->o->stamps && st_kitti_stamps(io->o->stamps, io->o->max_line, io->ns, !io->unit_given, &in->in))
         return -1;

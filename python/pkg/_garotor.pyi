@@ -61,7 +61,7 @@ class Path:
     def jerk(self, t: ArrayLike, *, frame: str | None = "body", extrapolate: str | None = None,
              out: _F | None = None) -> _F: ...
     def clip(self, t: ArrayLike) -> NDArray[Any]: ...  # the times of t in range, as given (1-d)
-    def append(self, t: float, pose: ArrayLike) -> None: ...
+    def append(self, t: float, pose: ArrayLike, *, warn_growth: bool = False) -> None: ...
     @property
     def times(self) -> NDArray[Any]: ...  # float64 seconds, or int64 with time_unit="ns"
     @property
@@ -355,6 +355,7 @@ class _UFuncs(types.ModuleType):
 ufunc: _UFuncs
 
 # ---- trajectories (docs/python.md, "Evaluating and fitting trajectories") ----
+# ref, est, poses: (n, 8) TUM rows or a tuple (times (n,), poses (n, 7));
 # evaluate's dict: pairs (int), ref_index and est_index (int64 arrays), scale
 # (float), transform (4, 4), and per error kind a dict of "errors" (array) and
 # the floats max, mean, median, min, rmse, sse, std
@@ -369,6 +370,7 @@ def evaluate(
     all_pairs: bool = False,
     angle: str = "deg",
     normalize: bool = False,
+    time_unit: str | None = None,
 ) -> dict[str, Any]: ...
 def ape(
     ref: ArrayLike,
@@ -381,6 +383,7 @@ def ape(
     all_pairs: bool = False,
     angle: str = "deg",
     normalize: bool = False,
+    time_unit: str | None = None,
 ) -> dict[str, Any]: ...
 def rpe(
     ref: ArrayLike,
@@ -393,7 +396,10 @@ def rpe(
     all_pairs: bool = False,
     angle: str = "deg",
     normalize: bool = False,
+    time_unit: str | None = None,
 ) -> dict[str, Any]: ...
 def align(ref: ArrayLike, est: ArrayLike, *, scale: bool = False) -> tuple[_F, float]: ...
-# fit's dict: fitted (n, 8), residuals (n, 2), controls (m, 8), spacing (float)
-def fit(poses: ArrayLike, spacing: float, *, smooth: float = 0.0, normalize: bool = False) -> dict[str, Any]: ...
+# fit's dict: fitted (n, 8), residuals (n, 2), controls (m, 8), spacing (float);
+# with time_unit="ns" also times (int64) and control_times
+def fit(poses: ArrayLike, spacing: float, *, smooth: float = 0.0, normalize: bool = False,
+        time_unit: str | None = None) -> dict[str, Any]: ...

@@ -5,6 +5,7 @@ poses and every derivative and frame, clip (--clip), normalize=
 its threshold), min_gap= and dedup= (--min-gap, --dedup). The tool runs on
 the text Python writes (repr), so both read the same decimals."""
 import os
+import pickle
 import shutil
 import subprocess
 import warnings
@@ -290,6 +291,10 @@ def test_dedup_equals_tool(tmp_path, ns, scheme):
     py_why = msg.split("invalid argument: ", 1)[1]
     assert py_why == tool_why.replace("(line 1)", "(index 0)").replace("or --min-gap 0", "or min_gap=0").replace(
         "--min-gap", "min_gap").replace("pass --dedup", "pass dedup=True")
+    # and by default, as the tool's default (min_gap 'auto')
+    with pytest.raises(garotor.Error) as e:
+        garotor.Path(tk, P, scheme=scheme, time_unit="ns" if ns else "s")
+    assert str(e.value) == msg
     # with dedup: the same keys, times and samples, bit for bit
     r = subprocess.run(tool + ["--samples", "9", "--dedup", "--with", "velocity"], capture_output=True, text=True,
                        check=True)
@@ -336,3 +341,82 @@ def test_dedup_pickles_and_errors(rng):
         garotor.Path(times, K, group="affine", min_gap="auto")
     with pytest.raises(ValueError, match="needs one key or at least 3, got 2 after dedup"):
         garotor.Path([0, 1e-6, 1, 1 + 1e-6], P[:4], scheme="smooth", min_gap=0.01, dedup=True)
+
+
+def test_append_checks_near_duplicates_as_the_tool(tmp_path):
+    """Path.append refuses a key closer to the last than the Path's min_gap
+    (by default 'auto': 1% of the median spacing of the keys the Path was
+    built with), in the tool's words for the same keys in a file; the Path
+    is unchanged and takes the next key as before"""
+    n = 8
+    times = np.arange(n) * 0.0333
+    xi = np.zeros((n + 1, 6))
+    xi[:, 3] = np.arange(n + 1) * 0.1
+    xi[:, 2] = 0.05 * np.arange(n + 1)
+    P = garotor.to_pose(garotor.exp(xi))
+    near = times[-1] + 0.0001
+    _, _, r = run_tool(["--format", "pose", "--samples", "3"], np.column_stack([np.r_[times, near], P]), tmp_path,
+                       check=False)
+    assert r.returncode == 2
+    tool_why = r.stderr.strip().split(": ", 2)[2]
+    p = garotor.Path(times, P[:n], capacity=n + 2)
+    with pytest.raises(garotor.Error) as e:
+        p.append(near, P[n])
+    msg = str(e.value)
+    assert msg.startswith("Path.append: invalid argument: ")
+    want = tool_why.replace("(line %d)" % n, "(index %d)" % (n - 1)).replace("--min-gap", "min_gap").split(": pass")[0]
+    assert msg.split("invalid argument: ", 1)[1] == want + (
+        ": append does not merge keys (dedup=True merges those given to Path): leave this one out, or build the "
+        "Path with min_gap=0 to keep such keys")
+    assert len(p.times) == n  # unchanged
+    # a pickled Path checks the same
+    q = pickle.loads(pickle.dumps(p))
+    with pytest.raises(garotor.Error, match="closer than min_gap"):
+        q.append(near, P[n])
+    # the next key as before: equal to the Path of all the keys, bit for bit
+    p.append(times[-1] + 0.0333, P[n])
+    full = garotor.Path(np.r_[times, times[-1] + 0.0333], P[: n + 1])
+    s = np.linspace(0, times[-1] + 0.0333, 17)
+    assert np.array_equal(p.sample(s), full.sample(s))
+    # min_gap=0 keeps such keys, as --min-gap 0; a number is the gap
+    z = garotor.Path(times, P[:n], capacity=n + 1, min_gap=0)
+    z.append(near, P[n])
+    g = garotor.Path(times, P[:n], capacity=n + 1, min_gap=0.00005)
+    g.append(near, P[n])
+    g = garotor.Path(times, P[:n], capacity=n + 1, min_gap=0.0002)
+    with pytest.raises(garotor.Error, match=r"closer than min_gap 0.0002 s: append does not merge keys"):
+        g.append(near, P[n])
+    # time_unit='ns': the gap in nanoseconds
+    tn = 1_700_000_000_000_000_000 + np.arange(n, dtype=np.int64) * 33_300_000
+    pn = garotor.Path(tn, P[:n], capacity=n + 1, time_unit="ns")
+    with pytest.raises(garotor.Error, match=r"is 1e\+05 ns after .* closer than min_gap 333000 ns \(1% of the median "
+                       r"spacing, 3.33e\+07 ns\)"):
+        pn.append(int(tn[-1]) + 100_000, P[n])
+
+
+def test_append_warn_growth():
+    """append(..., warn_growth=True): the growth rule over every key after
+    the append, the warning Path(...) gives on all those keys; without it
+    append does not measure the rule (a pass over every key)"""
+    times, P = growth_keys()
+    with pytest.warns(RuntimeWarning) as rec:
+        full_msg = None
+        garotor.Path(times, P, scheme="lihao2")
+    full_msg = str(rec[0].message)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        p = garotor.Path(times[:3], P[:3], scheme="lihao2", capacity=len(times))
+        for i in range(3, len(times)):
+            p.append(times[i], P[i])  # no measure, no warning
+    p = garotor.Path(times[:3], P[:3], scheme="lihao2", capacity=len(times))
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always")
+        for i in range(3, len(times)):
+            p.append(times[i], P[i], warn_growth=True)
+    assert rec and all(issubclass(w.category, RuntimeWarning) for w in rec)
+    assert str(rec[-1].message) == full_msg.replace("Path: ", "Path.append: ", 1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        q = garotor.Path(times[:3], P[:3], scheme="screw", capacity=len(times))
+        for i in range(3, len(times)):
+            q.append(times[i], P[i], warn_growth=True)  # screw keeps the rule: no warning

@@ -4,10 +4,12 @@ the same files, bit for bit (the tool prints the shortest decimal of each
 double, which reads back as the same double), and against evo's formulas
 recomputed in numpy by tests/eval_check.py.
 
-The stamps are epoch seconds with binary fractions (k/64 s plus multiples of
-2^-12 s), exact as doubles and written as their exact decimals, so that the
-module's t - t[0] and the tool's exact decimal difference are the same
-number."""
+The stamps are epoch seconds written as repr writes them (their shortest
+decimal, what a file written from the floats holds): the module reads each
+float stamp as that decimal, as Path does, and takes it relative to the first
+exactly, rounded once, as the tool does from the text. Files stamped in
+whole nanoseconds (19 digits) go through time_unit='ns', the times given
+as int64, against the tool's --time-unit ns."""
 import importlib.util
 import os
 import subprocess
@@ -42,9 +44,8 @@ def write_tum(path, rows):
     with open(path, "w") as f:
         f.write("# timestamp tx ty tz qx qy qz qw\n")
         for r in rows:
-            # the stamp's exact decimal (the tool reads stamps as exact decimals,
-            # and repr's shortest text is not the double's exact value)
-            f.write("%.12f " % r[0] + " ".join(repr(float(x)) for x in r[1:]) + "\n")
+            # repr's shortest decimal: what the module reads a float stamp as
+            f.write(" ".join(repr(float(x)) for x in r) + "\n")
 
 
 @pytest.fixture(scope="module")
@@ -224,3 +225,183 @@ def test_bad_input_named(files):
         garotor.fit(ref, 0.0)
     ok = garotor.evaluate(ref, np.c_[ref[:, :4], -ref[:, 4:]], normalize=True)
     assert ok["ape_rot"]["max"] == 0  # q and -q: the same rotation
+
+
+EXAMPLES = os.path.join(HERE, "..", "..", "docs", "examples")
+
+
+def test_decimal_stamps_equal_tool(tmp_path):
+    """docs/examples' files, stamped with four decimals (not exact in
+    binary): each float stamp is read as its shortest decimal, the text in
+    the file, so the report and the fit are the tool's bit for bit (before,
+    t - t[0] in doubles differed from the tool's exact difference)."""
+    ref, est = os.path.join(EXAMPLES, "eval_ref.tum"), os.path.join(EXAMPLES, "eval_est.tum")
+    for args, kw in [(["--align", "sim3"], {"align": "sim3"}),
+                     (["--offset", "0.0013", "--max-diff", "0.004"], {"offset": 0.0013, "max_diff": 0.004})]:
+        pairs, scale, blocks = parse_eval(run_tool(["eval", "--ref", ref, "--est", est, "--normalize"] + args))
+        got = garotor.evaluate(np.loadtxt(ref), np.loadtxt(est), normalize=True, **kw)
+        assert got["pairs"] == pairs and (scale is None or got["scale"] == scale)
+        for key, stats in blocks.items():
+            for name, v in stats.items():
+                assert got[key][name] == v, (args, key, name)
+    ctl = str(tmp_path / "ctl.tum")
+    rows = parse_rows(run_tool(["fit", "--in", est, "--normalize", "--spacing", "0.31", "--smooth", "0.01",
+                                "--controls", ctl]))
+    got = garotor.fit(np.loadtxt(est), 0.31, smooth=0.01, normalize=True)
+    assert np.array_equal(got["fitted"], rows[:, :8]) and np.array_equal(got["residuals"], rows[:, 8:])
+    # the knots t_0 + (j - 1) 0.31 as the tool writes them: exact decimals, read back
+    assert np.array_equal(got["controls"], parse_rows(open(ctl).read()))
+
+
+T0_NS = 1_700_000_000_000_000_000
+
+
+def write_ns(path, t, rows):
+    with open(path, "w") as f:
+        for ti, r in zip(t, rows):
+            f.write("%d " % ti + " ".join(repr(float(x)) for x in r) + "\n")
+
+
+@pytest.fixture(scope="module")
+def ns_files(tmp_path_factory):
+    """The fixture's motions stamped in whole nanoseconds at 1.7e18: 19
+    digits, the odd nanoseconds lost in a float64 (256 ns apart there)."""
+    d = tmp_path_factory.mktemp("traj_ns")
+    rng = np.random.default_rng(20261203)
+    n = 300
+    tr = T0_NS + np.arange(n, dtype=np.int64) * 15_625_000 + rng.integers(0, 999, n)  # 64 Hz, jittered
+    s = (tr - tr[0]) * 1e-9
+    pos = np.c_[np.cos(s), np.sin(0.7 * s), 0.1 * s]
+    rv = np.c_[0.1 * np.sin(s), 0.2 * np.cos(2 * s), s]
+    ref = np.c_[pos, Rot.from_rotvec(rv).as_quat()]
+    keep = np.sort(rng.choice(n, 250, replace=False))
+    Rg = Rot.from_rotvec([0.3, -0.2, 0.5])
+    pe = 1.3 * Rg.apply(pos[keep]) + [1.0, 2.0, 3.0] + rng.normal(scale=0.01, size=(len(keep), 3))
+    qe = (Rg * Rot.from_rotvec(rv[keep]) * Rot.from_rotvec(rng.normal(scale=0.02, size=(len(keep), 3)))).as_quat()
+    te = tr[keep] + rng.integers(-7_000_000, 7_000_001, len(keep))  # up to 7 ms off
+    tf = T0_NS + np.sort(rng.choice(10_000_000, 200, replace=False)).astype(np.int64) * 1000 + 7  # uneven, 10 s
+    sf = (tf - tf[0]) * 1e-9
+    pf = np.c_[np.cos(sf), np.sin(sf), 0.2 * sf] + rng.normal(scale=0.01, size=(len(tf), 3))
+    qf = (Rot.from_rotvec(np.c_[0.1 * sf, 0 * sf, 0.3 * sf]) * Rot.from_rotvec(rng.normal(scale=0.01, size=(len(tf), 3)))).as_quat()
+    paths = {}
+    for name, t, rows in [("ref", tr, ref), ("est", te, np.c_[pe, qe]), ("noisy", tf, np.c_[pf, qf])]:
+        paths[name] = str(d / (name + ".txt"))
+        write_ns(paths[name], t, rows)
+    return paths
+
+
+def load_ns(path):
+    """(int64 stamps, (n, 7) poses): the stamps exactly, as ROS gives them"""
+    return np.loadtxt(path, usecols=0, dtype=np.int64), np.loadtxt(path, usecols=range(1, 8))
+
+
+@pytest.mark.parametrize("args,kw", CASES)
+def test_evaluate_ns_equals_tool(ns_files, args, kw):
+    ref, est = ns_files["ref"], ns_files["est"]
+    pairs, scale, blocks = parse_eval(run_tool(["eval", "--ref", ref, "--est", est, "--time-unit", "ns"] + args))
+    got = garotor.evaluate(load_ns(ref), load_ns(est), time_unit="ns", **kw)
+    assert got["pairs"] == pairs
+    if kw.get("align") == "sim3":
+        assert got["scale"] == scale
+    for key, stats in blocks.items():
+        for name, v in stats.items():
+            assert got[key][name] == v, (key, name, got[key][name], v)
+    r = garotor.rpe(load_ns(ref), load_ns(est), time_unit="ns", **kw)
+    assert np.array_equal(r["rpe_rot"]["errors"], got["rpe_rot"]["errors"])
+
+
+def test_rows_and_pairs_agree(ns_files, files):
+    """an (n, 8) array and the tuple (times, poses) are read alike; an
+    integer (n, 8) array keeps its stamps exact too"""
+    (tr, R), (te, E) = load_ns(ns_files["ref"]), load_ns(ns_files["est"])
+    still = np.tile([0, 0, 0, 0, 0, 0, 1], (len(tr), 1))
+    a = garotor.ape(np.c_[tr, still], (te, E), time_unit="ns", offset=0.0025)
+    b = garotor.ape((tr, still.astype(float)), (te, E), time_unit="ns", offset=0.0025)
+    assert a["pairs"] > 200 and np.array_equal(a["ref_index"], b["ref_index"])
+    assert np.array_equal(a["ape_trans"]["errors"], b["ape_trans"]["errors"])
+    ref, est = np.loadtxt(files["ref"]), np.loadtxt(files["est"])
+    x = garotor.evaluate(ref, est, align="se3", offset=0.003)
+    y = garotor.evaluate((ref[:, 0], ref[:, 1:]), (est[:, 0], est[:, 1:]), align="se3", offset=0.003)
+    assert np.array_equal(x["est_index"], y["est_index"]) and x["rpe_rot"]["rmse"] == y["rpe_rot"]["rmse"]
+
+
+@pytest.mark.parametrize("spacing,smooth", [(0.5, 0.0), (0.31, 0.1), (1 / 3, 0.0)])
+def test_fit_ns_equals_tool(ns_files, tmp_path, spacing, smooth):
+    ctl = str(tmp_path / "controls.txt")
+    out = run_tool(["fit", "--in", ns_files["noisy"], "--spacing", repr(spacing), "--smooth", repr(smooth),
+                    "--controls", ctl, "--time-unit", "ns"])
+    rows = parse_rows(out)
+    t, P = load_ns(ns_files["noisy"])
+    got = garotor.fit((t, P), spacing, smooth=smooth, time_unit="ns")
+    assert np.array_equal(got["fitted"][:, 1:], rows[:, 1:8])
+    assert np.array_equal(got["residuals"], rows[:, 8:])
+    assert got["times"].dtype == np.int64 and np.array_equal(got["times"], t)
+    assert np.array_equal(got["times"], [int(line.split()[0]) for line in out.splitlines()])
+    assert np.array_equal(got["fitted"][:, 0], t.astype(float))
+    c = parse_rows(open(ctl).read())
+    assert np.array_equal(got["controls"], c)  # the knots' nearest doubles, as loadtxt reads the tool's
+    knots = [line.split()[0] for line in open(ctl)]
+    if spacing == 1 / 3:  # 333333333.33333331 ns: not whole, the nearest doubles
+        assert got["control_times"].dtype == np.float64 and np.array_equal(got["control_times"], c[:, 0])
+    else:
+        assert got["control_times"].dtype == np.int64
+        assert np.array_equal(got["control_times"], [int(k) for k in knots])
+
+
+def tool_error(args):
+    r = subprocess.run([_tool_path()] + args, capture_output=True, text=True)
+    assert r.returncode == 2 and r.stdout == ""
+    return r.stderr.strip()
+
+
+def test_unit_refused_as_the_tool_refuses(ns_files, tmp_path):
+    """without time_unit, a first stamp that is a whole number of 12 digits
+    or more is refused, in the tool's words with Python's spelling"""
+    ref, est = ns_files["ref"], ns_files["est"]
+    msg = tool_error(["eval", "--ref", ref, "--est", est])
+    want = msg.split(": ", 2)[2].replace("--time-unit ns", "time_unit='ns'").replace("--time-unit s", "time_unit='s'")
+    assert "looks like nanoseconds (a whole number of 19 digits)" in want
+    with pytest.raises(garotor.Error) as e:
+        garotor.evaluate(load_ns(ref), load_ns(est))
+    assert str(e.value) == "evaluate: ref: index 0: invalid argument: " + want
+    with pytest.raises(garotor.Error, match=r"fit: poses: index 0: .* looks like nanoseconds"):
+        garotor.fit(load_ns(ns_files["noisy"]), 0.5)
+    # a float64 array of the same stamps is refused alike (1.7e+18: 19 digits)
+    t, P = load_ns(ref)
+    with pytest.raises(garotor.Error, match=r"the time 1.70000000000000\d*e\+18 looks like nanoseconds"):
+        garotor.ape((t.astype(float), P), load_ns(est))
+    # epoch milliseconds: 13 digits
+    ms = str(tmp_path / "ms.txt")
+    write_ns(ms, t // 1_000_000, P)
+    msg = tool_error(["fit", "--in", ms, "--spacing", "0.5"])
+    want = msg.split(": ", 2)[2].replace("--time-unit takes s or ns", "time_unit takes 's' or 'ns'")
+    want = want.replace("--time-unit s", "time_unit='s'")
+    with pytest.raises(garotor.Error) as e:
+        garotor.fit((t // 1_000_000, P), 0.5)
+    assert str(e.value) == "fit: poses: index 0: invalid argument: " + want
+    # time_unit='s' says they are seconds, as --time-unit s does; the estimate's first stamp is checked too
+    garotor.ape((t // 1_000_000, P), (t // 1_000_000, P), time_unit="s")
+    with pytest.raises(garotor.Error, match="est: index 0: .*looks like milliseconds"):
+        garotor.ape((np.arange(len(t), dtype=float), P), (t // 1_000_000, P))
+    with pytest.raises(ValueError, match="time_unit must be 's' or 'ns', not 'ms'"):
+        garotor.evaluate(load_ns(ref), load_ns(est), time_unit="ms")
+    with pytest.raises(garotor.Error, match=r"est: index 2: .*est\[0\]\[2\] = 0.5 is not a whole number \(time_unit='ns'"):
+        garotor.evaluate(load_ns(ref), (np.array([1e18, 2e18, 0.5]), P[:3]), time_unit="ns")
+    with pytest.raises(ValueError, match=r"or a tuple \(times \(n,\), poses \(n, 7\)\), with n >= 4, not shapes \(3\) and \(4, 7\)"):
+        garotor.fit((t[:3], P[:4]), 0.5, time_unit="ns")
+
+
+def test_docs_session():
+    """the ```pycon session of docs/python.md's "Evaluating and fitting
+    trajectories", run as a doctest: it prints what it shows"""
+    import doctest
+    import re
+    text = open(os.path.join(HERE, "..", "..", "docs", "python.md")).read()
+    sec = text[text.index("## Evaluating and fitting trajectories"):]
+    sec = sec[:sec.index("\n## ", 10)]
+    blocks = re.findall(r"^```pycon\n(.*?)^```", sec, flags=re.S | re.M)
+    assert len(blocks) == 1
+    test = doctest.DocTestParser().get_doctest(blocks[0], {}, "python.md", "python.md", 0)
+    runner = doctest.DocTestRunner()
+    runner.run(test)
+    assert runner.summarize(verbose=False).failed == 0

@@ -1,9 +1,11 @@
-/* tools/interp_columns.c: --columns (docs/tool.md, "Columns"): keys in any
- * column layout, a CSV with a header row read by name (a `rostopic echo -p`
- * export: columns that are not numbers, such as a frame id, are skipped),
- * read into the items of a pose file (t x y z qx qy qz qw), so that the rest
- * of `garotor interp` reads them as --format pose. */
-#include "interp_cmd.h"
+/* tools/columns.c: see columns.h. Poses in any column layout, a CSV with a
+ * header row read by name (a `rostopic echo -p` export: columns that are not
+ * numbers, such as a frame id, are skipped), read into the items of a pose
+ * file (t x y z qx qy qz qw), so that `garotor interp` reads them as
+ * --format pose and `garotor eval` as TUM. */
+#include "columns.h"
+
+#include <garotor/garotor.h>
 
 #include <errno.h>
 #include <math.h>
@@ -12,7 +14,7 @@
 #include <string.h>
 #include <strings.h>
 
-enum { NROLE = 8, MAX_FIELDS = 4096 };
+enum { NROLE = COL_ROLES, MAX_FIELDS = 4096 };
 static const char *const role_name[NROLE] = {"t", "x", "y", "z", "qx", "qy", "qz", "qw"};
 
 /* The layout --columns gives: each role's column (from 0; -1 none yet) or
@@ -32,9 +34,9 @@ static int role_of(const char *w, size_t len)
     return -1;
 }
 
-static int spec_error(const char *what, const char *word, size_t len)
+static int spec_error(const char *cmd, const char *what, const char *word, size_t len)
 {
-    fprintf(stderr, "garotor interp: --columns: %s'%.*s'%s\n", what, (int)len, word,
+    fprintf(stderr, "garotor %s: --columns: %s'%.*s'%s\n", cmd, what, (int)len, word,
             *what ? ""
                   : " is not a column: name t x y z qx qy qz qw (or - to skip one) in the file's order, or "
                     "ROLE=COLUMN (a number from 1, or a name in the header row), or header");
@@ -42,7 +44,7 @@ static int spec_error(const char *what, const char *word, size_t len)
 }
 
 /* --columns LIST into cs (its names point into buf, a copy of LIST). */
-static int parse_spec(char *buf, col_spec *cs)
+static int parse_spec(const char *cmd, char *buf, col_spec *cs)
 {
     memset(cs, 0, sizeof *cs);
     for (int r = 0; r < NROLE; r++) cs->col[r] = -1;
@@ -58,9 +60,9 @@ static int parse_spec(char *buf, col_spec *cs)
             int r = role_of(w, (size_t)(eq - w));
             const char *c = eq + 1;
             if (r < 0 || !*c)
-                return spec_error("", w, len);
+                return spec_error(cmd, "", w, len);
             if (cs->col[r] >= 0 || cs->want[r])
-                return spec_error("a role given twice: ", w, (size_t)(eq - w));
+                return spec_error(cmd, "a role given twice: ", w, (size_t)(eq - w));
             char *end;
             errno = 0;
             long k = strtol(c, &end, 10);
@@ -74,9 +76,9 @@ static int parse_spec(char *buf, col_spec *cs)
         } else {
             int r = strcmp(w, "-") == 0 ? -2 : role_of(w, len);
             if (r == -1)
-                return spec_error("", w, len);
+                return spec_error(cmd, "", w, len);
             if (r >= 0 && cs->col[r] >= 0)
-                return spec_error("a role given twice: ", w, len);
+                return spec_error(cmd, "a role given twice: ", w, len);
             if (r >= 0)
                 cs->col[r] = pos;
             pos++;
@@ -87,13 +89,16 @@ static int parse_spec(char *buf, col_spec *cs)
         w += len + 1;
     }
     if (cs->positional && (cs->pairs || cs->by_name)) {
-        fprintf(stderr, "garotor interp: --columns: either the columns in order (t,x,...) or ROLE=COLUMN "
-                        "pairs and header, not both\n");
+        fprintf(
+            stderr,
+            "garotor %s: --columns: either the columns in order (t,x,...) or ROLE=COLUMN pairs and header, "
+            "not both\n",
+            cmd);
         return -1;
     }
     for (int r = 0; r < NROLE && !cs->by_name; r++)
         if (cs->col[r] < 0 && !cs->want[r]) {
-            fprintf(stderr, "garotor interp: --columns gives no column for %s\n", role_name[r]);
+            fprintf(stderr, "garotor %s: --columns gives no column for %s\n", cmd, role_name[r]);
             return -1;
         }
     return 0;
@@ -195,7 +200,9 @@ static int looks_like(const char *name, int r)
 static int resolve(const tio_lines_text *L, char *hdr, col_spec *cs)
 {
     static char *f[MAX_FIELDS];
-    if (hdr[0] == '#' && strchr(hdr, ',')) /* "#timestamp,..." (EuRoC): the '#' is no part of the name */
+    /* "#timestamp,..." (EuRoC), "# timestamp tx ty ..." (TUM): the '#' is no
+       part of a name (a field of its own, it would shift every column by one) */
+    if (hdr[0] == '#')
         hdr++;
     long nf = fields(L, 0, hdr, f);
     if (nf < 0)
@@ -233,26 +240,45 @@ static int resolve(const tio_lines_text *L, char *hdr, col_spec *cs)
     return 0;
 }
 
-int ic_read_columns(const ic_opts *io, tio_items *out)
+int col_check_list(const char *cmd, const char *list)
 {
-    const cli_opts *o = io->o;
-    char *buf = malloc(strlen(o->columns) + 1);
+    char *buf = malloc(strlen(list) + 1);
+    col_spec cs;
+    if (!buf) {
+        fprintf(stderr, "garotor: out of memory\n");
+        return -1;
+    }
+    strcpy(buf, list);
+    int rc = parse_spec(cmd, buf, &cs);
+    free(buf);
+    return rc;
+}
+
+static int oom(void)
+{
+    fprintf(stderr, "garotor: out of memory\n");
+    return -1;
+}
+
+int col_read_poses(const char *cmd, const char *path, const char *list, const tio_read_opts *ro,
+                   tio_items *out, long col[COL_ROLES])
+{
+    char *buf = malloc(strlen(list) + 1);
     tio_lines_text L = {0};
     tio_items it = {0};
     static char *f[MAX_FIELDS];
     col_spec cs;
     int rc = -1;
     if (!buf)
-        return ic_oom();
-    strcpy(buf, o->columns);
-    tio_read_opts ro = cli_input(o);
-    if (parse_spec(buf, &cs) || tio_read_lines(o->in, &ro, &L))
+        return oom();
+    strcpy(buf, list);
+    if (parse_spec(cmd, buf, &cs) || tio_read_lines(path, ro, &L))
         goto done;
     it.name = L.name;
     size_t first = 0;
-    if (cs.header || o->header) { /* the first line names the columns */
+    if (cs.header || ro->header) { /* the first line names the columns */
         if (L.n == 0) {
-            fprintf(stderr, "garotor: %s: no header row (--columns %s reads one)\n", L.name, o->columns);
+            fprintf(stderr, "garotor: %s: no header row (--columns %s reads one)\n", L.name, list);
             goto done;
         }
         if (cs.header && resolve(&L, L.text[0], &cs))
@@ -263,7 +289,7 @@ int ic_read_columns(const ic_opts *io, tio_items *out)
     it.item = malloc((L.n ? L.n : 1) * sizeof *it.item);
     it.first = calloc(L.n ? L.n : 1, sizeof *it.first);
     if (!it.value || !it.item || !it.first) {
-        ic_oom();
+        oom();
         goto done;
     }
     for (size_t i = first; i < L.n; i++) {
@@ -296,20 +322,22 @@ int ic_read_columns(const ic_opts *io, tio_items *out)
                 tio_error(&it, k,
                           "column %ld (%s) is %s: beyond 1, not a unit quaternion's; is that column the "
                           "quaternion's? (--columns %s)",
-                          c + 1, role_name[r], f[c], o->columns);
+                          c + 1, role_name[r], f[c], list);
                 goto done;
             }
             it.value[k * NROLE + (size_t)r] = v;
         }
         size_t len = strlen(f[cs.col[0]]);
         if (!(it.first[k] = malloc(len + 1))) {
-            ic_oom();
+            oom();
             goto done;
         }
         memcpy(it.first[k], f[cs.col[0]], len + 1);
     }
     *out = it;
     memset(&it, 0, sizeof it);
+    if (col)
+        for (int r = 0; r < NROLE; r++) col[r] = cs.col[r];
     rc = 0;
 done:
     if (it.first)
