@@ -397,9 +397,10 @@ void gip_dec_prep(const ga_path *p, size_t seg, double *c)
     c[15] = gip_seg_len(p, seg);
 }
 
-int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
+/* the rotation q of gip_dec_at at tau = u h */
+static inline void dec_rot(const double *c, double tau, double *q)
 {
-    double tau = u * c[15], a = c[8] * tau, a2 = a * a, cs, sn, q[4], pos[3];
+    double a = c[8] * tau, a2 = a * a, cs, sn;
     if (a2 <= (GA_PI / 4) * (GA_PI / 4)) { /* ga_rotor_exp's series: no trig call */
         double y2 = a2 * a2, y4 = y2 * y2, y8 = y4 * y4;
         cs = ga__series_estrin9(GA__SERIES_F0, a2, y2, y4, y8);
@@ -413,6 +414,12 @@ int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
         sn = sin(a);
     }
     for (int k = 0; k < 4; ++k) q[k] = cs * c[k] + sn * c[4 + k];
+}
+
+int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
+{
+    double tau = u * c[15], q[4], pos[3];
+    dec_rot(c, tau, q);
     for (int k = 0; k < 3; ++k) pos[k] = c[12 + k] * tau + c[9 + k];
     p->group->from_qt(q, pos, out);
     const double *o = out;
@@ -422,12 +429,56 @@ int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
     return z == 0.0 ? GA_OK : GA_ERR_DOMAIN;
 }
 
+/* DECOUPLED's derivatives from its segment's constants: the rotation turns
+ * at the constant rate w = th/h about a fixed axis, so the body angular
+ * velocity is w and its derivatives are 0; the position moves on its chord,
+ * p' = m and p'' = p''' = 0 in world axes, so in the body (d/dt R^T y =
+ * R^T y' - w x R^T y) the velocity is v = R^T m, the acceleration -w x v and
+ * the jerk w x (w x v), R the pose's rotation (gip_dec_at). That is what
+ * gip_dec_eval's general forms give for this curve (J_r(r) w = w where r is
+ * parallel to w, N(r, w) = 0), without their rounding and their cost. */
+static void dec_linear_derivs(const ga_path *p, size_t seg, double u, double *v, double *a, double *j,
+                              double *pw)
+{
+    const double *w = dseg(p, seg);
+    double c[GIP_DEC_CONST], q[4], lv[3], al[3];
+    gip_dec_prep(p, seg, c);
+    if (pw) {
+        memcpy(pw, c + 12, 3 * sizeof(double));
+        memset(pw + 3, 0, 6 * sizeof(double));
+    }
+    if (!v && !a && !j)
+        return;
+    dec_rot(c, u * c[15], q);
+    qrot_inv(q, c + 12, lv);
+    if (v) {
+        memcpy(v, w, 3 * sizeof(double));
+        memcpy(v + 3, lv, sizeof lv);
+    }
+    cross3(w, lv, al);
+    for (int k = 0; k < 3; ++k) al[k] = -al[k];
+    if (a) {
+        memset(a, 0, 3 * sizeof(double));
+        memcpy(a + 3, al, sizeof al);
+    }
+    if (j) {
+        memset(j, 0, 3 * sizeof(double));
+        cross3(w, al, j + 3);
+        for (int k = 3; k < 6; ++k) j[k] = -j[k];
+    }
+}
+
 /* The pose on segment seg at u, and (each may be NULL) the body velocity,
  * acceleration and jerk per unit t, and pw: the position's derivatives p',
- * p'', p''' in world axes (9 doubles). */
+ * p'', p''' in world axes (9 doubles). DECOUPLED's derivatives (out NULL)
+ * come from its segment's constants (dec_linear_derivs). */
 int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a, double *j,
                  double *pw)
 {
+    if (p->scheme == GA_SCHEME_DECOUPLED && !out) {
+        dec_linear_derivs(p, seg, u, v, a, j, pw);
+        return GA_OK;
+    }
     const double *rc = dseg(p, seg), *pc = rc + 9, *q0 = dkey(p, seg);
     double tau = u * gip_seg_len(p, seg), r[3], rd[3], rdd[3], pos[3], pd[3], pdd[3], pddd[3], qe[4], q[4];
     for (int k = 0; k < 3; ++k) {
