@@ -99,15 +99,21 @@ extern const size_t n_benches;
 
 /* ---- cases_path.c: the C2 build, a pose against an acceleration --------------- */
 
-/* ctx: &path_keys_2000 or &path_keys_1e5; a call is one build */
+/* ctx: &path_keys_2000 or &path_keys_1e5; a call is one build, a batch at
+   least 1e5 keys' worth (returned as the calls done) */
 size_t run_c2_build(const void *ctx, size_t n);
 /* ctx: &path_scheme[s]; a call is one ga_path_eval, one ga_path_acceleration */
 size_t run_eval(const void *ctx, size_t n);
 size_t run_accel(const void *ctx, size_t n);
 extern const size_t path_keys_2000, path_keys_1e5;
 /* the batches a case is timed in: 0 every batch, else at most this many (the
-   c2 builds: one call of 1e5 keys takes a second) */
+   c2 builds: a batch of either builds 1e5 keys, about a second) */
 int bench_max_batches(const bench *b);
+/* 1 where a case is timed on the process's CPU clock, not the monotonic one
+   (the c2 builds: a batch of a second on a shared machine is descheduled in
+   proportion to the load of that second, which the ratio of the two builds
+   would measure) */
+int bench_cpu_clock(const bench *b);
 extern const int path_scheme[GA_SCHEME_COUNT];
 
 /* ---- inputs.c ---------------------------------------------------------------- */

@@ -462,10 +462,10 @@ bench benches[] = {
     {"sample_euler_lihao3_se3", "lihao3 path on 4x4 matrices, per pose: Euler, 1 step", run_sample,
      &ctx_se3_lihao3_euler, 0, NULL, 0, 0, 0},
     /* paths (cases_path.c): the C2 build, a pose against an acceleration */
-    {"c2_build_2000", "ga_path_init: c2 through 2000 keys on rotors, per build", run_c2_build,
+    {"c2_build_2000", "ga_path_init: c2 through 2000 keys on rotors, per build (CPU)", run_c2_build,
      &path_keys_2000, 0, NULL, 0, 0, 0},
-    {"c2_build_1e5", "ga_path_init: c2 through 1e5 keys on rotors, per build", run_c2_build, &path_keys_1e5,
-     0, NULL, 0, 0, 0},
+    {"c2_build_1e5", "ga_path_init: c2 through 1e5 keys on rotors, per build (CPU)", run_c2_build,
+     &path_keys_1e5, 0, NULL, 0, 0, 0},
 #define EVAL_ACCEL(s, name)                                                                                  \
     {"eval_" name,                                                                                           \
      "ga_path_eval on a " name " path (8 keys, rotors), per pose",                                           \

@@ -8,7 +8,8 @@
  *
  * Method. Every figure is the median, over repeated timed batches, of the
  * nanoseconds per call (clock_gettime(CLOCK_MONOTONIC) around a batch, divided
- * by the calls in it). Each benchmark is first calibrated so that one batch
+ * by the calls in it; the c2 builds on CLOCK_PROCESS_CPUTIME_ID: bench.h,
+ * bench_cpu_clock). Each benchmark is first calibrated so that one batch
  * takes about BATCH_MS; then the batches of all benchmarks are interleaved
  * (round r runs batch r of every benchmark in turn), so that a slow phase of a
  * noisy machine hits every figure alike and the ratios between them hold.

@@ -131,8 +131,8 @@ ga_status ga_path_velocity(const ga_path *p, double t, double *v)
  * segment seg, m = 2 or 3; v (may be NULL: not needed), a, and j where m
  * reaches it; pw (decoupled only, may be NULL): the position's world
  * derivatives per unit t. *a_t: set where a is per unit t already (the
- * curves through exp, whose derivatives are per unit t: no round trip
- * through h^2), else cleared. */
+ * curves through exp and DECOUPLED's, whose derivatives are per unit t: no
+ * round trip through h^2), else cleared. */
 static int derivs_u(const ga_path *p, size_t seg, double u, int m, double *v, double *a, double *j,
                     double *pw, int *a_t)
 {
@@ -146,6 +146,7 @@ static int derivs_u(const ga_path *p, size_t seg, double u, int m, double *v, do
     if (gip_is_decoupled(p->scheme)) {
         if ((st = gip_dec_eval(p, seg, u, NULL, v, a, m >= 3 ? j : NULL, pw)))
             return st;
+        *a_t = p->scheme == GA_SCHEME_DECOUPLED;
     } else if (nf == 0) {
         double x0[GIP_MAXD], x1[GIP_MAXD], x2[GIP_MAXD], x3[GIP_MAXD];
         const double *xs[4] = {x0, x1, x2, x3};

@@ -46,60 +46,66 @@ static void cross3(const double *a, const double *b, double *o)
  * RotationSpline, _angular_acceleration_nonlinear_term, has the same).
  * Below th = 1 (ki: 1/2) by their Taylor series, where the closed forms
  * cancel: 2 - 2 cos th - th sin th is th^4/12 formed from terms of size 2
- * (scipy switches at 1e-4, where this loses up to 5e-3 relative). */
-static void so3_coef(double th, double *k0, double *k1, double *n1, double *n2, double *ki)
+ * (scipy switches at 1e-4, where this loses up to 5e-3 relative).
+ * so3_coef has k0, k1, n1, n2, formed once for the several products at one
+ * r (a pose's velocity and acceleration take three); so3_ki has ki. */
+typedef struct {
+    double k0, k1, n1, n2;
+} so3_k;
+static so3_k so3_coef(double th)
 {
     double x = th * th;
+    so3_k k;
     if (th < 1.0) {
         /* k0 = f_2, k1 = f_3, n1, n2: rows of series.h; 14 (n1, n2: 13)
            terms leave under 1/28! at x = 1 */
-        *k0 = ga__series(GA__SERIES_F2, 14, x);
-        *k1 = ga__series(GA__SERIES_F3, 14, x);
-        *n1 = ga__series(GA__SERIES_N1, 13, x);
-        *n2 = ga__series(GA__SERIES_N2, 13, x);
+        k.k0 = ga__series(GA__SERIES_F2, 14, x);
+        k.k1 = ga__series(GA__SERIES_F3, 14, x);
+        k.n1 = ga__series(GA__SERIES_N1, 13, x);
+        k.n2 = ga__series(GA__SERIES_N2, 13, x);
     } else {
         double s = sin(th), co = cos(th);
-        *k0 = (1.0 - co) / x;
-        *k1 = (th - s) / (x * th);
-        *n1 = (2.0 - 2.0 * co - th * s) / (x * x);
-        *n2 = (3.0 * s - 2.0 * th - th * co) / (x * x * th);
+        k.k0 = (1.0 - co) / x;
+        k.k1 = (th - s) / (x * th);
+        k.n1 = (2.0 - 2.0 * co - th * s) / (x * x);
+        k.n2 = (3.0 * s - 2.0 * th - th * co) / (x * x * th);
     }
-    if (th < 0.5) {
-        /* the Bernoulli series of ki (row COT of series.h) to x^5: the next
-           term is below 1e-17 of the first */
-        *ki = ga__series(GA__SERIES_COT, 6, x);
-    } else {
-        *ki = (1.0 - 0.5 * th / tan(0.5 * th)) / x;
-    }
+    return k;
 }
-
-/* out = J_r(r) y */
-static void jr_apply(const double *r, const double *y, double *out)
+static double so3_ki(double th)
 {
-    double k0, k1, n1, n2, ki, c[3], cc[3];
-    so3_coef(sqrt(dot3(r, r)), &k0, &k1, &n1, &n2, &ki);
+    double x = th * th;
+    /* the Bernoulli series of ki (row COT of series.h) to x^5 below 1/2: the
+       next term is below 1e-17 of the first */
+    return th < 0.5 ? ga__series(GA__SERIES_COT, 6, x) : (1.0 - 0.5 * th / tan(0.5 * th)) / x;
+}
+static so3_k so3_coef_of(const double *r) { return so3_coef(sqrt(dot3(r, r))); }
+
+/* out = J_r(r) y, k = so3_coef_of(r) */
+static void jr_apply(const so3_k *k, const double *r, const double *y, double *out)
+{
+    double c[3], cc[3];
     cross3(r, y, c);
     cross3(r, c, cc);
-    for (int k = 0; k < 3; ++k) out[k] = y[k] - k0 * c[k] + k1 * cc[k];
+    for (int i = 0; i < 3; ++i) out[i] = y[i] - k->k0 * c[i] + k->k1 * cc[i];
 }
 /* out = J_r(r)^-1 y */
 static void jrinv_apply(const double *r, const double *y, double *out)
 {
-    double k0, k1, n1, n2, ki, c[3], cc[3];
-    so3_coef(sqrt(dot3(r, r)), &k0, &k1, &n1, &n2, &ki);
+    double ki = so3_ki(sqrt(dot3(r, r))), c[3], cc[3];
     cross3(r, y, c);
     cross3(r, c, cc);
-    for (int k = 0; k < 3; ++k) out[k] = y[k] + 0.5 * c[k] + ki * cc[k];
+    for (int i = 0; i < 3; ++i) out[i] = y[i] + 0.5 * c[i] + ki * cc[i];
 }
-/* out = d/dt(J_r(r(t))) r'(t), the angular acceleration's term beyond J_r r'' */
-static void jr_nonlin(const double *r, const double *rd, double *out)
+/* out = d/dt(J_r(r(t))) r'(t), the angular acceleration's term beyond J_r r'',
+   k = so3_coef_of(r) */
+static void jr_nonlin(const so3_k *k, const double *r, const double *rd, double *out)
 {
-    double k0, k1, n1, n2, ki, cp[3], ccp[3], dccp[3], dp = dot3(r, rd);
-    so3_coef(sqrt(dot3(r, r)), &k0, &k1, &n1, &n2, &ki);
+    double cp[3], ccp[3], dccp[3], dp = dot3(r, rd);
     cross3(r, rd, cp);
     cross3(r, cp, ccp);
     cross3(rd, cp, dccp);
-    for (int k = 0; k < 3; ++k) out[k] = dp * (n1 * cp[k] + n2 * ccp[k]) + k1 * dccp[k];
+    for (int i = 0; i < 3; ++i) out[i] = dp * (k->n1 * cp[i] + k->n2 * ccp[i]) + k->k1 * dccp[i];
 }
 
 /* Hamilton product and the unit quaternion's exp and principal log (angle in
@@ -160,12 +166,13 @@ static double *dscr(const ga_path *p, size_t i) { return p->dec + p->cap * DK + 
 /* m = the 3 x 3 matrix (row-major) of J_r(r) (inv = 0) or of J_r(r)^-1 (inv = 1) */
 static void m3_of_jr(const double *r, int inv, double *m)
 {
+    so3_k k = so3_coef_of(r);
     for (int j = 0; j < 3; ++j) {
         double e[3] = {j == 0, j == 1, j == 2}, c[3];
         if (inv)
             jrinv_apply(r, e, c);
         else
-            jr_apply(r, e, c);
+            jr_apply(&k, r, e, c);
         for (int i = 0; i < 3; ++i) m[3 * i + j] = c[i];
     }
 }
@@ -298,7 +305,8 @@ static int dec_jr(const ga_path *p, const double *th, int inv, double *m)
 static int dec_nonlin(const ga_path *p, const double *th, const double *y, double *o)
 {
     (void)p;
-    jr_nonlin(th, y, o);
+    so3_k k = so3_coef_of(th);
+    jr_nonlin(&k, th, y, o);
     return GA_OK;
 }
 
@@ -389,9 +397,10 @@ void gip_dec_prep(const ga_path *p, size_t seg, double *c)
     c[15] = gip_seg_len(p, seg);
 }
 
-int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
+/* the rotation q of gip_dec_at at tau = u h */
+static inline void dec_rot(const double *c, double tau, double *q)
 {
-    double tau = u * c[15], a = c[8] * tau, a2 = a * a, cs, sn, q[4], pos[3];
+    double a = c[8] * tau, a2 = a * a, cs, sn;
     if (a2 <= (GA_PI / 4) * (GA_PI / 4)) { /* ga_rotor_exp's series: no trig call */
         double y2 = a2 * a2, y4 = y2 * y2, y8 = y4 * y4;
         cs = ga__series_estrin9(GA__SERIES_F0, a2, y2, y4, y8);
@@ -405,6 +414,12 @@ int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
         sn = sin(a);
     }
     for (int k = 0; k < 4; ++k) q[k] = cs * c[k] + sn * c[4 + k];
+}
+
+int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
+{
+    double tau = u * c[15], q[4], pos[3];
+    dec_rot(c, tau, q);
     for (int k = 0; k < 3; ++k) pos[k] = c[12 + k] * tau + c[9 + k];
     p->group->from_qt(q, pos, out);
     const double *o = out;
@@ -414,12 +429,56 @@ int gip_dec_at(const ga_path *p, const double *c, double u, void *out)
     return z == 0.0 ? GA_OK : GA_ERR_DOMAIN;
 }
 
+/* DECOUPLED's derivatives from its segment's constants: the rotation turns
+ * at the constant rate w = th/h about a fixed axis, so the body angular
+ * velocity is w and its derivatives are 0; the position moves on its chord,
+ * p' = m and p'' = p''' = 0 in world axes, so in the body (d/dt R^T y =
+ * R^T y' - w x R^T y) the velocity is v = R^T m, the acceleration -w x v and
+ * the jerk w x (w x v), R the pose's rotation (gip_dec_at). That is what
+ * gip_dec_eval's general forms give for this curve (J_r(r) w = w where r is
+ * parallel to w, N(r, w) = 0), without their rounding and their cost. */
+static void dec_linear_derivs(const ga_path *p, size_t seg, double u, double *v, double *a, double *j,
+                              double *pw)
+{
+    const double *w = dseg(p, seg);
+    double c[GIP_DEC_CONST], q[4], lv[3], al[3];
+    gip_dec_prep(p, seg, c);
+    if (pw) {
+        memcpy(pw, c + 12, 3 * sizeof(double));
+        memset(pw + 3, 0, 6 * sizeof(double));
+    }
+    if (!v && !a && !j)
+        return;
+    dec_rot(c, u * c[15], q);
+    qrot_inv(q, c + 12, lv);
+    if (v) {
+        memcpy(v, w, 3 * sizeof(double));
+        memcpy(v + 3, lv, sizeof lv);
+    }
+    cross3(w, lv, al);
+    for (int k = 0; k < 3; ++k) al[k] = -al[k];
+    if (a) {
+        memset(a, 0, 3 * sizeof(double));
+        memcpy(a + 3, al, sizeof al);
+    }
+    if (j) {
+        memset(j, 0, 3 * sizeof(double));
+        cross3(w, al, j + 3);
+        for (int k = 3; k < 6; ++k) j[k] = -j[k];
+    }
+}
+
 /* The pose on segment seg at u, and (each may be NULL) the body velocity,
  * acceleration and jerk per unit t, and pw: the position's derivatives p',
- * p'', p''' in world axes (9 doubles). */
+ * p'', p''' in world axes (9 doubles). DECOUPLED's derivatives (out NULL)
+ * come from its segment's constants (dec_linear_derivs). */
 int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, double *a, double *j,
                  double *pw)
 {
+    if (p->scheme == GA_SCHEME_DECOUPLED && !out) {
+        dec_linear_derivs(p, seg, u, v, a, j, pw);
+        return GA_OK;
+    }
     const double *rc = dseg(p, seg), *pc = rc + 9, *q0 = dkey(p, seg);
     double tau = u * gip_seg_len(p, seg), r[3], rd[3], rdd[3], pos[3], pd[3], pdd[3], pddd[3], qe[4], q[4];
     for (int k = 0; k < 3; ++k) {
@@ -448,14 +507,15 @@ int gip_dec_eval(const ga_path *p, size_t seg, double u, void *out, double *v, d
         /* w = J_r(r) r', v = R^T p'; w' = J_r(r) r'' + N(r, r'),
            d/dt (R^T p') = R^T p'' - w x R^T p' */
         double w[3], lv[3], wd[3], nl[3], la[3], c[3], al[3];
-        jr_apply(r, rd, w);
+        so3_k k = so3_coef_of(r);
+        jr_apply(&k, r, rd, w);
         qrot_inv(q, pd, lv);
         if (v) {
             memcpy(v, w, sizeof w);
             memcpy(v + 3, lv, sizeof lv);
         }
-        jr_apply(r, rdd, wd);
-        jr_nonlin(r, rd, nl);
+        jr_apply(&k, r, rdd, wd);
+        jr_nonlin(&k, r, rd, nl);
         qrot_inv(q, pdd, la);
         cross3(w, lv, c);
         for (int k = 0; k < 3; ++k) {
