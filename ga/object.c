@@ -38,6 +38,27 @@ static int flat_kind(ga_mv part, ga_mv e)
     return zero ? FLAT : within ? UNSURE : ROUND;
 }
 
+/* Whether a flat is at infinity: its weight (a plane's normal m, a line's
+   direction u, a flat point's e45 part), of norm len, known to dw, s the
+   largest coefficient. Strict: EMPTY where the weight is 0 or within
+   GAO_INF_KAPPA u of s (a flat more than about 4e12 of its units from the
+   origin: the residue that ga_mv_meet_rel, computed in floating point,
+   leaves where its meet is at infinity); GA_ERR_PRECISION where it is within
+   its own uncertainty dw of 0 beyond that (a finite flat and one at
+   infinity alike to the input's accuracy); else a finite flat however far
+   (a line and a plane meeting 3e9 out: the flat point's bounds say how
+   well). The rough reading (a local origin for the meet) calls a weight
+   within GA_POINT_TOL of s empty. */
+enum { FINITE = 1 };
+static int at_infinity(double len, double dw, double s, int strict)
+{
+    if (!strict)
+        return len <= GA_POINT_TOL * s ? GA_OBJECT_EMPTY : FINITE;
+    if (len <= GAO_INF_KAPPA * U * s)
+        return GA_OBJECT_EMPTY;
+    return dw < len ? FINITE : GA_ERR_PRECISION;
+}
+
 /* A dual vector v (sphere or plane), each coefficient known to e, into o with
    its bounds (first order, the factor f covering the second where the weight
    is known to 1/4 of itself or better). */
@@ -57,12 +78,15 @@ static int read_dual(ga_mv v, ga_mv e, int strict, ga_object *o)
         kind = fabs(w) <= 64.0 * U * s ? FLAT : ROUND; /* a rough reading */
     }
     if (kind == FLAT) { /* v.n = 0: a plane w (m + d n) */
-        double len = norm3(m);
-        if (!(len > GA_POINT_TOL * s)) {
+        double len = norm3(m), dm = norm3(em);
+        int at_inf = at_infinity(len, dm, s, strict);
+        if (at_inf < 0)
+            return at_inf;
+        if (at_inf == GA_OBJECT_EMPTY) {
             o->kind = GA_OBJECT_EMPTY; /* n: the plane at infinity */
             return GA_OK;
         }
-        double d = 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len, dm = norm3(em);
+        double d = 0.5 * (v.c[GA_BLADE_E4] + v.c[GA_BLADE_E5]) / len;
         o->kind = GA_OBJECT_PLANE;
         o->direction = ga__v3_scale(m, 1.0 / len);
         o->centre = ga__v3_scale(o->direction, d);
@@ -104,18 +128,43 @@ static ga_mv carrier_flat(ga_mv X, ga_mv e, ga_mv *eF)
     return ga_mv_op(X, n);
 }
 
+/* A line w (u e45 + (p ^ u) ^ n) whose weight |u| is below GA_POINT_TOL of
+   its moment (more than 1e9 from the origin), where ga_line_params, which
+   takes that for no direction, does not read it: the same formulas, the
+   unit direction and p = u x (p x u); NOTBLADE where the moment (b23, -b13,
+   b12) has a part along u beyond GA_POINT_TOL of X (no line has one). */
+static int far_line(ga_mv X, ga_vec3 u, double s, ga_vec3 *direction, ga_vec3 *closest)
+{
+    double w = norm3(u);
+    u = ga__v3_scale(u, 1.0 / w);
+    ga_vec3 M = ga__v3(0.5 * (X.c[GA_BLADE_E234] + X.c[GA_BLADE_E235]),
+                       -0.5 * (X.c[GA_BLADE_E134] + X.c[GA_BLADE_E135]),
+                       0.5 * (X.c[GA_BLADE_E124] + X.c[GA_BLADE_E125]));
+    if (!(fabs(ga__v3_dot(M, u)) <= GA_POINT_TOL * s))
+        return GA_ERR_NOTBLADE;
+    *direction = u;
+    *closest = ga__v3_cross(u, ga__v3_scale(M, 1.0 / w));
+    return GA_OK;
+}
+
 /* A flat blade X of grade k (2: flat point, 3: line), known to e, into o. */
-static int read_flat(ga_mv X, ga_mv e, int k, double s, ga_object *o)
+static int read_flat(ga_mv X, ga_mv e, int k, double s, int strict, ga_object *o)
 {
     if (k == 3) { /* w (u e45 + (p ^ u) ^ n), or a line at infinity */
         ga_vec3 u = ga__v3(X.c[GA_BLADE_E145], X.c[GA_BLADE_E245], X.c[GA_BLADE_E345]);
         ga_vec3 eu = ga__v3(e.c[GA_BLADE_E145], e.c[GA_BLADE_E245], e.c[GA_BLADE_E345]);
-        if (norm3(u) <= GA_POINT_TOL * s) {
+        int at_inf = at_infinity(norm3(u), norm3(eu), s, strict);
+        if (at_inf < 0)
+            return at_inf;
+        if (at_inf == GA_OBJECT_EMPTY) {
             o->kind = GA_OBJECT_EMPTY;
             return GA_OK;
         }
         o->kind = GA_OBJECT_LINE;
-        if (ga_line_params(X, &o->direction, &o->centre) != GA_OK)
+        if (norm3(u) > GA_POINT_TOL * s) {
+            if (ga_line_params(X, &o->direction, &o->centre) != GA_OK)
+                return GA_ERR_NOTBLADE;
+        } else if (far_line(X, u, s, &o->direction, &o->centre) != GA_OK)
             return GA_ERR_NOTBLADE;
         /* the moment's coefficients e_ij4, e_ij5 over the weight |u| */
         double eb = sqrt(e.c[GA_BLADE_E124] * e.c[GA_BLADE_E124] + e.c[GA_BLADE_E134] * e.c[GA_BLADE_E134] +
@@ -129,7 +178,10 @@ static int read_flat(ga_mv X, ga_mv e, int k, double s, ga_object *o)
     double w = -X.c[GA_BLADE_E45], dw = e.c[GA_BLADE_E45];
     ga_vec3 p = ga__v3(X.c[GA_BLADE_E14], X.c[GA_BLADE_E24], X.c[GA_BLADE_E34]);
     ga_vec3 ep = ga__v3(e.c[GA_BLADE_E14], e.c[GA_BLADE_E24], e.c[GA_BLADE_E34]);
-    if (fabs(w) <= GA_POINT_TOL * s) {
+    int at_inf = at_infinity(fabs(w), dw, s, strict);
+    if (at_inf < 0)
+        return at_inf;
+    if (at_inf == GA_OBJECT_EMPTY) {
         o->kind = GA_OBJECT_EMPTY; /* a direction ^ n: at infinity */
         o->direction = p;
         return GA_OK;
@@ -175,7 +227,7 @@ static int read_round(ga_mv X, ga_mv e, ga_mv F, ga_mv eF, int k, int strict, ga
         return strict ? GA_ERR_PRECISION : GA_ERR_NOTBLADE;
     ga_mv ef2 = gao_uncertainty(F, GAO_KAPPA);
     for (int i = 0; i < 32; i++) ef2.c[i] = fmax(ef2.c[i], eF.c[i]);
-    if ((st = k == 2 ? read_flat(F, ef2, 3, ga_mv_maxabs(F), &flat)
+    if ((st = k == 2 ? read_flat(F, ef2, 3, ga_mv_maxabs(F), strict, &flat)
                      : read_dual(ga_mv_grade(ga_mv_undual(F), 1), ga_mv_grade(ga_mv_undual(ef2), 1), 1,
                                  &flat)) != GA_OK)
         return st == GA_ERR_PRECISION && !strict ? GA_ERR_NOTBLADE : st;
@@ -263,7 +315,7 @@ static int classify(ga_mv X, int strict, ga_object *o)
             kind = ga_mv_maxabs(F) <= 64.0 * U * s ? FLAT : ROUND;
         if (kind == UNSURE)
             return GA_ERR_PRECISION;
-        st = kind == FLAT ? read_flat(X, e, k, s, &r) : read_round_local(X, e, F, eF, k, strict, &r);
+        st = kind == FLAT ? read_flat(X, e, k, s, strict, &r) : read_round_local(X, e, F, eF, k, strict, &r);
     }
     if (st != GA_OK)
         return st;

@@ -40,8 +40,9 @@ static PyMethodDef module_methods[] = {
     {"up", FN(gpy_up), KW, "up(x, *, out=None): points (..., 3) -> conformal points (..., 32)."},
     {"down", FN(gpy_down), KW, "down(X, *, out=None): conformal points (..., 32) -> points (..., 3)."},
     {"object_mean", (PyCFunction)(void (*)(void))gpy_object_mean, METH_VARARGS | METH_KEYWORDS,
-     "object_mean(objects, weights=None): the weighted mean of Multivector objects of one kind "
-     "(ga_object_mean; weights None: equal)."},
+     "object_mean(objects, weights=None, *, read=False): the weighted mean of Multivector objects of one "
+     "kind (ga_object_mean; weights None: equal); read=True: (mean, Object), the Object with the bounds "
+     "the mean is known to (ga_object_mean_read)."},
     {"fit_sphere", gpy_fit_sphere, METH_O,
      "fit_sphere(points): the least-squares sphere through (n, 3) points, n >= 4: (centre, radius)."},
     {"fit_plane", gpy_fit_plane, METH_O,

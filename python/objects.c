@@ -454,15 +454,18 @@ PyObject *gpy_MV_interp(PyObject *self, PyObject *args)
     return st == GA_OK ? gpy_mv_result("Multivector.interp", r) : gpy_status_error("Multivector.interp", st);
 }
 
-/* object_mean(objects, weights=None): ga_object_mean over a sequence of
- * Multivectors; an error names the first bad element (its index) */
+/* object_mean(objects, weights=None, *, read=False): ga_object_mean over a
+ * sequence of Multivectors, or with read=True ga_object_mean_read: the mean
+ * and its read-back with the bounds the mean is known to, (Multivector,
+ * Object); an error names the first bad element (its index) */
 PyObject *gpy_object_mean(PyObject *self, PyObject *args, PyObject *kw)
 {
     (void)self;
     static const char *what = "object_mean";
-    static char *kwlist[] = {"objects", "weights", NULL};
+    static char *kwlist[] = {"objects", "weights", "read", NULL};
     PyObject *objs, *wobj = Py_None;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|O:object_mean", kwlist, &objs, &wobj))
+    int read = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|O$p:object_mean", kwlist, &objs, &wobj, &read))
         return NULL;
     PyObject *seq = PySequence_Fast(objs, "object_mean: objects must be a sequence of Multivectors");
     if (!seq)
@@ -511,9 +514,16 @@ PyObject *gpy_object_mean(PyObject *self, PyObject *args, PyObject *kw)
                 goto done;
             }
     }
-    int st = ga_object_mean(A, w, (size_t)n, &r);
+    ga_object ob;
+    int st = read ? ga_object_mean_read(A, w, (size_t)n, &r, &ob) : ga_object_mean(A, w, (size_t)n, &r);
     if (st == GA_OK) {
         result = gpy_mv_result(what, r);
+        if (result && read) {
+            PyObject *o = object_new(&ob);
+            PyObject *pair = o ? PyTuple_Pack(2, result, o) : NULL;
+            Py_XDECREF(o);
+            Py_SETREF(result, pair);
+        }
         goto done;
     }
     /* name the object the status is about, where one is */

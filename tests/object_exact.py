@@ -99,7 +99,10 @@ def dist(a, b):
     return sqrt(sum((dec(x) - dec(y)) ** 2 for x, y in zip(a, b)))
 
 
-TOL = Q(1, 10**9)  # GA_POINT_TOL: a flat whose weight is below it of the largest coefficient is at infinity
+# a flat whose weight is 0 or within 2048 u of its largest coefficient is at
+# infinity (GAO_INF_KAPPA u, ga/internal/object.h: above ga_mv_meet_rel's
+# residues, below the weight of any flat within 4e12 of the origin)
+TOL = 2048 * U
 
 
 def read_dual(v):

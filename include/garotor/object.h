@@ -41,6 +41,13 @@
  *     far out, whose radius that leaves unknown).
  *   - Real, tangent and imaginary use the same bound: tangent when |r^2| is
  *     within max(GA_OBJECT_TANGENT_TOL L^2, r2_err).
+ *   - A flat is empty (at infinity) where its weight (a plane's normal, a
+ *     line's direction, a flat point's e45 part) is 0, or within 2048 u of
+ *     its largest coefficient (a flat more than about 4e12 of its units from
+ *     the origin: what ga_mv_meet_rel leaves of a weight that is 0); refused
+ *     with GA_ERR_PRECISION where the weight is within its uncertainty of 0
+ *     beyond that; otherwise a finite flat however far out, with its bounds
+ *     (a line meeting a plane 3e9 from the origin is that flat point).
  *   - The functions below that state no bound of their own (ga_point_project,
  *     _reject, _distance, ga_object_angle, ga_rotor_between) promise
  *     GA_OBJECT_TOL: they refuse with GA_ERR_PRECISION an object whose err

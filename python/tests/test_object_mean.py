@@ -23,6 +23,16 @@ class CMV(ctypes.Structure):
     _fields_ = [("c", ctypes.c_double * 32)]
 
 
+class CObject(ctypes.Structure):  # ga_object (object.h)
+    _fields_ = [("kind", ctypes.c_int), ("reality", ctypes.c_int), ("centre", ctypes.c_double * 3),
+                ("direction", ctypes.c_double * 3), ("r2", ctypes.c_double), ("err", ctypes.c_double),
+                ("r2_err", ctypes.c_double), ("angle_err", ctypes.c_double)]
+
+
+KINDS = ["empty", "flat point", "line", "plane", "point pair", "circle", "sphere"]
+REALITIES = ["real", "tangent", "imaginary"]
+
+
 @pytest.fixture(scope="module")
 def C():
     path = os.environ.get("GAROTOR_LIB")
@@ -35,6 +45,8 @@ def C():
     lib.ga_object_interp.restype = ctypes.c_int
     lib.ga_object_mean.argtypes = [P(CMV), P(ctypes.c_double), ctypes.c_size_t, P(CMV)]
     lib.ga_object_mean.restype = ctypes.c_int
+    lib.ga_object_mean_read.argtypes = [P(CMV), P(ctypes.c_double), ctypes.c_size_t, P(CMV), P(CObject)]
+    lib.ga_object_mean_read.restype = ctypes.c_int
     return lib
 
 
@@ -94,6 +106,34 @@ def test_mean_bit_for_bit(C, kind):
         p = rng.permutation(n)
         assert same(np.asarray(garotor.object_mean([A[i] for i in p], w[p])),
                     np.asarray(garotor.object_mean(A, w)))
+
+
+@pytest.mark.parametrize("kind", ["sphere", "circle", "line"])
+def test_mean_read_bit_for_bit(C, kind):
+    """object_mean(..., read=True): ga_object_mean_read's mean and Object, every field bit for bit"""
+    rng = np.random.default_rng(26)
+    for n in range(1, 8):
+        A = objects(rng, kind, n)
+        w = rng.uniform(0.1, 10, n)
+        arr = (CMV * n)(*[cmv(a) for a in A])
+        for weights in (w, None):
+            out, ob = CMV(), CObject()
+            wp = None if weights is None else (ctypes.c_double * n)(*weights)
+            assert C.ga_object_mean_read(arr, wp, n, ctypes.byref(out), ctypes.byref(ob)) == 0
+            got, o = garotor.object_mean(A, weights, read=True)
+            assert isinstance(o, garotor.Object) and o.kind == kind
+            assert same(np.asarray(got), out.c[:])
+            assert same(np.asarray(got), np.asarray(garotor.object_mean(A, weights)))
+            assert o.kind == KINDS[ob.kind] and o.reality == REALITIES[ob.reality]
+            assert same(o.centre, ob.centre[:]) and same(o.direction, ob.direction[:])
+            assert same([o.r2, o.err, o.r2_err, o.angle_err], [ob.r2, ob.err, ob.r2_err, ob.angle_err])
+    # the same errors as without read, and read must be a truth value
+    S = [sphere([0, 0, 0], 1), sphere([1, 0, 0], 2)]
+    with pytest.raises(garotor.Error, match=r"weights\[1\] is negative") as e:
+        garotor.object_mean(S, [1, -1], read=True)
+    assert e.value.status == GA_ERR_ARG and e.value.index == (1,)
+    with pytest.raises(TypeError):
+        garotor.object_mean(S, None, True)  # read is keyword-only
 
 
 def same_or_status(st, out, call):
