@@ -7,6 +7,7 @@
 #include <garotor/object.h>
 #include <math.h>
 
+#include "internal/blade.h"
 #include "internal/object.h"
 #include "internal/vec3.h"
 
@@ -116,6 +117,114 @@ static int is_round(ga_mv X)
     return gao_classify(X, 0, &o) == GA_OK && o.kind >= GA_OBJECT_POINTPAIR;
 }
 
+/* ---- the meet in the whole space, and its decision "special position" -------
+   W = A* ^ B* (A* = A I^-1) is the meet of A and B as given, exact to its
+   rounding (gao_op_exact). In special position it is 0 in exact
+   arithmetic, and in floating point a residue of the inputs' rounding: it
+   is taken as 0 where every coefficient is within what the inputs'
+   uncertainties eA, eB (absolute, coefficient by coefficient) can make of
+   it, to first order,
+
+     |W_k| <= (|eA*| |B*| + |A*| |eB*|)_k + u |W_k| + 4 u^2 (|A*| |B*|)_k,
+
+   |.| the abs products of internal/object.h (every term with its sign
+   positive), the last two terms W's own rounding. The bound is linear in
+   e, of the size of the inputs' rounding: a meet above it is a real one
+   and answers (tests/test_meet_special.c: a sphere and itself moved by
+   2^13 u L, L = |c| + r, and a line and a plane moved 2^10 u L off it, at
+   1 to 1e8 from the origin; the threshold measured there is some 500 u L
+   and 130 u L).
+
+   The uncertainty of an input, kappa = GAO_MEET_KAPPA = 32 (a construction
+   of a few dozen roundings), is the largest of:
+   - e_world: kappa u times the largest coefficient of each class (object.h's
+     model, gao_uncertainty): the rounding of X's own coefficients. It does
+     not bound what a construction leaves where a coefficient is a
+     cancellation of larger terms: a sphere through (or near) the origin
+     has e4, e5 parts w (|c|^2 - r^2 -+ 1) / 2, near 0, while the
+     constructors of conformal.h build it about one of its points and
+     translate it there exactly, which carries their rounding (u of the
+     local coefficients) out to u |c| and u |c|^2 of them: measured
+     against the construction carried exactly, the spheres of radius 13 k
+     through exact points 1e6 from the origin that pass near it are off by
+     2.8e3 u of that class's largest coefficient, where e_world allows 32 u
+     (and ga_mv_meet left 159 times its threshold of such a sphere met with
+     itself built from other points). So, for a round:
+   - e_local (meet_uncertainty): X held about its centre c in units of
+     lambda, a power of two near its radius r (at least 1), where its
+     coefficients are the object's own terms, not their sums (w/2 in the
+     weight and w r^2 / 2 in its n part, both w r / 2 in units of r):
+     kappa u times the largest coefficient of each class there, moved back
+     to the world in null coordinates (n parts times lambda, nbar parts over
+     lambda, then the magnitudes of the translation by c,
+     gao_abs_translate_null). Where no coefficient cancels (|c| far from r)
+     it is e_world to a small factor (both u w |c|^2 in the e4, e5 parts).
+     The centre and radius are ga_object_from_mv's (strict): a round whose
+     weight is within its rounding of 0 (a small sphere 1e8 out, a plane as
+     stored) has none, and keeps e_world, as do flats (a plane or line keeps
+     its coefficients to a few u of its classes: object.h, "Accuracy").
+   - the defect (with_defect): e scaled up to what X itself shows of its
+     error (below): a construction that magnifies the rounding (a circle
+     through two points 1/16 of its radius apart) leaves a point pair,
+     circle or line further from a blade than e allows, and e is scaled by
+     that factor.
+   Not seen by any of these: a flat built from points far from the origin
+   whose coefficients cancel to a flat near it (a plane through points 1e6
+   out that passes 2.6e3 from the origin keeps its distance to u 1e6, not
+   u 2.6e3); its meets may still leave a residue above the threshold. */
+
+/* e_world and e_local of X (above): e_world where X is no round with a
+   known centre */
+static ga_mv meet_uncertainty(ga_mv X)
+{
+    ga_mv e = gao_uncertainty(X, GAO_MEET_KAPPA);
+    ga_object o;
+    if (gao_classify(X, 1, &o) != GA_OK || o.kind < GA_OBJECT_POINTPAIR)
+        return e;
+    ga_vec3 c = o.centre;
+    double size = sqrt(fabs(o.r2)), lam = size >= 1.0 && isfinite(size) ? ldexp(1.0, ilogb(size)) : 1.0;
+    ga_mv Y = gao_scale_n_nbar(gao_translate(X, ga__v3_scale(c, -1.0)), 1.0 / lam, lam);
+    ga_mv eN = gao_unc_to_null(gao_uncertainty(Y, GAO_MEET_KAPPA));
+    for (int i = 0; i < 32; i++)
+        if (gabl_pair_e4(i)) {
+            eN.c[i] *= lam;     /* the n part */
+            eN.c[i + 1] /= lam; /* the nbar part */
+        }
+    ga_mv el = gao_unc_from_null(gao_abs_translate_null(eN, c), 1.0, 1.0);
+    if (!ga_mv_isfinite(el))
+        return e;
+    for (int i = 0; i < 32; i++) e.c[i] = fmax(e.c[i], el.c[i]);
+    return e;
+}
+
+/* e, the uncertainty of X, scaled up to what X's own defect shows: a point
+   pair or flat point (grade 2), or the dual bivector of a circle or line
+   (grade 3), is a blade exactly when b ^ b = 0, and b ^ b = 2 b ^ db to
+   first order for b off a blade by db. Where a coefficient of b ^ b
+   (exact, rounded once) exceeds 2 (|b| |eb|) there, X is further from the
+   object it stands for than e says (a circle through two points 1/16 of
+   its radius apart: its construction magnifies the rounding), and e is
+   scaled by the largest such ratio. Spheres and planes (vectors dualised)
+   are blades whatever their rounding: they show nothing. */
+static ga_mv with_defect(ga_mv X, ga_mv e)
+{
+    int k = 0;
+    for (int i = 0; i < 32; i++)
+        if (X.c[i] != 0.0)
+            k = gabl_popcount5(gabl_mask[i]);
+    if (k != 2 && k != 3)
+        return e;
+    ga_mv b = ga_mv_grade(k == 2 ? X : ga_mv_dual(X), 2), eb = gao_abs(k == 2 ? e : ga_mv_dual(e));
+    ga_mv d = gao_op_exact(b, b), bound = ga_mv_scale(gao_abs_gp(gao_abs(b), eb), 2.0);
+    double f = 1.0;
+    for (int i = 0; i < 32; i++)
+        if (fabs(d.c[i]) > bound.c[i])
+            f = fmax(f, fabs(d.c[i]) / bound.c[i]);
+    /* (1 + 2^-20: the bound is summed again in meet_whole, in another
+       order; X ^ X must come out within it) */
+    return f > 1.0 && isfinite(f) ? ga_mv_scale(e, f * (1.0 + 0x1p-20)) : e;
+}
+
 /* ((A I^-1) ^ (B I^-1)) I, A and B direct */
 static ga_mv meet_whole(ga_mv A, ga_mv B)
 {
@@ -123,13 +232,10 @@ static ga_mv meet_whole(ga_mv A, ga_mv B)
        wedge is exact, rounded once (gao_op_exact): the meet of the objects
        as given, whatever their distance from the origin. */
     ga_mv da = ga_mv_dual(A), db = ga_mv_dual(B), W = gao_op_exact(da, db);
-    /* Special position: W is 0 to the accuracy of the inputs. Its
-       uncertainty: the inputs' (object.h's model, GAO_MEET_KAPPA) times the
-       other's terms, and W's own rounding (first order). Where every
-       coefficient is within it, the meet is 0. */
+    /* Special position: W is 0 to the accuracy of the inputs (above) */
     ga_mv ada = gao_abs(da), adb = gao_abs(db);
-    ga_mv ea = gao_abs(ga_mv_dual(gao_uncertainty(A, GAO_MEET_KAPPA)));
-    ga_mv eb = gao_abs(ga_mv_dual(gao_uncertainty(B, GAO_MEET_KAPPA)));
+    ga_mv ea = gao_abs(ga_mv_dual(with_defect(A, meet_uncertainty(A))));
+    ga_mv eb = gao_abs(ga_mv_dual(with_defect(B, meet_uncertainty(B))));
     ga_mv eW = ga_mv_add(gao_abs_gp(ea, adb), gao_abs_gp(ada, eb));
     eW = ga_mv_add(eW, ga_mv_add(ga_mv_scale(gao_abs(W), U), ga_mv_scale(gao_abs_gp(ada, adb), 4.0 * U * U)));
     int zero = ga_mv_isfinite(eW);

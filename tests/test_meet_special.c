@@ -10,7 +10,9 @@
  * itself and with the same sphere built from other points on it; a circle
  * with the same circle through three other of its points; a line lying in a
  * plane; two lines through a common point; coincident planes (built from
- * other points, and a dual plane with a multiple of it).
+ * other points, and a dual plane with a multiple of it). The other side of
+ * the threshold: the same sphere moved by 2^13 u L, and a line and a plane
+ * moved 2^10 u L off it, are in general position, and their meet answers.
  *
  * General position: rounds of radius around 20 at centres around 20 from the
  * origin (the size of clifford's random test objects): the meet of a sphere
@@ -32,6 +34,17 @@ static void zero_meet(const char *what, double D, ga_mv A, ga_mv B)
     snprintf(name, sizeof name, "D=%-5g %s: meet 0 (GA_ERR_SINGULAR)", D, what);
     ga_mv M = ga_mv_meet(A, B);
     tk_add_status(tk_get(name), ga_object_from_mv(M, &ob), GA_ERR_SINGULAR);
+}
+
+/* the meet of A and B, in general position by a little more than their
+   rounding, must answer: not 0, so not GA_ERR_SINGULAR */
+static void real_meet(const char *what, double D, ga_mv A, ga_mv B)
+{
+    ga_object ob = {0};
+    char name[96];
+    snprintf(name, sizeof name, "D=%-5g %s: meet answers", D, what);
+    ga_mv M = ga_mv_meet(A, B);
+    tk_add_bool(tk_get(name), tk_mv_maxabs(M) > 0.0 && ga_object_from_mv(M, &ob) != GA_ERR_SINGULAR);
 }
 
 static const double dists[] = {1, 1e2, 1e4, 1e6, 1e8};
@@ -67,6 +80,19 @@ static void scene_exact(tk_rng *t, double D)
     zero_meet("exact: plane and the dual plane z = Z", D, P, ga_plane_dual(iv(0, 0, 1), Z));
     zero_meet("exact: line lying in a plane (other points)", D, ga_line_from_points(q[3], q[5]), P);
     zero_meet("exact: circle lying on its sphere", D, C1, ga_sphere_dual(iv(X, Y, Z), 5 * k));
+    /* Both sides of the threshold: the same pairs moved apart by a little
+       more than the inputs' rounding are in general position, and their
+       meet answers (not 0: ga_object_from_mv does not say GA_ERR_SINGULAR).
+       The sphere's centre moved by 2^13 u L (L = |c| + r, 9.1e-13 L), the
+       plane by 2^10 u L off the line (1.1e-13 L): ga_mv_meet's threshold for
+       these (meet.c) is some 500 u L and 130 u L, measured over the seeds. */
+    double L = sqrt(X * X + Y * Y + Z * Z) + 13 * k, Lc = sqrt(X * X + Y * Y + Z * Z) + 5 * k;
+    ga_vec3 dir = tk_unit(t);
+    ga_vec3 moved = {X + 0x1p13 * DBL_EPSILON / 2 * L * dir.x, Y + 0x1p13 * DBL_EPSILON / 2 * L * dir.y,
+                     Z + 0x1p13 * DBL_EPSILON / 2 * L * dir.z};
+    real_meet("exact: sphere and itself moved 2^13 u L", D, S1, ga_sphere_dual(moved, 13 * k));
+    real_meet("exact: line and the plane moved 2^10 u L off it", D, ga_line_from_points(q[3], q[5]),
+              ga_plane_dual(iv(0, 0, 1), Z + 0x1p10 * DBL_EPSILON / 2 * Lc));
 }
 
 static void section_special(void)
@@ -230,6 +256,19 @@ static void section_rel(void)
                      GA_OK);
 }
 
+/* F(x + a) = y + (|y|^2 / 2) n - nbar / 2, y = x + a, in binary128 (y
+   exact, |y|^2 to 2^-113), rounded once: the reference of the translation
+   below, which ga_point_up(x + a) is not (x + a rounded, then squared and
+   summed: some 5 u of |y|^2 of its own, beside the 16 u allowed) */
+static ga_mv point_up_exact(ga_vec3 x, ga_vec3 a)
+{
+    __float128 y[3] = {(__float128)x.x + a.x, (__float128)x.y + a.y, (__float128)x.z + a.z};
+    __float128 h = (y[0] * y[0] + y[1] * y[1] + y[2] * y[2]) / 2;
+    ga_mv P = ga_mv_vector((double)y[0], (double)y[1], (double)y[2], (double)(h - (__float128)0.5),
+                           (double)(h + (__float128)0.5));
+    return P;
+}
+
 /* ga_rotor_apply_mv: a point moved far, against the point action; a rotor
    scaled by 2 scales R X ~R by 4 (the translation found over |q|^2); a
    rotation alone and a translation alone against their closed forms. */
@@ -265,7 +304,7 @@ static void section_apply(void)
         tk_add(&sc, tk_mv_maxabs(ga_mv_sub(B, ga_mv_scale(A, 4))) / tk_mv_maxabs(B));
         ga_mv P = ga_point_up(x), Pq = ga_rotor_apply_mv(q, P), Pw = ga_point_up(ga_rotor_apply(q, x));
         tk_add(&rot, tk_mv_maxabs(ga_mv_sub(Pq, Pw)) / tk_mv_maxabs(Pw));
-        ga_mv Pt = ga_rotor_apply_mv(ga_rotor_translation(a), P), Pa = ga_point_up(add(x, a));
+        ga_mv Pt = ga_rotor_apply_mv(ga_rotor_translation(a), P), Pa = point_up_exact(x, a);
         tk_add(&tr, tk_mv_maxabs(ga_mv_sub(Pt, Pa)) / tk_mv_maxabs(Pa));
     }
     tk_end(&far);

@@ -187,12 +187,17 @@ GA_API GA_NODISCARD ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, g
  *  position: their grades sum to less than 5 after dualising, or they share
  *  a flat: a sphere and itself, a line in a plane, two lines through a
  *  point, coincident planes), decided to the accuracy of the inputs: every
- *  coefficient of the outer product within what moving each input
- *  coefficient by 32 u of its class ("Accuracy" above; the roundings of a
- *  construction of a few dozen operations) and the product's rounding can
- *  make of it. So ga_object_from_mv of the meet says GA_ERR_SINGULAR there,
- *  never an object read from a rounding residue; ga_mv_meet_rel gives their
- *  meet. */
+ *  coefficient of the outer product within what the inputs' uncertainty
+ *  (first order) and the product's rounding can make of it. An input is
+ *  taken as known to 32 u (the roundings of a construction of a few dozen
+ *  operations) of the largest coefficient of each class ("Accuracy" above)
+ *  and, for a round with a centre c and radius r that ga_object_from_mv
+ *  reads, of each class of it held about c in units of a power of two near
+ *  max(1, r), moved back (the terms a constructor rounds, which a sphere
+ *  through the origin sums to near 0); a point pair, circle or line
+ *  further from a blade than that has it scaled to what its defect shows.
+ *  So ga_object_from_mv of the meet says GA_ERR_SINGULAR there, never an
+ *  object read from a rounding residue; ga_mv_meet_rel gives their meet. */
 GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 
 /** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
