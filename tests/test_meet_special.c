@@ -257,16 +257,33 @@ static void section_rel(void)
 }
 
 /* F(x + a) = y + (|y|^2 / 2) n - nbar / 2, y = x + a, in binary128 (y
-   exact, |y|^2 to 2^-113), rounded once: the reference of the translation
-   below, which ga_point_up(x + a) is not (x + a rounded, then squared and
-   summed: some 5 u of |y|^2 of its own, beside the 16 u allowed) */
-static ga_mv point_up_exact(ga_vec3 x, ga_vec3 a)
+   exact, |y|^2 to 2^-113): the point the translation below is compared to
+   (ga_point_up(x + a) is not: x + a rounded, then squared and summed) */
+static void point_up_exact(ga_vec3 x, ga_vec3 a, __float128 f[5])
 {
     __float128 y[3] = {(__float128)x.x + a.x, (__float128)x.y + a.y, (__float128)x.z + a.z};
     __float128 h = (y[0] * y[0] + y[1] * y[1] + y[2] * y[2]) / 2;
-    ga_mv P = ga_mv_vector((double)y[0], (double)y[1], (double)y[2], (double)(h - (__float128)0.5),
-                           (double)(h + (__float128)0.5));
-    return P;
+    f[0] = y[0], f[1] = y[1], f[2] = y[2], f[3] = h - (__float128)0.5, f[4] = h + (__float128)0.5;
+}
+
+/* T_a P ~T_a of the vector P (coefficients p of e1, e2, e3, e4, e5) in
+   binary128 (products of doubles exact, each sum to 2^-113 of its terms,
+   far below the u checked against):
+   with P = v + alpha n + beta nbar (alpha = (p4 + p5) / 2, beta =
+   (p4 - p5) / 2; n = e4 + e5, nbar = e4 - e5), T_a v ~T_a = v + (v.a) n,
+   T_a n ~T_a = n, T_a nbar ~T_a = nbar - 2 a - |a|^2 n, so the result is
+   v - 2 beta a + (alpha + v.a - beta |a|^2) n + beta nbar. */
+static void translate_exact(const double p[5], ga_vec3 a, __float128 o[5])
+{
+    __float128 A[3] = {a.x, a.y, a.z}, al = ((__float128)p[3] + p[4]) / 2, be = ((__float128)p[3] - p[4]) / 2;
+    __float128 va = 0, aa = 0;
+    for (int k = 0; k < 3; k++) {
+        va += (__float128)p[k] * A[k];
+        aa += A[k] * A[k];
+        o[k] = p[k] - 2 * be * A[k];
+    }
+    __float128 m = al + va - be * aa;
+    o[3] = m + be, o[4] = m - be;
 }
 
 /* ga_rotor_apply_mv: a point moved far, against the point action; a rotor
@@ -285,7 +302,8 @@ static void section_apply(void)
                  "apply_mv of a point, translations up to 1e6, against apply: 32 u (|x|_1 + |t|_inf)", 0),
              sc = tk_begin("apply_mv(2 R, X) = 4 apply_mv(R, X) (rel to max)", 8 * DBL_EPSILON),
              rot = tk_begin("apply_mv of a rotation: F(q x ~q) (rel to max)", 8 * DBL_EPSILON),
-             tr = tk_begin("apply_mv of a translation: F(x + a) (rel to max)", 8 * DBL_EPSILON);
+             tr = tk_begin("apply_mv of a translation: T_a P ~T_a rounded once, each coefficient", 0),
+             tf = tk_begin("apply_mv of a translation: F(x + a), P's own rounding carried (derived)", 0);
     for (int i = 0; i < 300; i++) {
         ga_vec3 x = tk_scale(tk_unit(&t), tk_range(&t, 0, 3)),
                 a = tk_scale(tk_unit(&t), tk_loguni(&t, 1, 1e6));
@@ -304,13 +322,49 @@ static void section_apply(void)
         tk_add(&sc, tk_mv_maxabs(ga_mv_sub(B, ga_mv_scale(A, 4))) / tk_mv_maxabs(B));
         ga_mv P = ga_point_up(x), Pq = ga_rotor_apply_mv(q, P), Pw = ga_point_up(ga_rotor_apply(q, x));
         tk_add(&rot, tk_mv_maxabs(ga_mv_sub(Pq, Pw)) / tk_mv_maxabs(Pw));
-        ga_mv Pt = ga_rotor_apply_mv(ga_rotor_translation(a), P), Pa = point_up_exact(x, a);
-        tk_add(&tr, tk_mv_maxabs(ga_mv_sub(Pt, Pa)) / tk_mv_maxabs(Pa));
+        /* rotor.h: the translation carried exactly and rounded once, so
+           each coefficient of Pt within u |c| of the exact c = T_a P ~T_a
+           (P as rounded by ga_point_up), beside 2^-100 of the terms' sum S
+           (the double-double sums of gao_translate), every other
+           coefficient exactly 0 (err/tol reaches 1 on ties, which round
+           by half an ulp exactly, u |c| at c = 2^e). Against F(x + a), P's own rounding comes
+           on top, carried exactly by T_a: ga_point_up rounds |x|^2 (3
+           roundings, gamma_3 |x|^2) and then e4 = (y2 - 1) / 2 and e5 =
+           (y2 + 1) / 2 each once more, so |delta4|, |delta5| <= u (2 |x|^2
+           + 1/2) + O(u^2) <= d = u (2 |x|^2 + 1) (the e_i are x_i exactly).
+           delta = alpha n + beta nbar, |alpha|, |beta| <= d, goes to
+           -2 beta a + (alpha - beta |a|^2) n + beta nbar: within 2 d |a_i|
+           at e_i, d (|a|^2 + 2) at e4 and e5. The nbar part is what the
+           check against F(x + a) alone at 16 u of max |F(x + a)| had not
+           counted: it grows as |a|^2, and max |F(x + a)| is small where
+           a nearly cancels x (16.1 u at seed 8, 18.0 u at seed 122, |x| =
+           2.6, |a| = 2.6, max |F(x + a)| 1.1 and 0.84; the rounding of
+           apply_mv itself was 0.47 u and 0.09 u of max there). */
+        ga_mv Pt = ga_rotor_apply_mv(ga_rotor_translation(a), P);
+        const int bl[5] = {GA_BLADE_E1, GA_BLADE_E2, GA_BLADE_E3, GA_BLADE_E4, GA_BLADE_E5};
+        double p[5], u = DBL_EPSILON / 2, x2 = x.x * x.x + x.y * x.y + x.z * x.z,
+                     aa = a.x * a.x + a.y * a.y + a.z * a.z;
+        double ai[5] = {fabs(a.x), fabs(a.y), fabs(a.z), 0, 0};
+        for (int k = 0; k < 5; k++) p[k] = P.c[bl[k]];
+        __float128 o[5], f[5];
+        translate_exact(p, a, o);
+        point_up_exact(x, a, f);
+        double S = fabs(p[0]) + fabs(p[1]) + fabs(p[2]) + fabs(p[3]) + fabs(p[4]) + fabs(p[0] * a.x) +
+                   fabs(p[1] * a.y) + fabs(p[2] * a.z) + fabs(p[3] - p[4]) * (1 + aa + ai[0] + ai[1] + ai[2]);
+        double d = u * (2 * x2 + 1);
+        for (int k = 0; k < 5; k++) {
+            double c = (double)o[k], tol1 = u * fabs(c) + 0x1p-100 * S;
+            tk_add_tol(&tr, fabs((double)((__float128)Pt.c[bl[k]] - o[k])), tol1);
+            tk_add_tol(&tf, fabs((double)((__float128)Pt.c[bl[k]] - f[k])),
+                       tol1 + d * (k < 3 ? 2 * ai[k] : aa + 2));
+        }
+        tk_add_tol(&tr, tk_mv_maxabs(ga_mv_sub(Pt, ga_mv_grade(Pt, 1))), 0);
     }
     tk_end(&far);
     tk_end(&sc);
     tk_end(&rot);
     tk_end(&tr);
+    tk_end(&tf);
 }
 
 static const tk_section sections[] = {
