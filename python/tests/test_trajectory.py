@@ -83,6 +83,16 @@ def run_tool(args):
     return r.stdout
 
 
+def assert_same_report(got, pairs, scale, blocks, kw):
+    """evaluate()'s result holds the tool's printed numbers, bit for bit"""
+    assert got["pairs"] == pairs
+    if kw.get("align") == "sim3":
+        assert got["scale"] == scale
+    for key, stats in blocks.items():
+        for name, v in stats.items():
+            assert got[key][name] == v, (key, name, got[key][name], v)
+
+
 def parse_eval(text):
     """The tool's report: pairs, scale, and each block's seven statistics."""
     order = ["ape_trans", "ape_rot", "rpe_trans", "rpe_rot"]
@@ -118,12 +128,7 @@ def test_evaluate_equals_tool(files, args, kw, swap):
     ref, est = (files["est"], files["ref"]) if swap else (files["ref"], files["est"])
     pairs, scale, blocks = parse_eval(run_tool(["eval", "--ref", ref, "--est", est] + args))
     got = garotor.evaluate(np.loadtxt(ref), np.loadtxt(est), **kw)
-    assert got["pairs"] == pairs
-    if kw.get("align") == "sim3":
-        assert got["scale"] == scale
-    for key, stats in blocks.items():
-        for name, v in stats.items():
-            assert got[key][name] == v, (key, name, got[key][name], v)
+    assert_same_report(got, pairs, scale, blocks, kw)
     # ape and rpe: the same numbers as evaluate's
     a = garotor.ape(np.loadtxt(ref), np.loadtxt(est), **kw)
     r = garotor.rpe(np.loadtxt(ref), np.loadtxt(est), **kw)
@@ -300,12 +305,7 @@ def test_evaluate_ns_equals_tool(ns_files, args, kw):
     ref, est = ns_files["ref"], ns_files["est"]
     pairs, scale, blocks = parse_eval(run_tool(["eval", "--ref", ref, "--est", est, "--time-unit", "ns"] + args))
     got = garotor.evaluate(load_ns(ref), load_ns(est), time_unit="ns", **kw)
-    assert got["pairs"] == pairs
-    if kw.get("align") == "sim3":
-        assert got["scale"] == scale
-    for key, stats in blocks.items():
-        for name, v in stats.items():
-            assert got[key][name] == v, (key, name, got[key][name], v)
+    assert_same_report(got, pairs, scale, blocks, kw)
     r = garotor.rpe(load_ns(ref), load_ns(est), time_unit="ns", **kw)
     assert np.array_equal(r["rpe_rot"]["errors"], got["rpe_rot"]["errors"])
 
