@@ -313,7 +313,7 @@ def test_evaluate_ns_equals_tool(ns_files, args, kw):
 def test_rows_and_pairs_agree(ns_files, files):
     """an (n, 8) array and the tuple (times, poses) are read alike; an
     integer (n, 8) array keeps its stamps exact too"""
-    (tr, R), (te, E) = load_ns(ns_files["ref"]), load_ns(ns_files["est"])
+    (tr, _), (te, E) = load_ns(ns_files["ref"]), load_ns(ns_files["est"])
     still = np.tile([0, 0, 0, 0, 0, 0, 1], (len(tr), 1))
     a = garotor.ape(np.c_[tr, still], (te, E), time_unit="ns", offset=0.0025)
     b = garotor.ape((tr, still.astype(float)), (te, E), time_unit="ns", offset=0.0025)
