@@ -5,6 +5,7 @@
 
 #include <math.h>
 
+#include "internal/eft.h"
 #include "internal/object.h"
 #include "internal/vec3.h"
 
@@ -103,44 +104,52 @@ ga_status ga_point_down(ga_mv X, ga_vec3 *out) { return ga_point_down_scaled(X, 
 /* ---- objects ---------------------------------------------------------------- */
 
 /* Each object is built about its first point a and then translated to it:
-   F(a) ^ F(b) ^ ... = T_a (F(0) ^ F(b - a) ^ ...) ~T_a, as T_a F(x) ~T_a = F(x + a).
+   F(a) ^ F(b) ^ ... = T_a (F(0) ^ F(b - a) ^ ...) ~T_a, as T_a F(x) ~T_a = F(x + a),
+   every step carried in double-double and rounded once (gao_build_about).
    Wedged directly, the coefficients (|x|^2 -+ 1)/2 of far points cancelled
-   (the plane z = 1e5 read back d = 99999.928); this way the object is as
-   accurate as its storage (object.h): the translation is exact, rounded once
-   (gao_translate), so a flat comes out with its e4 and e5 parts equal. */
-static ga_mv about(ga_vec3 a, ga_mv local) { return gao_translate(local, a); }
-ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b)
-{
-    return about(a, ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a))));
-}
+   (the plane z = 1e5 read back d = 99999.928); built about a in double, the
+   local rounding (u of the local size) came out to u |a| of a plane through
+   points 1e6 out that passes near the origin, beyond the rounding of its own
+   coefficients (a line lying in such a plane met it in a flat point). This
+   way the object is as accurate as its storage (object.h), and a flat comes
+   out with its e4 and e5 parts equal. */
+ga_mv ga_pointpair_from_points(ga_vec3 a, ga_vec3 b) { return gao_build_about((ga_vec3[]){a, b}, 2, 0); }
 ga_mv ga_circle_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
-    return about(a, ga_mv_op(pp, ga_point_up(ga__v3_sub(c, a))));
+    return gao_build_about((ga_vec3[]){a, b, c}, 3, 0);
 }
-ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b)
-{
-    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
-    return about(a, ga_mv_op(pp, ga_mv_n()));
-}
+ga_mv ga_line_from_points(ga_vec3 a, ga_vec3 b) { return gao_build_about((ga_vec3[]){a, b}, 2, 1); }
 ga_mv ga_sphere_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c, ga_vec3 d)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
-    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(ga__v3_sub(c, a))), ga_point_up(ga__v3_sub(d, a))));
+    return gao_build_about((ga_vec3[]){a, b, c, d}, 4, 0);
 }
 ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 {
-    ga_mv pp = ga_mv_op(ga_point_up(ga__v3(0, 0, 0)), ga_point_up(ga__v3_sub(b, a)));
-    return about(a, ga_mv_op(ga_mv_op(pp, ga_point_up(ga__v3_sub(c, a))), ga_mv_n()));
+    return gao_build_about((ga_vec3[]){a, b, c}, 3, 1);
 }
 
+/* F(c) - (r^2/2) n: e4 = (|c|^2 - r^2 - 1) / 2, e5 = (|c|^2 - r^2 + 1) / 2,
+   each rounded once from |c|^2 - r^2 carried in double-double. Rounded term
+   by term, |c|^2 / 2 lost u |c|^2 / 2 before r^2 cancelled it: a sphere
+   through (or near) the origin 1e8 out had its weight e5 - e4 = 1 wrong by
+   about 1 (read back within the bounds of the sphere as stored, not of the
+   sphere meant). */
 ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
 {
-    ga_mv s = ga_point_up(centre);
-    double h = 0.5 * radius * radius; /* - (r^2/2) n */
-    s.c[GA_BLADE_E4] -= h;
-    s.c[GA_BLADE_E5] -= h;
-    return s;
+    ga__eft_dd q = ga__eft_dd_prod(centre.x, centre.x);
+    q = ga__eft_dd_add(q, ga__eft_dd_prod(centre.y, centre.y));
+    q = ga__eft_dd_add(q, ga__eft_dd_prod(centre.z, centre.z));
+    q = ga__eft_dd_add(q, ga__eft_dd_neg(ga__eft_dd_prod(radius, radius)));
+    ga__eft_dd m = ga__eft_dd_add(q, ga__eft_dd_sum(-1.0, 0.0)),
+               p = ga__eft_dd_add(q, ga__eft_dd_sum(1.0, 0.0));
+    if (!isfinite(m.hi) || !isfinite(p.hi)) { /* a square overflowed: as rounded term by term */
+        ga_mv s = ga_point_up(centre);
+        double h = 0.5 * radius * radius;
+        s.c[GA_BLADE_E4] -= h;
+        s.c[GA_BLADE_E5] -= h;
+        return s;
+    }
+    return ga_mv_vector(centre.x, centre.y, centre.z, 0.5 * m.hi, 0.5 * p.hi);
 }
 
 ga_mv ga_plane_dual(ga_vec3 m, double d) { return ga_mv_vector(m.x, m.y, m.z, d, d); }

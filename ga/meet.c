@@ -168,10 +168,13 @@ static int is_round(ga_mv X)
      through two points 1/16 of its radius apart) leaves a point pair,
      circle or line further from a blade than e allows, and e is scaled by
      that factor.
-   Not seen by any of these: a flat built from points far from the origin
-   whose coefficients cancel to a flat near it (a plane through points 1e6
-   out that passes 2.6e3 from the origin keeps its distance to u 1e6, not
-   u 2.6e3); its meets may still leave a residue above the threshold. */
+   Not seen by any of these: an input whose coefficients carry more than
+   the rounding of their own classes from how it was made. conformal.h's
+   constructors give each coefficient to about u of itself (built in
+   double-double, gao_build_about); before, a plane through points 1e6 out
+   that passes 2.6e3 from the origin kept its distance only to u 1e6, and a
+   line lying in it met it above the threshold. Objects from a chain of
+   operations (a versor applied, a meet) carry that chain's errors. */
 
 /* e_world and e_local of X (above): e_world where X is no round with a
    known centre */

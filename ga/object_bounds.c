@@ -38,12 +38,15 @@ static int nonzero(const double *x, int *idx)
     return n;
 }
 
-ga_mv gao_translate(ga_mv X, ga_vec3 a)
+/* T_a X ~T_a for X in double-double (x the values, each hi + lo) */
+static ga_mv translate_dd(const ga__eft_dd *x, ga_vec3 a)
 {
-    ga_mv T = translator(a);
+    ga_mv T = translator(a), X;
+    for (int i = 0; i < 32; i++) X.c[i] = x[i].hi;
     ga__eft_dd p[32] = {{0, 0}}, y[32] = {{0, 0}};
     int it[32], ix[32], ip[32], nt = nonzero(T.c, it), nx = nonzero(X.c, ix);
-    /* p = T X, each product exact (two-product), the sums double-double */
+    /* p = T X, each product exact (two-product; X's low parts added to
+       it), the sums double-double */
     for (int u = 0; u < nt; u++) {
         int i = it[u];
         unsigned mi = gabl_mask[i];
@@ -51,6 +54,8 @@ ga_mv gao_translate(ga_mv X, ga_vec3 a)
             int j = ix[v];
             unsigned mj = gabl_mask[j];
             ga__eft_dd q = ga__eft_dd_prod(T.c[i], X.c[j]);
+            if (x[j].lo != 0.0)
+                q = ga__eft_dd_norm(q.hi, q.lo + T.c[i] * x[j].lo);
             int k = gabl_index_of[mi ^ mj];
             p[k] = ga__eft_dd_add(p[k], gabl_sign(mi, mj) < 0.0 ? ga__eft_dd_neg(q) : q);
         }
@@ -80,6 +85,65 @@ ga_mv gao_translate(ga_mv X, ga_vec3 a)
     ga_mv r;
     for (int i = 0; i < 32; i++) r.c[i] = has[gabl_popcount5(gabl_mask[i])] ? y[i].hi + y[i].lo : 0.0;
     return r;
+}
+
+ga_mv gao_translate(ga_mv X, ga_vec3 a)
+{
+    ga__eft_dd x[32];
+    for (int i = 0; i < 32; i++) x[i] = (ga__eft_dd){X.c[i], 0.0};
+    return translate_dd(x, a);
+}
+
+/* a ^ b in double-double, into r (each product to ~u^2 of itself) */
+static void op_dd(const ga__eft_dd *a, const ga__eft_dd *b, ga__eft_dd *r)
+{
+    for (int k = 0; k < 32; k++) r[k] = (ga__eft_dd){0.0, 0.0};
+    for (int i = 0; i < 32; i++) {
+        if (a[i].hi == 0.0)
+            continue;
+        unsigned mi = gabl_mask[i];
+        for (int j = 0; j < 32; j++) {
+            unsigned mj = gabl_mask[j];
+            if (b[j].hi == 0.0 || (mi & mj))
+                continue;
+            ga__eft_dd q = ga__eft_dd_mul(a[i], b[j]);
+            int k = gabl_index_of[mi | mj];
+            r[k] = ga__eft_dd_add(r[k], gabl_sign(mi, mj) < 0.0 ? ga__eft_dd_neg(q) : q);
+        }
+    }
+}
+
+/* F(y) in double-double for y = p - a (the differences exact) */
+static void up_dd(ga_vec3 p, ga_vec3 a, ga__eft_dd *f)
+{
+    for (int k = 0; k < 32; k++) f[k] = (ga__eft_dd){0.0, 0.0};
+    ga__eft_dd y[3] = {ga__eft_dd_sum(p.x, -a.x), ga__eft_dd_sum(p.y, -a.y), ga__eft_dd_sum(p.z, -a.z)};
+    ga__eft_dd y2 = {0.0, 0.0};
+    for (int i = 0; i < 3; i++) y2 = ga__eft_dd_add(y2, ga__eft_dd_mul(y[i], y[i]));
+    f[GA_BLADE_E1] = y[0];
+    f[GA_BLADE_E2] = y[1];
+    f[GA_BLADE_E3] = y[2];
+    f[GA_BLADE_E4] = ga__eft_dd_ldexp(ga__eft_dd_add(y2, ga__eft_dd_sum(-1.0, 0.0)), -1);
+    f[GA_BLADE_E5] = ga__eft_dd_ldexp(ga__eft_dd_add(y2, ga__eft_dd_sum(1.0, 0.0)), -1);
+}
+
+ga_mv gao_build_about(const ga_vec3 *p, int np, int with_n)
+{
+    ga__eft_dd x[32] = {{0, 0}}, f[32], r[32];
+    x[GA_BLADE_E4] = (ga__eft_dd){-0.5, 0.0}; /* F(0) = (e5 - e4) / 2 */
+    x[GA_BLADE_E5] = (ga__eft_dd){0.5, 0.0};
+    for (int i = 1; i <= np; i++) {
+        if (i < np)
+            up_dd(p[i], p[0], f);
+        else if (with_n) {
+            for (int k = 0; k < 32; k++) f[k] = (ga__eft_dd){0.0, 0.0};
+            f[GA_BLADE_E4] = f[GA_BLADE_E5] = (ga__eft_dd){1.0, 0.0}; /* n */
+        } else
+            break;
+        op_dd(x, f, r);
+        for (int k = 0; k < 32; k++) x[k] = r[k];
+    }
+    return translate_dd(x, p[0]);
 }
 
 ga_mv gao_op_exact(ga_mv a, ga_mv b)

@@ -155,9 +155,10 @@ static void scene(tk_rng *t, double D)
     /* spheres: centre c1 = a, r1; c2 = a + dist e, r2; circle at a + h e, r^2 = r1^2 - h^2 */
     double r1 = S * tk_range(t, 0.2, 1), r2 = S * tk_range(t, 0.2, 1);
     ga_vec3 e = tk_unit(t);
-    /* A dual sphere whose weight is below the rounding of its e4/e5 terms is a
-       plane as stored (|c|^2 beyond ~2^47 r-independent: ga_sphere_dual at 1e8);
-       no read-back can see a sphere in it: counted, not measured (object.h). */
+    /* A dual sphere whose weight is below the spacing of its e4/e5
+       coefficients (|c|^2 - r^2 beyond ~2^54: ga_sphere_dual beyond ~1.3e8)
+       is a plane as stored; no read-back can see a sphere in it: counted, not
+       measured (object.h). */
     ga_object s1;
     int flat_spheres = 0;
     ga_vec3 cc = add(a, tk_scale(e, r1));
@@ -840,10 +841,35 @@ static void section_statuses(void)
     tk_end_named();
 }
 
+/* Spheres through the origin far out, centre t 2^k for a Pythagorean t and
+   radius |t| 2^k, all exact: |c|^2 - r^2 = 0, so e4 = -1/2 and e5 = 1/2
+   exactly. Rounded term by term (|c|^2 / 2 first), their weight was lost
+   beyond |c|^2 ~ 2^53 and they read back as planes. */
+static void section_far_through_origin(void)
+{
+    static const double tr[][4] = {{3, 4, 0, 5}, {5, 12, 0, 13}, {2, 3, 6, 7}, {1, 4, 8, 9}};
+    tk_check shape = tk_begin("far spheres through the origin: e4, e5 = -1/2, 1/2 exactly", 0);
+    tk_check rd = tk_begin("far spheres through the origin: read back, within the stated bound", 0);
+    for (int i = 0; i < 4; i++)
+        for (int k = 20; k <= 34; k++) {
+            double f = ldexp(1.0, k), r = tr[i][3] * f;
+            ga_vec3 c = {tr[i][0] * f, tr[i][1] * f, tr[i][2] * f};
+            ga_mv s = ga_sphere_dual(c, r);
+            tk_add_bool(&shape, s.c[GA_BLADE_E4] == -0.5 && s.c[GA_BLADE_E5] == 0.5);
+            ga_object ob;
+            int st = ga_object_from_mv(s, &ob);
+            tk_add_bool(&rd, st == GA_OK && ob.kind == GA_OBJECT_SPHERE &&
+                                 tk_norm(sub(ob.centre, c)) <= ob.err && fabs(ob.r2 - r * r) <= ob.r2_err);
+        }
+    tk_end(&shape);
+    tk_end(&rd);
+}
+
 static const tk_section sections[] = {
     {"scenes", section_scenes, 0},
     {"join", section_join, 0},
     {"statuses", section_statuses, 0},
+    {"far_through_origin", section_far_through_origin, 0},
 };
 
 int main(int argc, char **argv) { return tk_main(argc, argv, "test_meet", sections, TK_COUNT(sections)); }

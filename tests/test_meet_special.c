@@ -133,12 +133,14 @@ static void section_special(void)
             zero_meet("line lying in a plane (its points)", D, ga_line_from_points(a, b), P);
             zero_meet("two lines through a common point", D, ga_line_from_points(a, b),
                       ga_line_from_points(a, x));
-            /* (the same plane built from its points in another order is
-               built about another point, and carries the rounding of their
-               differences, some 10 u D / S of its size, 77 u measured at D /
-               S = 8: beyond the meet's 32 u where D / S passes about 3, and
-               close to it below; the exact scenes above build coincident
-               planes from other points whose coordinates are exact) */
+            /* the same plane built from its points in another order, about
+               another point (built in double, each carried the rounding of
+               the differences, some 10 u D / S of its size: 77 u at D / S = 8,
+               beyond the meet's 32 u; in double-double, each is the plane
+               of the points to its own rounding) */
+            zero_meet("the plane and itself built from its points in another order", D, P,
+                      ga_plane_from_points(d, a, b));
+            zero_meet("a line of the plane through two others of its points", D, ga_line_from_points(b, d), P);
             ga_vec3 mm = tk_unit(&t);
             double dd = mm.x * a.x + mm.y * a.y + mm.z * a.z;
             zero_meet("coincident dual planes (a multiple)", D, ga_plane_dual(mm, dd),

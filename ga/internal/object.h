@@ -42,6 +42,12 @@ ga_mv gao_unit_scaled(ga_mv X);
    of exactly 0. A flat (no part A ^ nbar) stays one exactly: the e4 and e5
    coefficients that must be equal are the roundings of one value. */
 ga_mv gao_translate(ga_mv X, ga_vec3 a);
+/* F(p0) ^ F(p1) ^ ... ^ F(p[np-1]) (^ n if with_n) built as
+   T_p0 (F(0) ^ F(p1 - p0) ^ ...) ~T_p0, every step carried in double-double
+   (the differences exact) and rounded once per coefficient: the blade of the
+   points as given, each coefficient to about u of itself (and ~u^2 of its
+   terms), however far out and however its terms cancel. */
+ga_mv gao_build_about(const ga_vec3 *p, int np, int with_n);
 /* a ^ b, each product exact and the sums double-double, rounded once: the
    exact outer product to a relative u of each coefficient (and ~u^2 of its
    terms) */

@@ -31,9 +31,10 @@
  *   - A round's weight (-X.n) is a difference of e4 and e5 coefficients of the
  *     size of its squared distance from the origin, so it is known only to u
  *     times that: a unit sphere built 1e4 from the origin has r^2 = 1 to about
- *     3 (and reads as tangent: at the scale of its distance it is a point), and
- *     at 1e8 its weight rounds to 0 in storage: it is a plane as stored, and
- *     read as one.
+ *     3 (and reads as tangent: at the scale of its distance it is a point);
+ *     at 1e8 its weight 1 is stored but known only to about 1 (refused, below),
+ *     and beyond about 1.3e8 (|c|^2 / 2 > 2^53) it rounds to 0 in storage: a
+ *     plane as stored, and read as one.
  *   - Refused with GA_ERR_PRECISION: a weight within its uncertainty of 0 but
  *     not 0 (round and flat at once to the input's accuracy), or not known to
  *     a quarter of itself (for a circle or point pair, read about its own
