@@ -140,7 +140,8 @@ static void section_special(void)
                of the points to its own rounding) */
             zero_meet("the plane and itself built from its points in another order", D, P,
                       ga_plane_from_points(d, a, b));
-            zero_meet("a line of the plane through two others of its points", D, ga_line_from_points(b, d), P);
+            zero_meet("a line of the plane through two others of its points", D, ga_line_from_points(b, d),
+                      P);
             ga_vec3 mm = tk_unit(&t);
             double dd = mm.x * a.x + mm.y * a.y + mm.z * a.z;
             zero_meet("coincident dual planes (a multiple)", D, ga_plane_dual(mm, dd),
