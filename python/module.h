@@ -228,6 +228,9 @@ typedef struct {
        seconds (0: none), and for 'auto' the median spacing it is 1% of */
     double gap, gap_median;
     int gap_auto;
+    /* normalize= for the keys append adds (path_opts.c): each projected onto
+       the group as the constructor's keys were */
+    int normalize;
 } gpy_PathObject;
 
 extern PyTypeObject gpy_PathType;

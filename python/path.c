@@ -304,8 +304,10 @@ static int Path_init(gpy_PathObject *self, PyObject *args, PyObject *kw)
             goto done;
     }
     rc = path_build(self, g, scheme, (size_t)n, rel, keys, 1, &vel, nvel, &stamp, ns, ref, wbytes);
-    if (rc == 0)
+    if (rc == 0) {
         self->merged = n < PyArray_DIM(t, 0);
+        self->normalize = normalize; /* for the keys append adds */
+    }
     if (rc == 0)
         rc = gpy_path_warn_growth(self, "Path");
 done:
@@ -353,10 +355,11 @@ static void copy_state(gpy_PathObject *self, void *arg)
  * constructor in the group's coordinates ((count, dim), or None). Built from
  * these by ga_path_init, the path is the one pickled, bit for bit: the same
  * keys, times, velocities and room, and an appended path equals the one built
- * from all its keys (ga_path_append). Nothing in it is a pointer. Two
+ * from all its keys (ga_path_append). Nothing in it is a pointer. Three
  * items may follow: (the reference, the relative times) where dedup merged
- * keys, else None, and (gap, median, auto), the min_gap append checks, where
- * there is one and room to append. */
+ * keys, else None; (gap, median, auto), the min_gap append checks, where
+ * there is one and room to append (else (0.0, 0.0, 0)); True where append
+ * projects its keys (normalize=) and there is room to append. */
 static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
 {
     (void)unused;
@@ -393,26 +396,33 @@ static PyObject *Path_reduce(gpy_PathObject *self, PyObject *unused)
             ref = ra ? Py_BuildValue("(NN)", gpy_stamp_value(self->ref, self->ns), ra) : NULL;
         }
         /* where append checks a gap (min_gap=), a ninth item: (the gap in
-           relative seconds, the median spacing, 1 for 'auto'); the eighth
-           is then None where no keys were merged */
-        int gap = self->gap > 0.0 && self->path.cap > n;
-        if (gap && !ref) {
-            Py_INCREF(Py_None);
-            ref = Py_None;
+           relative seconds, the median spacing, 1 for 'auto'); where append
+           projects its keys (normalize=), a tenth: True, the ninth then
+           (0.0, 0.0, 0) where there is no gap; the eighth is None where no
+           keys were merged and an item follows. Each only where there is
+           room to append */
+        int room = self->path.cap > n, gap = self->gap > 0.0 && room, norm = self->normalize && room;
+        Py_ssize_t size = norm ? 10 : gap ? 9 : ref ? 8 : 7;
+        PyObject *state = Py_BuildValue("(ssOOOns)", g->name, ga_scheme_name(self->scheme), (PyObject *)t,
+                                        (PyObject *)k, v, (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
+        if (state && self->merged && !ref) { /* the merged keys' item failed */
+            Py_CLEAR(state);
+        } else if (state && size > 7) {
+            PyObject *r8 = ref ? ref : Py_None, *more;
+            double gv = gap ? self->gap : 0.0, gm = gap ? self->gap_median : 0.0;
+            int ga = gap ? self->gap_auto : 0;
+            if (size == 8)
+                more = Py_BuildValue("(O)", r8);
+            else if (size == 9)
+                more = Py_BuildValue("(O(ddi))", r8, gv, gm, ga);
+            else
+                more = Py_BuildValue("(O(ddi)O)", r8, gv, gm, ga, Py_True);
+            Py_SETREF(state, more ? PySequence_Concat(state, more) : NULL);
+            Py_XDECREF(more);
         }
-        if (ref && gap)
-            r = Py_BuildValue("O(O)(ssOOOnsN(ddi))", newobj, (PyObject *)Py_TYPE(self), g->name,
-                              ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                              (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s", ref, self->gap,
-                              self->gap_median, self->gap_auto);
-        else if (ref)
-            r = Py_BuildValue("O(O)(ssOOOnsN)", newobj, (PyObject *)Py_TYPE(self), g->name,
-                              ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                              (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s", ref);
-        else
-            r = Py_BuildValue("O(O)(ssOOOns)", newobj, (PyObject *)Py_TYPE(self), g->name,
-                              ga_scheme_name(self->scheme), (PyObject *)t, (PyObject *)k, v,
-                              (Py_ssize_t)self->path.cap, self->ns ? "ns" : "s");
+        Py_XDECREF(ref);
+        if (state)
+            r = Py_BuildValue("O(O)N", newobj, (PyObject *)Py_TYPE(self), state);
     }
     Py_XDECREF(t);
     Py_XDECREF(k);
@@ -439,7 +449,7 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         return NULL;
     }
     /* a state of 6, of before time_unit: seconds */
-    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 9 ||
+    if (!PyTuple_Check(state) || PyTuple_GET_SIZE(state) < 6 || PyTuple_GET_SIZE(state) > 10 ||
         !PyUnicode_Check(PyTuple_GET_ITEM(state, 0)) || !PyUnicode_Check(PyTuple_GET_ITEM(state, 1)) ||
         (PyTuple_GET_SIZE(state) >= 7 && !PyUnicode_Check(PyTuple_GET_ITEM(state, 6))))
         return state_error("must be a tuple (group, scheme, times, keys, velocities, capacity, time_unit)");
@@ -533,13 +543,20 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
     int merged = PyTuple_GET_SIZE(state) >= 8 && PyTuple_GET_ITEM(state, 7) != Py_None;
     double gap = 0.0, gap_median = 0.0;
     int gap_auto = 0;
-    if (PyTuple_GET_SIZE(state) == 9 &&
+    if (PyTuple_GET_SIZE(state) >= 9 &&
         (!PyArg_ParseTuple(PyTuple_GET_ITEM(state, 8), "ddi", &gap, &gap_median, &gap_auto) ||
          !(gap >= 0.0) || !isfinite(gap) || !isfinite(gap_median))) {
         if (!PyErr_Occurred() || PyErr_ExceptionMatches(PyExc_TypeError)) {
             PyErr_Clear();
             state_error("the gap's item must be (gap >= 0, median spacing, auto)");
         }
+        goto done;
+    }
+    /* a tenth item: normalize= for the keys append adds (True or False) */
+    int normalize = PyTuple_GET_SIZE(state) == 10 ? PyTuple_GET_ITEM(state, 9) == Py_True : 0;
+    if (PyTuple_GET_SIZE(state) == 10 &&
+        (!PyBool_Check(PyTuple_GET_ITEM(state, 9)) || (normalize && !g->rigid))) {
+        state_error("the normalize item must be True or False (True: groups 'cga' and 'matrix')");
         goto done;
     }
     if (merged) { /* (reference, relative times) of a path whose keys dedup merged */
@@ -567,6 +584,7 @@ static PyObject *Path_setstate(gpy_PathObject *self, PyObject *state)
         self->gap = gap;
         self->gap_median = gap_median;
         self->gap_auto = gap_auto != 0;
+        self->normalize = normalize;
         Py_INCREF(Py_None);
         ret = Py_None;
     }
@@ -610,11 +628,14 @@ static PyMethodDef Path_methods[] = {
     {"append", (PyCFunction)(void (*)(void))gpy_path_append, METH_VARARGS | METH_KEYWORDS,
      "append(t, pose, *, warn_growth=False): add a key after the last (schemes screw, bivector, lihao2, "
      "decoupled, bspline), building one new segment; the Path then equals one built from all the keys, bit "
-     "for bit. Room: Path(..., capacity=m). A key closer to the last than the Path's min_gap is an error "
-     "(the tool's words); warn_growth: the growth rule measured over every key, warned as Path(...) does."},
+     "for bit. Room: Path(..., capacity=m). The key is read as Path(...) reads its keys: with "
+     "normalize=True projected onto the group. A key closer to the last than the Path's min_gap is an "
+     "error (the tool's words; with 'auto' the gap of the keys given to Path), never merged (dedup= merges "
+     "only those); warn_growth: the growth rule measured over every key, warned as Path(...) does."},
     {"__reduce__", (PyCFunction)Path_reduce, METH_NOARGS,
      "pickling and copying: (copyreg.__newobj__, (Path,), state), state = (group, scheme, times, keys, "
-     "velocities, capacity)"},
+     "velocities, capacity, time_unit), then where they apply: the merged keys (dedup=), the gap append "
+     "checks (min_gap=), and whether append normalizes its keys (normalize=)"},
     {"__setstate__", (PyCFunction)Path_setstate, METH_O,
      "build an uninitialised Path from the state __reduce__ gives (unpickling, copying)"},
     {NULL, NULL, 0, NULL}};

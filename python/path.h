@@ -96,7 +96,8 @@ size_t gpy_path_key_index(const ga_path *p, double t);
 int gpy_key_pose(const double *v, int normalize, ga_mat4 *m);
 ga_mat4 gpy_key_mat(const ga_group *g, const double *v, int normalize);
 /* why key i (v, a pose row or a 4x4) was refused, naming normalize= where
- * it decides; "" when the status says it all */
+ * it decides; "" when the status says it all. i < 0: Path.append's key
+ * (named pose, where Path(...)'s is poses[i]) */
 void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, npy_intp i, char *why,
                  size_t size);
 /* the growth rule's warning (RuntimeWarning) where self's path breaks it,

@@ -187,28 +187,39 @@ PyObject *gpy_path_append(gpy_PathObject *self, PyObject *args, PyObject *kw)
         Py_DECREF(p);
         return NULL;
     }
+    /* the key as Path(...) reads its keys, normalize= included */
     if (pose)
-        st = gpy_pose_to_mat(PyArray_DATA(p), &op.m);
+        st = gpy_key_pose(PyArray_DATA(p), self->normalize, &op.m);
     else
-        op.m = gpy_mat_get(PyArray_DATA(p));
-    Py_DECREF(p);
+        op.m = gpy_key_mat(self->group, PyArray_DATA(p), self->normalize);
     if (st == GA_OK) {
         op.commit = 1;
         gpy_path_locked(self, append_step, &op);
-        if (op.refused)
+        if (op.refused) {
+            Py_DECREF(p);
             return append_refused(self, &op);
+        }
         st = op.st;
     }
     if (st == GA_ERR_ARG && self->scheme == GA_SCHEME_BSPLINE) {
         PyErr_Format(PyExc_ValueError, "Path.append: scheme 'bspline' takes a key %s",
                      op.n < 4 ? "only after 4 keys or more" : "only at evenly spaced times");
+        Py_DECREF(p);
         return NULL;
     }
     if (st != GA_OK) {
-        PyErr_Format(st == GA_ERR_DOMAIN ? gpy_error : PyExc_ValueError, "Path.append: %s",
-                     ga_status_string(st));
+        /* a key off the group: why, in Path(...)'s words (naming normalize=) */
+        char why[200];
+        gpy_key_why(self->group, PyArray_DATA(p), pose, self->normalize, -1, why, sizeof why);
+        if (why[0])
+            gpy_raise_status_why("Path.append", 0, NULL, 0, st, why);
+        else
+            PyErr_Format(st == GA_ERR_DOMAIN ? gpy_error : PyExc_ValueError, "Path.append: %s",
+                         ga_status_string(st));
+        Py_DECREF(p);
         return NULL;
     }
+    Py_DECREF(p);
     /* warn_growth: the growth rule over every key, as Path(...) measures it
        (a pass over all the keys: opt-in); the key stays appended */
     if (warn_growth && gpy_path_warn_growth(self, "Path.append") < 0)

@@ -28,24 +28,28 @@ ga_mat4 gpy_key_mat(const ga_group *g, const double *v, int normalize)
 void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, npy_intp i, char *why,
                  size_t size)
 {
-    char x[32];
+    char x[32], name[32] = "pose";
     why[0] = '\0';
     if (gpy_first_nonfinite(v, pose ? 7 : 16) >= 0)
         return;
+    if (i >= 0) /* Path(...)'s key i; else append's key */
+        snprintf(name, sizeof name, "poses[%zd%s", (Py_ssize_t)i, pose ? ", " : "]");
+    else if (pose)
+        snprintf(name, sizeof name, "pose[");
     if (pose) {
         double norm = sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
         if (fabs(norm - 1.0) <= 1e-9)
             return;
         if (normalize)
             snprintf(why, size,
-                     "poses[%zd, 3:7] (qx qy qz qw): the quaternion has norm %s, farther from 1 than "
+                     "%s3:7] (qx qy qz qw): the quaternion has norm %s, farther from 1 than "
                      "normalize=True accepts (1e-3)",
-                     (Py_ssize_t)i, gpy_repr_text(norm, x));
+                     name, gpy_repr_text(norm, x));
         else
             snprintf(why, size,
-                     "poses[%zd, 3:7] (qx qy qz qw): the quaternion has norm %s, not 1 (to 1e-9; "
+                     "%s3:7] (qx qy qz qw): the quaternion has norm %s, not 1 (to 1e-9; "
                      "normalize=True accepts up to 1e-3)",
-                     (Py_ssize_t)i, gpy_repr_text(norm, x));
+                     name, gpy_repr_text(norm, x));
         return;
     }
     ga_mat4 m = gpy_mat_get(v), r;
@@ -54,9 +58,9 @@ void gpy_key_why(const ga_group *g, const double *v, int pose, int normalize, np
     double off = 0.0;
     for (int k = 0; k < 16; k++) off = fmax(off, fabs(m.m[k] - r.m[k]));
     snprintf(why, size,
-             "poses[%zd] is not a rigid motion to 1e-9 (it is %.3g from the nearest one); normalize=True "
+             "%s is not a rigid motion to 1e-9 (it is %.3g from the nearest one); normalize=True "
              "accepts up to 1e-3",
-             (Py_ssize_t)i, off);
+             name, off);
 }
 
 /* the growth rule measured under the lock (append may run in another

@@ -69,6 +69,8 @@ class Path:
     def jerk(self, t: ArrayLike, *, frame: str | None = "body", extrapolate: str | None = None,
              out: _F | None = None) -> _F: ...
     def clip(self, t: ArrayLike) -> NDArray[Any]: ...  # the times of t in range, as given (1-d)
+    # the key read as Path(...) reads its keys (normalize=), checked against the last with the Path's
+    # min_gap=, never merged (dedup= merges only the keys given to Path)
     def append(self, t: float, pose: ArrayLike, *, warn_growth: bool = False) -> None: ...
     @property
     def times(self) -> NDArray[Any]: ...  # float64 seconds, or int64 with time_unit="ns"

@@ -9,25 +9,25 @@ python/ (MYPYPATH is set from it)."""
 import doctest
 import os
 import pathlib
-import re
 import subprocess
 import sys
 
 import pytest
 
+import docpage
+
 pytest.importorskip("mypy", reason="mypy is not installed (Debian: python3-mypy)")
 
 HERE = pathlib.Path(__file__).resolve().parent
-DOC = HERE.parents[1] / "docs" / "python.md"
 
 
 def docs_modules():
     """The Python of docs/python.md as modules' texts: the ```python blocks
-    (the later ones use the names of the first), then each session."""
-    text = DOC.read_text()
-    mods = ["\n".join(re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M))]
+    (one script: the later ones use the names of the first, and
+    test_docs_python.py runs them so), then each session."""
+    mods = ["\n".join(docpage.blocks("python"))]
     parser = doctest.DocTestParser()
-    for block in re.findall(r"^```pycon\n(.*?)^```", text, flags=re.S | re.M):
+    for block in docpage.blocks("pycon"):
         mods.append("".join(ex.source for ex in parser.get_examples(block)))
     assert len(mods) >= 3 and all(mods)
     return mods

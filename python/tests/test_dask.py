@@ -12,11 +12,11 @@ distributed is not installed (Debian: python3-dask python3-distributed).
 import doctest
 import os
 import pathlib
-import re
 
 import numpy as np
 import pytest
 
+import docpage
 import garotor
 
 dask = pytest.importorskip("dask", reason="dask is not installed (Debian: python3-dask)")
@@ -25,15 +25,12 @@ import dask.array as da  # noqa: E402
 
 import garotor.dask as gd  # noqa: E402
 
-DOC = pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md"
+DOC = docpage.DOC
 
 
 def doc_session():
     """The ```pycon block of docs/python.md's section "Beyond one machine"."""
-    text = DOC.read_text()
-    sec = text[text.index("\n## Beyond one machine\n"):]
-    sec = sec[: sec.find("\n## ", 1)] if "\n## " in sec[1:] else sec
-    blocks = re.findall(r"^```pycon\n(.*?)^```", sec, flags=re.S | re.M)
+    blocks = docpage.blocks("pycon", "Beyond one machine")
     assert len(blocks) == 1, "docs/python.md's 'Beyond one machine' should show one ```pycon session"
     return blocks[0]
 

@@ -11,12 +11,11 @@ status.
 import ctypes
 import doctest
 import os
-import pathlib
-import re
 
 import numpy as np
 import pytest
 
+import docpage
 import garotor
 from garotor import Multivector as M
 
@@ -454,8 +453,8 @@ def test_not_finite():
 def test_docs_session():
     """the ```pycon blocks of docs/python.md, replayed by doctest: each line
     shown is what the module prints"""
-    doc = pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md"
-    blocks = re.findall(r"^```pycon\n(.*?)^```", doc.read_text(), flags=re.S | re.M)
+    doc = docpage.DOC
+    blocks = docpage.blocks("pycon")
     # "Beyond one machine" starts a dask cluster: test_dask.py replays it
     blocks = [b for b in blocks if "garotor.dask" not in b]
     assert blocks, "docs/python.md shows no ```pycon session"

@@ -420,3 +420,95 @@ def test_append_warn_growth():
         q = garotor.Path(times[:3], P[:3], scheme="screw", capacity=len(times))
         for i in range(3, len(times)):
             q.append(times[i], P[i], warn_growth=True)  # screw keeps the rule: no warning
+
+
+def normalize_keys(rng, n, form):
+    """n keys 0.5 s apart (bspline's even grid) off the group by more than
+    1e-9 and less than 1e-3: pose rows with 4 decimals, or matrices with a
+    rotation part moved by about 2e-5"""
+    times = np.arange(n) * 0.5
+    P = garotor.to_pose(garotor.exp(0.8 * rng.normal(size=(n, 6))))
+    if form == "pose":
+        K = np.round(P, 4)
+        assert np.abs(np.linalg.norm(K[:, 3:], axis=1) - 1).max() > 1e-9
+        return times, K, P
+    K = garotor.from_pose(P)
+    K[:, :3, :3] += 2e-5 * rng.normal(size=(n, 3, 3))
+    return times, K, garotor.from_pose(P)
+
+
+@pytest.mark.parametrize("scheme", ["screw", "bivector", "lihao2", "decoupled", "bspline"])
+@pytest.mark.parametrize("form,group", [("pose", "cga"), ("pose", "matrix"), ("matrix", "cga"),
+                                        ("matrix", "matrix")])
+def test_append_normalizes_as_the_constructor(rng, scheme, form, group):
+    """Path(..., normalize=True).append(t, key) reads the key as Path(...)
+    reads its keys, projected onto the group: the Path grown key by key is
+    the one built from all the keys with normalize=True, bit for bit (its
+    samples, velocities and pickle), and so is a pickled copy grown after
+    the pickle (the state keeps normalize=)"""
+    n, m = 8, 4
+    times, K, _ = normalize_keys(rng, n, form)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # lihao2 may break the growth rule
+        try:
+            full = garotor.Path(times, K, scheme=scheme, group=group, normalize=True)
+        except ValueError as e:
+            assert "is not defined on group" in str(e)
+            pytest.skip(str(e))
+        p = garotor.Path(times[:m], K[:m], scheme=scheme, group=group, normalize=True, capacity=n)
+    q = pickle.loads(pickle.dumps(p))
+    for i in range(m, n):
+        p.append(times[i], K[i])
+        q.append(times[i], K[i])
+    t = np.linspace(*full.range, 41)
+    for r in (p, q):
+        assert np.array_equal(r.sample(t), full.sample(t))
+        assert np.array_equal(r.velocity(t), full.velocity(t))
+        assert np.array_equal(r.times, full.times)
+        assert pickle.dumps(r) == pickle.dumps(full)  # the same keys as the group holds them, bit for bit
+
+
+@pytest.mark.parametrize("form", ["pose", "matrix"])
+def test_append_without_normalize_refuses_as_the_constructor(rng, form):
+    """Without normalize= a key off the group is refused by append as by
+    Path(...), in the same words (naming normalize=True), and the Path is
+    unchanged; with it, a key farther than 1e-3 is refused"""
+    n = 6
+    times, K, exact = normalize_keys(rng, n, form)
+    with pytest.raises(garotor.Error) as built:
+        garotor.Path(times, np.concatenate([exact[:n - 1], K[n - 1:]]))
+    p = garotor.Path(times[:n - 1], exact[:n - 1], capacity=n)
+    with pytest.raises(garotor.Error) as appended:
+        p.append(times[n - 1], K[n - 1])
+    assert len(p.times) == n - 1
+    name = "poses[%d%s" % (n - 1, ", " if form == "pose" else "]")
+    want = str(built.value).replace("Path: poses: index %d: " % (n - 1), "Path.append: ").replace(
+        name, "pose[" if form == "pose" else "pose")
+    assert str(appended.value) == want and "normalize=True accepts up to 1e-3" in want
+    assert appended.value.status == built.value.status
+    if form == "pose":
+        far = K[n - 1].copy()
+        far[3:] *= 1.01
+        pn = garotor.Path(times[:n - 1], K[:n - 1], capacity=n, normalize=True)
+        with pytest.raises(garotor.Error, match=r"^Path.append: .*pose\[3:7\] \(qx qy qz qw\): the quaternion has "
+                           r"norm 1.01.*, farther from 1 than normalize=True accepts \(1e-3\)$"):
+            pn.append(times[n - 1], far)
+        assert len(pn.times) == n - 1
+
+
+def test_normalize_state(rng):
+    """A pickle keeps normalize= where the Path has room to append (a tenth
+    item, True); a state of nine items (before it) gives a Path whose append
+    does not normalize; a tenth item other than a bool is refused"""
+    times, K, _ = normalize_keys(rng, 5, "pose")
+    p = garotor.Path(times[:4], K[:4], normalize=True, capacity=5)
+    cls, args, state = p.__reduce__()[:3]
+    assert len(state) == 10 and state[7] is None and state[9] is True
+    assert len(garotor.Path(times[:4], K[:4], normalize=True).__reduce__()[2]) == 7  # no room: nothing to keep
+    old = cls(*args)
+    old.__setstate__(state[:9])
+    with pytest.raises(garotor.Error, match="normalize=True accepts up to 1e-3"):
+        old.append(times[4], K[4])
+    bad = cls(*args)
+    with pytest.raises(ValueError, match="the normalize item must be True or False"):
+        bad.__setstate__(state[:9] + (1,))

@@ -395,11 +395,9 @@ def test_docs_session():
     """the ```pycon session of docs/python.md's "Evaluating and fitting
     trajectories", run as a doctest: it prints what it shows"""
     import doctest
-    import re
-    text = open(os.path.join(HERE, "..", "..", "docs", "python.md")).read()
-    sec = text[text.index("## Evaluating and fitting trajectories"):]
-    sec = sec[:sec.index("\n## ", 10)]
-    blocks = re.findall(r"^```pycon\n(.*?)^```", sec, flags=re.S | re.M)
+
+    import docpage
+    blocks = docpage.blocks("pycon", "Evaluating and fitting trajectories")
     assert len(blocks) == 1
     test = doctest.DocTestParser().get_doctest(blocks[0], {}, "python.md", "python.md", 0)
     runner = doctest.DocTestRunner()
