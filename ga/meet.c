@@ -228,6 +228,38 @@ static ga_mv with_defect(ga_mv X, ga_mv e)
     return f > 1.0 && isfinite(f) ? ga_mv_scale(e, f * (1.0 + 0x1p-20)) : e;
 }
 
+/* Whether X is a flat exactly: X ^ n = 0 (its e4 and e5 parts equal) */
+static int exact_flat(ga_mv X)
+{
+    ga_mv w = gao_op_exact(X, ga_mv_vector(0, 0, 0, 1, 1));
+    return ga_mv_maxabs(w) == 0.0 && ga_mv_maxabs(X) > 0.0;
+}
+
+/* The weight of a flat M: its coefficients on blades with both e4 and e5
+   (a plane's normal, a line's direction, a flat point's e45 part). Where
+   every one is within its bound e (e NULL: within tol) it is set to exactly
+   0: the flat at infinity that M is to that accuracy, read back as EMPTY
+   (parallel flats). */
+static ga_mv weight_to_zero(ga_mv M, const ga_mv *e, double tol)
+{
+    for (int i = 0; i < 32; i++)
+        if ((gabl_mask[i] & 0x18u) == 0x18u && M.c[i] != 0.0 && !(fabs(M.c[i]) <= (e ? e->c[i] : tol)))
+            return M;
+    for (int i = 0; i < 32; i++)
+        if ((gabl_mask[i] & 0x18u) == 0x18u)
+            M.c[i] = 0.0;
+    return M;
+}
+
+/* Whether X is a nonzero flat at infinity: its weight exactly 0 */
+static int at_infinity(ga_mv X)
+{
+    for (int i = 0; i < 32; i++)
+        if ((gabl_mask[i] & 0x18u) == 0x18u && X.c[i] != 0.0)
+            return 0;
+    return ga_mv_maxabs(X) > 0.0;
+}
+
 /* ((A I^-1) ^ (B I^-1)) I, A and B direct */
 static ga_mv meet_whole(ga_mv A, ga_mv B)
 {
@@ -245,6 +277,12 @@ static ga_mv meet_whole(ga_mv A, ga_mv B)
     for (int i = 0; i < 32 && zero; i++) zero = fabs(W.c[i]) <= eW.c[i];
     if (zero)
         return ga_mv_zero();
+    /* two flats meet in a flat; at infinity where its weight is within what
+       the inputs' uncertainties make of it (parallel flats as given) */
+    if (exact_flat(A) && exact_flat(B)) {
+        ga_mv eM = gao_abs(ga_mv_undual(eW));
+        return weight_to_zero(ga_mv_undual(W), &eM, 0.0);
+    }
     return ga_mv_undual(W);
 }
 
@@ -556,12 +594,19 @@ static int join_meet(ga_mv A, ga_mv B, ga_mv *J, ga_mv *M)
             double jj = 0.0;
             for (int i = 0; i < 32; i++) jj += jl.c[i] * jl.c[i];
             ga_mv ml = lc_euclid(lc_euclid(bl, ga_mv_scale(ga_mv_reverse(jl), 1.0 / jj)), au);
-            if (holds_n(sp.qa, ka, sp.c, 0, tol) && holds_n(sp.qb, kb, sp.c, 0, tol))
+            if (holds_n(sp.qa, ka, sp.c, 0, tol) && holds_n(sp.qb, kb, sp.c, 0, tol)) {
                 ml = gao_scale_n_nbar(ml, 1.0, 0.0); /* both flats: so is the meet */
+                /* at infinity where its weight is within tol of the terms
+                   of the contractions (|bl| |au| / |jl|): the sine of the
+                   angle of the flats below tol (parallel to tol) */
+                ml = weight_to_zero(ml, NULL, tol * ga_mv_maxabs(bl) * ga_mv_maxabs(au) / sqrt(jj));
+            }
             if (m == 0)
                 mt = ml; /* a scalar: no common point */
             else if ((st = localize(ml, ga__v3_scale(o, -1.0 / lam), 1.0 / lam, 0, &mt)) != GA_OK)
                 return st;
+            else if (at_infinity(ml))
+                mt = weight_to_zero(mt, NULL, INFINITY); /* a translation keeps it there (up to ~u^2 left) */
         }
     }
     if (!ga_mv_isfinite(j) || !ga_mv_isfinite(mt))

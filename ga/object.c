@@ -40,21 +40,19 @@ static int flat_kind(ga_mv part, ga_mv e)
 
 /* Whether a flat is at infinity: its weight (a plane's normal m, a line's
    direction u, a flat point's e45 part), of norm len, known to dw, s the
-   largest coefficient. Strict: EMPTY where the weight is 0 or within
-   GAO_INF_KAPPA u of s (a flat more than about 4e12 of its units from the
-   origin: the residue that ga_mv_meet_rel, computed in floating point,
-   leaves where its meet is at infinity); GA_ERR_PRECISION where it is within
-   its own uncertainty dw of 0 beyond that (a finite flat and one at
-   infinity alike to the input's accuracy); else a finite flat however far
-   (a line and a plane meeting 3e9 out: the flat point's bounds say how
-   well). The rough reading (a local origin for the meet) calls a weight
-   within GA_POINT_TOL of s empty. */
+   largest coefficient. Strict: EMPTY where the weight is exactly 0 (the
+   meets of parallel flats give it so: meet.c's weight_to_zero);
+   GA_ERR_PRECISION where it is within its own uncertainty dw of 0 (a finite
+   flat and one at infinity alike to the input's accuracy); else a finite
+   flat however far (a line and a plane meeting 3e9 out: the flat point's
+   bounds say how well). The rough reading (a local origin for the meet)
+   calls a weight within GA_POINT_TOL of s empty. */
 enum { FINITE = 1 };
 static int at_infinity(double len, double dw, double s, int strict)
 {
     if (!strict)
         return len <= GA_POINT_TOL * s ? GA_OBJECT_EMPTY : FINITE;
-    if (len <= GAO_INF_KAPPA * U * s)
+    if (len == 0.0)
         return GA_OBJECT_EMPTY;
     return dw < len ? FINITE : GA_ERR_PRECISION;
 }

@@ -99,10 +99,8 @@ def dist(a, b):
     return sqrt(sum((dec(x) - dec(y)) ** 2 for x, y in zip(a, b)))
 
 
-# a flat whose weight is 0 or within 2048 u of its largest coefficient is at
-# infinity (GAO_INF_KAPPA u, ga/internal/object.h: above ga_mv_meet_rel's
-# residues, below the weight of any flat within 4e12 of the origin)
-TOL = 2048 * U
+# a flat whose weight is exactly 0 is at infinity (ga/object.c, at_infinity)
+TOL = 0
 
 
 def read_dual(v):

@@ -22,11 +22,6 @@
    taken as known to GAO_MEET_KAPPA u of their class (the roundings of a
    construction of a few dozen operations) */
 #define GAO_MEET_KAPPA 32.0
-/* ga_object_from_mv reads a flat whose weight is within GAO_INF_KAPPA u of
-   its largest coefficient as at infinity (EMPTY): above the residue of
-   ga_mv_meet_rel's meets at infinity (up to 204 u measured), below the
-   weight of any flat within 4e12 of the origin in its units */
-#define GAO_INF_KAPPA 2048.0
 /* ga_mv_localize refuses a round whose move makes its world form's rounding
    more than this times the rounding of its local form */
 #define GAO_LOCALIZE_LOSS 16.0

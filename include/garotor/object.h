@@ -43,12 +43,12 @@
  *   - Real, tangent and imaginary use the same bound: tangent when |r^2| is
  *     within max(GA_OBJECT_TANGENT_TOL L^2, r2_err).
  *   - A flat is empty (at infinity) where its weight (a plane's normal, a
- *     line's direction, a flat point's e45 part) is 0, or within 2048 u of
- *     its largest coefficient (a flat more than about 4e12 of its units from
- *     the origin: what ga_mv_meet_rel leaves of a weight that is 0); refused
- *     with GA_ERR_PRECISION where the weight is within its uncertainty of 0
- *     beyond that; otherwise a finite flat however far out, with its bounds
- *     (a line meeting a plane 3e9 from the origin is that flat point).
+ *     line's direction, a flat point's e45 part) is exactly 0 (the meets of
+ *     parallel flats give it so: ga_mv_meet, ga_mv_meet_rel); refused with
+ *     GA_ERR_PRECISION where the weight is within its uncertainty of 0 but
+ *     not 0; otherwise a finite flat however far out, with its bounds (a
+ *     line meeting a plane 3e9 from the origin, or 1e14 out at a grazing
+ *     angle of 1e-14, is that flat point).
  *   - The functions below that state no bound of their own (ga_point_project,
  *     _reject, _distance, ga_object_angle, ga_rotor_between) promise
  *     GA_OBJECT_TOL: they refuse with GA_ERR_PRECISION an object whose err
@@ -198,7 +198,11 @@ GA_API GA_NODISCARD ga_status ga_rotor_apply_about(ga_rotor R, ga_vec3 origin, g
  *  through the origin sums to near 0); a point pair, circle or line
  *  further from a blade than that has it scaled to what its defect shows.
  *  So ga_object_from_mv of the meet says GA_ERR_SINGULAR there, never an
- *  object read from a rounding residue; ga_mv_meet_rel gives their meet. */
+ *  object read from a rounding residue; ga_mv_meet_rel gives their meet.
+ *  Two flats (A ^ n = B ^ n = 0 exactly) meet in a flat; where its weight
+ *  (the coefficients on blades with e4 and e5) is within the same bound,
+ *  they are parallel to the accuracy of the inputs and the weight is set to
+ *  exactly 0: a flat at infinity, read as EMPTY. */
 GA_API ga_mv ga_mv_meet(ga_mv A, ga_mv B);
 
 /** The tolerance of ga_mv_join's and ga_mv_meet_rel's decisions (GA_POINT_TOL):
@@ -266,7 +270,9 @@ GA_API GA_NODISCARD ga_status ga_mv_join(ga_mv A, ga_mv B, ga_mv *out);
  *      blade J is invertible, so a null join, a tangent round, needs nothing
  *      special; the meet as a subspace does not depend on the metric, its
  *      scale and sign do): two intersecting lines -> their flat point, two
- *      parallel lines -> their direction at infinity (u ^ n, read as EMPTY),
+ *      parallel lines -> their direction at infinity (u ^ n, its weight
+ *      exactly 0 where the sine of their angle is within the tolerance of
+ *      the decisions, read as EMPTY),
  *      two coplanar or cospherical circles -> a point pair, real, tangent or
  *      imaginary; a scalar where the two share no point (a point off a line).
  *  Statuses of ga_mv_join. */
