@@ -51,7 +51,14 @@ ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
         for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / (p->t[e] - p->t[j]));
     }
     for (size_t i = 0; n > 1 && i < n; ++i) {
-        if ((st = ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x)))
+        /* BSPLINE's range is [t_1, t_{n-2}], its segment s [t_{s+1}, t_{s+2}]:
+           its keys 1 .. n-2, by the velocity at their times */
+        if (p->scheme == GA_SCHEME_BSPLINE && (i == 0 || i + 1 == n))
+            continue;
+        st = p->scheme == GA_SCHEME_BSPLINE
+               ? ga_path_velocity(p, p->t[i], x)
+               : ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x);
+        if (st)
             return st;
         part_norms(g, x, nrm);
         double ratio = 0.0;
