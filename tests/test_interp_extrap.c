@@ -238,7 +238,8 @@ static void extrap_paths(void)
     tk_check hold_b = tk_begin("extrap: HOLD = ga_path_eval at the range's end, bit for bit", 0);
     tk_check hold_d = tk_begin("extrap: HOLD velocity, acceleration, jerk exactly 0 (every frame)", 0);
     tk_check ext_c = tk_begin("extrap: EXTEND = screw/lihao3/bspline end segment continued, / scale", 0);
-    tk_check ext_s = tk_begin("extrap: EXTEND = ga_path_eval_segment at the end segment's u (status, bits)", 0);
+    tk_check ext_s = tk_begin("extrap: EXTEND = ga_path_eval_segment at the end segment's u (status, bits)",
+                              0);
     tk_check ext_d = tk_begin("extrap: EXTEND derivatives = ga_path_derivatives_segment's (status, bits)", 0);
     tk_check cv_c = tk_begin("extrap: CONSTANT_VELOCITY = E exp(d V), E key, V end chord, / scale", 0);
     tk_check cv_g = tk_begin("extrap: CONSTANT_VELOCITY = E exp(d V), E, V the path's at the end", 0);
@@ -252,7 +253,9 @@ static void extrap_paths(void)
     for (int f = 0; f < 3; ++f)
         for (int o = 0; o < 3; ++o)
             fd[f][o] = tk_beginf(0, "extrap: %s %s outside vs central differences", frame_name[f],
-                                 o == 0 ? "velocity (poses)" : o == 1 ? "acceleration" : "jerk");
+                                 o == 0   ? "velocity (poses)"
+                                 : o == 1 ? "acceleration"
+                                          : "jerk");
     for (size_t gi = 0; ga_group_nth(gi); ++gi) {
         const ga_group *g = ga_group_nth(gi);
         int affine = !g->rigid;
@@ -305,7 +308,8 @@ static void extrap_paths(void)
                     int after = t > x[0].r1;
                     /* ERROR */
                     tk_add_status(&err_st, ga_path_extrap_eval(&x[0], t, e), GA_ERR_ARG);
-                    tk_add_status(&err_st, ga_path_extrap_derivatives(&x[0], t, GA_FRAME_BODY, d[0], d[1], d[2]),
+                    tk_add_status(&err_st,
+                                  ga_path_extrap_derivatives(&x[0], t, GA_FRAME_BODY, d[0], d[1], d[2]),
                                   GA_ERR_ARG);
                     /* HOLD */
                     ga_mat4 H = xat(&x[1], t);
@@ -315,7 +319,8 @@ static void extrap_paths(void)
                     }
                     double end[16];
                     TK_OK(ga_path_eval(p, after ? x[0].r1 : x[0].r0, end));
-                    tk_add_bool(&hold_b, ga_path_extrap_eval(&x[1], t, e) == GA_OK && !memcmp(e, end, g->elem_size));
+                    tk_add_bool(&hold_b,
+                                ga_path_extrap_eval(&x[1], t, e) == GA_OK && !memcmp(e, end, g->elem_size));
                     for (int f = 0; f < (affine ? 2 : 3); ++f) {
                         for (int q = 0; q < 3; ++q)
                             for (size_t c = 0; c < dim; ++c) d[q][c] = NAN;
@@ -329,12 +334,14 @@ static void extrap_paths(void)
                     double u;
                     int seg = end_segment(&k, (ga_scheme)s, t, &u);
                     ga_mat4 X = xat(&x[2], t);
-                    if (!affine && (s == GA_SCHEME_SCREW || s == GA_SCHEME_LIHAO3 || s == GA_SCHEME_BSPLINE)) {
+                    if (!affine &&
+                        (s == GA_SCHEME_SCREW || s == GA_SCHEME_LIHAO3 || s == GA_SCHEME_BSPLINE)) {
                         ga_mat4 ref = extend_closed(&k, (ga_scheme)s, t);
                         tk_add_tol(&ext_c, mdiff(X, ref), pose_tol(&k, ref, 1e-12));
                     }
                     double es[16];
-                    int sx = ga_path_extrap_eval(&x[2], t, e), ss = ga_path_eval_segment(p, (size_t)seg, u, es);
+                    int sx = ga_path_extrap_eval(&x[2], t, e),
+                        ss = ga_path_eval_segment(p, (size_t)seg, u, es);
                     tk_add_bool(&ext_s, sx == ss && (sx != GA_OK || !memcmp(e, es, g->elem_size)));
                     for (int f = 0; f < (affine ? 2 : 3); ++f) {
                         double d2[3][12];
@@ -470,7 +477,8 @@ static void extrap_edges(void)
     c = tk_begin("extrap: a bad frame -> GA_ERR_ARG (inside and outside, every mode)", 0);
     for (int m = 0; m < 4; ++m) {
         TK_OK(ga_path_extrap_init(&pb.p, (ga_extrap)m, &x));
-        tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r1 + 1, (ga_frame)3, d[0], d[1], d[2]), GA_ERR_ARG);
+        tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r1 + 1, (ga_frame)3, d[0], d[1], d[2]),
+                      GA_ERR_ARG);
         tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r0, (ga_frame)3, d[0], d[1], d[2]), GA_ERR_ARG);
     }
     tk_end(&c);
@@ -482,8 +490,10 @@ static void extrap_edges(void)
     c = tk_begin("extrap: GA_FRAME_WORLD on affine -> GA_ERR_ARG (inside and outside, every mode)", 0);
     for (int m = 0; m < 4; ++m) {
         TK_OK(ga_path_extrap_init(&pa.p, (ga_extrap)m, &x));
-        tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r1 + 1, GA_FRAME_WORLD, d[0], NULL, NULL), GA_ERR_ARG);
-        tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r0 - 1, GA_FRAME_WORLD, NULL, d[1], NULL), GA_ERR_ARG);
+        tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r1 + 1, GA_FRAME_WORLD, d[0], NULL, NULL),
+                      GA_ERR_ARG);
+        tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r0 - 1, GA_FRAME_WORLD, NULL, d[1], NULL),
+                      GA_ERR_ARG);
         tk_add_status(&c, ga_path_extrap_derivatives(&x, x.r0, GA_FRAME_WORLD, NULL, NULL, d[2]), GA_ERR_ARG);
     }
     tk_end(&c);
@@ -497,8 +507,10 @@ static void extrap_edges(void)
         TK_OK(ga_path_differentiate(&pb.p, i ? r1 : r0, GA_FRAME_BODY, ve[i], NULL));
     }
     tk_expect(x.path == &pb.p && x.mode == GA_EXTRAP_CONSTANT_VELOCITY && x.r0 == r0 && x.r1 == r1 &&
-                  !memcmp(x.pose[0], pe[0], sizeof(ga_rotor)) && !memcmp(x.pose[1], pe[1], sizeof(ga_rotor)) &&
-                  !memcmp(x.vel[0], ve[0], 6 * sizeof(double)) && !memcmp(x.vel[1], ve[1], 6 * sizeof(double)),
+                  !memcmp(x.pose[0], pe[0], sizeof(ga_rotor)) &&
+                  !memcmp(x.pose[1], pe[1], sizeof(ga_rotor)) &&
+                  !memcmp(x.vel[0], ve[0], 6 * sizeof(double)) &&
+                  !memcmp(x.vel[1], ve[1], 6 * sizeof(double)),
               "extrap: init holds the path, mode, range, end poses and velocities");
     /* far out: GA_OK comes with finite output, else an overflow status */
     c = tk_begin("extrap: far times: GA_OK and finite, or GA_ERR_DOMAIN/NOTFINITE", 0);
@@ -576,7 +588,8 @@ static void extrap_edges(void)
     TK_OK(ga_path_extrap_init(&p3, GA_EXTRAP_HOLD, &keep));
     TK_OK(ga_path_append_mat4(&p3, k3.t[2], k3.m[2]));
     TK_OK(ga_path_extrap_init(&p3, GA_EXTRAP_HOLD, &x));
-    tk_expect(keep.r1 == k3.t[1] && x.r1 == k3.t[2] && mdiff(xat(&x, k3.t[2] + 1), k3.m[2]) <= 1e-13 * k3.scale,
+    tk_expect(keep.r1 == k3.t[1] && x.r1 == k3.t[2] &&
+                  mdiff(xat(&x, k3.t[2] + 1), k3.m[2]) <= 1e-13 * k3.scale,
               "extrap: init after ga_path_append holds the new end");
 }
 
@@ -617,16 +630,17 @@ static void min_gap(void)
         double t[6], median;
     } hand[] = {
         {2, {1.0, 3.5}, 2.5},
-        {3, {0, 1, 3}, 1.5},        /* spacings 1, 2: the mean of the middle two */
-        {4, {0, 0, 0, 1}, 0.0},     /* exact duplicates: median 0, gap 0 */
-        {4, {0, 1, 1, 2}, 1.0},     /* 1, 0, 1 */
-        {5, {0, 4, 5, 5, 9}, 2.5},  /* 4, 1, 0, 4: sorted 0 1 4 4 */
+        {3, {0, 1, 3}, 1.5},                    /* spacings 1, 2: the mean of the middle two */
+        {4, {0, 0, 0, 1}, 0.0},                 /* exact duplicates: median 0, gap 0 */
+        {4, {0, 1, 1, 2}, 1.0},                 /* 1, 0, 1 */
+        {5, {0, 4, 5, 5, 9}, 2.5},              /* 4, 1, 0, 4: sorted 0 1 4 4 */
         {6, {10, 11, 11.5, 13.5, 14, 20}, 1.0}, /* 1, .5, 2, .5, 6: sorted .5 .5 1 2 6 */
     };
     c = tk_begin("min_gap: hand-made times: the median spacing, gap 1% of it", 0);
     for (size_t i = 0; i < TK_COUNT(hand); ++i) {
         int st = ga_times_min_gap(hand[i].n, hand[i].t, scratch, &med, &gap);
-        tk_add_bool(&c, st == GA_OK && med == hand[i].median && gap == GA_PATH_MIN_GAP_FRACTION * hand[i].median);
+        tk_add_bool(&c,
+                    st == GA_OK && med == hand[i].median && gap == GA_PATH_MIN_GAP_FRACTION * hand[i].median);
     }
     tk_end(&c);
     c = tk_begin("min_gap: random times: median of the spacings (sorted here), times unchanged", 0);
@@ -677,8 +691,9 @@ static size_t run_ref(size_t n, const double *t, double gap, size_t i)
 
 static void gap_run(void)
 {
-    const double whole[] = {0, 1e-3, 2e-3, 3e-3}, start[] = {0, 1e-3, 1, 2, 3}, end[] = {0, 1, 2, 2.001, 2.002},
-                 mid[] = {0, 1, 1.001, 1.002, 2, 3}, dyad[] = {0, 0.25, 0.5, 0.75}, dup[] = {1, 1, 1, 2};
+    const double whole[] = {0, 1e-3, 2e-3, 3e-3}, start[] = {0, 1e-3, 1, 2, 3},
+                 end[] = {0, 1, 2, 2.001, 2.002}, mid[] = {0, 1, 1.001, 1.002, 2, 3},
+                 dyad[] = {0, 0.25, 0.5, 0.75}, dup[] = {1, 1, 1, 2};
     struct {
         size_t n;
         const double *t;
@@ -726,7 +741,8 @@ static void gap_run(void)
             double u = tk_uni(r);
             t[i] = t[i - 1] + q * (double)(u < 0.5 ? tk_next(r) % 21 : 100 + tk_next(r) % 900);
         }
-        for (size_t i = 0; i <= n; ++i) tk_add_bool(&c, ga_times_gap_run(n, t, gap, i) == run_ref(n, t, gap, i));
+        for (size_t i = 0; i <= n; ++i)
+            tk_add_bool(&c, ga_times_gap_run(n, t, gap, i) == run_ref(n, t, gap, i));
     }
     tk_end(&c);
 }
@@ -869,7 +885,8 @@ static void merge(void)
     c = tk_begin("merge: a time not finite -> GA_ERR_NOTFINITE", 0);
     const double badt[][2] = {{0, NAN}, {INFINITY, 1}, {-INFINITY, INFINITY}};
     for (size_t i = 0; i < TK_COUNT(badt); ++i)
-        for (int ns = 0; ns < 2; ++ns) tk_add_status(&c, ga_path_merge_keys(2, badt[i], keys, ns, &t, &key), GA_ERR_NOTFINITE);
+        for (int ns = 0; ns < 2; ++ns)
+            tk_add_status(&c, ga_path_merge_keys(2, badt[i], keys, ns, &t, &key), GA_ERR_NOTFINITE);
     tk_end(&c);
     const double huge[2] = {1e300, 1e300};
     tk_expect_status("merge: ns of a mean of 1e300 s overflows -> GA_ERR_DOMAIN",
@@ -914,7 +931,8 @@ static void growth_words(void)
     char want[32];
     g_ref(gr.ratio, want);
     tk_expect(gr.first == 5 && fabs(gr.ratio - 4.6) < 1e-12, "growth: lihao2 zigzag: first key 5, ratio 4.6");
-    tk_expect(st == GA_OK && w.a == 4 && w.b == 5 && strcmp(w.ratio, "4.6") == 0 && strcmp(w.ratio, want) == 0,
+    tk_expect(st == GA_OK && w.a == 4 && w.b == 5 && strcmp(w.ratio, "4.6") == 0 &&
+                  strcmp(w.ratio, want) == 0,
               "growth: lihao2 zigzag: segment 4-5, ratio \"4.6\"");
     tk_expect(st == GA_OK && w.advice && strstr(w.advice, "lihao3") && !strstr(w.advice, "near-duplicate"),
               "growth: lihao2: the advice names another scheme");
@@ -925,6 +943,25 @@ static void growth_words(void)
     st = ga_path_growth_describe(&pb.p, &gr, &w);
     tk_expect(gr.first == 0 && st == GA_OK && w.a == 0 && w.b == 1,
               "growth: lihao2 with v0 5 times the chord: key 0, segment 0-1");
+    /* chords that underflow: translations of 1e-320 a second under a given
+       velocity of 1: the ratio 1/1e-320 is infinite, key 0 past the rule,
+       and described ("%g": "inf") */
+    keyset ks;
+    ks.n = 3;
+    for (int i = 0; i < 3; ++i) {
+        ks.t[i] = i;
+        ks.m[i] = ga_mat4_identity();
+        ks.m[i].m[3] = i * 1e-320;
+    }
+    set_scale(&ks);
+    double v1[6] = {0, 0, 0, 1, 0, 0};
+    TK_OK(mkpath(&pb, &ga_group_se3, GA_SCHEME_LIHAO2, &ks, v1));
+    TK_OK(ga_path_measure_growth(&pb.p, &gr));
+    st = ga_path_growth_describe(&pb.p, &gr, &w);
+    g_ref(gr.ratio, want);
+    tk_expect(isinf(gr.ratio) && gr.first == 0 && st == GA_OK && w.a == 0 && w.b == 1 &&
+                  strcmp(w.ratio, want) == 0 && strcmp(want, "inf") == 0,
+              "growth: chords of 1e-320: ratio inf, key 0, described as \"inf\"");
     /* a screw path keeps the rule: nothing to describe */
     TK_OK(mkpath(&pb, &ga_group_se3, GA_SCHEME_SCREW, &k, NULL));
     TK_OK(ga_path_measure_growth(&pb.p, &gr));
@@ -954,16 +991,19 @@ static void growth_words(void)
     /* the others' advice: near-duplicates; a ratio and first given here */
     tk_check c = tk_begin("growth: the ratio as \"%.*g\" (3 digits, or enough to show > 3)", 0);
     tk_check a = tk_begin("growth: other schemes: near-duplicate advice; a, b = first - 1, first", 0);
-    const double ratios[] = {3.0004,  0x1.8000000000001p1, 3.1, 3.14159, 4.6,     9.995,  99.95,   999.5,
-                             12345.6, 1e20,                1e300, 3.00049, 123456789, 3e-5 * 1e6, 1e5};
+    const double ratios[] = {
+        3.0004,  0x1.8000000000001p1, 3.1,        3.14159, 4.6, 9.995, 99.95, 999.5, 12345.6, 1e20, 1e300,
+        3.00049, 123456789,           3e-5 * 1e6, 1e5};
     for (size_t i = 0; i < TK_COUNT(ratios); ++i) {
         ga_path_growth g2 = {ratios[i], 3, 1 + i % 6};
         char ref[32];
         g_ref(ratios[i], ref);
         st = ga_path_growth_describe(&pb.p, &g2, &w);
         if (st != GA_OK || strcmp(w.ratio, ref))
-            tk_note("     growth: %.17g: \"%s\", wanted \"%s\"\n", ratios[i], st == GA_OK ? w.ratio : "-", ref);
-        tk_add_bool(&c, st == GA_OK && strcmp(w.ratio, ref) == 0 && strtod(w.ratio, NULL) > GA_PATH_GROWTH_MAX);
+            tk_note("     growth: %.17g: \"%s\", wanted \"%s\"\n", ratios[i], st == GA_OK ? w.ratio : "-",
+                    ref);
+        tk_add_bool(&c,
+                    st == GA_OK && strcmp(w.ratio, ref) == 0 && strtod(w.ratio, NULL) > GA_PATH_GROWTH_MAX);
         tk_add_bool(&a, st == GA_OK && w.a == g2.first - 1 && w.b == g2.first && w.advice &&
                             strstr(w.advice, "near-duplicate"));
     }
@@ -979,7 +1019,7 @@ static void growth_words(void)
         tk_note("     (no de_DE or fr_FR locale: the decimal comma is not tried)\n");
     tk_end(&c);
     tk_end(&a);
-    c = tk_begin("growth: describe refuses NULL and first >= n", 0);
+    c = tk_begin("growth: describe refuses NULL, first >= n, a NaN ratio", 0);
     ga_path_growth g3 = {4.0, 1, 2};
     tk_add_status(&c, ga_path_growth_describe(NULL, &g3, &w), GA_ERR_ARG);
     tk_add_status(&c, ga_path_growth_describe(&pb.p, NULL, &w), GA_ERR_ARG);
@@ -988,21 +1028,23 @@ static void growth_words(void)
     tk_add_status(&c, ga_path_growth_describe(&pb.p, &g3, &w), GA_ERR_ARG);
     g3.first = pb.p.n + 5;
     tk_add_status(&c, ga_path_growth_describe(&pb.p, &g3, &w), GA_ERR_ARG);
+    g3.first = 1;
+    g3.ratio = NAN;
+    tk_add_status(&c, ga_path_growth_describe(&pb.p, &g3, &w), GA_ERR_ARG);
     tk_end(&c);
 }
 
 static void seed(void) { stream = (tk_rng){tk_seed(20261203u)}; }
 
 static const tk_section sections[] = {
-    {"seed", seed, TK_SETUP},
-    {"names", names, 0},
-    {"paths", extrap_paths, TK_STREAM},
-    {"edges", extrap_edges, TK_STREAM},
-    {"min_gap", min_gap, TK_STREAM},
-    {"gap_run", gap_run, TK_STREAM},
-    {"merge", merge, TK_STREAM},
-    {"growth", growth_words, 0},
+    {"seed", seed, TK_SETUP},           {"names", names, 0},
+    {"paths", extrap_paths, TK_STREAM}, {"edges", extrap_edges, TK_STREAM},
+    {"min_gap", min_gap, TK_STREAM},    {"gap_run", gap_run, TK_STREAM},
+    {"merge", merge, TK_STREAM},        {"growth", growth_words, 0},
     {"time", tk_cpu_time, 0},
 };
 
-int main(int argc, char **argv) { return tk_main(argc, argv, "test_interp_extrap", sections, TK_COUNT(sections)); }
+int main(int argc, char **argv)
+{
+    return tk_main(argc, argv, "test_interp_extrap", sections, TK_COUNT(sections));
+}

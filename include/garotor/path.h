@@ -490,9 +490,10 @@ typedef struct {
     const char *advice; /**< what to do: for LIHAO2 another scheme, for the others near-duplicate keys */
 } ga_path_growth_words;
 
-/** The words of gr, measured on p (ga_path_measure_growth), for its warning.
- *  GA_ERR_ARG for NULL, or where gr found no key past the rule
- *  (gr->first >= p->n). */
+/** The words of gr, measured on p (ga_path_measure_growth), for its warning
+ *  (an infinite ratio, of chords that underflow, as "inf"). GA_ERR_ARG for
+ *  NULL, where gr found no key past the rule (gr->first >= p->n), or for a
+ *  NaN ratio (which ga_path_measure_growth never gives). */
 GA_API GA_NODISCARD ga_status ga_path_growth_describe(const ga_path *p, const ga_path_growth *gr,
                                                       ga_path_growth_words *out);
 
