@@ -693,7 +693,7 @@ static void gap_run(void)
 {
     const double whole[] = {0, 1e-3, 2e-3, 3e-3}, start[] = {0, 1e-3, 1, 2, 3},
                  end[] = {0, 1, 2, 2.001, 2.002}, mid[] = {0, 1, 1.001, 1.002, 2, 3},
-                 dyad[] = {0, 0.25, 0.5, 0.75}, dup[] = {1, 1, 1, 2};
+                 dyad[] = {0, 0.25, 0.5, 0.75}, dup[] = {1, 1, 1, 2}, back[] = {0, -1, -2};
     struct {
         size_t n;
         const double *t;
@@ -721,6 +721,7 @@ static void gap_run(void)
         {4, whole, 1.0, 4, 4, "i = n"},
         {4, whole, 1.0, 9, 9, "i > n"},
         {4, NULL, 1.0, 2, 2, "times NULL"},
+        {3, back, 0.01, 0, 2, "backward steps: spacings below the gap, as defined"},
     };
     tk_check c = tk_begin("gap_run: hand-made runs and edges", 0);
     for (size_t k = 0; k < TK_COUNT(cases); ++k) {
@@ -990,7 +991,7 @@ static void growth_words(void)
     TK_OK(mkpath(&pb, &ga_group_se3, GA_SCHEME_SCREW, &k, NULL));
     /* the others' advice: near-duplicates; a ratio and first given here */
     tk_check c = tk_begin("growth: the ratio as \"%.*g\" (3 digits, or enough to show > 3)", 0);
-    tk_check a = tk_begin("growth: other schemes: near-duplicate advice; a, b = first - 1, first", 0);
+    tk_check a = tk_begin("growth: a, b = first - 1, first; advice: lihao2 a scheme, others near-dups", 0);
     const double ratios[] = {
         3.0004,  0x1.8000000000001p1, 3.1,        3.14159, 4.6, 9.995, 99.95, 999.5, 12345.6, 1e20, 1e300,
         3.00049, 123456789,           3e-5 * 1e6, 1e5};
@@ -1006,6 +1007,21 @@ static void growth_words(void)
                     st == GA_OK && strcmp(w.ratio, ref) == 0 && strtod(w.ratio, NULL) > GA_PATH_GROWTH_MAX);
         tk_add_bool(&a, st == GA_OK && w.a == g2.first - 1 && w.b == g2.first && w.advice &&
                             strstr(w.advice, "near-duplicate"));
+    }
+    /* the advice of every scheme: lihao2 another scheme, the others
+       near-duplicates */
+    for (int sc = 0; sc < GA_SCHEME_COUNT; ++sc) {
+        keyset ke = k;
+        ke.n = sc == GA_SCHEME_QUADRATIC ? 3 : 7;
+        pathbuf pe;
+        ga_path_growth g2 = {5.0, 4, 1};
+        st = mkpath(&pe, &ga_group_se3, (ga_scheme)sc, &ke, NULL);
+        if (st == GA_OK)
+            st = ga_path_growth_describe(&pe.p, &g2, &w);
+        tk_add_bool(&a, st == GA_OK && w.a == 0 && w.b == 1 && w.advice &&
+                            (sc == GA_SCHEME_LIHAO2
+                                 ? strstr(w.advice, "lihao3") && !strstr(w.advice, "near-duplicate")
+                                 : strstr(w.advice, "near-duplicate") != NULL));
     }
     /* under a locale whose decimal point is a comma, the same text */
     const char *loc = setlocale(LC_NUMERIC, "de_DE.UTF-8");
