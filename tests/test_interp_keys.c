@@ -481,12 +481,11 @@ static void growth_words(void)
 static void seed(void) { stream = (tk_rng){tk_seed(20261204u)}; }
 
 static const tk_section sections[] = {
-    {"seed", seed, TK_SETUP},
-    {"min_gap", min_gap, TK_STREAM},
-    {"gap_run", gap_run, TK_STREAM},
-    {"merge", merge, TK_STREAM},
-    {"growth", growth_words, TK_STREAM},
-    {"time", tk_cpu_time, 0},
+    {"seed", seed, TK_SETUP},    {"min_gap", min_gap, TK_STREAM},     {"gap_run", gap_run, TK_STREAM},
+    {"merge", merge, TK_STREAM}, {"growth", growth_words, TK_STREAM}, {"time", tk_cpu_time, 0},
 };
 
-int main(int argc, char **argv) { return tk_main(argc, argv, "test_interp_keys", sections, TK_COUNT(sections)); }
+int main(int argc, char **argv)
+{
+    return tk_main(argc, argv, "test_interp_keys", sections, TK_COUNT(sections));
+}
