@@ -51,7 +51,14 @@ ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out)
         for (size_t q = 0; q < parts; ++q) chord[q] = fmax(chord[q], nrm[q] / (p->t[e] - p->t[j]));
     }
     for (size_t i = 0; n > 1 && i < n; ++i) {
-        if ((st = ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x)))
+        /* BSPLINE's range is [t_1, t_{n-2}], its segment s [t_{s+1}, t_{s+2}]:
+           its keys 1 .. n-2, by the velocity at their times */
+        if (p->scheme == GA_SCHEME_BSPLINE && (i == 0 || i + 1 == n))
+            continue;
+        st = p->scheme == GA_SCHEME_BSPLINE
+               ? ga_path_velocity(p, p->t[i], x)
+               : ga_path_velocity_segment(p, i + 1 < n ? i : n - 2, i + 1 < n ? 0.0 : 1.0, x);
+        if (st)
             return st;
         part_norms(g, x, nrm);
         double ratio = 0.0;
@@ -117,15 +124,20 @@ static double g_digits(double x, int dig, char *buf)
 
 ga_status ga_path_growth_describe(const ga_path *p, const ga_path_growth *gr, ga_path_growth_words *out)
 {
-    if (!p || !gr || !out || gr->first >= p->n || !isfinite(gr->ratio))
+    if (!p || !gr || !out || gr->first >= p->n || isnan(gr->ratio))
         return GA_ERR_ARG;
     ga_path_growth_words w;
     w.a = gr->first ? gr->first - 1 : 0;
     w.b = gr->first ? gr->first : 1;
-    /* 3 digits, or as many as show it past the bound (3.0004, not 3) */
-    for (int dig = 3; dig <= 17; dig++)
-        if (g_digits(gr->ratio, dig, w.ratio) > GA_PATH_GROWTH_MAX)
-            break;
+    /* 3 digits, or as many as show it past the bound (3.0004, not 3); an
+       infinite ratio (a velocity over chords that underflow to subnormals)
+       as %g writes it, "inf", in any locale */
+    if (isinf(gr->ratio))
+        snprintf(w.ratio, sizeof w.ratio, "%g", gr->ratio);
+    else
+        for (int dig = 3; dig <= 17; dig++)
+            if (g_digits(gr->ratio, dig, w.ratio) > GA_PATH_GROWTH_MAX)
+                break;
     /* lihao2 carries its velocity along; any other scheme breaks the rule
        through keys much closer than the others (near-duplicates) */
     w.advice = p->scheme == GA_SCHEME_LIHAO2 ? "--scheme lihao3 or c2 follow the chords"

@@ -23,6 +23,8 @@ ga_status ga_times_min_gap(size_t n, const double *times, double *scratch, doubl
     ga_status st = ga_traj_statistics(scratch, n - 1, &s);
     if (st != GA_OK)
         return st;
+    if (!isfinite(s.median)) /* the mean of two middle spacings near DBL_MAX */
+        return GA_ERR_DOMAIN;
     *median = s.median;
     *gap = GA_PATH_MIN_GAP_FRACTION * s.median;
     return GA_OK;
@@ -45,6 +47,9 @@ ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys,
     ga_rotor r[GA_PATH_MERGE_MAX], mean;
     double w[GA_PATH_MERGE_MAX], tm = 0.0;
     ga_status st = GA_OK;
+    for (size_t k = 0; k < m; k++)
+        if (!isfinite(times[k]))
+            return GA_ERR_NOTFINITE;
     for (size_t k = 0; k < m && st == GA_OK; k++) {
         st = ga_rotor_from_mat4(keys[k], &r[k]);
         w[k] = 1.0;
@@ -54,7 +59,15 @@ ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys,
         st = ga_rotor_mean(r, w, m, &mean);
     if (st != GA_OK)
         return st;
-    *t = ns ? floor(tm * 1e9 + 0.5) : tm;
+    /* the nearest whole number: x - floor(x) is exact, where floor(x + 0.5)
+       rounds x + 0.5 first (up to an odd x + 1 between 2^52 and 2^53, and
+       0.49999999999999994 up to 1) */
+    double x = ns ? tm * 1e9 : tm, f = floor(x);
+    if (ns)
+        x = x - f >= 0.5 ? f + 1.0 : f;
+    if (!isfinite(x))
+        return GA_ERR_DOMAIN;
+    *t = x;
     *key = ga_rotor_to_mat4(mean);
     return GA_OK;
 }

@@ -410,8 +410,9 @@ GA_API GA_NODISCARD ga_status ga_path_derivatives_segment(const ga_path *p, size
  *  key: HOLD); CONSTANT_VELOCITY, the end pose E moved on by its body
  *  velocity V there for the time d past the end, E exp(d V), in closed form:
  *  the body velocity stays V, the acceleration and jerk are zero in the
- *  body and spatial frames, and in the world frame the position's are
- *  R v, R (w x v), R (w x (w x v)) (E's rotation R, V = (w, v)). */
+ *  body and spatial frames, and in the world frame the angular rate is R w
+ *  and the position's are R v, R (w x v), R (w x (w x v)) (R the rotation
+ *  of the pose E exp(d V) at t, V = (w, v)). */
 typedef enum { GA_EXTRAP_ERROR, GA_EXTRAP_HOLD, GA_EXTRAP_EXTEND, GA_EXTRAP_CONSTANT_VELOCITY } ga_extrap;
 
 /** "error", "hold", "extend", "constant-velocity". */
@@ -474,8 +475,9 @@ typedef struct {
                        velocity given there (lihao2's v0), is the first past the rule */
 } ga_path_growth;
 
-/** Measure the growth rule on p (any scheme); GA_ERR_ARG for NULL; a failing
- *  log or velocity is passed on. */
+/** Measure the growth rule on p (any scheme; BSPLINE at its keys 1 .. n-2,
+ *  those in its range, keys 0 and n-1 taking ratio 0); GA_ERR_ARG for NULL;
+ *  a failing log or velocity is passed on. */
 GA_API GA_NODISCARD ga_status ga_path_measure_growth(const ga_path *p, ga_path_growth *out);
 
 /** The words of the growth rule's warning (`garotor interp`, garotor.Path),
@@ -488,9 +490,10 @@ typedef struct {
     const char *advice; /**< what to do: for LIHAO2 another scheme, for the others near-duplicate keys */
 } ga_path_growth_words;
 
-/** The words of gr, measured on p (ga_path_measure_growth), for its warning.
- *  GA_ERR_ARG for NULL, or where gr found no key past the rule
- *  (gr->first >= p->n). */
+/** The words of gr, measured on p (ga_path_measure_growth), for its warning
+ *  (an infinite ratio, of chords that underflow, as "inf"). GA_ERR_ARG for
+ *  NULL, where gr found no key past the rule (gr->first >= p->n), or for a
+ *  NaN ratio (which ga_path_measure_growth never gives). */
 GA_API GA_NODISCARD ga_status ga_path_growth_describe(const ga_path *p, const ga_path_growth *gr,
                                                       ga_path_growth_words *out);
 
@@ -507,7 +510,8 @@ GA_API GA_NODISCARD ga_status ga_path_growth_describe(const ga_path *p, const ga
  *  spacing (of an even count of spacings, the mean of the two middle ones),
  *  *gap GA_PATH_MIN_GAP_FRACTION of it; both 0 for n < 2. scratch: room for
  *  n - 1 doubles (overwritten). GA_ERR_NOTFINITE for a spacing that is not
- *  finite. */
+ *  finite; GA_ERR_DOMAIN where the median overflows (finite spacings near
+ *  DBL_MAX). */
 GA_API GA_NODISCARD ga_status ga_times_min_gap(size_t n, const double *times, double *scratch, double *median,
                                                double *gap);
 /** The last key j >= i such that each spacing times[k + 1] - times[k],
@@ -519,8 +523,10 @@ GA_API size_t ga_times_gap_run(size_t n, const double *times, double gap, size_t
  *  by m, added in order), with ns the whole number nearest to it times 1e9
  *  (a time in nanoseconds, for times in seconds relative to a stamp of whole
  *  nanoseconds); *key the mean of the poses (ga_rotor_mean, equal weights).
- *  GA_ERR_ARG for m out of range; a key that is no rigid motion, or a mean
- *  that does not converge, passes its status on. */
+ *  GA_ERR_ARG for m out of range; GA_ERR_NOTFINITE for a time that is not
+ *  finite; GA_ERR_DOMAIN where *t would overflow (ns: the mean times 1e9);
+ *  a key that is no rigid motion, or a mean that does not converge, passes
+ *  its status on. */
 GA_API GA_NODISCARD ga_status ga_path_merge_keys(size_t m, const double *times, const ga_mat4 *keys, int ns,
                                                  double *t, ga_mat4 *key);
 
