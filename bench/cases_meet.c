@@ -62,6 +62,8 @@ MEET_LOOP(run_meet_regressive, meet_out[j] = ga_mv_regressive(A[j], B[j]),
 MEET_LOOP(run_meet_by_symbols, meet_out[j] = ga_mv_undual(ga_mv_op(ga_mv_dual(A[j]), ga_mv_dual(B[j]))),
           meet_out[last].c[31] + meet_out[last].c[16])
 /* ga_mv_meet_rel: the join decides the whole space, then ga_mv_meet */
-MEET_LOOP(run_meet_rel, st |= ga_mv_meet_rel(A[j], B[j], &meet_out[j]), meet_out[last].c[31] + meet_out[last].c[16])
+MEET_LOOP(run_meet_rel, st |= ga_mv_meet_rel(A[j], B[j], &meet_out[j]),
+          meet_out[last].c[31] + meet_out[last].c[16])
 /* ga_object_from_mv of the meet (computed by inputs.c) */
-MEET_LOOP(run_meet_read, st |= ga_object_from_mv(W[j], &meet_obj[j]), meet_obj[last].centre.x + meet_obj[last].r2)
+MEET_LOOP(run_meet_read, st |= ga_object_from_mv(W[j], &meet_obj[j]),
+          meet_obj[last].centre.x + meet_obj[last].r2)
