@@ -13,6 +13,7 @@
 #include <garotor/garotor.h>
 #include <garotor/conformal.h>
 #include <garotor/mat4.h>
+#include <garotor/object.h>
 #include <garotor/path.h>
 #include <garotor/rotor.h>
 #include <garotor/rotor_inline.h>
@@ -116,6 +117,27 @@ int bench_max_batches(const bench *b);
 int bench_cpu_clock(const bench *b);
 extern const int path_scheme[GA_SCHEME_COUNT];
 
+/* ---- cases_meet.c: the object layer's meets -------------------------------------- */
+
+/* The pairs the meet keys time: two direct objects built by conformal.h's
+   constructors from random points (inputs.c), in general position, and what
+   ga_mv_meet makes of them: a line, a flat point, a circle, a circle. */
+enum { MP_PLANE_PLANE, MP_LINE_PLANE, MP_SPHERE_SPHERE, MP_PLANE_SPHERE, N_MEET_PAIRS };
+extern const int meet_pair_kind[N_MEET_PAIRS]; /* the GA_OBJECT_* of the meet */
+extern ga_mv meet_a[N_MEET_PAIRS][RING], meet_b[N_MEET_PAIRS][RING];
+extern ga_mv meet_w[N_MEET_PAIRS][RING]; /* ga_mv_meet of the pair: the read-back's input */
+/* ctx: &meet_pair_ix[p] */
+extern const int meet_pair_ix[N_MEET_PAIRS];
+size_t run_meet(const void *ctx, size_t n);
+size_t run_meet_floor(const void *ctx, size_t n);
+size_t run_meet_regressive(const void *ctx, size_t n);
+size_t run_meet_by_symbols(const void *ctx, size_t n);
+size_t run_meet_rel(const void *ctx, size_t n);
+size_t run_meet_read(const void *ctx, size_t n);
+/** Whether the floor's dual signs (floors.h) are ga_mv_dual's and
+    ga_mv_undual's: GA_OK, else GA_ERR_ARG. */
+int meet_check_dual(void);
+
 /* ---- inputs.c ---------------------------------------------------------------- */
 
 /** Seed the input PRNG. */
@@ -151,6 +173,10 @@ typedef struct {
     double eigen_logm_vs_se3;  /* Eigen .log() vs twist^ of ga_se3_log */
     double eigen_expm_general; /* Eigen .exp() vs ga_mat4_expm, general */
     double eigen_logm_general; /* Eigen .log() vs ga_mat4_logm, general */
+    /* the meets (cases_meet.c), relative to each meet's largest coefficient */
+    double meet_vs_floor;    /* ga_mv_meet vs the dual-wedge floor meet_floor */
+    double meet_rel_vs_meet; /* ga_mv_meet_rel vs ga_mv_meet (0: bit for bit in general position) */
+    int meet_bad; /* pairs whose meet is 0 or whose read-back is not GA_OK and of the pair's kind */
 } checks;
 
 double maxdiff(const double *a, const double *b, int n);

@@ -491,5 +491,42 @@ bench benches[] = {
     EVAL_ACCEL(GA_SCHEME_BSPLINE, "bspline"),
     EVAL_ACCEL(GA_SCHEME_C2, "c2"),
 #undef EVAL_ACCEL
+/* the object layer's meets (cases_meet.c) */
+#define MEET_CASE(key, fn, p, what)                                                                          \
+    {                                                                                                        \
+        key, what, fn, &meet_pair_ix[p], 0, NULL, 0, 0, 0                                                    \
+    }
+    MEET_CASE("meet_plane_plane", run_meet, MP_PLANE_PLANE, "ga_mv_meet: two planes -> a line"),
+    MEET_CASE("meet_line_plane", run_meet, MP_LINE_PLANE, "ga_mv_meet: a line and a plane -> a flat point"),
+    MEET_CASE("meet_sphere_sphere", run_meet, MP_SPHERE_SPHERE, "ga_mv_meet: two spheres -> a circle"),
+    MEET_CASE("meet_plane_sphere", run_meet, MP_PLANE_SPHERE, "ga_mv_meet: a plane and a sphere -> a circle"),
+    MEET_CASE("meet_floor_plane_plane", run_meet_floor, MP_PLANE_PLANE,
+              "undual(op(dual A, dual B)) inline (in the bench): two planes -> a line"),
+    MEET_CASE("meet_floor_line_plane", run_meet_floor, MP_LINE_PLANE,
+              "undual(op(dual A, dual B)) inline (in the bench): a line and a plane -> a flat point"),
+    MEET_CASE("meet_floor_sphere_sphere", run_meet_floor, MP_SPHERE_SPHERE,
+              "undual(op(dual A, dual B)) inline (in the bench): two spheres -> a circle"),
+    MEET_CASE("meet_floor_plane_sphere", run_meet_floor, MP_PLANE_SPHERE,
+              "undual(op(dual A, dual B)) inline (in the bench): a plane and a sphere -> a circle"),
+    MEET_CASE("meet_rel_plane_plane", run_meet_rel, MP_PLANE_PLANE, "ga_mv_meet_rel: two planes -> a line"),
+    MEET_CASE("meet_rel_line_plane", run_meet_rel, MP_LINE_PLANE,
+              "ga_mv_meet_rel: a line and a plane -> a flat point"),
+    MEET_CASE("meet_rel_sphere_sphere", run_meet_rel, MP_SPHERE_SPHERE,
+              "ga_mv_meet_rel: two spheres -> a circle"),
+    MEET_CASE("meet_rel_plane_sphere", run_meet_rel, MP_PLANE_SPHERE,
+              "ga_mv_meet_rel: a plane and a sphere -> a circle"),
+    MEET_CASE("meet_read_plane_plane", run_meet_read, MP_PLANE_PLANE,
+              "ga_object_from_mv of the meet: two planes -> a line"),
+    MEET_CASE("meet_read_line_plane", run_meet_read, MP_LINE_PLANE,
+              "ga_object_from_mv of the meet: a line and a plane -> a flat point"),
+    MEET_CASE("meet_read_sphere_sphere", run_meet_read, MP_SPHERE_SPHERE,
+              "ga_object_from_mv of the meet: two spheres -> a circle"),
+    MEET_CASE("meet_read_plane_sphere", run_meet_read, MP_PLANE_SPHERE,
+              "ga_object_from_mv of the meet: a plane and a sphere -> a circle"),
+#undef MEET_CASE
+    {"meet_regressive", "ga_mv_regressive (one generated kernel) of meet_plane_plane's planes",
+     run_meet_regressive, &meet_pair_ix[MP_PLANE_PLANE], 0, NULL, 0, 0, 0},
+    {"meet_by_symbols", "ga_mv_undual(ga_mv_op(ga_mv_dual(A), ga_mv_dual(B))), the same planes",
+     run_meet_by_symbols, &meet_pair_ix[MP_PLANE_PLANE], 0, NULL, 0, 0, 0},
 };
 const size_t n_benches = sizeof benches / sizeof benches[0];

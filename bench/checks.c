@@ -112,6 +112,24 @@ checks run_checks(void)
         c.eigen_logm_general = fmax(c.eigen_logm_general, maxdiff(m.m, gen_x[j].m, 16));
 #endif
     }
+    /* the meets: ga_mv_meet against the floor (the same formula, the exact
+       product against one rounding per term: within the floor's rounding),
+       ga_mv_meet_rel against ga_mv_meet (bit for bit in general position,
+       object.h), and the read-back of every meet of the pair's kind */
+    for (int p = 0; p < N_MEET_PAIRS; p++)
+        for (int j = 0; j < RING; j++) {
+            ga_mv w = ga_mv_meet(meet_a[p][j], meet_b[p][j]), f, r;
+            meet_floor(&meet_a[p][j], &meet_b[p][j], &f);
+            double s = ga_mv_maxabs(w);
+            c.meet_vs_floor = fmax(c.meet_vs_floor, maxdiff(w.c, f.c, 32) / s);
+            if (ga_mv_meet_rel(meet_a[p][j], meet_b[p][j], &r) != GA_OK)
+                c.meet_bad++;
+            else
+                c.meet_rel_vs_meet = fmax(c.meet_rel_vs_meet, maxdiff(w.c, r.c, 32) / s);
+            ga_object o;
+            if (!(s > 0.0) || ga_object_from_mv(w, &o) != GA_OK || o.kind != meet_pair_kind[p])
+                c.meet_bad++;
+        }
     if (bad) /* the inputs are valid rigid motions: a failure is a bug */
         fprintf(stderr, "garotor-bench: a cross-check call returned an error status\n");
     return c;

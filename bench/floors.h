@@ -1,6 +1,7 @@
 /* bench/floors.h: the floors of garotor-bench, what a user would otherwise
  * write: a dual-quaternion product, a 4x4 matrix on a point, a table-driven
- * dense product (its tables: bench.h, filled by inputs.c).
+ * dense product (its tables: bench.h, filled by inputs.c), the meet of two
+ * objects as the dual-wedge formula (its tables: cases_meet.c).
  *
  * Each floor is plain C written here, static inline, compiled at full strength
  * into its timed loop exactly as a user's own code would be: no call, no
@@ -12,6 +13,10 @@
 #include <string.h>
 
 #include "bench.h"
+
+/* the library's outer product by pointer (gak_op_p: ga_mv_op's generated
+   straight-line kernel, not exported; the bench links the library's objects) */
+#include "../ga/internal/mv_kernels.h"
 
 /* Hamilton's product of quaternions, as in any textbook. */
 static inline ga_quat quat_mul(ga_quat a, ga_quat b)
@@ -58,6 +63,27 @@ static inline void gp_table(const ga_mv *a, const ga_mv *b, ga_mv *r)
     for (int i = 0; i < 32; i++)
         for (int j = 0; j < 32; j++) acc[gp_index[i][j]] += gp_sign[i][j] * (a->c[i] * b->c[j]);
     memcpy(r->c, acc, sizeof acc);
+}
+
+/* The meet of two objects as a user writes it from the textbook formula,
+ * meet = (A* ^ B*)*, i.e. undual(op(dual A, dual B)) (DFM §5.5, clifford's
+ * meet, ganja's dual wedge): the dual A I^-1 and the undual A I as the
+ * signed permutations of the coefficients they are (blade i goes to blade
+ * 31 - i; the signs written out, checked against ga_mv_dual and
+ * ga_mv_undual by meet_check_dual), the outer product by the library's
+ * generated dense kernel. No decision, one rounding per term: in general
+ * position the meet ga_mv_meet returns, to the rounding of the sums. */
+static const double dual_sign[32] = {-1, -1, 1,  -1, 1, 1,  1,  -1, 1, 1,  1,  -1, -1, 1,  1, -1,
+                                     1,  -1, -1, 1,  1, -1, -1, -1, 1, -1, -1, -1, 1,  -1, 1, 1};
+static inline void meet_floor(const ga_mv *a, const ga_mv *b, ga_mv *r)
+{
+    ga_mv da, db, w;
+    for (int i = 0; i < 32; i++) {
+        da.c[31 - i] = dual_sign[i] * a->c[i];
+        db.c[31 - i] = dual_sign[i] * b->c[i];
+    }
+    gak_op_p(&da, &db, &w);
+    for (int i = 0; i < 32; i++) r->c[31 - i] = -dual_sign[i] * w.c[i]; /* undual = -dual */
 }
 
 #endif

@@ -1,7 +1,7 @@
 /* bench/inputs.c: the inputs of garotor-bench: a seeded PRNG (xoshiro256**),
  * random twists, rotors and points in the rings, general 4x4 matrices with
- * their principal logs, the tables of the floor gp_table, and the paths the
- * sampling cases walk.
+ * their principal logs, the tables of the floor gp_table, the paths the
+ * sampling cases walk, and the pairs of objects the meet cases meet.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -124,6 +124,79 @@ static int build_paths(void)
     return GA_OK;
 }
 
+/* ---- the pairs of objects of the meet cases (cases_meet.c) ------------------ */
+
+static ga_vec3 random_point(double a, double b)
+{
+    ga_vec3 x = {uniform(a, b), uniform(a, b), uniform(a, b)};
+    return x;
+}
+
+static ga_vec3 add3(ga_vec3 a, ga_vec3 b, double s)
+{
+    ga_vec3 r = {a.x + s * b.x, a.y + s * b.y, a.z + s * b.z};
+    return r;
+}
+
+/* A sphere through 4 random points of the sphere of centre c and radius r. */
+static ga_mv sphere_on(ga_vec3 c, double r)
+{
+    ga_vec3 p[4];
+    for (int k = 0; k < 4; k++) p[k] = add3(c, random_unit(), r);
+    return ga_sphere_from_points(p[0], p[1], p[2], p[3]);
+}
+
+/* A plane through 3 random points within s (per axis) of c. */
+static ga_mv plane_near(ga_vec3 c, double s)
+{
+    ga_vec3 p[3];
+    for (int k = 0; k < 3; k++) p[k] = add3(c, random_point(-s, s), 1.0);
+    return ga_plane_from_points(p[0], p[1], p[2]);
+}
+
+/* Slot j of pair p, drawn from random points until the meet reads back
+   (GA_OK) as the pair's kind, real: planes and lines through points of
+   [-5, 5]^3; spheres of radius in [0.5, 2] centred in [-2, 2]^3, the second
+   at a distance that makes their circle real, the plane of plane_sphere
+   within half the radius of the sphere's centre (per axis): a real circle. */
+static int meet_pair(int p, int j)
+{
+    for (int tries = 0; tries < 100; tries++) {
+        ga_vec3 c = random_point(-2, 2);
+        double r = uniform(0.5, 2.0), r2 = uniform(0.5, 2.0);
+        ga_mv a, b;
+        switch (p) {
+        case MP_PLANE_PLANE:
+            a = plane_near(c, 5.0);
+            b = plane_near(c, 5.0);
+            break;
+        case MP_LINE_PLANE:
+            a = ga_line_from_points(random_point(-5, 5), random_point(-5, 5));
+            b = plane_near(c, 5.0);
+            break;
+        case MP_SPHERE_SPHERE: {
+            double lo = fabs(r - r2) + 0.1, hi = r + r2 - 0.1;
+            a = sphere_on(c, r);
+            b = sphere_on(add3(c, random_unit(), uniform(lo, hi)), r2);
+            break;
+        }
+        default:
+            a = plane_near(c, 0.5 * r);
+            b = sphere_on(c, r);
+            break;
+        }
+        ga_mv w = ga_mv_meet(a, b);
+        ga_object o;
+        if (ga_object_from_mv(w, &o) != GA_OK || o.kind != meet_pair_kind[p] || o.reality != GA_REALITY_REAL)
+            continue;
+        meet_a[p][j] = a;
+        meet_b[p][j] = b;
+        meet_w[p][j] = w;
+        return GA_OK;
+    }
+    return GA_ERR_SINGULAR;
+}
+
 int setup_inputs(void)
 {
     for (int j = 0; j < RING; j++) {
@@ -169,5 +242,12 @@ int setup_inputs(void)
         for (int i = 0; i < 5; i++) vec_pt[j][i] = mv_pt[j].c[1 + i];
     }
     gp_tables();
-    return build_paths();
+    int st = build_paths();
+    /* the meets' pairs after every other draw: the rings above stay those of
+       earlier runs */
+    if (st == GA_OK)
+        st = meet_check_dual();
+    for (int p = 0; p < N_MEET_PAIRS && st == GA_OK; p++)
+        for (int j = 0; j < RING && st == GA_OK; j++) st = meet_pair(p, j);
+    return st;
 }

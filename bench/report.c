@@ -178,6 +178,30 @@ static const ratio_def ratios[] = {
      "screw sampling: rotors against 4x4 matrices"},
     {"sample_exact_lihao3/sample_euler_lihao3", "sample_exact_lihao3", "sample_euler_lihao3", NAN, 0,
      "exact against Euler on the cubic Li-Hao form"},
+/* the meets: the decision "special position", the join and the
+   read-back against the plain formula on the same pairs (no target:
+   docs/benchmarks.md, "The meets of the object layer") */
+#define MEET_RATIO(key, pair, what)                                                                          \
+    {                                                                                                        \
+        key "_" pair "/meet_floor_" pair, key "_" pair, "meet_floor_" pair, NAN, 0, what ", " pair           \
+    }
+    MEET_RATIO("meet", "plane_plane", "ga_mv_meet against the dual-wedge formula"),
+    MEET_RATIO("meet", "line_plane", "ga_mv_meet against the dual-wedge formula"),
+    MEET_RATIO("meet", "sphere_sphere", "ga_mv_meet against the dual-wedge formula"),
+    MEET_RATIO("meet", "plane_sphere", "ga_mv_meet against the dual-wedge formula"),
+    MEET_RATIO("meet_rel", "plane_plane", "ga_mv_meet_rel against the dual-wedge formula"),
+    MEET_RATIO("meet_rel", "line_plane", "ga_mv_meet_rel against the dual-wedge formula"),
+    MEET_RATIO("meet_rel", "sphere_sphere", "ga_mv_meet_rel against the dual-wedge formula"),
+    MEET_RATIO("meet_rel", "plane_sphere", "ga_mv_meet_rel against the dual-wedge formula"),
+    MEET_RATIO("meet_read", "plane_plane", "the meet's read-back against the dual-wedge formula"),
+    MEET_RATIO("meet_read", "line_plane", "the meet's read-back against the dual-wedge formula"),
+    MEET_RATIO("meet_read", "sphere_sphere", "the meet's read-back against the dual-wedge formula"),
+    MEET_RATIO("meet_read", "plane_sphere", "the meet's read-back against the dual-wedge formula"),
+#undef MEET_RATIO
+    {"meet_regressive/meet_floor_plane_plane", "meet_regressive", "meet_floor_plane_plane", NAN, 0,
+     "the formula as ga_mv_regressive's one kernel against the floor"},
+    {"meet_by_symbols/meet_floor_plane_plane", "meet_by_symbols", "meet_floor_plane_plane", NAN, 0,
+     "the formula through ga_mv_dual, ga_mv_op, ga_mv_undual against the floor"},
 };
 #define N_RATIOS (sizeof ratios / sizeof ratios[0])
 
@@ -297,6 +321,8 @@ void report(const bench_run *run, int json)
         json_num("%.3e", chk.eigen_expm_general);
         printf(",\n    \"eigen_logm_general\": ");
         json_num("%.3e", chk.eigen_logm_general);
+        printf(",\n    \"meet_vs_floor\": %.3e,\n    \"meet_rel_vs_meet\": %.3e,\n    \"meet_bad\": %d",
+               chk.meet_vs_floor, chk.meet_rel_vs_meet, chk.meet_bad);
         printf(",\n    \"status_or\": %d\n  },\n", status_or);
         printf("  \"config\": {\"batches\": %d, \"batch_ms\": %g, \"ring\": %d, \"seed\": %llu, "
                "\"quick\": %s, \"path_keys\": %d, \"path_samples\": %d, \"paths\": %d, "
@@ -373,6 +399,9 @@ void report(const bench_run *run, int json)
            chk.dualquat_vs_motor, chk.gp_vs_table, chk.apply_vs_matrix, chk.apply_vs_sandwich, chk.exp_vs_se3,
            chk.log_vs_se3, chk.expm_vs_se3, chk.logm_vs_se3, chk.eigen_expm_vs_se3, chk.eigen_logm_vs_se3,
            chk.eigen_expm_general, chk.eigen_logm_general, status_or);
+    printf("  meets (relative to the meet's largest coefficient): meet vs floor %.1e, meet_rel vs meet %.1e, "
+           "pairs not read as their kind %d\n",
+           chk.meet_vs_floor, chk.meet_rel_vs_meet, chk.meet_bad);
     printf("\nmachine: %s, %ld online CPUs; %s; build %s; Eigen %s\n", cpu, ncpu, compiler(),
            GAROTOR_BENCH_BUILD, eigen_version ? eigen_version : "absent");
     printf("checksum %.17g\n", (double)sink);
