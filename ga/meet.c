@@ -176,12 +176,30 @@ static int is_round(ga_mv X)
    line lying in it met it above the threshold. Objects from a chain of
    operations (a versor applied, a meet) carry that chain's errors. */
 
+/* Whether X is a nonzero flat exactly: X ^ n = 0, that is no part without e4
+   or e5, and each part A e4 equal to its A e5 ((p A e4 + q A e5) ^ n =
+   (p - q) A e4 e5) */
+static int exact_flat(ga_mv X)
+{
+    int any = 0;
+    for (int i = 0; i < 32; i++) {
+        if (!(gabl_mask[i] & 0x18u) && X.c[i] != 0.0)
+            return 0;
+        if (gabl_pair_e4(i) && X.c[i] != X.c[i + 1])
+            return 0;
+        any |= X.c[i] != 0.0;
+    }
+    return any;
+}
+
 /* e_world and e_local of X (above): e_world where X is no round with a
    known centre */
 static ga_mv meet_uncertainty(ga_mv X)
 {
     ga_mv e = gao_uncertainty(X, GAO_MEET_KAPPA);
     ga_object o;
+    if (exact_flat(X)) /* a flat: e_world (what gao_classify would decide, cheaper) */
+        return e;
     if (gao_classify(X, 1, &o) != GA_OK || o.kind < GA_OBJECT_POINTPAIR)
         return e;
     ga_vec3 c = o.centre;
@@ -226,13 +244,6 @@ static ga_mv with_defect(ga_mv X, ga_mv e)
     /* (1 + 2^-20: the bound is summed again in meet_whole, in another
        order; X ^ X must come out within it) */
     return f > 1.0 && isfinite(f) ? ga_mv_scale(e, f * (1.0 + 0x1p-20)) : e;
-}
-
-/* Whether X is a flat exactly: X ^ n = 0 (its e4 and e5 parts equal) */
-static int exact_flat(ga_mv X)
-{
-    ga_mv w = gao_op_exact(X, ga_mv_vector(0, 0, 0, 1, 1));
-    return ga_mv_maxabs(w) == 0.0 && ga_mv_maxabs(X) > 0.0;
 }
 
 /* The weight of a flat M: its coefficients on blades with both e4 and e5
