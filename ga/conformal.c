@@ -129,11 +129,14 @@ ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c)
 }
 
 /* F(c) - (r^2/2) n: e4 = (|c|^2 - r^2 - 1) / 2, e5 = (|c|^2 - r^2 + 1) / 2,
-   each rounded once from |c|^2 - r^2 carried in double-double. Rounded term
-   by term, |c|^2 / 2 lost u |c|^2 / 2 before r^2 cancelled it: a sphere
-   through (or near) the origin 1e8 out had its weight e5 - e4 = 1 wrong by
-   about 1 (read back within the bounds of the sphere as stored, not of the
-   sphere meant). */
+   from |c|^2 - r^2 carried in double-double: e5 rounded once and e4 = e5 - 1
+   exactly where that is exact (|e5| < 2^53), so that the weight e5 - e4 is
+   1 exactly; beyond, each rounded once. Rounded term by term, |c|^2 / 2
+   lost u |c|^2 / 2 before r^2 cancelled it: a sphere through (or near) the
+   origin 1e8 out had its weight wrong by about 1 (read back within the
+   bounds of the sphere as stored, not of the sphere meant); e4 and e5 each
+   rounded on their own leave the weight off by ~u |e5|, which the meet of
+   two nearly concentric spheres magnifies (their circle 2e-9 off at 100). */
 ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
 {
     ga__eft_dd q = ga__eft_dd_prod(centre.x, centre.x);
@@ -149,7 +152,8 @@ ga_mv ga_sphere_dual(ga_vec3 centre, double radius)
         s.c[GA_BLADE_E5] -= h;
         return s;
     }
-    return ga_mv_vector(centre.x, centre.y, centre.z, 0.5 * m.hi, 0.5 * p.hi);
+    double e5 = 0.5 * p.hi, e4 = fabs(e5) < 0x1p53 ? e5 - 1.0 : 0.5 * m.hi;
+    return ga_mv_vector(centre.x, centre.y, centre.z, e4, e5);
 }
 
 ga_mv ga_plane_dual(ga_vec3 m, double d) { return ga_mv_vector(m.x, m.y, m.z, d, d); }

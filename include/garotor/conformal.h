@@ -99,9 +99,10 @@ GA_API ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c);
 
 /* ---- dual forms (vectors) --------------------------------------------- */
 /** Dual sphere s = F(c) - (r^2/2) n: F(x).s = (r^2 - |x - c|^2) / 2, zero on the sphere.
- *  Its e4 and e5 coefficients, (|c|^2 - r^2 -+ 1) / 2, are each rounded once
- *  (|c|^2 - r^2 is carried exactly), so a sphere through the origin far out keeps
- *  its weight. */
+ *  Its e4 and e5 coefficients, (|c|^2 - r^2 -+ 1) / 2, come from |c|^2 - r^2
+ *  carried exactly: e5 rounded once and e4 = e5 - 1 exactly where |e5| < 2^53
+ *  (the weight e5 - e4 exactly 1), each rounded once beyond; so a sphere
+ *  through the origin far out keeps its weight. */
 GA_API ga_mv ga_sphere_dual(ga_vec3 centre, double radius);
 /** Dual plane p = m + d n, m a unit normal: F(x).p = m.x - d, zero on the plane
  *  m.x = d (d is the signed distance from the origin along m). */
