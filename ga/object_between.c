@@ -158,9 +158,9 @@ static int round_to_flat(ga_mv A, ga_mv B, const ga_object *a, const ga_object *
     }
     for (int attempt = 0; attempt < 2; attempt++) {
         ga_vec3 p = ga__v3_axpy(-r, u, a->centre), q = ga__v3_scale(u, -2.0 * r);
-        ga_mv V0 = ga_mv_scale(ga_mv_gp(ga_mv_gp(ga_versor_reflection(u, 0.0),
-                                                 ga_versor_inversion(ga__v3(0, 0, 0), 2.0 * r)),
-                                        ga_versor_translation(ga__v3_scale(p, -1.0))),
+        ga_mv V0 = ga_mv_scale(gao_gp_exact(gao_gp_exact(ga_versor_reflection(u, 0.0),
+                                                         ga_versor_inversion(ga__v3(0, 0, 0), 2.0 * r)),
+                                            ga_versor_translation(ga__v3_scale(p, -1.0))),
                                0.5 / r);
         ga_mv F, X;
         if (a->kind == GA_OBJECT_SPHERE) {
@@ -190,7 +190,7 @@ static int round_to_flat(ga_mv A, ga_mv B, const ga_object *a, const ga_object *
         ga_rotor R = a->kind == GA_OBJECT_POINTPAIR ? ga_rotor_identity() : turn(d, b->direction);
         ga_rotor M = ga_rotor_mul(ga_rotor_translation(b->centre),
                                   ga_rotor_mul(R, ga_rotor_translation(ga__v3_scale(f.centre, -1.0))));
-        *out = ga_mv_gp(ga_rotor_to_mv(M), V0);
+        *out = gao_gp_exact(ga_rotor_to_mv(M), V0);
         return ga_mv_isfinite(*out) ? GA_OK : GA_ERR_DOMAIN;
     }
     return GA_ERR_DOMAIN;

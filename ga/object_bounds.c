@@ -146,6 +146,27 @@ ga_mv gao_build_about(const ga_vec3 *p, int np, int with_n)
     return translate_dd(x, p[0]);
 }
 
+ga_mv gao_gp_exact(ga_mv a, ga_mv b)
+{
+    ga__eft_dd r[32] = {{0, 0}};
+    for (int i = 0; i < 32; i++) {
+        if (a.c[i] == 0.0)
+            continue;
+        unsigned mi = gabl_mask[i];
+        for (int j = 0; j < 32; j++) {
+            if (b.c[j] == 0.0)
+                continue;
+            unsigned mj = gabl_mask[j];
+            ga__eft_dd q = ga__eft_dd_prod(a.c[i], b.c[j]);
+            int k = gabl_index_of[mi ^ mj];
+            r[k] = ga__eft_dd_add(r[k], gabl_sign(mi, mj) < 0.0 ? ga__eft_dd_neg(q) : q);
+        }
+    }
+    ga_mv w;
+    for (int i = 0; i < 32; i++) w.c[i] = r[i].hi + r[i].lo;
+    return w;
+}
+
 ga_mv gao_op_exact(ga_mv a, ga_mv b)
 {
     ga__eft_dd r[32] = {{0, 0}};

@@ -47,6 +47,9 @@ ga_mv gao_build_about(const ga_vec3 *p, int np, int with_n);
    exact outer product to a relative u of each coefficient (and ~u^2 of its
    terms) */
 ga_mv gao_op_exact(ga_mv a, ga_mv b);
+/* a b likewise: the exact geometric product to a relative u of each
+   coefficient (and ~u^2 of its terms) */
+ga_mv gao_gp_exact(ga_mv a, ga_mv b);
 /* The magnitudes of T_a X ~T_a: the sandwich of |X| by |T_a| with every sign
    positive (a bound of what a perturbation of X becomes). */
 ga_mv gao_abs_translate(ga_mv X, ga_vec3 a);
