@@ -146,28 +146,9 @@ ga_mv gao_build_about(const ga_vec3 *p, int np, int with_n)
     return translate_dd(x, p[0]);
 }
 
-ga_mv gao_gp_exact(ga_mv a, ga_mv b)
-{
-    ga__eft_dd r[32] = {{0, 0}};
-    for (int i = 0; i < 32; i++) {
-        if (a.c[i] == 0.0)
-            continue;
-        unsigned mi = gabl_mask[i];
-        for (int j = 0; j < 32; j++) {
-            if (b.c[j] == 0.0)
-                continue;
-            unsigned mj = gabl_mask[j];
-            ga__eft_dd q = ga__eft_dd_prod(a.c[i], b.c[j]);
-            int k = gabl_index_of[mi ^ mj];
-            r[k] = ga__eft_dd_add(r[k], gabl_sign(mi, mj) < 0.0 ? ga__eft_dd_neg(q) : q);
-        }
-    }
-    ga_mv w;
-    for (int i = 0; i < 32; i++) w.c[i] = r[i].hi + r[i].lo;
-    return w;
-}
-
-ga_mv gao_op_exact(ga_mv a, ga_mv b)
+/* a b (outer = 0) or a ^ b (outer = 1): each product exact, the sums
+   double-double, rounded once */
+static ga_mv product_exact(ga_mv a, ga_mv b, int outer)
 {
     ga__eft_dd r[32] = {{0, 0}};
     for (int i = 0; i < 32; i++) {
@@ -176,12 +157,12 @@ ga_mv gao_op_exact(ga_mv a, ga_mv b)
         unsigned mi = gabl_mask[i];
         for (int j = 0; j < 32; j++) {
             unsigned mj = gabl_mask[j];
-            if (b.c[j] == 0.0 || (mi & mj))
+            if (b.c[j] == 0.0 || (outer && (mi & mj)))
                 continue;
             ga__eft_dd q = ga__eft_dd_prod(a.c[i], b.c[j]);
             if (gabl_sign(mi, mj) < 0.0)
                 q = ga__eft_dd_neg(q);
-            int k = gabl_index_of[mi | mj];
+            int k = gabl_index_of[mi ^ mj];
             r[k] = ga__eft_dd_add(r[k], q);
         }
     }
@@ -189,6 +170,9 @@ ga_mv gao_op_exact(ga_mv a, ga_mv b)
     for (int i = 0; i < 32; i++) w.c[i] = r[i].hi + r[i].lo;
     return w;
 }
+
+ga_mv gao_gp_exact(ga_mv a, ga_mv b) { return product_exact(a, b, 0); }
+ga_mv gao_op_exact(ga_mv a, ga_mv b) { return product_exact(a, b, 1); }
 
 ga_mv gao_abs(ga_mv X)
 {
