@@ -176,6 +176,25 @@ static int is_round(ga_mv X)
    line lying in it met it above the threshold. Objects from a chain of
    operations (a versor applied, a meet) carry that chain's errors. */
 
+/* ga_mv_dual (s = -1: X I^-1 = -X I) and ga_mv_undual (s = 1: X I) of a
+   finite X as the signed permutations they are, each zero +0 as the dense
+   products give it (they spread NaN and infinity to every coefficient;
+   ga_mv_meet takes them for non-finite input) */
+static ga_mv dual_perm(ga_mv X, double s)
+{
+    ga_mv r;
+    for (int i = 0; i < 32; i++) {
+        /* gabl_sign(m, 31): the swaps sum the indices k of m's bits (odd for
+           k = 1, 3), and e5 e5 = -1 adds one */
+        unsigned m = gabl_mask[i];
+        double sg = ((m >> 1) ^ (m >> 3) ^ (m >> 4)) & 1u ? -s : s;
+        r.c[gabl_index_of[m ^ 31u]] = sg * X.c[i] + 0.0;
+    }
+    return r;
+}
+static ga_mv dual_f(ga_mv X) { return dual_perm(X, -1.0); }
+static ga_mv undual_f(ga_mv X) { return dual_perm(X, 1.0); }
+
 /* Whether X is a nonzero flat exactly: X ^ n = 0, that is no part without e4
    or e5, and each part A e4 equal to its A e5 ((p A e4 + q A e5) ^ n =
    (p - q) A e4 e5) */
@@ -235,7 +254,7 @@ static ga_mv with_defect(ga_mv X, ga_mv e)
             k = gabl_popcount5(gabl_mask[i]);
     if (k != 2 && k != 3)
         return e;
-    ga_mv b = ga_mv_grade(k == 2 ? X : ga_mv_dual(X), 2), eb = gao_abs(k == 2 ? e : ga_mv_dual(e));
+    ga_mv b = ga_mv_grade(k == 2 ? X : dual_f(X), 2), eb = gao_abs(k == 2 ? e : dual_f(e));
     ga_mv d = gao_op_exact(b, b), bound = ga_mv_scale(gao_abs_gp(gao_abs(b), eb), 2.0);
     double f = 1.0;
     for (int i = 0; i < 32; i++)
@@ -271,17 +290,17 @@ static int at_infinity(ga_mv X)
     return ga_mv_maxabs(X) > 0.0;
 }
 
-/* ((A I^-1) ^ (B I^-1)) I, A and B direct */
+/* ((A I^-1) ^ (B I^-1)) I, A and B direct and finite */
 static ga_mv meet_whole(ga_mv A, ga_mv B)
 {
     /* The duals are a signed permutation of the coefficients (exact); their
        wedge is exact, rounded once (gao_op_exact): the meet of the objects
        as given, whatever their distance from the origin. */
-    ga_mv da = ga_mv_dual(A), db = ga_mv_dual(B), W = gao_op_exact(da, db);
+    ga_mv da = dual_f(A), db = dual_f(B), W = gao_op_exact(da, db);
     /* Special position: W is 0 to the accuracy of the inputs (above) */
     ga_mv ada = gao_abs(da), adb = gao_abs(db);
-    ga_mv ea = gao_abs(ga_mv_dual(with_defect(A, meet_uncertainty(A))));
-    ga_mv eb = gao_abs(ga_mv_dual(with_defect(B, meet_uncertainty(B))));
+    ga_mv ea = gao_abs(dual_f(with_defect(A, meet_uncertainty(A))));
+    ga_mv eb = gao_abs(dual_f(with_defect(B, meet_uncertainty(B))));
     ga_mv eW = ga_mv_add(gao_abs_gp(ea, adb), gao_abs_gp(ada, eb));
     eW = ga_mv_add(eW, ga_mv_add(ga_mv_scale(gao_abs(W), U), ga_mv_scale(gao_abs_gp(ada, adb), 4.0 * U * U)));
     int zero = ga_mv_isfinite(eW);
@@ -291,10 +310,10 @@ static ga_mv meet_whole(ga_mv A, ga_mv B)
     /* two flats meet in a flat; at infinity where its weight is within what
        the inputs' uncertainties make of it (parallel flats as given) */
     if (exact_flat(A) && exact_flat(B)) {
-        ga_mv eM = gao_abs(ga_mv_undual(eW));
-        return weight_to_zero(ga_mv_undual(W), &eM, 0.0);
+        ga_mv eM = gao_abs(undual_f(eW));
+        return weight_to_zero(undual_f(W), &eM, 0.0);
     }
-    return ga_mv_undual(W);
+    return undual_f(W);
 }
 
 ga_mv ga_mv_meet(ga_mv A, ga_mv B)
@@ -303,6 +322,8 @@ ga_mv ga_mv_meet(ga_mv A, ga_mv B)
         A = ga_mv_dual(A);
     if (ga_mv_maxabs(ga_mv_sub(B, ga_mv_grade(B, 1))) == 0.0)
         B = ga_mv_dual(B);
+    if (!ga_mv_isfinite(A) || !ga_mv_isfinite(B)) /* NaN or infinity in every coefficient it reaches */
+        return ga_mv_undual(gao_op_exact(ga_mv_dual(A), ga_mv_dual(B)));
     return meet_whole(A, B);
 }
 
