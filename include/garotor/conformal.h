@@ -102,7 +102,12 @@ GA_API ga_mv ga_plane_from_points(ga_vec3 a, ga_vec3 b, ga_vec3 c);
  *  Its e4 and e5 coefficients, (|c|^2 - r^2 -+ 1) / 2, come from |c|^2 - r^2
  *  carried exactly: e5 rounded once and e4 = e5 - 1 exactly where |e5| < 2^53
  *  (the weight e5 - e4 exactly 1), each rounded once beyond; so a sphere
- *  through the origin far out keeps its weight. */
+ *  through the origin far out keeps its weight. Where |c|^2 - r^2 passes
+ *  about 2^54 (a unit sphere 1.3e8 out, or one of radius 1.3e8 about the
+ *  origin) the weight is below the spacing of e4 and e5 and may round to 0:
+ *  what is stored is then a plane (the plane at infinity for a centre near
+ *  the origin), and read back as one (object.h, "Accuracy"); hold such
+ *  spheres about a local origin (ga_point_up_scaled, object.h). */
 GA_API ga_mv ga_sphere_dual(ga_vec3 centre, double radius);
 /** Dual plane p = m + d n, m a unit normal: F(x).p = m.x - d, zero on the plane
  *  m.x = d (d is the signed distance from the origin along m). */
