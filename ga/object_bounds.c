@@ -1,6 +1,7 @@
 /* garotor/object_bounds.c: the numerics under the object layer (ga/internal/
- * object.h): the translation sandwich carried exactly, and the bounds of
- * object.h's accuracy model, coefficient by coefficient. */
+ * object.h): the translation sandwich, the constructors from points and the
+ * geometric and outer products carried exactly, and the bounds of object.h's
+ * accuracy model, coefficient by coefficient. */
 #include <math.h>
 
 #include "internal/blade.h"
