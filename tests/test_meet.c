@@ -886,7 +886,8 @@ static void section_infinity(void)
         ga_object ob;
         int st = ga_object_from_mv(ga_mv_meet(L, ga_plane_dual((ga_vec3){0, 0, 1}, 1)), &ob);
         /* the point (1 / th, 0, 1), 1 / th rounded once here */
-        tk_add_bool(&graze, st == GA_ERR_PRECISION || (th < 32 * DBL_EPSILON / 2 && st == GA_OK) ||
+        tk_add_bool(&graze, st == GA_ERR_PRECISION ||
+                                (th < 32 * DBL_EPSILON / 2 && st == GA_OK && ob.kind == GA_OBJECT_EMPTY) ||
                                 (st == GA_OK && ob.kind == GA_OBJECT_FLATPOINT &&
                                  tk_norm(sub(ob.centre, (ga_vec3){x, 0, 1})) <= ob.err + DBL_EPSILON * x));
     }
