@@ -21,10 +21,17 @@
  * largest coefficient (the meet about the round's centre must not lose what
  * the direct formula keeps); and every such meet is a real or imaginary
  * object, never 0.
+ *
+ * Far and at infinity: spheres through the origin far out keep their
+ * weight (ga_sphere_dual); a line meeting a plane at a grazing angle is
+ * that flat point, never EMPTY above 32 u; a line parallel to a plane up to
+ * its rounding meets it at infinity (EMPTY) by both meets.
  */
 #include "testkit.h"
 
 static ga_vec3 add(ga_vec3 a, ga_vec3 b) { return (ga_vec3){a.x + b.x, a.y + b.y, a.z + b.z}; }
+static ga_vec3 sub(ga_vec3 a, ga_vec3 b) { return (ga_vec3){a.x - b.x, a.y - b.y, a.z - b.z}; }
+static double dot(ga_vec3 a, ga_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 /* the meet of A and B must be 0: read back, GA_ERR_SINGULAR */
 static void zero_meet(const char *what, double D, ga_mv A, ga_mv B)
@@ -370,11 +377,89 @@ static void section_apply(void)
     tk_end(&tf);
 }
 
+/* Spheres through the origin far out, centre t 2^k for a Pythagorean t and
+   radius |t| 2^k, all exact: |c|^2 - r^2 = 0, so e4 = -1/2 and e5 = 1/2
+   exactly. Rounded term by term (|c|^2 / 2 first), their weight was lost
+   beyond |c|^2 ~ 2^53 and they read back as planes. */
+static void section_far_through_origin(void)
+{
+    static const double tr[][4] = {{3, 4, 0, 5}, {5, 12, 0, 13}, {2, 3, 6, 7}, {1, 4, 8, 9}};
+    tk_check shape = tk_begin("far spheres through the origin: e4, e5 = -1/2, 1/2 exactly", 0);
+    tk_check rd = tk_begin("far spheres through the origin: read back, within the stated bound", 0);
+    for (int i = 0; i < 4; i++)
+        for (int k = 20; k <= 34; k++) {
+            double f = ldexp(1.0, k), r = tr[i][3] * f;
+            ga_vec3 c = {tr[i][0] * f, tr[i][1] * f, tr[i][2] * f};
+            ga_mv s = ga_sphere_dual(c, r);
+            tk_add_bool(&shape, s.c[GA_BLADE_E4] == -0.5 && s.c[GA_BLADE_E5] == 0.5);
+            ga_object ob;
+            int st = ga_object_from_mv(s, &ob);
+            tk_add_bool(&rd, st == GA_OK && ob.kind == GA_OBJECT_SPHERE &&
+                                 tk_norm(sub(ob.centre, c)) <= ob.err && fabs(ob.r2 - r * r) <= ob.r2_err);
+        }
+    tk_end(&shape);
+    tk_end(&rd);
+}
+
+/* Flats at and near infinity. A line and a plane meeting at a grazing angle
+   theta meet in a finite flat point 1 / theta out, however far: GA_OK with
+   that point within its stated bound, or GA_ERR_PRECISION, never EMPTY (an
+   EMPTY band of 2048 u of the largest coefficient read them as empty below
+   theta ~ 4.5e-13); below 32 u (GAO_MEET_KAPPA: the line's direction is
+   known to that) they are parallel to the inputs' accuracy, and EMPTY is
+   right too. A line parallel to a plane up to the rounding of its direction
+   (the meet of the planes m.x = d and r.x = e, its direction m x r rounded:
+   not quite orthogonal to m) meets the plane m.x = d + off at infinity to
+   the inputs' accuracy: ga_mv_meet and ga_mv_meet_rel give the meet a
+   weight of exactly 0, EMPTY on read-back, at every distance. */
+static void section_infinity(void)
+{
+    tk_check graze =
+        tk_begin("line ^ plane at a grazing angle: the flat point 1 / theta out, EMPTY only below 32 u", 0);
+    for (int k = 6; k <= 16; k++) {
+        double th = pow(10.0, -k), x = 1.0 / th;
+        ga_mv L = ga_line_from_points((ga_vec3){0, 0, 0}, (ga_vec3){1, 0, th});
+        ga_object ob;
+        int st = ga_object_from_mv(ga_mv_meet(L, ga_plane_dual((ga_vec3){0, 0, 1}, 1)), &ob);
+        /* the point (1 / th, 0, 1), 1 / th rounded once here */
+        tk_add_bool(&graze, st == GA_ERR_PRECISION ||
+                                (th < 32 * DBL_EPSILON / 2 && st == GA_OK && ob.kind == GA_OBJECT_EMPTY) ||
+                                (st == GA_OK && ob.kind == GA_OBJECT_FLATPOINT &&
+                                 tk_norm(sub(ob.centre, (ga_vec3){x, 0, 1})) <= ob.err + DBL_EPSILON * x));
+    }
+    tk_end(&graze);
+    tk_rng t = {tk_seed(3131)};
+    tk_check par = tk_begin("line parallel to a plane to its rounding: meet EMPTY", 0);
+    tk_check parr = tk_begin("line parallel to a plane to its rounding: meet_rel EMPTY", 0);
+    for (int k = 0; k < 5; k++)
+        for (int i = 0; i < 200; i++) {
+            double D = dists[k], S = D == 1.0 ? tk_loguni(&t, 0.1, 1) : tk_loguni(&t, 1, D);
+            ga_vec3 m = tk_unit(&t), r = tk_unit(&t), q = tk_scale(tk_unit(&t), D);
+            double off = S * tk_range(&t, 0.1, 1);
+            /* the line of the planes m.x = m.q and r.x = r.q (its direction
+               m x r rounded once), the plane m.x = m.q + off */
+            ga_mv L = ga_mv_meet(ga_plane_dual(m, dot(m, q)), ga_plane_dual(r, dot(r, q)));
+            ga_mv P = ga_plane_dual(m, dot(m, q) + off);
+            ga_object ob;
+            int st = ga_object_from_mv(ga_mv_meet(L, P), &ob);
+            tk_add_bool(&par, st == GA_OK && ob.kind == GA_OBJECT_EMPTY);
+            ga_mv M;
+            st = ga_mv_meet_rel(L, ga_mv_dual(P), &M);
+            if (st == GA_OK)
+                st = ga_object_from_mv(M, &ob);
+            tk_add_bool(&parr, st == GA_OK && ob.kind == GA_OBJECT_EMPTY);
+        }
+    tk_end(&par);
+    tk_end(&parr);
+}
+
 static const tk_section sections[] = {
     {"apply", section_apply, 0},
     {"special", section_special, 0},
     {"rel", section_rel, 0},
     {"general", section_general, 0},
+    {"far_through_origin", section_far_through_origin, 0},
+    {"infinity", section_infinity, 0},
 };
 
 int main(int argc, char **argv)
